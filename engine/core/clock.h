@@ -1,0 +1,39 @@
+// Injected time sources: the frame loop never reads the wall clock itself, so a headless
+// run of N frames is deterministic.
+#pragma once
+#include <chrono>
+
+namespace ob {
+
+/// A source of time in seconds since its start.
+class Clock {
+public:
+    virtual ~Clock() = default;
+    /// Seconds since the clock started; called once per frame.
+    virtual double now() = 0;
+};
+
+/// Wall-clock time (interactive play).
+class SteadyClock final : public Clock {
+public:
+    double now() override {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - m_start).count();
+    }
+
+private:
+    std::chrono::steady_clock::time_point m_start = std::chrono::steady_clock::now();
+};
+
+/// Advances by a fixed interval at every call (scripted and headless runs, tests).
+class FixedStepClock final : public Clock {
+public:
+    /// `frameSeconds`: simulated time per frame (s), > 0.
+    explicit FixedStepClock(double frameSeconds) : m_frameSeconds(frameSeconds) {}
+    double now() override { return double(m_frames++) * m_frameSeconds; }
+
+private:
+    double m_frameSeconds;
+    long long m_frames = 0;
+};
+
+} // namespace ob

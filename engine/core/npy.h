@@ -1,0 +1,26 @@
+// NumPy .npy files: little-endian float32, C order, any rank (SPEC §4 field files).
+// Format: numpy.lib.format, version 1.0 (2.0 is also read: same, with a 4-byte header length).
+#pragma once
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace ob {
+
+/// A float32 array read from a .npy file; data is C order (last index fastest).
+struct NpyArray {
+    std::vector<size_t> shape;  ///< extent per axis; empty for a 0-D (scalar) array
+    std::vector<float> data;    ///< product(shape) values, row-major
+};
+
+/// Reads a .npy file holding '<f4' data in C order. Throws ob::InputError naming the file
+/// for a missing file, bad magic, unsupported version, bad header, other dtype,
+/// fortran_order True or truncated data.
+NpyArray readNpy(const std::string& path);
+
+/// Writes a version 1.0 .npy file ('<f4', C order) holding product(shape) values from data.
+/// Writes path + ".tmp" and renames it over path, so a failed write leaves no half file.
+/// Throws ob::RuntimeError if the file cannot be written.
+void writeNpy(const std::string& path, const std::vector<size_t>& shape, const float* data);
+
+} // namespace ob

@@ -1,0 +1,63 @@
+// Scene loading: reads a TOML table into Def structs through their describe() schema,
+// collecting every error (file:line:column: key.path: message), rejecting unknown keys.
+#pragma once
+#include "core/schema.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace ob {
+
+/// One parsed TOML document (opaque here: toml++ stays inside toml_reader.cpp).
+class TomlDocument {
+public:
+    /// Parses a file. Syntax errors and a missing file are appended to `errors`.
+    static TomlDocument fromFile(const std::string& path, std::vector<std::string>& errors);
+    /// Parses text; `sourceName` is what error messages call it.
+    static TomlDocument fromString(const std::string& text, const std::string& sourceName, std::vector<std::string>& errors);
+    /// Applies one `--set key.path=value` override (value in TOML syntax; a bare word is a string).
+    void applyOverride(const std::string& assignment, std::vector<std::string>& errors);
+    TomlDocument();
+    ~TomlDocument();
+    TomlDocument(TomlDocument&&) noexcept;
+    TomlDocument& operator=(TomlDocument&&) noexcept;
+
+    struct Impl;
+    std::unique_ptr<Impl> m_impl;
+};
+
+/// The loader visitor: `TomlReader r(doc, errors); describe(r, def); r.finish();`
+class TomlReader {
+public:
+    TomlReader(const TomlDocument& doc, std::vector<std::string>& errors);
+    ~TomlReader();
+
+    void field(const char* key, bool& value, const char* doc);
+    void field(const char* key, int& value, Limits limits, const char* doc);
+    void field(const char* key, uint64_t& value, const char* doc);
+    void field(const char* key, float& value, Limits limits, const char* doc);
+    void field(const char* key, glm::vec2& value, Limits limits, const char* doc);
+    void field(const char* key, glm::vec3& value, Limits limits, const char* doc);
+    void field(const char* key, std::string& value, Choices choices, const char* doc);
+
+    /// Reads sub-table `key` (absent: defaults stay) into `def` by its describe().
+    template <class Def>
+    void section(const char* key, Def& def) {
+        if (!enterSection(key)) return;
+        describe(*this, def);
+        leaveSection();
+    }
+
+    /// Reports every key of the document that no describe() asked for.
+    void finish();
+
+    struct State; ///< reader state (toml++ types), defined in toml_reader.cpp
+
+private:
+    bool enterSection(const char* key);
+    void leaveSection();
+    std::unique_ptr<State> m_state;
+};
+
+} // namespace ob

@@ -1,0 +1,78 @@
+// Fixed-step frame loop and per-phase timing.
+#include "ecs/schedule.h"
+
+#include <algorithm>
+#include <chrono>
+#include <numeric>
+
+namespace ob::ecs {
+
+const char* phaseName(Phase p) {
+    static const char* NAMES[PHASE_COUNT] = {"input", "script", "physics", "interaction", "ocean", "render"};
+    return NAMES[size_t(p)];
+}
+
+void FrameTimer::beginFrame() { m_current.fill(0.0); }
+
+void FrameTimer::endFrame(double frameMs) {
+    for (int p = 0; p < PHASE_COUNT; ++p) m_cpu[size_t(p)].push_back(m_current[size_t(p)]);
+    m_frames.push_back(frameMs);
+}
+
+double mean(const std::vector<double>& samples) {
+    return samples.empty() ? 0.0 : std::accumulate(samples.begin(), samples.end(), 0.0) / double(samples.size());
+}
+
+double median(std::vector<double> samples) {
+    if (samples.empty()) return 0.0;
+    size_t mid = samples.size() / 2;
+    std::nth_element(samples.begin(), samples.begin() + long(mid), samples.end());
+    double hi = samples[mid];
+    if (samples.size() % 2) return hi;
+    double lo = *std::max_element(samples.begin(), samples.begin() + long(mid));
+    return 0.5 * (lo + hi);
+}
+
+using Ms = std::chrono::duration<double, std::milli>;
+
+void Schedule::runPhase(World& world, Phase phase, const Tick& tick) {
+    auto t0 = std::chrono::steady_clock::now();
+    for (const Entry& e : m_systems)
+        if (e.phase == phase) e.fn(world, tick);
+    m_timer.addCpu(phase, Ms(std::chrono::steady_clock::now() - t0).count());
+}
+
+void Schedule::runStep(World& world) {
+    Tick tick{simTime(), stepSeconds(), m_step, 0.0};
+    // --- simulation phases, in table order
+    for (Phase p : {Phase::Script, Phase::Physics, Phase::Interaction, Phase::Ocean}) runPhase(world, p, tick);
+    ++m_step;
+}
+
+void Schedule::runFrame(World& world, double now) {
+    auto frameStart = std::chrono::steady_clock::now();
+    m_timer.beginFrame();
+    double frameDt = m_lastNow < 0 ? stepSeconds() : now - m_lastNow;
+    m_lastNow = now;
+
+    // --- input: once per frame
+    runPhase(world, Phase::Input, Tick{simTime(), frameDt, m_step, 0.0});
+
+    // --- simulation: the fixed steps due by now, at most max_steps_per_frame (the rest is dropped)
+    m_accumulator += frameDt;
+    int steps = 0;
+    const double h = stepSeconds();
+    while (m_accumulator >= h * (1.0 - 1e-9) && steps < m_def.max_steps_per_frame) {
+        runStep(world);
+        m_accumulator -= h;
+        ++steps;
+    }
+    if (steps == m_def.max_steps_per_frame && m_accumulator > h) m_accumulator = 0;
+
+    // --- render: once per frame, at the latest simulated state
+    runPhase(world, Phase::Render, Tick{simTime(), frameDt, m_step, m_accumulator / h});
+    ++m_frames;
+    m_timer.endFrame(Ms(std::chrono::steady_clock::now() - frameStart).count());
+}
+
+} // namespace ob::ecs

@@ -1,0 +1,107 @@
+// The frame: a fixed phase table (input → script → physics → interaction → ocean → render).
+// Input and render run once per frame; the simulation phases run at a fixed step.
+#pragma once
+#include "core/schema.h"
+#include "ecs/world.h"
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace ob {
+class Clock;
+}
+
+namespace ob::ecs {
+
+/// Simulation timing, section [sim].
+struct SimDef {
+    float step_hz = 60.0f;          ///< fixed simulation rate (Hz), [1, 1000]
+    int max_steps_per_frame = 8;    ///< catch-up limit when a frame is slow, [1, 64]
+    uint64_t seed = 1;              ///< seed for every random choice of the scene
+};
+
+template <class V> void describe(V& v, SimDef& d) {
+    v.field("step_hz", d.step_hz, range(1, 1000), "fixed simulation rate (Hz)");
+    v.field("max_steps_per_frame", d.max_steps_per_frame, range(1, 64), "catch-up limit when a frame is slow");
+    v.field("seed", d.seed, "seed for every random choice of the scene");
+}
+
+/// The phases of a frame, in execution order.
+enum class Phase : uint8_t { Input, Script, Physics, Interaction, Ocean, Render, Count };
+constexpr int PHASE_COUNT = int(Phase::Count);
+/// Lower-case phase names ("input", "script", ...), as in stats and benchmarks.
+const char* phaseName(Phase p);
+
+/// What a system sees of time. For per-frame phases dt is the frame's simulated time.
+struct Tick {
+    double time = 0;     ///< simulated seconds at the start of this step
+    double dt = 0;       ///< step length (s)
+    uint64_t step = 0;   ///< index of this simulation step
+    double alpha = 0;    ///< render phase: fraction of a step between the last state and now
+};
+
+/// A system: a free function over the world.
+using SystemFn = void (*)(World&, const Tick&);
+
+/// Per-phase CPU (and GPU where measured) milliseconds, one sample per frame.
+class FrameTimer {
+public:
+    void beginFrame();
+    void addCpu(Phase p, double ms) { m_current[size_t(p)] += ms; }
+    /// GPU time of a phase for the latest frame whose queries have resolved.
+    void setGpu(Phase p, double ms) { m_gpu[size_t(p)].push_back(ms); }
+    void endFrame(double frameMs);
+    /// Samples of the phase's CPU ms, one per frame.
+    const std::vector<double>& cpuSamples(Phase p) const { return m_cpu[size_t(p)]; }
+    const std::vector<double>& gpuSamples(Phase p) const { return m_gpu[size_t(p)]; }
+    const std::vector<double>& frameSamples() const { return m_frames; }
+    /// The latest frame's CPU ms of a phase (0 before the first frame).
+    double lastCpu(Phase p) const { return m_cpu[size_t(p)].empty() ? 0.0 : m_cpu[size_t(p)].back(); }
+
+private:
+    std::array<double, PHASE_COUNT> m_current{};
+    std::array<std::vector<double>, PHASE_COUNT> m_cpu;
+    std::array<std::vector<double>, PHASE_COUNT> m_gpu;
+    std::vector<double> m_frames;
+};
+
+/// Mean and median of samples (0 when empty).
+double mean(const std::vector<double>& samples);
+double median(std::vector<double> samples);
+
+/// The phase table and the fixed-step loop.
+class Schedule {
+public:
+    explicit Schedule(const SimDef& def) : m_def(def) {}
+    /// Appends a system to a phase; systems of a phase run in the order added.
+    void add(Phase phase, const char* name, SystemFn fn) { m_systems.push_back({phase, name, fn}); }
+    /// Runs one frame at clock time `now` (s): input, the simulation steps due, render.
+    void runFrame(World& world, double now);
+    /// Runs only the simulation phases for one step (headless simulation without a frame).
+    void runStep(World& world);
+    const FrameTimer& timer() const { return m_timer; }
+    FrameTimer& timer() { return m_timer; }
+    double simTime() const { return double(m_step) / m_def.step_hz; }
+    uint64_t steps() const { return m_step; }
+    uint64_t frames() const { return m_frames; }
+    double stepSeconds() const { return 1.0 / m_def.step_hz; }
+
+private:
+    struct Entry {
+        Phase phase;
+        const char* name;
+        SystemFn fn;
+    };
+    void runPhase(World& world, Phase phase, const Tick& tick);
+
+    SimDef m_def;
+    std::vector<Entry> m_systems;
+    FrameTimer m_timer;
+    uint64_t m_step = 0;
+    uint64_t m_frames = 0;
+    double m_lastNow = -1;
+    double m_accumulator = 0;
+};
+
+} // namespace ob::ecs

@@ -1,0 +1,112 @@
+// ImGui overlay and the Def editor.
+#include "gfx/ui_overlay.h"
+
+#include <algorithm>
+#include <cmath>
+#include <imgui.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+
+namespace ob::gfx {
+
+UiOverlay::UiOverlay(void* glfwWindow) {
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGui::GetIO().IniFilename = nullptr;
+    ImGui::StyleColorsDark();
+    ImGui_ImplGlfw_InitForOpenGL(static_cast<GLFWwindow*>(glfwWindow), true);
+    ImGui_ImplOpenGL3_Init("#version 450 core");
+}
+
+UiOverlay::~UiOverlay() {
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+}
+
+void UiOverlay::begin() {
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+}
+
+void UiOverlay::end() {
+    ImGui::Render();
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+}
+
+void UiOverlay::captureFlags(bool& mouse, bool& keyboard) const {
+    mouse = ImGui::GetIO().WantCaptureMouse;
+    keyboard = ImGui::GetIO().WantCaptureKeyboard;
+}
+
+static void tooltip(const char* doc) {
+    if (doc && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", doc);
+}
+
+// Slider bounds: the key's range where finite, else a span around the value.
+static void sliderBounds(const Limits& l, float value, float& lo, float& hi) {
+    lo = std::isfinite(l.min) ? float(l.min) : std::min(value, 0.0f) - 100.0f;
+    hi = std::isfinite(l.max) ? float(l.max) : std::max(value, 0.0f) + 100.0f;
+}
+
+void UiEditor::field(const char* key, bool& value, const char* doc) {
+    ImGui::Checkbox(key, &value);
+    tooltip(doc);
+}
+
+void UiEditor::field(const char* key, int& value, Limits limits, const char* doc) {
+    int lo = std::isfinite(limits.min) ? int(limits.min) : -1000000;
+    int hi = std::isfinite(limits.max) ? int(limits.max) : 1000000;
+    ImGui::DragInt(key, &value, 1.0f, lo, hi);
+    tooltip(doc);
+}
+
+void UiEditor::field(const char* key, uint64_t& value, const char* doc) {
+    ImGui::Text("%s = %llu", key, static_cast<unsigned long long>(value));
+    tooltip(doc);
+}
+
+void UiEditor::field(const char* key, float& value, Limits limits, const char* doc) {
+    float lo, hi;
+    sliderBounds(limits, value, lo, hi);
+    ImGui::SliderFloat(key, &value, lo, hi, "%.3f", hi / std::max(lo, 1e-6f) > 100.0f && lo > 0 ? ImGuiSliderFlags_Logarithmic : 0);
+    tooltip(doc);
+}
+
+void UiEditor::field(const char* key, glm::vec2& value, Limits limits, const char* doc) {
+    float lo, hi;
+    sliderBounds(limits, 0.0f, lo, hi);
+    ImGui::DragFloat2(key, &value.x, 0.01f, lo, hi);
+    tooltip(doc);
+}
+
+void UiEditor::field(const char* key, glm::vec3& value, Limits limits, const char* doc) {
+    float lo, hi;
+    sliderBounds(limits, 0.0f, lo, hi);
+    if (lo == 0.0f && hi == 1.0f) ImGui::ColorEdit3(key, &value.x, ImGuiColorEditFlags_Float);
+    else ImGui::DragFloat3(key, &value.x, 0.01f, lo, hi);
+    if (limits.nonZero && value.x == 0.0f && value.y == 0.0f && value.z == 0.0f) value.y = 1e-3f;
+    tooltip(doc);
+}
+
+void UiEditor::field(const char* key, std::string& value, Choices choices, const char* doc) {
+    if (choices.size() == 0) {
+        ImGui::Text("%s = %s", key, value.c_str());
+    } else if (ImGui::BeginCombo(key, value.c_str())) {
+        for (const char* c : choices)
+            if (ImGui::Selectable(c, value == c)) value = c;
+        ImGui::EndCombo();
+    }
+    tooltip(doc);
+}
+
+bool UiEditor::beginSection(const char* key) {
+    if (!ImGui::CollapsingHeader(key)) return false;
+    ImGui::PushID(key);
+    return true;
+}
+
+void UiEditor::endSection() { ImGui::PopID(); }
+
+} // namespace ob::gfx

@@ -1,0 +1,46 @@
+// Dear ImGui overlay for window mode (GLFW + OpenGL 3 backends from Debian's libimgui-dev),
+// and a schema visitor that edits any Def through its describe().
+#pragma once
+#include "core/schema.h"
+
+#include <string>
+
+namespace ob::gfx {
+
+/// ImGui context bound to a GLFW window.
+class UiOverlay {
+public:
+    explicit UiOverlay(void* glfwWindow);
+    ~UiOverlay();
+    /// Starts a UI frame (call between the scene's passes and present).
+    void begin();
+    /// Draws the UI over the frame.
+    void end();
+    /// Whether the UI wants the mouse and keyboard this frame.
+    void captureFlags(bool& mouse, bool& keyboard) const;
+};
+
+/// Edits a Def's fields with ImGui widgets: `UiEditor e; describe(e, def);`
+class UiEditor {
+public:
+    void field(const char* key, bool& value, const char* doc);
+    void field(const char* key, int& value, Limits limits, const char* doc);
+    void field(const char* key, uint64_t& value, const char* doc);
+    void field(const char* key, float& value, Limits limits, const char* doc);
+    void field(const char* key, glm::vec2& value, Limits limits, const char* doc);
+    void field(const char* key, glm::vec3& value, Limits limits, const char* doc);
+    void field(const char* key, std::string& value, Choices choices, const char* doc);
+    /// A collapsible header per section.
+    template <class Def>
+    void section(const char* key, Def& def) {
+        if (!beginSection(key)) return;
+        describe(*this, def);
+        endSection();
+    }
+
+private:
+    bool beginSection(const char* key);
+    void endSection();
+};
+
+} // namespace ob::gfx

@@ -1,0 +1,89 @@
+// CPU spectral ocean: per cascade, h̃(K,t) and its derivative spectra inverse-transformed with
+// FFTW, two real fields per complex transform. SPEC §2.1 eq. 1–9; seed 000 §2.1, §3.3.
+#pragma once
+#include "ocean/ocean_def.h"
+#include "ocean/spectrum.h"
+
+#include <memory>
+#include <vector>
+
+struct fftwf_plan_s;
+
+namespace ob::ocean {
+
+/// One output map of a cascade: N×N floats, row-major [j][i], j along z, i along x, at the
+/// point X = (i·L/N, j·L/N) of the tile (L = the cascade's patch size).
+enum class OceanChannel : int {
+    Height = 0,   ///< h, metres (eq. 1)
+    DispX = 1,    ///< Dx, metres (eq. 7), not multiplied by λ
+    DispZ = 2,    ///< Dz, metres (eq. 7), not multiplied by λ
+    SlopeX = 3,   ///< ∂h/∂x, dimensionless (eq. 6)
+    SlopeZ = 4,   ///< ∂h/∂z, dimensionless (eq. 6)
+    Jacobian = 5, ///< J = (1+λ∂Dx/∂x)(1+λ∂Dz/∂z) − (λ∂Dx/∂z)² of X → X + λD; < 1 compresses, ≤ 0 folds (foam)
+};
+
+/// Number of OceanChannel maps.
+constexpr int OCEAN_CHANNEL_COUNT = 6;
+/// Channels of the `dump ocean` array [N, N, 5]: h, Dx, Dz, ∂h/∂x, ∂h/∂z (SPEC §4).
+constexpr int OCEAN_DUMP_CHANNELS = 5;
+/// Packed complex transforms per cascade (PackedSpectra, eq. 9).
+constexpr int OCEAN_PACKED_TRANSFORMS = 4;
+
+/// The FFT ocean on the CPU (FFTW single precision). Plans are made once with FFTW_MEASURE
+/// and cached as FFTW wisdom in $XDG_CACHE_HOME/oceanbox/fftw_wisdom_f (else
+/// ~/.cache/oceanbox/fftw_wisdom_f; a cache that cannot be read or written is ignored).
+class OceanFftCpu {
+public:
+    /// Builds every cascade of def (seeded h̃0, FFT plans). threads: workers for update(),
+    /// 0 = auto (2 when N ≥ 256 and the machine has 2 cores, else 1). Throws ob::InputError
+    /// naming the key for a def no loader would accept (resolution not a power of two in
+    /// [4, 4096], cascades outside [1, 4], non-positive sizes).
+    explicit OceanFftCpu(const OceanDef& def, int threads = 0);
+    ~OceanFftCpu();
+    OceanFftCpu(const OceanFftCpu&) = delete;
+    OceanFftCpu& operator=(const OceanFftCpu&) = delete;
+
+    /// Computes every cascade's channels at time t, seconds (any t; equal t, equal maps).
+    void update(double t);
+
+    /// Time of the last update(), seconds (0 before the first).
+    double time() const { return m_time; }
+    /// N, points per side of every cascade.
+    int resolution() const { return m_n; }
+    /// Number of cascades, [1, 4].
+    int cascadeCount() const { return int(m_cascades.size()); }
+    /// Side of cascade c's tile, metres.
+    double patchSize(int cascade) const;
+    /// λ of X + λ·D and of the Jacobian: −choppiness (SPEC eq. 7 sign: λ < 0 sharpens crests).
+    float lambda() const { return m_lambda; }
+    /// Workers update() uses.
+    int threadCount() const { return m_threads; }
+
+    /// Channel ch of cascade c after the last update(): N·N floats, row-major [j][i].
+    const float* channel(int cascade, OceanChannel ch) const;
+    /// Writes cascade c as [N][N][5] floats (h, Dx, Dz, ∂h/∂x, ∂h/∂z per point) into out.
+    void fillDump(int cascade, float* out) const;
+    /// Raw result of packed transform k ∈ [0, 4): N·N interleaved pairs, row-major [j][i]:
+    /// 0 (h, ∂Dx/∂z), 1 (Dx, Dz), 2 (∂h/∂x, ∂h/∂z), 3 (∂Dx/∂x, ∂Dz/∂z).
+    const float* packed(int cascade, int k) const;
+
+    /// Cascade c's spectrum (h̃0 may be edited by hand; update() picks the edit up).
+    CascadeSpectrum& spectrum(int cascade);
+    /// Cascade c's spectrum.
+    const CascadeSpectrum& spectrum(int cascade) const;
+
+private:
+    struct Cascade;
+    void synthesizeRows(int pairBegin, int pairEnd);
+    void transform(int index);
+    void unpackRows(int rowBegin, int rowEnd);
+
+    int m_n = 0;
+    int m_threads = 1;
+    float m_lambda = 0.0f;
+    double m_time = 0.0;
+    fftwf_plan_s* m_plan = nullptr;  // one in-place backward plan for every buffer (new-array execute)
+    std::vector<std::unique_ptr<Cascade>> m_cascades;
+};
+
+} // namespace ob::ocean

@@ -1,0 +1,363 @@
+// Wave spectra, seeded h̃0(K) and the vectorised synthesis of h̃(K,t): SPEC §2.1 eq. 2–7,
+// seed 000 §2.1, seed 003; JONSWAP after Hasselmann et al. 1973 (formulas in spectrum.h).
+#include "ocean/spectrum.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+// Hot loops are also compiled for AVX2 and picked at load time (ifunc); both clones do the
+// same IEEE operations in the same order (no FMA contraction), so results are bit-identical.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(OB_NO_SIMD_CLONES)
+#define OB_VECTOR_KERNEL __attribute__((target_clones("avx2", "default")))
+#elif defined(__GNUC__)
+#define OB_VECTOR_KERNEL __attribute__((noinline))  // keeps the __restrict of its parameters
+#else
+#define OB_VECTOR_KERNEL
+#endif
+
+namespace ob::ocean {
+
+namespace {
+
+constexpr double PI = std::numbers::pi;
+constexpr double TWO_PI = 2.0 * std::numbers::pi;
+constexpr double INV_TWO_PI = 1.0 / TWO_PI;
+// Adding and subtracting 1.5·2^52 rounds a double of magnitude < 2^51 to the nearest integer
+// with plain arithmetic, which vectorises where std::nearbyint does not (SSE2).
+constexpr double ROUND_MAGIC = 6755399441055744.0;
+// Inner loops run on blocks of a compile-time length so that GCC's -O2 ("very cheap")
+// vectoriser takes them; N ≥ 16 rows are whole blocks, smaller ones take the scalar tail.
+constexpr int BLOCK = 16;
+
+[[maybe_unused]] bool isPowerOfTwo(int n) { return n > 0 && (n & (n - 1)) == 0; }
+
+// Signed wave index of FFT-order position r in [0, N).
+int signedIndex(int r, int n) { return r < n / 2 ? r : r - n; }
+
+// sin and cos of ω·t, |error| < 1e-6 (float rounding). The phase is reduced in double to
+// r ∈ [−π, π], then the half angle u = r/2 ∈ [−π/2, π/2] goes through Taylor polynomials
+// (first omitted terms: u^13/13! < 6e-8, u^14/14! < 7e-9) and the double-angle formulas.
+[[gnu::always_inline]] inline void phaseSinCos(double omega, double t, float& s, float& c) {
+    const double x = omega * t;
+    const double turns = (x * INV_TWO_PI + ROUND_MAGIC) - ROUND_MAGIC;
+    const float u = 0.5f * float(x - turns * TWO_PI);
+    const float u2 = u * u;
+    const float su = u * (1.0f + u2 * (-1.0f / 6.0f + u2 * (1.0f / 120.0f + u2 * (-1.0f / 5040.0f
+                   + u2 * (1.0f / 362880.0f + u2 * (-1.0f / 39916800.0f))))));
+    const float cu = 1.0f + u2 * (-0.5f + u2 * (1.0f / 24.0f + u2 * (-1.0f / 720.0f
+                   + u2 * (1.0f / 40320.0f + u2 * (-1.0f / 3628800.0f + u2 * (1.0f / 479001600.0f))))));
+    s = 2.0f * su * cu;
+    c = 1.0f - 2.0f * su * su;
+}
+
+// sin ωt and cos ωt for the columns n = 0 … N/2 of one |m| row of the quarter grid: ω
+// depends on |kx| and |kz| only, so one quarter serves all four sign combinations.
+OB_VECTOR_KERNEL
+void phaseRow(const double* __restrict omega, float* __restrict sinOut, float* __restrict cosOut,
+              double t, int count) {
+    int base = 0;
+    for (; base + BLOCK <= count; base += BLOCK)
+        for (int q = 0; q < BLOCK; ++q) phaseSinCos(omega[base + q], t, sinOut[base + q], cosOut[base + q]);
+    for (int i = base; i < count; ++i) phaseSinCos(omega[i], t, sinOut[i], cosOut[i]);
+}
+
+// One mode: h̃ (eq. 2) from the precomputed coefficients and sin/cos ωt, then the four packed
+// products (PackedSpectra); o* point at interleaved (re, im) pairs.
+[[gnu::always_inline]] inline void synthMode(
+    const float* __restrict sinWt, const float* __restrict cosWt, const float* __restrict kxs,
+    const float* __restrict invKs, const float* __restrict cosRe, const float* __restrict sinRe,
+    const float* __restrict cosIm, const float* __restrict sinIm, float* __restrict o0,
+    float* __restrict o1, float* __restrict o2, float* __restrict o3, float kz, int i) {
+    const float s = sinWt[i], c = cosWt[i];
+    const float hr = cosRe[i] * c + sinRe[i] * s;
+    const float hi = cosIm[i] * c + sinIm[i] * s;
+    const float kx = kxs[i];
+    const float invK = invKs[i];
+    const float ux = kx * invK;    // kx/k
+    const float uz = kz * invK;    // kz/k
+    const float dxz = kx * uz;     // kx·kz/k
+    const float dxx = kx * ux;     // kx²/k
+    const float dzz = kz * uz;     // kz²/k
+    // h̃·(1 + i·kx·kz/k)
+    o0[2 * i] = hr - hi * dxz;
+    o0[2 * i + 1] = hi + hr * dxz;
+    // h̃·(kz − i·kx)/k = −i(kx/k)h̃ + i·(−i(kz/k)h̃)
+    o1[2 * i] = hr * uz + hi * ux;
+    o1[2 * i + 1] = hi * uz - hr * ux;
+    // h̃·(−kz + i·kx) = i·kx·h̃ + i·(i·kz·h̃)
+    o2[2 * i] = -hr * kz - hi * kx;
+    o2[2 * i + 1] = hr * kx - hi * kz;
+    // h̃·(kx²/k + i·kz²/k)
+    o3[2 * i] = hr * dxx - hi * dzz;
+    o3[2 * i + 1] = hi * dxx + hr * dzz;
+}
+
+OB_VECTOR_KERNEL
+void synthRow(const float* __restrict sinWt, const float* __restrict cosWt,
+              const float* __restrict kx, const float* __restrict invK,
+              const float* __restrict cosRe, const float* __restrict sinRe,
+              const float* __restrict cosIm, const float* __restrict sinIm, float* __restrict o0,
+              float* __restrict o1, float* __restrict o2, float* __restrict o3, float kz, int count) {
+    int base = 0;
+    for (; base + BLOCK <= count; base += BLOCK)
+        for (int q = 0; q < BLOCK; ++q)
+            synthMode(sinWt, cosWt, kx, invK, cosRe, sinRe, cosIm, sinIm, o0, o1, o2, o3, kz, base + q);
+    for (int i = base; i < count; ++i)
+        synthMode(sinWt, cosWt, kx, invK, cosRe, sinRe, cosIm, sinIm, o0, o1, o2, o3, kz, i);
+}
+
+} // namespace
+
+// --- noise -----------------------------------------------------------------------------
+
+std::uint64_t mix64(std::uint64_t x) {
+    x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
+    x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
+    return x ^ (x >> 31);
+}
+
+GaussianRng::GaussianRng(std::uint64_t seed) : m_state(seed) {}
+
+std::uint64_t GaussianRng::nextBits() {
+    m_state += 0x9E3779B97F4A7C15ull;
+    return mix64(m_state);
+}
+
+double GaussianRng::next() {
+    if (m_hasSpare) {
+        m_hasSpare = false;
+        return m_spare;
+    }
+    // u1 ∈ (0, 1] (log is finite), u2 ∈ [0, 1), 53 random bits each.
+    const double u1 = double((nextBits() >> 11) + 1) * 0x1.0p-53;
+    const double u2 = double(nextBits() >> 11) * 0x1.0p-53;
+    const double r = std::sqrt(-2.0 * std::log(u1));
+    const double a = TWO_PI * u2;
+    m_spare = r * std::sin(a);
+    m_hasSpare = true;
+    return r * std::cos(a);
+}
+
+std::complex<double> modeNoise(std::uint64_t seed, int cascade, int n, int m) {
+    const std::uint64_t key = (std::uint64_t(std::uint32_t(n)) << 32) | std::uint32_t(m);
+    GaussianRng rng(mix64(mix64(seed ^ (0xD1B54A32D192ED03ull * std::uint64_t(cascade + 1))) ^ key));
+    const double xr = rng.next();
+    const double xi = rng.next();
+    return {xr, xi};
+}
+
+// --- spectra ---------------------------------------------------------------------------
+
+SpectrumParams spectrumParams(const OceanDef& def) {
+    SpectrumParams p;
+    p.kind = def.spectrum == "jonswap" ? SpectrumKind::Jonswap : SpectrumKind::Phillips;
+    p.amplitude = def.amplitude;
+    p.windSpeed = def.wind_speed;
+    p.gravity = def.gravity;
+    const double wx = def.wind_direction.x;
+    const double wz = def.wind_direction.y;
+    const double wl = std::sqrt(wx * wx + wz * wz);
+    if (wl > 0.0) {
+        p.windX = wx / wl;
+        p.windZ = wz / wl;
+    }
+    p.largestWave = p.windSpeed * p.windSpeed / p.gravity;
+    p.cutoff = def.small_wave_cutoff > 0.0f ? double(def.small_wave_cutoff) : 0.001 * p.largestWave;
+    p.gamma = def.peak_enhancement;
+    if (p.windSpeed > 0.0 && def.fetch > 0.0f) {
+        const double v = p.windSpeed, f = def.fetch, g = p.gravity;
+        p.alpha = 0.076 * std::pow(v * v / (f * g), 0.22);
+        p.omegaPeak = 22.0 * std::cbrt(g * g / (v * f));
+    }
+    return p;
+}
+
+double phillips(double kx, double kz, double dk, const SpectrumParams& p) {
+    const double k2 = kx * kx + kz * kz;
+    if (k2 <= 0.0 || p.largestWave <= 0.0) return 0.0;
+    const double kDotW = (kx * p.windX + kz * p.windZ);
+    const double cos2 = kDotW * kDotW / k2;  // (K̂·ŵ)²
+    const double kl = k2 * p.largestWave * p.largestWave;
+    return p.amplitude * dk * dk * std::exp(-1.0 / kl) / (k2 * k2) * cos2 *
+           std::exp(-k2 * p.cutoff * p.cutoff);
+}
+
+double jonswapFrequency(double omega, const SpectrumParams& p) {
+    if (omega <= 0.0 || p.omegaPeak <= 0.0) return 0.0;
+    const double g = p.gravity;
+    const double wp = p.omegaPeak;
+    const double sigma = omega <= wp ? 0.07 : 0.09;
+    const double d = (omega - wp) / (sigma * wp);
+    const double r = std::exp(-0.5 * d * d);
+    const double ratio = wp / omega;
+    const double ratio2 = ratio * ratio;
+    const double w2 = omega * omega;
+    return p.alpha * g * g / (w2 * w2 * omega) * std::exp(-1.25 * ratio2 * ratio2) * std::pow(p.gamma, r);
+}
+
+double jonswap(double kx, double kz, double dk, const SpectrumParams& p) {
+    const double k2 = kx * kx + kz * kz;
+    if (k2 <= 0.0) return 0.0;
+    const double k = std::sqrt(k2);
+    // The h̃0(K) wave travels toward −K (eq. 1–2), so the spreading looks at −K̂·ŵ.
+    const double cosTheta = -(kx * p.windX + kz * p.windZ) / k;
+    if (cosTheta <= 0.0) return 0.0;
+    const double spread = 2.0 / PI * cosTheta * cosTheta;
+    const double omega = std::sqrt(p.gravity * k);
+    const double dOmegaDk = p.gravity / (2.0 * omega);
+    const double sK = jonswapFrequency(omega, p) * dOmegaDk * spread / k;
+    return 0.5 * sK * dk * dk * std::exp(-k2 * p.cutoff * p.cutoff);
+}
+
+double modeVariance(double kx, double kz, double dk, const SpectrumParams& p) {
+    return p.kind == SpectrumKind::Jonswap ? jonswap(kx, kz, dk, p) : phillips(kx, kz, dk, p);
+}
+
+// --- cascades --------------------------------------------------------------------------
+
+double cascadePatchSize(const OceanDef& def, int cascade) {
+    const double phi2 = std::numbers::phi * std::numbers::phi;
+    return double(def.patch_size) / std::pow(phi2, cascade);
+}
+
+WaveBand cascadeBand(const OceanDef& def, int cascade) {
+    const auto boundary = [&](int c) {  // between cascades c and c + 1
+        return std::min(6.0 * TWO_PI / cascadePatchSize(def, c + 1),
+                        PI * def.resolution / cascadePatchSize(def, c));
+    };
+    WaveBand band;
+    band.kMin = cascade > 0 ? boundary(cascade - 1) : 0.0;
+    band.kMax = cascade + 1 < def.cascades ? boundary(cascade) : std::numeric_limits<double>::infinity();
+    return band;
+}
+
+// --- CascadeSpectrum -------------------------------------------------------------------
+
+CascadeSpectrum::CascadeSpectrum(int resolution, double patchSize, double gravity)
+    : m_n(resolution), m_patchSize(patchSize), m_gravity(gravity) {
+    assert(isPowerOfTwo(resolution) && resolution >= 4);
+    assert(patchSize > 0.0 && gravity > 0.0);
+    const size_t count = size_t(m_n) * size_t(m_n);
+    m_h0.assign(count, {0.0f, 0.0f});
+    const int quarter = m_n / 2 + 1;
+    m_omega.resize(size_t(quarter) * quarter);
+    m_invK.resize(size_t(quarter) * quarter);
+    m_k.resize(m_n);
+    m_cosRe.assign(count, 0.0f);
+    m_sinRe.assign(count, 0.0f);
+    m_cosIm.assign(count, 0.0f);
+    m_sinIm.assign(count, 0.0f);
+    for (int r = 0; r < m_n; ++r) m_k[r] = float(waveNumber(signedIndex(r, m_n)));
+    for (int m = 0; m < quarter; ++m) {
+        for (int n = 0; n < quarter; ++n) {
+            const double kx = waveNumber(n), kz = waveNumber(m);
+            const double k = std::sqrt(kx * kx + kz * kz);
+            m_omega[size_t(m) * quarter + n] = std::sqrt(m_gravity * k);
+            m_invK[size_t(m) * quarter + n] = k > 0.0 ? float(1.0 / k) : 0.0f;
+        }
+    }
+}
+
+CascadeSpectrum::CascadeSpectrum(const OceanDef& def, int cascade)
+    : CascadeSpectrum(def.resolution, cascadePatchSize(def, cascade), def.gravity) {
+    const SpectrumParams params = spectrumParams(def);
+    const WaveBand band = cascadeBand(def, cascade);
+    const double dk = TWO_PI / m_patchSize;
+    const int half = m_n / 2;
+    for (int m = -half + 1; m < half; ++m) {
+        for (int n = -half + 1; n < half; ++n) {
+            const double kx = waveNumber(n);
+            const double kz = waveNumber(m);
+            const double k = std::sqrt(kx * kx + kz * kz);
+            if (k < band.kMin || k >= band.kMax) continue;
+            const double ph = modeVariance(kx, kz, dk, params);
+            if (ph <= 0.0) continue;
+            const std::complex<double> xi = modeNoise(def.seed, cascade, n, m);
+            m_h0[index(n, m)] = std::complex<float>(xi * std::sqrt(ph / 2.0));
+        }
+    }
+    for (size_t idx = 0; idx < m_h0.size(); ++idx) refreshMode(idx);
+}
+
+double CascadeSpectrum::waveNumber(int n) const { return TWO_PI * n / m_patchSize; }
+
+size_t CascadeSpectrum::index(int n, int m) const {
+    assert(n >= -m_n / 2 && n < m_n / 2 && m >= -m_n / 2 && m < m_n / 2);
+    const int col = n < 0 ? n + m_n : n;
+    const int row = m < 0 ? m + m_n : m;
+    return size_t(row) * m_n + col;
+}
+
+std::complex<float> CascadeSpectrum::h0(int n, int m) const { return m_h0[index(n, m)]; }
+
+void CascadeSpectrum::setH0(int n, int m, std::complex<float> value) {
+    assert(n > -m_n / 2 && m > -m_n / 2);
+    m_h0[index(n, m)] = value;
+    refreshMode(index(n, m));
+    refreshMode(index(-n, -m));
+}
+
+void CascadeSpectrum::clear() {
+    std::fill(m_h0.begin(), m_h0.end(), std::complex<float>(0.0f, 0.0f));
+    for (size_t idx = 0; idx < m_h0.size(); ++idx) refreshMode(idx);
+}
+
+double CascadeSpectrum::omega(int n, int m) const {
+    assert(n >= -m_n / 2 && n < m_n / 2 && m >= -m_n / 2 && m < m_n / 2);
+    return m_omega[size_t(std::abs(m)) * (m_n / 2 + 1) + size_t(std::abs(n))];
+}
+
+std::complex<double> CascadeSpectrum::hTilde(int n, int m, double t) const {
+    const std::complex<double> a(m_h0[index(n, m)]);
+    const int nm = n == -m_n / 2 ? n : -n;  // −(−N/2) aliases to −N/2 (always 0 there)
+    const int mm = m == -m_n / 2 ? m : -m;
+    const std::complex<double> b(m_h0[index(nm, mm)]);
+    const double w = omega(n, m);
+    return a * std::polar(1.0, w * t) + std::conj(b) * std::polar(1.0, -w * t);
+}
+
+void CascadeSpectrum::refreshMode(size_t idx) {
+    const int row = int(idx / m_n);
+    const int col = int(idx % m_n);
+    const size_t mirror = size_t((m_n - row) % m_n) * m_n + size_t((m_n - col) % m_n);
+    const float a = m_h0[idx].real(), b = m_h0[idx].imag();
+    const float p = m_h0[mirror].real(), q = -m_h0[mirror].imag();  // conj(h̃0(−K))
+    m_cosRe[idx] = a + p;
+    m_sinRe[idx] = q - b;
+    m_cosIm[idx] = b + q;
+    m_sinIm[idx] = a - p;
+}
+
+int CascadeSpectrum::rowPairCount() const { return m_n / 2 + 1; }
+
+void CascadeSpectrum::synthesize(double t, int pairBegin, int pairEnd, const PackedSpectra& out) const {
+    assert(pairBegin >= 0 && pairEnd <= rowPairCount() && pairBegin <= pairEnd);
+    const int quarter = m_n / 2 + 1;
+    // sin ωt, cos ωt, 1/k along a whole row, filled from the quarter by |n| (scratch).
+    std::vector<float> rowSin(m_n), rowCos(m_n), rowInvK(m_n);
+    for (int m = pairBegin; m < pairEnd; ++m) {
+        const size_t q = size_t(m) * quarter;
+        phaseRow(m_omega.data() + q, rowSin.data(), rowCos.data(), t, quarter);
+        std::copy_n(m_invK.data() + q, quarter, rowInvK.data());
+        for (int c = quarter; c < m_n; ++c) {
+            rowSin[c] = rowSin[m_n - c];
+            rowCos[c] = rowCos[m_n - c];
+            rowInvK[c] = rowInvK[m_n - c];
+        }
+        // Rows m and −m (FFT-order rows m and N − m; rows 0 and N/2 stand alone).
+        const int rows[2] = {m, (m_n - m) % m_n};
+        for (int k = 0; k < (rows[1] == rows[0] ? 1 : 2); ++k) {
+            const int row = rows[k];
+            const size_t off = size_t(row) * m_n;
+            synthRow(rowSin.data(), rowCos.data(), m_k.data(), rowInvK.data(), m_cosRe.data() + off,
+                     m_sinRe.data() + off, m_cosIm.data() + off, m_sinIm.data() + off,
+                     out.heightDxz + 2 * off, out.dispXZ + 2 * off, out.slopeXZ + 2 * off,
+                     out.dxxDzz + 2 * off, m_k[row], m_n);
+        }
+    }
+}
+
+} // namespace ob::ocean

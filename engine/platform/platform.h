@@ -1,0 +1,69 @@
+// Platform: a GL 4.5 core context and its events, behind one interface with two
+// implementations: a GLFW window and an OSMesa (llvmpipe) headless context.
+#pragma once
+#include "core/schema.h"
+
+#include <array>
+#include <glm/vec2.hpp>
+#include <memory>
+#include <string>
+
+namespace ob::platform {
+
+/// Window and context settings, section [window].
+struct WindowDef {
+    int width = 1280;       ///< framebuffer width (px), [16, 8192]
+    int height = 720;       ///< framebuffer height (px), [16, 8192]
+    bool vsync = true;      ///< wait for the display's refresh (window only)
+};
+
+template <class V> void describe(V& v, WindowDef& d) {
+    v.field("width", d.width, range(16, 8192), "framebuffer width (px)");
+    v.field("height", d.height, range(16, 8192), "framebuffer height (px)");
+    v.field("vsync", d.vsync, "wait for the display's refresh (window only)");
+}
+
+/// Keys the game reads.
+enum class Key : uint8_t { W, A, S, D, Q, E, Space, Shift, Escape, Up, Down, Left, Right, F1, Count };
+
+/// One frame of input, filled by Platform::pollInput.
+struct InputState {
+    std::array<bool, size_t(Key::Count)> down{};     ///< keys held now
+    std::array<bool, size_t(Key::Count)> pressed{};  ///< keys that went down this frame
+    glm::vec2 mouse{0.0f};       ///< cursor (px from the top left)
+    glm::vec2 mouseDelta{0.0f};  ///< cursor motion this frame (px)
+    bool mouseLeft = false, mouseRight = false;
+    bool mouseLeftPressed = false;
+    float scroll = 0.0f;         ///< wheel steps this frame
+    bool quit = false;           ///< the window was closed or Escape pressed
+    bool uiCapturesMouse = false, uiCapturesKeyboard = false;
+    bool isDown(Key k) const { return down[size_t(k)]; }
+    bool wasPressed(Key k) const { return pressed[size_t(k)]; }
+};
+
+/// A GL 4.5 core context with a default framebuffer of framebufferSize().
+class Platform {
+public:
+    virtual ~Platform() = default;
+    /// "glfw" or "osmesa".
+    virtual const char* name() const = 0;
+    virtual bool headless() const = 0;
+    virtual glm::ivec2 framebufferSize() const = 0;
+    /// Gathers this frame's events into `input` (headless: nothing happens).
+    virtual void pollInput(InputState& input) = 0;
+    /// Shows the finished frame (window) or completes it (headless).
+    virtual void present() = 0;
+    /// The GLFWwindow* for the UI backend (null when headless).
+    virtual void* nativeWindow() { return nullptr; }
+};
+
+/// True when a window can be opened (an X11 or Wayland display is named).
+bool displayAvailable();
+
+/// Opens a window with a GL 4.5 core context. Throws ob::RuntimeError when it cannot.
+std::unique_ptr<Platform> createWindowPlatform(const WindowDef& def, const std::string& title);
+
+/// Creates an OSMesa GL 4.5 core context rendering into memory. Throws ob::RuntimeError.
+std::unique_ptr<Platform> createHeadlessPlatform(glm::ivec2 size);
+
+} // namespace ob::platform

@@ -1,0 +1,119 @@
+// The run loop: platform, sandbox, clock, progress line, screenshot and stats.
+#include "app.h"
+
+#include "core/clock.h"
+#include "core/error.h"
+#include "core/log.h"
+#include "gfx/gl.h"
+#include "gfx/renderer.h"
+#include "sandbox.h"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <unistd.h>
+
+namespace ob::game {
+
+void checkWritable(const std::string& path, const char* what) {
+    std::filesystem::path p(path);
+    std::filesystem::path dir = p.parent_path().empty() ? "." : p.parent_path();
+    if (std::filesystem::is_directory(p))
+        throw InputError(std::string("cannot write ") + what + " '" + path + "': it is a folder");
+    if (!std::filesystem::is_directory(dir))
+        throw InputError(std::string("cannot write ") + what + " '" + path + "': folder '" + dir.string() + "' does not exist");
+    if (access(dir.c_str(), W_OK) != 0)
+        throw InputError(std::string("cannot write ") + what + " '" + path + "': folder '" + dir.string() + "' is not writable");
+}
+
+static nlohmann::json phaseStats(const std::vector<double>& samples) {
+    return {{"mean_ms", ecs::mean(samples)}, {"median_ms", ecs::median(samples)}};
+}
+
+static void writeStats(const std::string& path, Sandbox& sandbox, const std::string& scenePath,
+                       const platform::Platform& platform) {
+    const ecs::FrameTimer& timer = sandbox.schedule().timer();
+    nlohmann::json j;
+    j["scene"] = scenePath;
+    j["platform"] = platform.name();
+    j["renderer"] = gfx::glRendererName();
+    j["frames"] = sandbox.schedule().frames();
+    j["steps"] = sandbox.schedule().steps();
+    j["simulated_seconds"] = sandbox.schedule().simTime();
+    j["frame"] = phaseStats(timer.frameSamples());
+    for (int p = 0; p < ecs::PHASE_COUNT; ++p) {
+        auto phase = ecs::Phase(p);
+        j["phases"][ecs::phaseName(phase)] = phaseStats(timer.cpuSamples(phase));
+        if (!timer.gpuSamples(phase).empty()) j["gpu_phases"][ecs::phaseName(phase)] = phaseStats(timer.gpuSamples(phase));
+    }
+    j["entities"] = {{"total", sandbox.world().entityCount()}, {"cameras", sandbox.world().pool<CameraRig>().size()}};
+    char hash[32];
+    std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(sandbox.stateHash()));
+    j["state_hash"] = hash;
+
+    std::string tmp = path + ".tmp";
+    {
+        std::ofstream out(tmp);
+        out << j.dump(2) << "\n";
+        if (!out) {
+            std::remove(tmp.c_str());
+            throw InputError("cannot write stats '" + path + "'");
+        }
+    }
+    if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+        std::remove(tmp.c_str());
+        throw InputError("cannot write stats '" + path + "': " + std::strerror(errno));
+    }
+}
+
+int runScene(const SceneDef& scene, const std::string& scenePath, const RunOptions& options) {
+    if (!options.screenshot.empty()) checkWritable(options.screenshot, "screenshot");
+    if (!options.stats.empty()) checkWritable(options.stats, "stats");
+
+    glm::ivec2 size = options.size.x > 0 ? options.size : glm::ivec2(scene.window.width, scene.window.height);
+    std::unique_ptr<platform::Platform> platform;
+    if (options.window && platform::displayAvailable()) {
+        platform::WindowDef window = scene.window;
+        window.width = size.x;
+        window.height = size.y;
+        platform = platform::createWindowPlatform(window, "oceanbox — " + scenePath);
+    } else {
+        if (options.window) logInfo("%s", options.fallbackNote.c_str());
+        platform = platform::createHeadlessPlatform(size);
+    }
+    logInfo("%s: %s", platform->name(), gfx::glRendererName());
+
+    Sandbox sandbox(scene);
+    sandbox.attachPlatform(*platform, !platform->headless());
+    std::unique_ptr<Clock> clock;
+    if (options.realTime) clock = std::make_unique<SteadyClock>();
+    else clock = std::make_unique<FixedStepClock>(1.0 / scene.sim.step_hz);
+
+    const bool progress = options.frames > 0 && platform->headless() && isatty(STDERR_FILENO);
+    for (long f = 0; options.frames < 0 || f < options.frames; ++f) {
+        sandbox.frame(clock->now());
+        if (sandbox.quitRequested()) break;
+        // Read back before present: the window's back buffer is undefined after a swap.
+        bool last = options.frames > 0 && f + 1 == options.frames;
+        if (last && !options.screenshot.empty()) gfx::writeScreenshot(options.screenshot, platform->framebufferSize());
+        platform->present();
+        if (progress && (f % 10 == 0 || last))
+            std::fprintf(stderr, "\roceanbox: frame %ld/%ld (%3.0f%%)%s", f + 1, options.frames,
+                         100.0 * double(f + 1) / double(options.frames), last ? "\n" : "");
+    }
+    if (options.frames < 0 && !options.screenshot.empty())
+        logWarn("--screenshot needs --frames N; no screenshot written");
+
+    if (!options.stats.empty()) writeStats(options.stats, sandbox, scenePath, *platform);
+    if (!options.screenshot.empty() && options.frames > 0) logInfo("screenshot written to %s", options.screenshot.c_str());
+    if (gfx::glErrorCount() > 0) {
+        logWarn("%d GL error(s) were reported during the run", gfx::glErrorCount());
+        return EXIT_FAILURE_RUNTIME;
+    }
+    return EXIT_OK;
+}
+
+} // namespace ob::game

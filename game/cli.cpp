@@ -1,0 +1,157 @@
+// CLI11 wiring: every subcommand, its flags, and the mapping of errors to exit codes.
+#include "cli.h"
+
+#include "app.h"
+#include "core/error.h"
+#include "core/log.h"
+#include "scene.h"
+
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <functional>
+#include <regex>
+
+namespace ob::game {
+
+namespace {
+
+// Flags shared by the scene subcommands.
+struct SceneFlags {
+    std::string scene;
+    std::vector<std::string> sets;
+    bool headless = false;
+    std::string size;
+    long frames = 0;
+    long long seed = -1;
+    std::string screenshot;
+    std::string stats;
+
+    void addTo(CLI::App* cmd, long defaultFrames) {
+        frames = defaultFrames;
+        cmd->add_option("--set", sets, "override a scene key: key.path=value (TOML value; repeatable)");
+        cmd->add_flag("--headless", headless, "render off-screen with OSMesa (no window)");
+        cmd->add_option("--size", size, "framebuffer size WxH in pixels (default: the scene's [window])");
+        cmd->add_option("--frames", frames, "frames to run")->check(CLI::Range(1L, 100000000L));
+        cmd->add_option("--seed", seed, "scene seed (same as --set sim.seed=N)")->check(CLI::NonNegativeNumber);
+        cmd->add_option("--screenshot", screenshot, "write the last frame to this PNG");
+        cmd->add_option("--stats", stats, "write a JSON summary (frames, per-phase ms, entities, state hash)");
+    }
+
+    SceneDef load() const {
+        std::vector<std::string> overrides = sets;
+        if (seed >= 0) overrides.push_back("sim.seed=" + std::to_string(seed));
+        return loadScene(scene, overrides);
+    }
+
+    RunOptions options() const {
+        RunOptions o;
+        o.window = !headless;
+        o.frames = frames;
+        o.screenshot = screenshot;
+        o.stats = stats;
+        if (!size.empty()) {
+            std::smatch m;
+            static const std::regex WXH(R"((\d{1,5})x(\d{1,5}))");
+            if (!std::regex_match(size, m, WXH) || std::stoi(m[1]) < 16 || std::stoi(m[2]) < 16 ||
+                std::stoi(m[1]) > 8192 || std::stoi(m[2]) > 8192)
+                throw InputError("--size '" + size + "': expected WxH with 16 <= W, H <= 8192, e.g. 1280x720");
+            o.size = {std::stoi(m[1]), std::stoi(m[2])};
+        }
+        return o;
+    }
+};
+
+int notBuiltYet(const char* what) {
+    std::fprintf(stderr, "oceanbox: %s: not built yet\n", what);
+    return EXIT_FAILURE_RUNTIME;
+}
+
+} // namespace
+
+int runCli(int argc, char** argv) {
+    CLI::App app{"oceanbox: an interactive water sandbox (Tessendorf FFT ocean, Gerstner waves, "
+                 "interactive ripples, buoyant bodies)",
+                 "oceanbox"};
+    app.require_subcommand(1);
+    app.fallthrough(false);
+    std::function<int()> action;
+
+    // play [SCENE]
+    SceneFlags play;
+    play.scene = defaultScenePath();
+    CLI::App* playCmd = app.add_subcommand("play", "open a scene in a window (headless with a screenshot where there is no display)");
+    playCmd->add_option("scene", play.scene, "scene file (default: config/scenes/default.toml)");
+    play.addTo(playCmd, 0);
+    playCmd->callback([&] {
+        action = [&] {
+            SceneDef scene = play.load();
+            RunOptions o = play.options();
+            o.realTime = true;
+            if (o.frames == 0) o.frames = -1;
+            if (!platform::displayAvailable() || play.headless) {
+                // No window to look at: run a fixed number of frames and keep a picture.
+                o.window = false;
+                o.realTime = false;
+                if (o.frames < 0) o.frames = 600;
+                if (o.screenshot.empty()) o.screenshot = "oceanbox.png";
+            }
+            o.fallbackNote = "no display found: running headless for " + std::to_string(o.frames) +
+                             " frames, screenshot " + o.screenshot;
+            if (!play.headless && !platform::displayAvailable()) logInfo("%s", o.fallbackNote.c_str());
+            o.fallbackNote.clear();
+            return runScene(scene, play.scene, o);
+        };
+    });
+
+    // run SCENE
+    SceneFlags run;
+    CLI::App* runCmd = app.add_subcommand("run", "run a scene for a number of frames at exactly one simulation step per frame");
+    runCmd->add_option("scene", run.scene, "scene file")->required();
+    run.addTo(runCmd, 600);
+    runCmd->callback([&] {
+        action = [&] {
+            SceneDef scene = run.load();
+            RunOptions o = run.options();
+            o.fallbackNote = "no display found: running headless";
+            return runScene(scene, run.scene, o);
+        };
+    });
+
+    // bench KIND, dump LAYER
+    std::string benchKind, dumpLayer;
+    CLI::App* benchCmd = app.add_subcommand("bench", "benchmarks that reproduce the papers' tables (spheres, fields, ocean, frame)");
+    benchCmd->add_option("kind", benchKind, "spheres | fields | ocean | frame")->required();
+    benchCmd->allow_extras();
+    benchCmd->callback([&] { action = [] { return notBuiltYet("bench"); }; });
+    CLI::App* dumpCmd = app.add_subcommand("dump", "write a layer of the water as a NumPy .npy field");
+    dumpCmd->add_option("layer", dumpLayer, "ocean | gerstner | surface")->required();
+    dumpCmd->allow_extras();
+    dumpCmd->callback([&] { action = [] { return notBuiltYet("dump"); }; });
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        std::string what = e.what();
+        std::fprintf(stderr, "oceanbox: %s\nRun 'oceanbox --help' (or 'oceanbox SUBCOMMAND --help') for usage.\n", what.c_str());
+        return EXIT_BAD_INPUT;
+    }
+
+    try {
+        return action ? action() : EXIT_BAD_INPUT;
+    } catch (const InputError& e) {
+        std::fprintf(stderr, "oceanbox: error: %s\n", e.what());
+        return EXIT_BAD_INPUT;
+    } catch (const RuntimeError& e) {
+        std::fprintf(stderr, "oceanbox: failed: %s\n", e.what());
+        return EXIT_FAILURE_RUNTIME;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "oceanbox: failed: %s\n", e.what());
+        return EXIT_FAILURE_RUNTIME;
+    }
+}
+
+} // namespace ob::game

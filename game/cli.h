@@ -1,0 +1,9 @@
+// The command line: play, run, bench, dump, ripple (SPEC §4).
+#pragma once
+
+namespace ob::game {
+
+/// Parses argv and runs the subcommand; returns the exit code (0 ok, 1 failure, 2 bad input).
+int runCli(int argc, char** argv);
+
+} // namespace ob::game

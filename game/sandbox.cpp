@@ -1,0 +1,88 @@
+// The sandbox's phase table and the systems that connect the platform and renderer.
+#include "sandbox.h"
+
+#include "camera.h"
+#include "core/hash.h"
+#include "ecs/components.h"
+#include "gfx/renderer.h"
+#include "gfx/ui_overlay.h"
+#include "ui_panels.h"
+
+namespace ob::game {
+
+namespace {
+
+// Input phase: the platform's events into the InputState resource.
+void inputSystem(ecs::World& world, const ecs::Tick&) {
+    auto* res = world.resource<FrameResources>();
+    auto* input = world.resource<platform::InputState>();
+    if (!res || !res->platform || !input) return;
+    res->platform->pollInput(*input);
+    if (res->ui) res->ui->captureFlags(input->uiCapturesMouse, input->uiCapturesKeyboard);
+}
+
+// Render phase: the passes, then the UI, then present.
+void renderSystem(ecs::World& world, const ecs::Tick& tick) {
+    auto* res = world.resource<FrameResources>();
+    if (!res || !res->renderer) return;
+    glm::ivec2 size = res->platform->framebufferSize();
+    if (size.x <= 0 || size.y <= 0) return;  // minimised
+    res->renderer->def() = res->scene->render;
+    res->renderer->render(cameraView(world, size), tick.time, size);
+    double gpuMs = res->renderer->takeGpuMs();
+    if (gpuMs >= 0) res->timer->setGpu(ecs::Phase::Render, gpuMs);
+    if (res->ui) {
+        res->ui->begin();
+        drawPanels(*res->scene, *res->timer);
+        res->ui->end();
+    }
+}
+
+// The frame's phase table: every system, in execution order within its phase.
+struct SystemEntry {
+    ecs::Phase phase;
+    const char* name;
+    ecs::SystemFn fn;
+};
+const SystemEntry SYSTEMS[] = {
+    {ecs::Phase::Input, "input", inputSystem},
+    {ecs::Phase::Script, "camera", cameraSystem},
+    {ecs::Phase::Render, "render", renderSystem},
+};
+
+} // namespace
+
+Sandbox::Sandbox(const SceneDef& scene) : m_scene(scene), m_schedule(scene.sim) {
+    for (const SystemEntry& s : SYSTEMS) m_schedule.add(s.phase, s.name, s.fn);
+    m_world.setResource(std::make_unique<platform::InputState>());
+    spawnCamera(m_world, m_scene.camera);
+}
+
+Sandbox::~Sandbox() = default;
+
+void Sandbox::attachPlatform(platform::Platform& platform, bool withUi) {
+    m_renderer = std::make_unique<gfx::Renderer>(m_scene.render);
+    if (withUi && platform.nativeWindow()) m_ui = std::make_unique<gfx::UiOverlay>(platform.nativeWindow());
+    m_world.setResource(std::make_unique<FrameResources>(
+        FrameResources{&platform, m_renderer.get(), m_ui.get(), &m_schedule.timer(), &m_scene}));
+}
+
+bool Sandbox::quitRequested() {
+    auto* input = m_world.resource<platform::InputState>();
+    return input && input->quit;
+}
+
+uint64_t Sandbox::stateHash() {
+    StateHasher h;
+    h.u64(m_schedule.steps());
+    auto& transforms = m_world.pool<ecs::Transform>();
+    for (size_t i = 0; i < transforms.size(); ++i) {
+        const ecs::Transform& t = transforms.components()[i];
+        h.u64(uint32_t(transforms.entities()[i]));
+        h.f32s(&t.position.x, 3);
+        h.f32s(&t.rotation.x, 4);
+    }
+    return h.value();
+}
+
+} // namespace ob::game

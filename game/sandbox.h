@@ -1,0 +1,54 @@
+// The sandbox: one scene's world, its phase table and, when attached, the platform,
+// renderer and UI that draw it.
+#pragma once
+#include "ecs/schedule.h"
+#include "ecs/world.h"
+#include "scene.h"
+
+#include <cstdint>
+#include <memory>
+
+namespace ob::gfx {
+class Renderer;
+class UiOverlay;
+}
+
+namespace ob::game {
+
+/// What the input and render systems reach through the world (absent: pure simulation).
+struct FrameResources {
+    platform::Platform* platform = nullptr;
+    gfx::Renderer* renderer = nullptr;
+    gfx::UiOverlay* ui = nullptr;          ///< window mode only
+    ecs::FrameTimer* timer = nullptr;
+    SceneDef* scene = nullptr;             ///< live-edited by the UI
+};
+
+class Sandbox {
+public:
+    /// Builds the world from the scene (entities, resources) and the phase table.
+    explicit Sandbox(const SceneDef& scene);
+    ~Sandbox();
+    /// Adds rendering (and the UI overlay when `withUi`) on the current GL context.
+    void attachPlatform(platform::Platform& platform, bool withUi);
+    /// One frame at clock time `now` (s): input, the steps due, render.
+    void frame(double now) { m_schedule.runFrame(m_world, now); }
+    /// One simulation step without input or render.
+    void step() { m_schedule.runStep(m_world); }
+    /// Hash of the simulation state (bit-exact: equal hashes mean equal states).
+    uint64_t stateHash();
+    bool quitRequested();
+
+    ecs::World& world() { return m_world; }
+    ecs::Schedule& schedule() { return m_schedule; }
+    const SceneDef& scene() const { return m_scene; }
+
+private:
+    SceneDef m_scene;
+    ecs::World m_world;
+    ecs::Schedule m_schedule;
+    std::unique_ptr<gfx::Renderer> m_renderer;
+    std::unique_ptr<gfx::UiOverlay> m_ui;
+};
+
+} // namespace ob::game

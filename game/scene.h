@@ -1,0 +1,39 @@
+// A scene: every Def of the sandbox, read from a TOML file in config/scenes/.
+#pragma once
+#include "camera.h"
+#include "ecs/schedule.h"
+#include "gfx/render_def.h"
+#include "platform/platform.h"
+
+#include <string>
+#include <vector>
+
+namespace ob::game {
+
+/// Everything a scene file can say; every section and key is optional.
+struct SceneDef {
+    ecs::SimDef sim;              ///< [sim]
+    platform::WindowDef window;   ///< [window]
+    CameraDef camera;             ///< [camera]
+    gfx::RenderDef render;        ///< [render]
+};
+
+template <class V> void describe(V& v, SceneDef& s) {
+    v.section("sim", s.sim);
+    v.section("window", s.window);
+    v.section("camera", s.camera);
+    v.section("render", s.render);
+}
+
+/// Loads a scene file and applies `--set key.path=value` overrides (in order).
+/// Throws ob::InputError listing every problem (file:line:column: key: message).
+SceneDef loadScene(const std::string& path, const std::vector<std::string>& overrides = {});
+
+/// As loadScene, from text (`sourceName` names it in messages).
+SceneDef parseScene(const std::string& text, const std::string& sourceName, const std::vector<std::string>& overrides = {});
+
+/// The scene `play` opens with no argument: config/scenes/default.toml (from the current
+/// folder if it has one, else from the source tree).
+std::string defaultScenePath();
+
+} // namespace ob::game

@@ -1,0 +1,22 @@
+// Shared test helpers: run the oceanbox executable, temporary files.
+#pragma once
+#include <string>
+
+namespace ob::test {
+
+struct ProcessResult {
+    int exitCode = -1;   ///< process exit status (-1 if it did not exit normally)
+    std::string output;  ///< stdout and stderr together
+};
+
+/// Runs build/bin/oceanbox with the given argument string (shell-quoted by the caller),
+/// from the repository root.
+ProcessResult runOceanbox(const std::string& args);
+
+/// A fresh path under the system temp folder (the file does not exist yet).
+std::string tempPath(const std::string& name);
+
+/// Writes text to a file (overwriting); returns the path.
+std::string writeFile(const std::string& path, const std::string& text);
+
+} // namespace ob::test

@@ -1,0 +1,158 @@
+// Scene files: defaults, overrides, and one clear message (file:line:column: key) for
+// every class of bad input, all errors of a file at once.
+#include "core/error.h"
+#include "core/toml_reader.h"
+#include "scene.h"
+#include "support/test_support.h"
+
+#include <catch2/catch.hpp>
+
+using namespace ob;
+using game::SceneDef;
+
+namespace {
+
+// Parses text as a scene and returns the InputError message ("" if it loaded).
+std::string sceneError(const std::string& text, const std::vector<std::string>& sets = {}) {
+    try {
+        game::parseScene(text, "bad.toml", sets);
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+// A Def with every field kind, for the reader's checks that no scene key exercises yet.
+struct ProbeDef {
+    int resolution = 64;
+    float damping = 0.5f;
+    glm::vec2 wind{1.0f, 0.0f};
+    bool on = false;
+};
+template <class V> void describe(V& v, ProbeDef& d) {
+    v.field("resolution", d.resolution, powerOfTwo(16, 2048), "cells");
+    v.field("damping", d.damping, range(0, 1), "DF");
+    v.field("wind", d.wind, direction(), "direction");
+    v.field("on", d.on, "switch");
+}
+struct ProbeScene {
+    ProbeDef probe;
+};
+template <class V> void describe(V& v, ProbeScene& s) { v.section("probe", s.probe); }
+
+std::vector<std::string> probeErrors(const std::string& text, ProbeScene& out) {
+    std::vector<std::string> errors;
+    TomlDocument doc = TomlDocument::fromString(text, "probe.toml", errors);
+    TomlReader reader(doc, errors);
+    describe(reader, out);
+    reader.finish();
+    return errors;
+}
+
+} // namespace
+
+TEST_CASE("every shipped scene in config/scenes parses", "[config]") {
+    REQUIRE_NOTHROW(game::loadScene(std::string(OCEANBOX_SOURCE_DIR) + "/config/scenes/default.toml"));
+}
+
+TEST_CASE("an empty or three-line scene is valid and defaults fill the rest", "[config]") {
+    SceneDef defaults;
+    SceneDef s = game::parseScene("[camera]\nfov_deg = 45\nmode = \"fixed\"\n", "short.toml");
+    CHECK(s.camera.fov_deg == 45.0f);
+    CHECK(s.camera.mode == "fixed");
+    CHECK(s.window.width == defaults.window.width);
+    CHECK(s.sim.step_hz == defaults.sim.step_hz);
+    CHECK(game::parseScene("", "empty.toml").render.fresnel == "schlick");
+}
+
+TEST_CASE("--set overrides any key with TOML values; a bare word is a string", "[config]") {
+    SceneDef s = game::parseScene("[render]\nfresnel = \"schlick\"\n", "x.toml",
+                                  {"render.fresnel=exact", "camera.position=[1, 2, 3]", "sim.step_hz=120", "window.vsync=false",
+                                   "render.exposure=2"});
+    CHECK(s.render.fresnel == "exact");
+    CHECK(s.camera.position == glm::vec3(1, 2, 3));
+    CHECK(s.sim.step_hz == 120.0f);
+    CHECK_FALSE(s.window.vsync);
+    CHECK(s.render.exposure == 2.0f);
+    CHECK(game::parseScene("", "x.toml", {"render.fresnel=\"exact\""}).render.fresnel == "exact");
+}
+
+TEST_CASE("an unknown key names file, line, column and key path", "[config]") {
+    std::string e = sceneError("[render]\nfresnel = \"exact\"\nfresnell = 1\n");
+    CHECK(e == "bad.toml:3:1: render.fresnell: unknown key");
+}
+
+TEST_CASE("an unknown section is an error", "[config]") {
+    CHECK(sceneError("[oceans]\nx = 1\n") == "bad.toml:1:2: oceans: unknown section");
+}
+
+TEST_CASE("a wrong type names the expected type", "[config]") {
+    std::string e = sceneError("[window]\nwidth = \"wide\"\n");
+    CHECK(e == "bad.toml:2:9: window.width: expected an integer, got a string");
+    CHECK(sceneError("[camera]\nposition = [1, 2]\n") == "bad.toml:2:12: camera.position: expected an array of 3 numbers");
+    CHECK(sceneError("render = 3\n") == "bad.toml:1:10: render: expected a section (table), got an integer");
+}
+
+TEST_CASE("an out-of-range value gives the range and the value", "[config]") {
+    CHECK(sceneError("[camera]\nfov_deg = 170\n") == "bad.toml:2:11: camera.fov_deg: must be in [10, 120], got 170");
+    CHECK(sceneError("[render]\nfresnel = \"fast\"\n") ==
+          "bad.toml:2:11: render.fresnel: must be one of \"schlick\", \"exact\", got \"fast\"");
+    CHECK(sceneError("[render]\nsun_direction = [0, 0, 0]\n") ==
+          "bad.toml:2:17: render.sun_direction: must not be the zero vector (it is a direction)");
+}
+
+TEST_CASE("all errors of a file are reported, not only the first", "[config]") {
+    std::string e = sceneError("[window]\nwidth = 1\nheight = \"x\"\n[camera]\nbogus = 2\n");
+    CHECK(e.find("bad.toml:2:9: window.width: must be in [16, 8192], got 1") != std::string::npos);
+    CHECK(e.find("bad.toml:3:10: window.height: expected an integer") != std::string::npos);
+    CHECK(e.find("bad.toml:5:1: camera.bogus: unknown key") != std::string::npos);
+}
+
+TEST_CASE("a TOML syntax error names file, line and column", "[config]") {
+    std::string e = sceneError("[window]\nwidth = = 3\n");
+    CHECK(e.rfind("bad.toml:2:", 0) == 0);
+    CHECK(e.find("TOML syntax error") != std::string::npos);
+}
+
+TEST_CASE("a missing scene file is one clear error", "[config]") {
+    try {
+        game::loadScene("/nonexistent/scene.toml");
+        FAIL("no error");
+    } catch (const InputError& e) {
+        CHECK(std::string(e.what()) == "/nonexistent/scene.toml: cannot open scene file");
+    }
+}
+
+TEST_CASE("--set values are validated like file values and name the override", "[config]") {
+    CHECK(sceneError("", {"camera.fov_deg=500"}) == "--set camera.fov_deg=500: camera.fov_deg: must be in [10, 120], got 500");
+    CHECK(sceneError("", {"camera.nope=1"}) == "--set camera.nope=1: camera.nope: unknown key");
+    CHECK(sceneError("", {"novalue"}) == "--set novalue: expected key.path=value");
+    CHECK(sceneError("[render]\nfresnel = \"exact\"\n", {"render.fresnel.x=1"}) ==
+          "--set render.fresnel.x=1: 'fresnel' is not a section");
+    CHECK(sceneError("", {"render.fresnel.x=1"}) == "--set render.fresnel.x=1: render.fresnel: expected a string, got a table");
+    CHECK(sceneError("", {"a b=1"}) == "--set a b=1: expected key.path=value");
+}
+
+TEST_CASE("integer keys can require a power of two in a range", "[config]") {
+    ProbeScene s;
+    CHECK(probeErrors("[probe]\nresolution = 256\n", s).empty());
+    CHECK(s.probe.resolution == 256);
+    auto errors = probeErrors("[probe]\nresolution = 100\n", s);
+    REQUIRE(errors.size() == 1);
+    CHECK(errors[0] == "probe.toml:2:14: probe.resolution: must be a power of two in [16, 2048], got 100");
+    errors = probeErrors("[probe]\nresolution = 4096\n", s);
+    REQUIRE(errors.size() == 1);
+    CHECK(errors[0] == "probe.toml:2:14: probe.resolution: must be a power of two in [16, 2048], got 4096");
+}
+
+TEST_CASE("float keys accept integers, reject non-numbers, check [min, max]", "[config]") {
+    ProbeScene s;
+    CHECK(probeErrors("[probe]\ndamping = 1\n", s).empty());
+    CHECK(s.probe.damping == 1.0f);
+    auto errors = probeErrors("[probe]\ndamping = 1.5\nwind = [0, 0]\non = 1\n", s);
+    REQUIRE(errors.size() == 3);
+    CHECK(errors[0] == "probe.toml:2:11: probe.damping: must be in [0, 1], got 1.5");
+    CHECK(errors[1] == "probe.toml:3:8: probe.wind: must not be the zero vector (it is a direction)");
+    CHECK(errors[2] == "probe.toml:4:6: probe.on: expected true or false, got an integer");
+    CHECK(s.probe.damping == 1.0f);  // a rejected value leaves the previous one
+}
