@@ -39,5 +39,6 @@ using Choices = std::initializer_list<const char*>;
 ///   void field(const char* key, glm::vec2& / glm::vec3& value, Limits, const char* doc);
 ///   void field(const char* key, std::string& value, Choices, const char* doc);
 ///   template <class Def> void section(const char* key, Def& def);
+///   template <class Item> void list(const char* key, std::vector<Item>& items, const char* doc);
 
 } // namespace ob

@@ -217,6 +217,31 @@ bool TomlReader::enterSection(const char* key) {
     return true;
 }
 
+const void* TomlReader::enterList(const char* key, int& count) {
+    State& s = *m_state;
+    const toml::node* node = s.lookup(key);
+    if (!node) return nullptr;
+    const toml::array* array = node->as_array();
+    if (!array) {
+        s.error(*node, key, std::string("expected an array of tables, got ") + typeName(*node));
+        return nullptr;
+    }
+    count = int(array->size());
+    return array;
+}
+
+bool TomlReader::enterListItem(const void* array, const char* key, int index) {
+    State& s = *m_state;
+    const toml::node* item = static_cast<const toml::array*>(array)->get(size_t(index));
+    std::string name = std::string(key) + "[" + std::to_string(index) + "]";
+    if (!item->is_table()) {
+        s.error(*item, name.c_str(), std::string("expected a table, got ") + typeName(*item));
+        return false;
+    }
+    s.stack.push_back({item->as_table(), s.top().prefix + name + ".", {}});
+    return true;
+}
+
 void TomlReader::leaveSection() {
     m_state->reportUnknown(m_state->top());
     m_state->stack.pop_back();

@@ -49,6 +49,21 @@ public:
         leaveSection();
     }
 
+    /// Reads an array of tables (`[[key]]` or `key = [{...}, ...]`) into `items`, each
+    /// element by its describe(); absent: `items` keeps its defaults.
+    template <class Item>
+    void list(const char* key, std::vector<Item>& items, const char* /*doc*/) {
+        int count = 0;
+        const void* array = enterList(key, count);
+        if (!array) return;
+        items.assign(size_t(count), Item{});
+        for (int i = 0; i < count; ++i) {
+            if (!enterListItem(array, key, i)) continue;
+            describe(*this, items[size_t(i)]);
+            leaveSection();
+        }
+    }
+
     /// Reports every key of the document that no describe() asked for.
     void finish();
 
@@ -56,6 +71,8 @@ public:
 
 private:
     bool enterSection(const char* key);
+    const void* enterList(const char* key, int& count);  // the toml::array, or null
+    bool enterListItem(const void* array, const char* key, int index);
     void leaveSection();
     std::unique_ptr<State> m_state;
 };

@@ -109,4 +109,16 @@ bool UiEditor::beginSection(const char* key) {
 
 void UiEditor::endSection() { ImGui::PopID(); }
 
+bool UiEditor::beginItem(int index) {
+    ImGui::PushID(index);
+    if (ImGui::TreeNode("item", "[%d]", index)) return true;
+    ImGui::PopID();
+    return false;
+}
+
+void UiEditor::endItem() {
+    ImGui::TreePop();
+    ImGui::PopID();
+}
+
 } // namespace ob::gfx

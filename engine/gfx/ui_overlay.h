@@ -4,6 +4,7 @@
 #include "core/schema.h"
 
 #include <string>
+#include <vector>
 
 namespace ob::gfx {
 
@@ -38,7 +39,21 @@ public:
         endSection();
     }
 
+    /// A collapsible header per list, one tree node per element.
+    template <class Item>
+    void list(const char* key, std::vector<Item>& items, const char*) {
+        if (!beginSection(key)) return;
+        for (size_t i = 0; i < items.size(); ++i) {
+            if (!beginItem(int(i))) continue;
+            describe(*this, items[i]);
+            endItem();
+        }
+        endSection();
+    }
+
 private:
+    bool beginItem(int index);
+    void endItem();
     bool beginSection(const char* key);
     void endSection();
 };

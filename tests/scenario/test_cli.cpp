@@ -11,7 +11,7 @@ using ob::test::runOceanbox;
 using ob::test::tempPath;
 using ob::test::writeFile;
 
-TEST_CASE("--help on the program and on each subcommand exits 0", "[cli]") {
+TEST_CASE("help (--help) on the program and on each subcommand exits 0", "[cli]") {
     CHECK(runOceanbox("--help").exitCode == 0);
     for (const char* cmd : {"play", "run", "bench", "dump"}) {
         auto r = runOceanbox(std::string(cmd) + " --help");

@@ -65,7 +65,7 @@ TEST_CASE("an empty or three-line scene is valid and defaults fill the rest", "[
     CHECK(game::parseScene("", "empty.toml").render.fresnel == "schlick");
 }
 
-TEST_CASE("--set overrides any key with TOML values; a bare word is a string", "[config]") {
+TEST_CASE("overrides (--set) change any key with TOML values; a bare word is a string", "[config]") {
     SceneDef s = game::parseScene("[render]\nfresnel = \"schlick\"\n", "x.toml",
                                   {"render.fresnel=exact", "camera.position=[1, 2, 3]", "sim.step_hz=120", "window.vsync=false",
                                    "render.exposure=2"});
@@ -123,7 +123,7 @@ TEST_CASE("a missing scene file is one clear error", "[config]") {
     }
 }
 
-TEST_CASE("--set values are validated like file values and name the override", "[config]") {
+TEST_CASE("override (--set) values are validated like file values and name the override", "[config]") {
     CHECK(sceneError("", {"camera.fov_deg=500"}) == "--set camera.fov_deg=500: camera.fov_deg: must be in [10, 120], got 500");
     CHECK(sceneError("", {"camera.nope=1"}) == "--set camera.nope=1: camera.nope: unknown key");
     CHECK(sceneError("", {"novalue"}) == "--set novalue: expected key.path=value");
@@ -155,4 +155,48 @@ TEST_CASE("float keys accept integers, reject non-numbers, check [min, max]", "[
     CHECK(errors[1] == "probe.toml:3:8: probe.wind: must not be the zero vector (it is a direction)");
     CHECK(errors[2] == "probe.toml:4:6: probe.on: expected true or false, got an integer");
     CHECK(s.probe.damping == 1.0f);  // a rejected value leaves the previous one
+}
+
+namespace {
+struct WaveItem {
+    float amplitude = 1.0f;
+    float kx = 0.0f;
+};
+template <class V> void describe(V& v, WaveItem& d) {
+    v.field("amplitude", d.amplitude, range(0, 10), "m");
+    v.field("kx", d.kx, any(), "rad/m");
+}
+struct ListScene {
+    std::vector<WaveItem> waves{WaveItem{}, WaveItem{}, WaveItem{}};
+};
+template <class V> void describe(V& v, ListScene& s) { v.list("waves", s.waves, "waves"); }
+
+std::vector<std::string> listErrors(const std::string& text, ListScene& out) {
+    std::vector<std::string> errors;
+    TomlDocument doc = TomlDocument::fromString(text, "list.toml", errors);
+    TomlReader reader(doc, errors);
+    describe(reader, out);
+    reader.finish();
+    return errors;
+}
+} // namespace
+
+TEST_CASE("arrays of tables read each element by its schema, with indexed key paths", "[config]") {
+    ListScene s;
+    CHECK(listErrors("", s).empty());
+    CHECK(s.waves.size() == 3);  // absent: the default list stays
+    CHECK(listErrors("[[waves]]\namplitude = 2\n[[waves]]\nkx = 0.5\n", s).empty());
+    REQUIRE(s.waves.size() == 2);
+    CHECK(s.waves[0].amplitude == 2.0f);
+    CHECK(s.waves[1].amplitude == 1.0f);  // element defaults fill missing keys
+    CHECK(s.waves[1].kx == 0.5f);
+    CHECK(listErrors("waves = [{ amplitude = 3 }]\n", s).empty());
+    CHECK(s.waves.size() == 1);
+    auto errors = listErrors("[[waves]]\namplitude = 20\n[[waves]]\nky = 1\n", s);
+    REQUIRE(errors.size() == 2);
+    CHECK(errors[0] == "list.toml:2:13: waves[0].amplitude: must be in [0, 10], got 20");
+    CHECK(errors[1] == "list.toml:4:1: waves[1].ky: unknown key");
+    errors = listErrors("waves = [1, 2]\n", s);
+    REQUIRE(errors.size() == 2);
+    CHECK(errors[0].find("waves[0]: expected a table, got an integer") != std::string::npos);
 }
