@@ -44,6 +44,8 @@ static void writeStats(const std::string& path, Sandbox& sandbox, const std::str
     j["steps"] = sandbox.schedule().steps();
     j["simulated_seconds"] = sandbox.schedule().simTime();
     j["frame"] = phaseStats(timer.frameSamples());
+    double medianFrame = ecs::median(timer.frameSamples());
+    j["fps"] = medianFrame > 0 ? 1000.0 / medianFrame : 0.0;
     for (int p = 0; p < ecs::PHASE_COUNT; ++p) {
         auto phase = ecs::Phase(p);
         j["phases"][ecs::phaseName(phase)] = phaseStats(timer.cpuSamples(phase));
@@ -104,6 +106,7 @@ int runScene(const SceneDef& scene, const std::string& scenePath, const RunOptio
             std::fprintf(stderr, "\roceanbox: frame %ld/%ld (%3.0f%%)%s", f + 1, options.frames,
                          100.0 * double(f + 1) / double(options.frames), last ? "\n" : "");
     }
+    sandbox.schedule().finish();
     if (options.frames < 0 && !options.screenshot.empty())
         logWarn("--screenshot needs --frames N; no screenshot written");
 

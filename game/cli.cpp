@@ -2,6 +2,7 @@
 #include "cli.h"
 
 #include "app.h"
+#include "cmd_dump_ocean.h"
 #include "core/error.h"
 #include "core/log.h"
 #include "scene.h"
@@ -117,16 +118,32 @@ int runCli(int argc, char** argv) {
         };
     });
 
-    // bench KIND, dump LAYER
-    std::string benchKind, dumpLayer;
+    // bench KIND
+    std::string benchKind;
     CLI::App* benchCmd = app.add_subcommand("bench", "benchmarks that reproduce the papers' tables (spheres, fields, ocean, frame)");
     benchCmd->add_option("kind", benchKind, "spheres | fields | ocean | frame")->required();
     benchCmd->allow_extras();
     benchCmd->callback([&] { action = [] { return notBuiltYet("bench"); }; });
+
+    // dump LAYER SCENE
+    std::string dumpLayer, dumpOut;
+    double dumpTime = 0.0;
+    SceneFlags dump;
     CLI::App* dumpCmd = app.add_subcommand("dump", "write a layer of the water as a NumPy .npy field");
-    dumpCmd->add_option("layer", dumpLayer, "ocean | gerstner | surface")->required();
-    dumpCmd->allow_extras();
-    dumpCmd->callback([&] { action = [] { return notBuiltYet("dump"); }; });
+    dumpCmd->add_option("layer", dumpLayer, "ocean: the first FFT cascade [N, N, 5] = (h, Dx, Dz, dh/dx, dh/dz)")
+        ->required()->check(CLI::IsMember({"ocean"}));
+    dumpCmd->add_option("scene", dump.scene, "scene file")->required();
+    dumpCmd->add_option("--time", dumpTime, "simulated time (s)")->check(CLI::Range(0.0, 1e9));
+    dumpCmd->add_option("--out", dumpOut, "output .npy file")->required();
+    dumpCmd->add_option("--set", dump.sets, "override a scene key: key.path=value (repeatable)");
+    dumpCmd->add_option("--seed", dump.seed, "scene seed (same as --set sim.seed=N)")->check(CLI::NonNegativeNumber);
+    dumpCmd->callback([&] {
+        action = [&] {
+            SceneDef scene = dump.load();
+            checkWritable(dumpOut, "output");
+            return dumpOcean(scene.ocean, dumpTime, dumpOut);
+        };
+    });
 
     try {
         app.parse(argc, argv);

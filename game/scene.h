@@ -3,6 +3,7 @@
 #include "camera.h"
 #include "ecs/schedule.h"
 #include "gfx/render_def.h"
+#include "ocean/ocean_def.h"
 #include "platform/platform.h"
 
 #include <string>
@@ -16,6 +17,7 @@ struct SceneDef {
     platform::WindowDef window;   ///< [window]
     CameraDef camera;             ///< [camera]
     gfx::RenderDef render;        ///< [render]
+    ocean::OceanDef ocean;        ///< [ocean]
 };
 
 template <class V> void describe(V& v, SceneDef& s) {
@@ -23,6 +25,7 @@ template <class V> void describe(V& v, SceneDef& s) {
     v.section("window", s.window);
     v.section("camera", s.camera);
     v.section("render", s.render);
+    v.section("ocean", s.ocean);
 }
 
 /// Loads a scene file and applies `--set key.path=value` overrides (in order).

@@ -50,7 +50,11 @@ void Schedule::runStep(World& world) {
 }
 
 void Schedule::runFrame(World& world, double now) {
-    auto frameStart = std::chrono::steady_clock::now();
+    // A frame's wall time runs from its start to the next frame's start, so it includes
+    // presenting (vsync, the software rasteriser finishing) outside the phases.
+    finish();
+    m_frameStart = std::chrono::steady_clock::now();
+    m_frameOpen = true;
     m_timer.beginFrame();
     double frameDt = m_lastNow < 0 ? stepSeconds() : now - m_lastNow;
     m_lastNow = now;
@@ -72,7 +76,12 @@ void Schedule::runFrame(World& world, double now) {
     // --- render: once per frame, at the latest simulated state
     runPhase(world, Phase::Render, Tick{simTime(), frameDt, m_step, m_accumulator / h});
     ++m_frames;
-    m_timer.endFrame(Ms(std::chrono::steady_clock::now() - frameStart).count());
+}
+
+void Schedule::finish() {
+    if (!m_frameOpen) return;
+    m_timer.endFrame(Ms(std::chrono::steady_clock::now() - m_frameStart).count());
+    m_frameOpen = false;
 }
 
 } // namespace ob::ecs

@@ -5,6 +5,7 @@
 #include "ecs/world.h"
 
 #include <array>
+#include <chrono>
 #include <cstdint>
 #include <vector>
 
@@ -78,6 +79,9 @@ public:
     void add(Phase phase, const char* name, SystemFn fn) { m_systems.push_back({phase, name, fn}); }
     /// Runs one frame at clock time `now` (s): input, the simulation steps due, render.
     void runFrame(World& world, double now);
+    /// Closes the open frame's timing (runFrame does it for the previous frame; call it
+    /// after the last frame's present).
+    void finish();
     /// Runs only the simulation phases for one step (headless simulation without a frame).
     void runStep(World& world);
     const FrameTimer& timer() const { return m_timer; }
@@ -101,6 +105,8 @@ private:
     uint64_t m_step = 0;
     uint64_t m_frames = 0;
     double m_lastNow = -1;
+    std::chrono::steady_clock::time_point m_frameStart;
+    bool m_frameOpen = false;
     double m_accumulator = 0;
 };
 
