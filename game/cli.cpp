@@ -3,6 +3,7 @@
 
 #include "app.h"
 #include "cmd_dump_ocean.h"
+#include "cmd_ripple.h"
 #include "core/error.h"
 #include "core/log.h"
 #include "scene.h"
@@ -142,6 +143,21 @@ int runCli(int argc, char** argv) {
             SceneDef scene = dump.load();
             checkWritable(dumpOut, "output");
             return dumpOcean(scene.ocean, dumpTime, dumpOut);
+        };
+    });
+
+    // ripple: the bare solver on .npy fields (no scene)
+    RippleArgs ripple;
+    CLI::App* rippleCmd = app.add_subcommand("ripple", "run the ripple convolution (seed 001 eq. 1-2, fixed boundary) on a .npy field");
+    rippleCmd->add_option("--in", ripple.in, "Vh(t): float32 .npy [N, M]")->required();
+    rippleCmd->add_option("--prev", ripple.prev, "Vh(t-1): same shape (default: --in)");
+    rippleCmd->add_option("--steps", ripple.steps, "steps K >= 0")->required();
+    rippleCmd->add_option("--damping", ripple.damping, "damping factor DF in [0, 1]")->required();
+    rippleCmd->add_option("--out", ripple.out, "Vh(t) after K steps (.npy)")->required();
+    rippleCmd->callback([&] {
+        action = [&] {
+            checkWritable(ripple.out, "output");
+            return rippleCommand(ripple);
         };
     });
 

@@ -28,7 +28,7 @@ void renderSystem(ecs::World& world, const ecs::Tick& tick) {
     glm::ivec2 size = res->platform->framebufferSize();
     if (size.x <= 0 || size.y <= 0) return;  // minimised
     res->renderer->def() = res->scene->render;
-    res->renderer->render(cameraView(world, size), tick.time, size);
+    res->renderer->render(cameraView(world, size), gfx::WaterView{}, tick.time, size);
     double gpuMs = res->renderer->takeGpuMs();
     if (gpuMs >= 0) res->timer->setGpu(ecs::Phase::Render, gpuMs);
     if (res->ui) {

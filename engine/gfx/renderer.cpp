@@ -3,9 +3,11 @@
 
 #include "core/error.h"
 #include "gfx/shader.h"
+#include "ocean/projected_grid.h"
 
 #include <cerrno>
 #include <cstdio>
+#include <algorithm>
 #include <cstring>
 #include <glm/glm.hpp>
 #include <stb_image_write.h>
@@ -14,15 +16,55 @@
 namespace ob::gfx {
 
 constexpr GLuint FRAME_UBO_BINDING = 0;
+constexpr GLuint WATER_UBO_BINDING = 1;
+// The grid reaches this far past the screen edges (NDC), so displaced waves leave no gap.
+constexpr float GRID_MARGIN = 0.15f;
+// Smallest |w| of a projected grid vertex (corners scaled to max w = 1): the horizon bound.
+constexpr float GRID_MIN_W = 2e-5f;
 
 Renderer::Renderer(const RenderDef& def)
     : m_def(def),
       m_skyProgram(loadProgram("sky", {"common_fullscreen.vert", "sky_background.frag"})),
-      m_waterProgram(loadProgram("water_flat", {"common_fullscreen.vert", "water_flat.frag"})),
+      m_waterProgram(loadProgram("water_surface", {"water_surface.vert", "water_surface.frag"})),
       m_emptyVao(createVertexArray("fullscreen triangle")),
-      m_frameUniforms(createBuffer("frame uniforms", sizeof(FrameUniforms))) {}
+      m_frameUniforms(createBuffer("frame uniforms", sizeof(FrameUniforms))),
+      m_waterUniforms(createBuffer("water uniforms", sizeof(WaterUniforms))) {
+    GLuint id;
+    glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &id);
+    glObjectLabel(GL_TEXTURE, id, -1, "flat water maps");
+    glTextureStorage3D(id, 1, GL_RGBA32F, 1, 1, 1);
+    const float flat[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+    glTextureSubImage3D(id, 0, 0, 0, 0, 1, 1, 1, GL_RGBA, GL_FLOAT, flat);
+    m_flatMaps = Texture(id);
+}
 
-void Renderer::render(const CameraView& camera, double time, glm::ivec2 size) {
+// A (res+1)² vertex grid of (u, v) ∈ [0, 1]², triangles as an index list.
+void Renderer::buildGrid(int resolution) {
+    m_gridResolution = resolution;
+    const int n = resolution + 1;
+    std::vector<glm::vec2> uv;
+    uv.reserve(size_t(n) * size_t(n));
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) uv.emplace_back(float(i) / float(resolution), float(j) / float(resolution));
+    std::vector<uint32_t> indices;
+    indices.reserve(size_t(resolution) * size_t(resolution) * 6);
+    for (int j = 0; j < resolution; ++j)
+        for (int i = 0; i < resolution; ++i) {
+            uint32_t a = uint32_t(j * n + i), b = a + 1, c = a + uint32_t(n), d = c + 1;
+            indices.insert(indices.end(), {a, b, d, a, d, c});
+        }
+    m_gridIndexCount = GLsizei(indices.size());
+    m_gridVertices = createBuffer("projected grid uv", GLsizeiptr(uv.size() * sizeof(glm::vec2)), uv.data());
+    m_gridIndices = createBuffer("projected grid indices", GLsizeiptr(indices.size() * sizeof(uint32_t)), indices.data());
+    m_gridVao = createVertexArray("projected grid");
+    glVertexArrayVertexBuffer(m_gridVao.id(), 0, m_gridVertices.id(), 0, sizeof(glm::vec2));
+    glVertexArrayElementBuffer(m_gridVao.id(), m_gridIndices.id());
+    glEnableVertexArrayAttrib(m_gridVao.id(), 0);
+    glVertexArrayAttribFormat(m_gridVao.id(), 0, 2, GL_FLOAT, GL_FALSE, 0);
+    glVertexArrayAttribBinding(m_gridVao.id(), 0, 0);
+}
+
+void Renderer::render(const CameraView& camera, const WaterView& water, double time, glm::ivec2 size) {
     m_gpuTimer.begin();
     glm::mat4 viewProjection = camera.projection * camera.view;
     FrameUniforms u{};
@@ -44,7 +86,7 @@ void Renderer::render(const CameraView& camera, double time, glm::ivec2 size) {
 
     // --- passes
     skyPass();
-    waterPass();
+    waterPass(camera, water);
 
     glBindVertexArray(0);
     m_gpuTimer.end();
@@ -60,12 +102,31 @@ void Renderer::skyPass() {
     glPopDebugGroup();
 }
 
-void Renderer::waterPass() {
+void Renderer::waterPass(const CameraView& camera, const WaterView& water) {
+    ocean::GridCorners grid = ocean::projectedGridCorners(camera.projection * camera.view, camera.position, GRID_MARGIN);
+    if (!grid.visible) return;
+    if (m_gridResolution != m_def.grid_resolution) buildGrid(m_def.grid_resolution);
+
+    WaterUniforms u{};
+    for (int i = 0; i < 4; ++i) u.corner[i] = grid.corner[size_t(i)];
+    const bool layers = water.cascades > 0 && water.displacement && water.slopes;
+    const int cascades = layers ? water.cascades : 1;
+    for (int c = 0; c < 4; ++c) u.cascadeSize[c] = layers ? water.cascadeSize[size_t(c)] : 1.0f;
+    const int waves = std::min(int(water.gerstner.size()), MAX_GERSTNER_WAVES);
+    for (int m = 0; m < waves; ++m) u.gerstner[m] = water.gerstner[size_t(m)];
+    u.waterParams = glm::vec4(water.lambda, water.gravity, float(waves), GRID_MIN_W);
+    u.gridParams = glm::vec4(float(m_gridResolution), 0.9f * camera.farM, float(cascades), float(layers ? water.resolution : 1));
+    glNamedBufferSubData(m_waterUniforms.id(), 0, sizeof u, &u);
+    glBindBufferBase(GL_UNIFORM_BUFFER, WATER_UBO_BINDING, m_waterUniforms.id());
+
     glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 2, -1, "water");
+    glBindTextureUnit(0, layers ? water.displacement->id() : m_flatMaps.id());
+    glBindTextureUnit(1, layers ? water.slopes->id() : m_flatMaps.id());
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glUseProgram(m_waterProgram.id());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindVertexArray(m_gridVao.id());
+    glDrawElements(GL_TRIANGLES, m_gridIndexCount, GL_UNSIGNED_INT, nullptr);
     glPopDebugGroup();
 }
 

@@ -1,13 +1,15 @@
 // The renderer: a short list of passes over the default framebuffer.
 //   sky   → background: analytic daylight sky and sun disk
-//   water → the sea surface (flat, lightly animated until the ocean layers land)
+//   water → the composite sea surface on a projected grid (Gerstner + FFT cascades)
 #pragma once
 #include "gfx/gpu_timer.h"
 #include "gfx/handles.h"
 #include "gfx/render_def.h"
 
+#include <array>
 #include <glm/mat4x4.hpp>
 #include <string>
+#include <vector>
 
 namespace ob::gfx {
 
@@ -16,7 +18,31 @@ struct CameraView {
     glm::vec3 position{0.0f};   ///< eye (world m)
     glm::mat4 view{1.0f};       ///< world → eye
     glm::mat4 projection{1.0f}; ///< eye → clip
+    float farM = 20000.0f;      ///< far clip distance (m)
 };
+
+/// The water layers the surface pass draws (everything optional: absent layers are flat).
+struct WaterView {
+    const Texture* displacement = nullptr;  ///< 2D array, layer per cascade: (Dx, h, Dz, J)
+    const Texture* slopes = nullptr;        ///< 2D array, layer per cascade: (dh/dx, dh/dz, 0, 0)
+    int cascades = 0;                       ///< FFT cascades in the textures, [0, 4]
+    int resolution = 1;                     ///< FFT N
+    std::array<float, 4> cascadeSize{};     ///< tile side per cascade (m)
+    float lambda = 0.0f;                    ///< choppy displacement factor λ (X + λ·D)
+    float gravity = 9.81f;                  ///< m/s², Gerstner dispersion
+    std::vector<glm::vec4> gerstner;        ///< (kx, kz, amplitude, phase) per wave, at most 32
+};
+
+/// std140 mirror of `WaterUniforms` in shaders/common_water.glsl.
+struct WaterUniforms {
+    glm::vec4 corner[4];
+    glm::vec4 cascadeSize;
+    glm::vec4 waterParams;   ///< λ, gravity, Gerstner wave count, minimum |w|
+    glm::vec4 gridParams;    ///< grid resolution, max distance (m), cascades, FFT N
+    glm::vec4 gerstner[32];
+};
+static_assert(sizeof(WaterUniforms) == 16 * (4 + 3 + 32), "WaterUniforms must match std140 layout");
+constexpr int MAX_GERSTNER_WAVES = 32;
 
 /// std140 mirror of `FrameUniforms` in shaders/common_frame.glsl.
 struct FrameUniforms {
@@ -34,20 +60,27 @@ class Renderer {
 public:
     explicit Renderer(const RenderDef& def);
     /// Draws one frame of the scene into the default framebuffer of `size`.
-    void render(const CameraView& camera, double time, glm::ivec2 size);
+    void render(const CameraView& camera, const WaterView& water, double time, glm::ivec2 size);
     /// GPU ms of the latest resolved frame (negative until one resolves).
     double takeGpuMs() { return m_gpuTimer.takeResultMs(); }
     RenderDef& def() { return m_def; }
 
 private:
     void skyPass();    // in: frame uniforms; out: colour, depth = far
-    void waterPass();  // in: frame uniforms; out: colour, depth of the sea plane
+    void waterPass(const CameraView& camera, const WaterView& water);  // in: frame uniforms, water layers; out: colour, depth
+    void buildGrid(int resolution);
 
     RenderDef m_def;
     Program m_skyProgram;
     Program m_waterProgram;
     VertexArray m_emptyVao;
     Buffer m_frameUniforms;
+    Buffer m_waterUniforms;
+    VertexArray m_gridVao;
+    Buffer m_gridVertices, m_gridIndices;
+    int m_gridResolution = 0;
+    GLsizei m_gridIndexCount = 0;
+    Texture m_flatMaps;  // 1×1 layer: no displacement, J = 1, zero slope
     GpuTimer m_gpuTimer{"render"};
 };
 

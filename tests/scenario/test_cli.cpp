@@ -51,6 +51,7 @@ TEST_CASE("bad flags exit 2 with a message", "[cli]") {
     CHECK(r.exitCode == 2);
     CHECK(runOceanbox("").exitCode == 2);
     CHECK(runOceanbox("launch").exitCode == 2);
+    CHECK(runOceanbox("ripple --in x.npy").exitCode == 2);
 }
 
 TEST_CASE("bad scene files exit 2 naming file, line and key", "[cli]") {

@@ -1,0 +1,122 @@
+// Bounding-sphere stamping: seed 001 eq. 3–7 and Table 2, base height read as in SPEC §2.5.
+// Eq. 5's base Vh(x,z)(t) is the centre cell's ripple height remembered at first contact,
+// so a sphere resting on the water rewrites the same shape each step instead of digging.
+#include "interaction/sphere_stamp.h"
+
+#include <algorithm>
+#include <bit>
+#include <cassert>
+#include <cmath>
+
+namespace ob::interaction {
+
+float accelerationFactor(float w, float v, float s, float refW, float refV, float refS) {
+    assert(s > 0.0f && refW > 0.0f && refV > 0.0f && refS > 0.0f);
+    return ((w * v) / s) / ((refW * refV) / refS) - 1.0f;  // eq. 6
+}
+
+FootprintProfile makeFootprint(float radiusCells) {
+    FootprintProfile fp;
+    fp.radiusCells = radiusCells;
+    if (!(radiusCells > 0.0f)) return fp;
+    const double sr2 = double(radiusCells) * double(radiusCells);
+    // Largest |dz| with dz² < SR²: rows beyond it have no cell with PR < SR.
+    int reach = 0;
+    while (double(reach + 1) * double(reach + 1) < sr2) ++reach;
+    for (int dz = -reach; dz <= reach; ++dz) {
+        const double dz2 = double(dz) * double(dz);
+        int hw = 0;
+        while (double(hw + 1) * double(hw + 1) + dz2 < sr2) ++hw;
+        FootprintRow row{dz, -hw, 2 * hw + 1, int(fp.ph.size())};
+        for (int dx = -hw; dx <= hw; ++dx) {
+            const double pr2 = double(dx) * double(dx) + dz2;  // eq. 3, squared
+            fp.ph.push_back(float(std::sqrt(sr2 - pr2)));     // eq. 4
+        }
+        fp.rows.push_back(row);
+    }
+    return fp;
+}
+
+const FootprintProfile& FootprintCache::get(float radiusCells) {
+    const uint32_t key = std::bit_cast<uint32_t>(radiusCells);
+    auto it = m_profiles.find(key);
+    if (it == m_profiles.end()) it = m_profiles.emplace(key, makeFootprint(radiusCells)).first;
+    return it->second;
+}
+
+bool updateContact(SphereContact& c, float centreY, float radius, float surfaceY, float rippleAtCentre) {
+    const float bottom = centreY - radius, top = centreY + radius;
+    if (c.phase != ContactPhase::Contact) {
+        if (bottom > surfaceY) {
+            c.phase = ContactPhase::Airborne;
+            return false;
+        }
+        if (top >= surfaceY || c.phase == ContactPhase::Airborne) {
+            // Step 1, first contact. A sphere that went from entirely above to entirely
+            // below within one step crossed the surface during it: it stamps this once.
+            c.phase = ContactPhase::Contact;
+            c.fixHeight = surfaceY;
+            c.baseRipple = rippleAtCentre;
+            return true;
+        }
+        c.phase = ContactPhase::Free;
+        return false;
+    }
+    if (bottom > std::max(c.fixHeight, surfaceY)) {
+        // Out of the water: the next touch is a new first contact.
+        c.phase = ContactPhase::Airborne;
+        return false;
+    }
+    if (top < c.fixHeight) {
+        // Step 2: entirely below fixHeight, no stamp.
+        if (top < c.fixHeight - 2.0f * radius) c.phase = ContactPhase::Free;
+        return false;
+    }
+    // Step 3: crossing fixHeight (top >= fixHeight here).
+    return bottom <= c.fixHeight;
+}
+
+void stampFootprint(RippleField& field, const FootprintProfile& fp, int cx, int cz, float base, float heightScale,
+                    float af) {
+    const int rows = field.rows(), cols = field.cols();
+    float* const cur = field.current().data();
+    float* const prev = field.previous().data();
+    for (const FootprintRow& r : fp.rows) {
+        const int z = cz + r.dz;
+        if (z < 1 || z > rows - 2) continue;  // outside, or on the ring held at 0
+        // Clip the span [x0, x0 + count) to the interior columns [1, cols − 2].
+        const int x0 = cx + r.dx0;
+        const int a = std::max(x0, 1), b = std::min(x0 + r.count, cols - 1);
+        if (a >= b) continue;
+        const float* __restrict ph = fp.ph.data() + r.offset + (a - x0);
+        float* __restrict c = cur + size_t(z) * size_t(cols) + size_t(a);
+        float* __restrict p = prev + size_t(z) * size_t(cols) + size_t(a);
+        for (int i = 0; i < b - a; ++i) {
+            const float v = base + ph[i] * heightScale;  // eq. 5, PH·SD·SHR in metres
+            c[i] = v;
+            p[i] = v - v * af;                           // eq. 7
+        }
+    }
+}
+
+bool stepSphere(RippleField& field, FootprintCache& cache, float cellSize, const BoundingSphere& def,
+                SphereContact& contact, const SphereMotion& m) {
+    assert(cellSize > 0.0f && def.radius > 0.0f);
+    // Clamped so that a sphere far off the patch converts to int safely (it stamps nothing).
+    const int cx = int(std::clamp(std::floor(m.gridX + 0.5f), -1.0e9f, 1.0e9f));
+    const int cz = int(std::clamp(std::floor(m.gridZ + 0.5f), -1.0e9f, 1.0e9f));
+    const bool inside = cx >= 0 && cx < field.cols() && cz >= 0 && cz < field.rows();
+    const float ripple = inside ? field.currentAt(cx, cz) : 0.0f;
+    if (!updateContact(contact, m.centreY, def.radius, m.surfaceY, ripple)) return false;
+
+    float sd = float(int(def.direction));
+    if (def.direction == SphereDirection::Auto) sd = m.verticalVelocity > 0.0f ? 1.0f : -1.0f;
+    const float af = def.afFromMotion ? accelerationFactor(m.mass, m.speed, def.radius, def.reference.weight,
+                                                           def.reference.speed, def.reference.size)
+                                      : def.accelerationFactor;
+    const FootprintProfile& fp = cache.get(def.radius / cellSize);
+    stampFootprint(field, fp, cx, cz, contact.baseRipple, sd * def.heightRatio * cellSize, af);
+    return true;
+}
+
+} // namespace ob::interaction

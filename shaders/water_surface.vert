@@ -1,0 +1,32 @@
+#version 450 core
+// Water surface vertices: projected grid point → Gerstner displacement + every FFT cascade's
+// choppy displacement (seed 000 vertex shader).
+#include "common_frame.glsl"
+#include "common_water.glsl"
+
+layout(location = 0) in vec2 a_uv;
+out vec3 v_world;   // displaced surface point (m)
+out vec2 v_rest;    // rest point on the mean plane (m)
+
+void main() {
+    vec2 rest = gridPoint(a_uv);
+    vec2 eye = u_cameraPositionTime.xz;
+    vec2 rel = rest - eye;
+    float dist = length(rel);
+    if (dist > u_gridParams.y) rest = eye + rel * (u_gridParams.y / dist);
+    // Mip level: the spacing of neighbouring grid vertices against the FFT texel size.
+    vec2 next = gridPoint(a_uv + vec2(0.0, 1.0) / u_gridParams.x);
+    float spacing = length(next - rest);
+
+    float t = u_cameraPositionTime.w;
+    vec3 pos = vec3(rest.x, 0.0, rest.y) + gerstnerOffset(rest, t);
+    int cascades = int(u_gridParams.z);
+    for (int c = 0; c < cascades; ++c) {
+        float lod = log2(max(spacing * u_gridParams.w / u_cascadeSize[c], 1.0));
+        vec4 d = textureLod(u_displacement, cascadeCoord(rest, c), lod);
+        pos += vec3(u_waterParams.x * d.x, d.y, u_waterParams.x * d.z);
+    }
+    v_world = pos;
+    v_rest = rest;
+    gl_Position = u_viewProjection * vec4(pos, 1.0);
+}
