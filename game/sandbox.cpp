@@ -7,6 +7,7 @@
 #include "gfx/renderer.h"
 #include "gfx/ui_overlay.h"
 #include "ui_panels.h"
+#include "water_systems.h"
 
 namespace ob::game {
 
@@ -28,7 +29,7 @@ void renderSystem(ecs::World& world, const ecs::Tick& tick) {
     glm::ivec2 size = res->platform->framebufferSize();
     if (size.x <= 0 || size.y <= 0) return;  // minimised
     res->renderer->def() = res->scene->render;
-    res->renderer->render(cameraView(world, size), gfx::WaterView{}, tick.time, size);
+    res->renderer->render(cameraView(world, size), prepareWaterView(world, tick.time), tick.time, size);
     double gpuMs = res->renderer->takeGpuMs();
     if (gpuMs >= 0) res->timer->setGpu(ecs::Phase::Render, gpuMs);
     if (res->ui) {
@@ -47,6 +48,7 @@ struct SystemEntry {
 const SystemEntry SYSTEMS[] = {
     {ecs::Phase::Input, "input", inputSystem},
     {ecs::Phase::Script, "camera", cameraSystem},
+    {ecs::Phase::Ocean, "ocean", oceanSystem},
     {ecs::Phase::Render, "render", renderSystem},
 };
 
@@ -56,12 +58,14 @@ Sandbox::Sandbox(const SceneDef& scene) : m_scene(scene), m_schedule(scene.sim) 
     for (const SystemEntry& s : SYSTEMS) m_schedule.add(s.phase, s.name, s.fn);
     m_world.setResource(std::make_unique<platform::InputState>());
     spawnCamera(m_world, m_scene.camera);
+    addOcean(m_world, m_scene.ocean);
 }
 
 Sandbox::~Sandbox() = default;
 
 void Sandbox::attachPlatform(platform::Platform& platform, bool withUi) {
     m_renderer = std::make_unique<gfx::Renderer>(m_scene.render);
+    attachOceanGpu(m_world);
     if (withUi && platform.nativeWindow()) m_ui = std::make_unique<gfx::UiOverlay>(platform.nativeWindow());
     m_world.setResource(std::make_unique<FrameResources>(
         FrameResources{&platform, m_renderer.get(), m_ui.get(), &m_schedule.timer(), &m_scene}));

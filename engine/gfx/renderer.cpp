@@ -82,11 +82,10 @@ void Renderer::render(const CameraView& camera, const WaterView& water, double t
     glClearColor(0, 0, 0, 1);
     glClearDepth(1.0);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    glBindVertexArray(m_emptyVao.id());
 
-    // --- passes
-    skyPass();
+    // --- passes (sky last: it shades only the pixels nothing else covered)
     waterPass(camera, water);
+    skyPass();
 
     glBindVertexArray(0);
     m_gpuTimer.end();
@@ -94,8 +93,10 @@ void Renderer::render(const CameraView& camera, const WaterView& water, double t
 
 void Renderer::skyPass() {
     glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 1, -1, "sky");
-    glDisable(GL_DEPTH_TEST);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);  // the triangle sits on the far plane: only uncovered pixels pass
     glDepthMask(GL_FALSE);
+    glBindVertexArray(m_emptyVao.id());
     glUseProgram(m_skyProgram.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glDepthMask(GL_TRUE);
@@ -105,7 +106,9 @@ void Renderer::skyPass() {
 void Renderer::waterPass(const CameraView& camera, const WaterView& water) {
     ocean::GridCorners grid = ocean::projectedGridCorners(camera.projection * camera.view, camera.position, GRID_MARGIN);
     if (!grid.visible) return;
-    if (m_gridResolution != m_def.grid_resolution) buildGrid(m_def.grid_resolution);
+    // Software rasterisers shade vertices on one thread: a coarser grid there.
+    int resolution = m_def.grid_resolution > 0 ? std::max(m_def.grid_resolution, 16) : (isSoftwareRenderer() ? 128 : 512);
+    if (m_gridResolution != resolution) buildGrid(resolution);
 
     WaterUniforms u{};
     for (int i = 0; i < 4; ++i) u.corner[i] = grid.corner[size_t(i)];

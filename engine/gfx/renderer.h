@@ -1,6 +1,6 @@
 // The renderer: a short list of passes over the default framebuffer.
-//   sky   → background: analytic daylight sky and sun disk
 //   water → the composite sea surface on a projected grid (Gerstner + FFT cascades)
+//   sky   → background where nothing was drawn: analytic daylight sky and sun disk
 #pragma once
 #include "gfx/gpu_timer.h"
 #include "gfx/handles.h"
@@ -66,7 +66,7 @@ public:
     RenderDef& def() { return m_def; }
 
 private:
-    void skyPass();    // in: frame uniforms; out: colour, depth = far
+    void skyPass();    // in: frame uniforms, depth; out: colour where nothing was drawn
     void waterPass(const CameraView& camera, const WaterView& water);  // in: frame uniforms, water layers; out: colour, depth
     void buildGrid(int resolution);
 

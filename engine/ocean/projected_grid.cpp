@@ -7,14 +7,15 @@
 
 namespace ob::ocean {
 
-// Where the ray through NDC (x, y) meets y = 0, as a homogeneous point: with p0, p1 the
-// unprojected near and far points (homogeneous), p1.y·p0 − p0.y·p1 has y = 0 and lies on
-// their line; it is linear in each, so no division happens before the vertex shader's.
+// Where the ray through NDC (x, y) meets y = 0, as a homogeneous point. With M the inverse
+// view-projection, the ray is M·(x, y, s, 1) over NDC depth s; its y is q.y + s·m.y with
+// q = M·(x, y, 0, 1) and m = M's z column, so the hit is q − (q.y / m.y)·m: LINEAR in
+// (x, y) with one scale for every pixel, which is what makes interpolating the corners in
+// homogeneous coordinates exact (the screen-to-plane map is a homography).
 static glm::vec4 planeHit(const glm::mat4& inverseViewProjection, float x, float y) {
-    glm::vec4 p0 = inverseViewProjection * glm::vec4(x, y, -1.0f, 1.0f);
-    glm::vec4 p1 = inverseViewProjection * glm::vec4(x, y, 1.0f, 1.0f);
-    glm::vec4 hit = p1.y * p0 - p0.y * p1;
-    return hit.w < 0.0f ? -hit : hit;
+    glm::vec4 q = inverseViewProjection * glm::vec4(x, y, 0.0f, 1.0f);
+    const glm::vec4& m = inverseViewProjection[2];
+    return q - (q.y / m.y) * m;
 }
 
 GridCorners projectedGridCorners(const glm::mat4& viewProjection, const glm::vec3& eye, float margin) {
@@ -43,11 +44,13 @@ GridCorners projectedGridCorners(const glm::mat4& viewProjection, const glm::vec
         farY = std::max(lo, horizonY + gap);
         if (farY >= nearY) return out;
     }
+    if (std::abs(inv[2].y) < 1e-12f) return out;  // NDC depth never changes height: degenerate camera
     out.corner = {planeHit(inv, lo, nearY), planeHit(inv, hi, nearY), planeHit(inv, lo, farY), planeHit(inv, hi, farY)};
-    float maxW = 0.0f;
-    for (const glm::vec4& c : out.corner) maxW = std::max(maxW, c.w);
+    // One common scale (and sign) for all four, so w > 0 on the water side and max w = 1.
+    float maxW = std::max(std::abs(out.corner[0].w), std::abs(out.corner[1].w));
     if (!(maxW > 0.0f)) return out;
-    for (glm::vec4& c : out.corner) c /= maxW;
+    float scale = (out.corner[0].w > 0.0f ? 1.0f : -1.0f) / maxW;
+    for (glm::vec4& c : out.corner) c *= scale;
     out.visible = true;
     return out;
 }

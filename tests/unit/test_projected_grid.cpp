@@ -88,3 +88,53 @@ TEST_CASE("looking at the sky from above the water shows no grid; from below the
     glm::vec3 diver(0, -5, 0);
     CHECK(projectedGridCorners(camera(diver, glm::vec3(0, 200, 10)), diver, 0.05f).visible);
 }
+
+TEST_CASE("the grid covers the water to the horizon for heights 1-1000 m and pitches down to 0.5 degrees, "
+          "with no NaN and no inverted or exploding cells",
+          "[grid]") {
+    const float minW = 2e-5f;
+    for (float height : {1.0f, 10.0f, 100.0f, 1000.0f})
+        for (float pitchDeg : {-0.5f, -3.0f, -20.0f, -60.0f, -89.0f}) {
+            INFO("height " << height << " m, pitch " << pitchDeg << " deg");
+            glm::vec3 eye(5, height, -7);
+            float pitch = glm::radians(pitchDeg);
+            glm::vec3 dir(0.3f * std::cos(pitch), std::sin(pitch), 0.95f * std::cos(pitch));
+            glm::mat4 vp = camera(eye, eye + dir);
+            GridCorners g = projectedGridCorners(vp, eye, 0.1f);
+            REQUIRE(g.visible);
+            const int n = 32;
+            std::vector<glm::vec2> pts;
+            for (int j = 0; j <= n; ++j)
+                for (int i = 0; i <= n; ++i) {
+                    glm::vec2 p = projectedGridPoint(g, {float(i) / n, float(j) / n}, minW);
+                    REQUIRE(std::isfinite(p.x));
+                    REQUIRE(std::isfinite(p.y));
+                    pts.push_back(p);
+                }
+            // Every cell keeps the orientation of the first (no fold-over), and its area is
+            // positive: no inverted or degenerate triangles.
+            auto cross2 = [](glm::vec2 a, glm::vec2 b) { return a.x * b.y - a.y * b.x; };
+            float sign = 0.0f;
+            for (int j = 0; j < n; ++j)
+                for (int i = 0; i < n; ++i) {
+                    glm::vec2 a = pts[size_t(j * (n + 1) + i)], b = pts[size_t(j * (n + 1) + i + 1)];
+                    glm::vec2 c = pts[size_t((j + 1) * (n + 1) + i)];
+                    float area = cross2(b - a, c - a);
+                    if (sign == 0.0f) sign = area > 0 ? 1.0f : -1.0f;
+                    INFO("cell " << i << ", " << j << " a " << a.x << "," << a.y << " b " << b.x << "," << b.y << " c " << c.x << "," << c.y);
+                    REQUIRE(area * sign > 0.0f);
+                }
+            // Near edge: below the screen's bottom edge; far edge: within a hair of the
+            // horizon (or above the screen's top when the horizon is off screen).
+            glm::vec2 nearMid = pts[size_t(n / 2)], farMid = pts[size_t(n * (n + 1) + n / 2)];
+            CHECK(toNdc(vp, glm::vec3(nearMid.x, 0, nearMid.y)).y <= -1.0f);
+            glm::vec2 farNdc = toNdc(vp, glm::vec3(farMid.x, 0, farMid.y));
+            glm::vec4 horizonClip = vp * glm::vec4(dir.x, 0, dir.z, 0);
+            float horizonY = horizonClip.y / horizonClip.w;
+            if (horizonY < 1.1f) CHECK(farNdc.y > horizonY - 0.01f);
+            else CHECK(farNdc.y >= 1.0f);
+            // The far edge is bounded: the |w| clamp caps the distance (no exploding cells).
+            float farDist = glm::length(farMid - glm::vec2(eye.x, eye.z));
+            CHECK(farDist < 1e6f * std::max(height, 1.0f));
+        }
+}

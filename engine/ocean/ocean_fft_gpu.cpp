@@ -1,0 +1,192 @@
+// GPU spectral ocean: synthesis (eq. 2, 6, 7, 9) → row FFTs → column FFTs (eq. 1) → unpack
+// into OceanTextures with imageStore. SPEC §2.1; seed 000 §3.3; seed 003.
+#include "ocean/ocean_fft_gpu.h"
+
+#include "core/error.h"
+#include "gfx/shader.h"
+#include "ocean/ocean_fft_cpu.h"
+#include "ocean/ocean_textures.h"
+
+#include <cassert>
+#include <cmath>
+#include <numbers>
+#include <string>
+
+namespace ob::ocean {
+
+namespace {
+
+// Shader interface (bindings and uniform locations declared in shaders/ocean_*.comp).
+constexpr GLuint MODES_BINDING = 0;
+constexpr GLuint QUARTER_BINDING = 1;
+constexpr GLuint WAVE_NUMBERS_BINDING = 2;
+constexpr GLuint SPECTRA_BINDING = 3;
+constexpr GLuint TWIDDLES_BINDING = 4;
+constexpr GLuint DISPLACEMENT_UNIT = 0;
+constexpr GLuint SLOPES_UNIT = 1;
+constexpr GLint N_LOCATION = 0;
+constexpr GLint TIME_LOCATION = 1;     // ocean_spectrum.comp
+constexpr GLint LOG2N_LOCATION = 1;    // ocean_fft.comp
+constexpr GLint COLUMNS_LOCATION = 2;  // ocean_fft.comp
+constexpr GLint LAMBDA_LOCATION = 1;   // ocean_unpack.comp
+constexpr GLuint TILE = 8;             // local size of ocean_spectrum.comp and ocean_unpack.comp, per axis
+
+// One mode's coefficients of h̃ = (cosRe·c + sinRe·s) + i(cosIm·c + sinIm·s), c, s = cos, sin ωt
+// (as CascadeSpectrum::refreshMode).
+struct ModeCoefficients {
+    float cosRe, sinRe, cosIm, sinIm;
+};
+static_assert(sizeof(ModeCoefficients) == 16, "std430 vec4");
+
+// ω and 1/k of one |K| (std430 struct {double; float; float}).
+struct QuarterMode {
+    double omega;
+    float invK;
+    float pad;
+};
+static_assert(sizeof(QuarterMode) == 16, "std430 struct QuarterMode");
+
+struct Complex {
+    float re, im;
+};
+static_assert(sizeof(Complex) == 8, "std430 vec2");
+
+int signedIndex(int r, int n) { return r < n / 2 ? r : r - n; }
+
+void validate(const OceanDef& def) {
+    std::string problems;
+    const auto check = [&](bool ok, const char* key, const std::string& what) {
+        if (!ok) problems += std::string(problems.empty() ? "" : "\n") + "ocean." + key + ": " + what;
+    };
+    const int n = def.resolution;
+    check(n >= 4 && n <= OceanFftGpu::MAX_RESOLUTION && (n & (n - 1)) == 0, "resolution",
+          "must be a power of two in [4, " + std::to_string(OceanFftGpu::MAX_RESOLUTION) +
+              "] for the GPU backend, got " + std::to_string(n));
+    check(def.cascades >= 1 && def.cascades <= 4, "cascades", "must be in [1, 4], got " + std::to_string(def.cascades));
+    check(def.patch_size > 0.0f, "patch_size", "must be > 0 metres");
+    check(def.gravity > 0.0f, "gravity", "must be > 0 m/s²");
+    check(def.wind_speed >= 0.0f, "wind_speed", "must be >= 0 m/s");
+    check(def.wind_direction.x != 0.0f || def.wind_direction.y != 0.0f, "wind_direction", "must not be [0, 0]");
+    check(def.spectrum == "phillips" || def.spectrum == "jonswap", "spectrum",
+          "must be \"phillips\" or \"jonswap\", got \"" + def.spectrum + "\"");
+    if (!problems.empty()) throw InputError(problems);
+}
+
+GLintptr bytes(size_t count, size_t size) { return GLintptr(count * size); }
+
+} // namespace
+
+bool OceanFftGpu::available() { return GLAD_GL_VERSION_4_3 != 0; }
+
+OceanFftGpu::OceanFftGpu(const OceanDef& def) {
+    validate(def);
+    m_n = def.resolution;
+    while ((1 << m_log2n) < m_n) ++m_log2n;
+    m_lambda = -def.choppiness;
+    const size_t n = size_t(m_n), cascades = size_t(def.cascades), quarter = n / 2 + 1;
+    m_patchSizes.assign(cascades, 0.0);
+
+    // --- programs
+    m_synthesize = gfx::loadProgram("ocean synthesize h~(K,t)", {"ocean_spectrum.comp"});
+    m_fft = gfx::loadProgram("ocean inverse FFT lines", {"ocean_fft.comp"});
+    m_unpack = gfx::loadProgram("ocean unpack maps", {"ocean_unpack.comp"});
+
+    // --- buffers: per-mode constants (filled by setSpectrum), FFT work space, twiddles
+    m_modes = gfx::createBuffer("ocean modes (h~0 coefficients)", bytes(cascades * n * n, sizeof(ModeCoefficients)));
+    m_quarter = gfx::createBuffer("ocean quarter grid (omega, 1/k)", bytes(cascades * quarter * quarter, sizeof(QuarterMode)));
+    m_waveNumbers = gfx::createBuffer("ocean wave numbers", bytes(cascades * n, sizeof(float)));
+    m_spectra = gfx::createBuffer("ocean packed spectra (FFT in place)", bytes(cascades * 4 * n * n, sizeof(Complex)));
+    std::vector<Complex> twiddles(n / 2);
+    for (size_t k = 0; k < twiddles.size(); ++k) {
+        const double angle = 2.0 * std::numbers::pi * double(k) / double(n);
+        twiddles[k] = {float(std::cos(angle)), float(std::sin(angle))};
+    }
+    m_twiddles = gfx::createBuffer("ocean FFT twiddles", bytes(twiddles.size(), sizeof(Complex)), twiddles.data());
+
+    for (int c = 0; c < def.cascades; ++c) setSpectrum(c, CascadeSpectrum(def, c));
+
+    glProgramUniform1i(m_synthesize.id(), N_LOCATION, m_n);
+    glProgramUniform1i(m_fft.id(), N_LOCATION, m_n);
+    glProgramUniform1i(m_fft.id(), LOG2N_LOCATION, m_log2n);
+    glProgramUniform1i(m_unpack.id(), N_LOCATION, m_n);
+    glProgramUniform1f(m_unpack.id(), LAMBDA_LOCATION, m_lambda);
+}
+
+void OceanFftGpu::setSpectrum(int cascade, const CascadeSpectrum& s) {
+    assert(cascade >= 0 && cascade < cascadeCount() && s.resolution() == m_n);
+    const int n = m_n, half = n / 2, quarter = half + 1;
+    m_patchSizes[size_t(cascade)] = s.patchSize();
+
+    // Coefficients in FFT order, from a + ib = h̃0(K), p + iq = conj(h̃0(−K)) (the Nyquist row
+    // and column are their own mirror and hold 0).
+    std::vector<ModeCoefficients> modes(size_t(n) * n);
+    for (int row = 0; row < n; ++row) {
+        for (int col = 0; col < n; ++col) {
+            const int sn = signedIndex(col, n), sm = signedIndex(row, n);
+            const std::complex<float> h0 = s.h0(sn, sm);
+            const std::complex<float> h0Mirror = s.h0(sn == -half ? sn : -sn, sm == -half ? sm : -sm);
+            const float a = h0.real(), b = h0.imag(), p = h0Mirror.real(), q = -h0Mirror.imag();
+            modes[size_t(row) * n + col] = {a + p, q - b, b + q, a - p};
+        }
+    }
+    // ω and 1/k by |K| (1/k rounded from double, as CascadeSpectrum does).
+    std::vector<QuarterMode> quarterModes(size_t(quarter) * quarter);
+    for (int m = 0; m < quarter; ++m) {
+        for (int q = 0; q < quarter; ++q) {
+            const double kx = s.waveNumber(q), kz = s.waveNumber(m);
+            const double k = std::sqrt(kx * kx + kz * kz);
+            quarterModes[size_t(m) * quarter + q] = {s.omega(q == half ? -half : q, m == half ? -half : m),
+                                                     k > 0.0 ? float(1.0 / k) : 0.0f, 0.0f};
+        }
+    }
+    std::vector<float> waveNumbers(static_cast<size_t>(n));
+    for (int r = 0; r < n; ++r) waveNumbers[size_t(r)] = float(s.waveNumber(signedIndex(r, n)));
+
+    const size_t c = size_t(cascade);
+    glNamedBufferSubData(m_modes.id(), bytes(c * modes.size(), sizeof(ModeCoefficients)),
+                         bytes(modes.size(), sizeof(ModeCoefficients)), modes.data());
+    glNamedBufferSubData(m_quarter.id(), bytes(c * quarterModes.size(), sizeof(QuarterMode)),
+                         bytes(quarterModes.size(), sizeof(QuarterMode)), quarterModes.data());
+    glNamedBufferSubData(m_waveNumbers.id(), bytes(c * waveNumbers.size(), sizeof(float)),
+                         bytes(waveNumbers.size(), sizeof(float)), waveNumbers.data());
+}
+
+void OceanFftGpu::update(double t, OceanTextures& out) {
+    assert(out.resolution() == m_n && out.cascadeCount() == cascadeCount());
+    m_time = t;
+    const GLuint n = GLuint(m_n), cascades = GLuint(cascadeCount());
+    const GLuint tiles = (n + TILE - 1) / TILE;
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, MODES_BINDING, m_modes.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, QUARTER_BINDING, m_quarter.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, WAVE_NUMBERS_BINDING, m_waveNumbers.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SPECTRA_BINDING, m_spectra.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, TWIDDLES_BINDING, m_twiddles.id());
+
+    // --- stage 1: the four packed spectra at time t (eq. 2, 6, 7, 9), one invocation per mode
+    glProgramUniform1d(m_synthesize.id(), TIME_LOCATION, t);
+    glUseProgram(m_synthesize.id());
+    glDispatchCompute(tiles, tiles, cascades);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+
+    // --- stage 2: inverse FFT of every row, then of every column (eq. 1), in place
+    glUseProgram(m_fft.id());
+    for (int columns = 0; columns < 2; ++columns) {
+        glProgramUniform1i(m_fft.id(), COLUMNS_LOCATION, columns);
+        glDispatchCompute(n, OCEAN_PACKED_TRANSFORMS, cascades);
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    }
+
+    // --- stage 3: unpack into the map layers and the Jacobian
+    glUseProgram(m_unpack.id());
+    glBindImageTexture(DISPLACEMENT_UNIT, out.displacement().id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glBindImageTexture(SLOPES_UNIT, out.slopes().id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glDispatchCompute(tiles, tiles, cascades);
+    // Readers of the maps: texture sampling, glGetTextureImage, mip generation (a blit or a
+    // draw, depending on the driver), image loads; the next update()'s stage 1 overwrites the
+    // spectra stage 3 read.
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT |
+                    GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+    glUseProgram(0);
+}
+
+} // namespace ob::ocean

@@ -1,0 +1,32 @@
+#version 450 core
+// Ocean maps from the four inverse-transformed packed spectra (SPEC §2.1 eq. 9: f = Re,
+// g = Im) and the foam Jacobian (seed 003 "Future"), as OceanFftCpu's unpack:
+//   displacement = (Dx, h, Dz, J),   slopes = (∂h/∂x, ∂h/∂z, 0, 0),
+//   J = (1 + λ∂Dx/∂x)(1 + λ∂Dz/∂z) − (λ∂Dx/∂z)².
+// One invocation per texel: x along i, y along j, gl_WorkGroupID.z the cascade (= layer).
+layout(local_size_x = 8, local_size_y = 8) in;
+
+// Per cascade four N² complex arrays [transform][row j][col i], after the 2-D inverse FFT.
+layout(std430, binding = 3) readonly buffer Spectra { vec2 b_spectra[]; };
+
+layout(rgba32f, binding = 0) writeonly uniform image2DArray u_displacement;
+layout(rgba32f, binding = 1) writeonly uniform image2DArray u_slopes;
+
+layout(location = 0) uniform int u_n;        // N
+layout(location = 1) uniform float u_lambda; // λ = −choppiness
+
+void main() {
+    int n = u_n;
+    ivec3 texel = ivec3(gl_GlobalInvocationID.xy, gl_WorkGroupID.z);
+    if (texel.x >= n || texel.y >= n) return;
+    int plane = n * n;
+    int base = texel.z * 4 * plane + texel.y * n + texel.x;
+    vec2 heightDxz = b_spectra[base];
+    vec2 dispXZ = b_spectra[base + plane];
+    vec2 slopeXZ = b_spectra[base + 2 * plane];
+    vec2 dxxDzz = b_spectra[base + 3 * plane];
+    float dxz = u_lambda * heightDxz.y;
+    float jacobian = (1.0 + u_lambda * dxxDzz.x) * (1.0 + u_lambda * dxxDzz.y) - dxz * dxz;
+    imageStore(u_displacement, texel, vec4(dispXZ.x, heightDxz.x, dispXZ.y, jacobian));
+    imageStore(u_slopes, texel, vec4(slopeXZ, 0.0, 0.0));
+}
