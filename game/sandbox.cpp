@@ -48,6 +48,7 @@ struct SystemEntry {
 const SystemEntry SYSTEMS[] = {
     {ecs::Phase::Input, "input", inputSystem},
     {ecs::Phase::Script, "camera", cameraSystem},
+    {ecs::Phase::Interaction, "ripples", interactionSystem},
     {ecs::Phase::Ocean, "ocean", oceanSystem},
     {ecs::Phase::Render, "render", renderSystem},
 };
@@ -58,7 +59,8 @@ Sandbox::Sandbox(const SceneDef& scene) : m_scene(scene), m_schedule(scene.sim) 
     for (const SystemEntry& s : SYSTEMS) m_schedule.add(s.phase, s.name, s.fn);
     m_world.setResource(std::make_unique<platform::InputState>());
     spawnCamera(m_world, m_scene.camera);
-    addOcean(m_world, m_scene.ocean);
+    addOcean(m_world, m_scene.ocean, m_scene.gerstner);
+    addRipples(m_world, m_scene.ripples, float(m_schedule.stepSeconds()));
 }
 
 Sandbox::~Sandbox() = default;

@@ -3,6 +3,8 @@
 #include "camera.h"
 #include "ecs/schedule.h"
 #include "gfx/render_def.h"
+#include "interaction/ripple_def.h"
+#include "ocean/gerstner.h"
 #include "ocean/ocean_def.h"
 #include "platform/platform.h"
 
@@ -18,6 +20,8 @@ struct SceneDef {
     CameraDef camera;             ///< [camera]
     gfx::RenderDef render;        ///< [render]
     ocean::OceanDef ocean;        ///< [ocean]
+    ocean::GerstnerDef gerstner;  ///< [gerstner]
+    interaction::RippleDef ripples; ///< [ripples]
 };
 
 template <class V> void describe(V& v, SceneDef& s) {
@@ -26,6 +30,8 @@ template <class V> void describe(V& v, SceneDef& s) {
     v.section("camera", s.camera);
     v.section("render", s.render);
     v.section("ocean", s.ocean);
+    v.section("gerstner", s.gerstner);
+    v.section("ripples", s.ripples);
 }
 
 /// Loads a scene file and applies `--set key.path=value` overrides (in order).

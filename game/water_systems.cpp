@@ -1,9 +1,15 @@
 // Ocean simulation and its hand-over to the renderer.
 #include "water_systems.h"
 
+#include "camera.h"
 #include "core/log.h"
+#include "ecs/components.h"
+#include "interaction/ripple_patch.h"
+#include "interaction/sphere_set.h"
 #include "gfx/gl.h"
+#include "ocean/gerstner.h"
 #include "ocean/ocean_fft_cpu.h"
+#include "water/composite_water.h"
 #include "ocean/ocean_fft_gpu.h"
 #include "ocean/ocean_textures.h"
 
@@ -11,10 +17,15 @@ namespace ob::game {
 
 OceanState::~OceanState() = default;
 
-void addOcean(ecs::World& world, const ocean::OceanDef& def) {
+void addOcean(ecs::World& world, const ocean::OceanDef& def, const ocean::GerstnerDef& gerstner) {
     auto state = std::make_unique<OceanState>();
     state->def = def;
-    if (def.backend != "gpu") state->cpu = std::make_unique<ocean::OceanFftCpu>(def);
+    state->waves = ocean::resolveWaves(gerstner, def);
+    state->cpu = std::make_unique<ocean::OceanFftCpu>(def);
+    state->water = std::make_unique<water::CompositeWater>(state->waves, def.gravity, state->cpu.get());
+    state->cpu->update(0.0);
+    state->water->update(0.0);
+    state->mapsTime = 0.0;
     world.setResource(std::move(state));
 }
 
@@ -29,21 +40,77 @@ void attachOceanGpu(ecs::World& world) {
         gpu = false;
     }
     if (gpu) ocean->gpu = std::make_unique<ocean::OceanFftGpu>(ocean->def);
-    if (!gpu && !ocean->cpu) ocean->cpu = std::make_unique<ocean::OceanFftCpu>(ocean->def);
     logInfo("ocean: %s backend, %d² × %d cascade(s)", gpu ? "gpu (compute shaders)" : "cpu (FFTW)", ocean->def.resolution,
             ocean->def.cascades);
 }
 
 void oceanSystem(ecs::World& world, const ecs::Tick& tick) {
     OceanState* ocean = world.resource<OceanState>();
-    if (!ocean || !ocean->cpu) return;
+    if (!ocean) return;
     // The state after this step is the state at its end time.
     ocean->mapsTime = tick.time + tick.dt;
     ocean->cpu->update(ocean->mapsTime);
+    ocean->water->update(ocean->mapsTime);
+}
+
+void addRipples(ecs::World& world, const interaction::RippleDef& def, float stepSeconds) {
+    if (!def.enabled) return;
+    auto& patch = world.setResource(std::make_unique<interaction::RipplePatch>(def));
+    // The query adds the ripple layer at the displaced position, as the renderer does.
+    if (OceanState* ocean = world.resource<OceanState>()) {
+        const float dt = stepSeconds;
+        ocean->water->setRipple({[&patch](float x, float z) { return patch.heightAt({x, z}); },
+                                 [&patch, dt](float x, float z) { return patch.velocityAt({x, z}, dt); }, {}, 0.5f * def.cell_size});
+    }
+}
+
+// The water surface height (every layer) under world (x, z): what spheres touch.
+static float surfaceHeight(ecs::World& world, const interaction::RipplePatch& patch, glm::vec2 xz) {
+    if (OceanState* ocean = world.resource<OceanState>()) return ocean->water->sample(xz.x, xz.y).height;
+    return patch.heightAt(xz);
+}
+
+void interactionSystem(ecs::World& world, const ecs::Tick& tick) {
+    auto* patch = world.resource<interaction::RipplePatch>();
+    if (!patch) return;
+    if (patch->def().follow == "camera") {
+        auto& rigs = world.pool<CameraRig>();
+        if (rigs.size() > 0) {
+            glm::vec3 eye = world.get<ecs::Transform>(rigs.entities()[0]).position;
+            patch->centerOn(glm::vec2(eye.x, eye.z));
+        }
+    }
+    // --- stamps, in entity then sphere order (overlaps: the later sphere wins)
+    auto& sets = world.pool<interaction::SphereSet>();
+    for (size_t i = 0; i < sets.size(); ++i) {
+        ecs::Entity e = sets.entities()[i];
+        interaction::SphereSet& set = sets.components()[i];
+        const ecs::Transform* transform = world.find<ecs::Transform>(e);
+        if (!transform) continue;
+        const ecs::Motion* motion = world.find<ecs::Motion>(e);
+        glm::vec3 velocity = motion ? motion->velocity : glm::vec3(0.0f);
+        float mass = motion ? motion->mass : 1.0f;
+        set.contacts.resize(set.spheres.size());
+        for (size_t k = 0; k < set.spheres.size(); ++k) {
+            glm::vec3 centre = transform->position + transform->rotation * set.spheres[k].offset;
+            glm::vec2 xz(centre.x, centre.z);
+            float surface = surfaceHeight(world, *patch, xz);
+            patch->stampSphere(set.spheres[k], set.contacts[k], centre, velocity, mass, surface);
+        }
+    }
+    // --- convolution
+    patch->step();
+    (void)tick;
 }
 
 gfx::WaterView prepareWaterView(ecs::World& world, double time) {
     gfx::WaterView view;
+    if (auto* patch = world.resource<interaction::RipplePatch>()) {
+        view.ripples = patch->field().current().data();
+        view.rippleCells = patch->def().resolution;
+        view.rippleOrigin = patch->origin();
+        view.rippleCellSize = patch->def().cell_size;
+    }
     OceanState* ocean = world.resource<OceanState>();
     if (!ocean || !ocean->textures) return view;
     // The GPU backend synthesises at the render time; the CPU one uploads its latest step.
@@ -61,6 +128,7 @@ gfx::WaterView prepareWaterView(ecs::World& world, double time) {
     for (int c = 0; c < ocean->def.cascades; ++c) view.cascadeSize[size_t(c)] = float(ocean::cascadePatchSize(ocean->def, c));
     view.lambda = -ocean->def.choppiness;
     view.gravity = ocean->def.gravity;
+    for (const ocean::GerstnerWave& w : ocean->waves) view.gerstner.emplace_back(w.kx, w.kz, w.amplitude, w.phase);
     return view;
 }
 

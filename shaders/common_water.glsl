@@ -5,11 +5,28 @@ layout(std140, binding = 1) uniform WaterUniforms {
     vec4 u_cascadeSize;        // tile side of each cascade (m); unused cascades 0
     vec4 u_waterParams;        // x λ (choppiness sign included), y gravity, z Gerstner wave count, w minimum |w|
     vec4 u_gridParams;         // x grid resolution, y max distance (m), z cascade count, w FFT resolution N
+    vec4 u_rippleParams;       // xy world origin of cell (0, 0) (m), z cell size (m), w cells per side (0: none)
     vec4 u_gerstner[32];       // (kx, kz, amplitude, phase) per wave
 };
 
 layout(binding = 0) uniform sampler2DArray u_displacement;  // layer c: (Dx, h, Dz, J)
 layout(binding = 1) uniform sampler2DArray u_slopes;        // layer c: (dh/dx, dh/dz, 0, 0)
+layout(binding = 2) uniform sampler2D u_ripples;            // ripple heights Vh(t) (m), 0 outside
+
+// Ripple height at world (x, z) (bilinear between cell centres; 0 outside the patch).
+float rippleHeight(vec2 world) {
+    if (u_rippleParams.w <= 0.0) return 0.0;
+    vec2 uv = ((world - u_rippleParams.xy) / u_rippleParams.z + 0.5) / u_rippleParams.w;
+    return textureLod(u_ripples, uv, 0.0).r;
+}
+
+// Ripple slope (dh/dx, dh/dz) at world (x, z), central differences over one cell.
+vec2 rippleSlope(vec2 world) {
+    if (u_rippleParams.w <= 0.0) return vec2(0.0);
+    float h = u_rippleParams.z;
+    return vec2(rippleHeight(world + vec2(h, 0.0)) - rippleHeight(world - vec2(h, 0.0)),
+                rippleHeight(world + vec2(0.0, h)) - rippleHeight(world - vec2(0.0, h))) / (2.0 * h);
+}
 
 // The projected grid point (u, v): homogeneous bilinear interpolation, |w| clamped (seed 000).
 vec2 gridPoint(vec2 uv) {

@@ -13,7 +13,7 @@ out vec4 o_color;
 
 void main() {
     float t = u_cameraPositionTime.w;
-    vec2 slope = gerstnerSlope(v_rest, t);
+    vec2 slope = gerstnerSlope(v_rest, t) + rippleSlope(v_world.xz);
     float jacobian = 1.0;
     int cascades = int(u_gridParams.z);
     for (int c = 0; c < cascades; ++c) {

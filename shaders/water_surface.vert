@@ -1,6 +1,6 @@
 #version 450 core
 // Water surface vertices: projected grid point → Gerstner displacement + every FFT cascade's
-// choppy displacement (seed 000 vertex shader).
+// choppy displacement (seed 000 vertex shader) + the ripple height at the displaced point.
 #include "common_frame.glsl"
 #include "common_water.glsl"
 
@@ -26,6 +26,7 @@ void main() {
         vec4 d = textureLod(u_displacement, cascadeCoord(rest, c), lod);
         pos += vec3(u_waterParams.x * d.x, d.y, u_waterParams.x * d.z);
     }
+    pos.y += rippleHeight(pos.xz);
     v_world = pos;
     v_rest = rest;
     gl_Position = u_viewProjection * vec4(pos, 1.0);

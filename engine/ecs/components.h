@@ -11,4 +11,10 @@ struct Transform {
     glm::quat rotation{1.0f, 0.0f, 0.0f, 0.0f};
 };
 
+/// How an entity moves: velocity (m/s, world) and mass (kg), written by physics or scripts.
+struct Motion {
+    glm::vec3 velocity{0.0f};
+    float mass = 1.0f;
+};
+
 } // namespace ob::ecs

@@ -119,12 +119,31 @@ void Renderer::waterPass(const CameraView& camera, const WaterView& water) {
     for (int m = 0; m < waves; ++m) u.gerstner[m] = water.gerstner[size_t(m)];
     u.waterParams = glm::vec4(water.lambda, water.gravity, float(waves), GRID_MIN_W);
     u.gridParams = glm::vec4(float(m_gridResolution), 0.9f * camera.farM, float(cascades), float(layers ? water.resolution : 1));
+    if (water.ripples && water.rippleCells > 0) {
+        if (m_rippleCells != water.rippleCells) {
+            GLuint id;
+            glCreateTextures(GL_TEXTURE_2D, 1, &id);
+            glObjectLabel(GL_TEXTURE, id, -1, "ripple heights");
+            glTextureStorage2D(id, 1, GL_R32F, water.rippleCells, water.rippleCells);
+            glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+            glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+            glTextureParameteri(id, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+            glTextureParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+            const float zero[4] = {0, 0, 0, 0};
+            glTextureParameterfv(id, GL_TEXTURE_BORDER_COLOR, zero);
+            m_rippleTexture = Texture(id);
+            m_rippleCells = water.rippleCells;
+        }
+        glTextureSubImage2D(m_rippleTexture.id(), 0, 0, 0, m_rippleCells, m_rippleCells, GL_RED, GL_FLOAT, water.ripples);
+        u.rippleParams = glm::vec4(water.rippleOrigin, water.rippleCellSize, float(m_rippleCells));
+    }
     glNamedBufferSubData(m_waterUniforms.id(), 0, sizeof u, &u);
     glBindBufferBase(GL_UNIFORM_BUFFER, WATER_UBO_BINDING, m_waterUniforms.id());
 
     glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 2, -1, "water");
     glBindTextureUnit(0, layers ? water.displacement->id() : m_flatMaps.id());
     glBindTextureUnit(1, layers ? water.slopes->id() : m_flatMaps.id());
+    glBindTextureUnit(2, u.rippleParams.w > 0.0f ? m_rippleTexture.id() : 0);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glUseProgram(m_waterProgram.id());

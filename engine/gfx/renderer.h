@@ -31,6 +31,10 @@ struct WaterView {
     float lambda = 0.0f;                    ///< choppy displacement factor λ (X + λ·D)
     float gravity = 9.81f;                  ///< m/s², Gerstner dispersion
     std::vector<glm::vec4> gerstner;        ///< (kx, kz, amplitude, phase) per wave, at most 32
+    const float* ripples = nullptr;         ///< ripple heights Vh(t), rippleCells² row-major (z rows), m
+    int rippleCells = 0;                    ///< ripple patch cells per side (0: no ripple layer)
+    glm::vec2 rippleOrigin{0.0f};           ///< world (x, z) of cell (0, 0)'s centre, m
+    float rippleCellSize = 1.0f;            ///< m per cell
 };
 
 /// std140 mirror of `WaterUniforms` in shaders/common_water.glsl.
@@ -39,9 +43,10 @@ struct WaterUniforms {
     glm::vec4 cascadeSize;
     glm::vec4 waterParams;   ///< λ, gravity, Gerstner wave count, minimum |w|
     glm::vec4 gridParams;    ///< grid resolution, max distance (m), cascades, FFT N
+    glm::vec4 rippleParams;  ///< origin x, origin z (m), cell size (m), cells per side (0: none)
     glm::vec4 gerstner[32];
 };
-static_assert(sizeof(WaterUniforms) == 16 * (4 + 3 + 32), "WaterUniforms must match std140 layout");
+static_assert(sizeof(WaterUniforms) == 16 * (4 + 4 + 32), "WaterUniforms must match std140 layout");
 constexpr int MAX_GERSTNER_WAVES = 32;
 
 /// std140 mirror of `FrameUniforms` in shaders/common_frame.glsl.
@@ -81,6 +86,8 @@ private:
     int m_gridResolution = 0;
     GLsizei m_gridIndexCount = 0;
     Texture m_flatMaps;  // 1×1 layer: no displacement, J = 1, zero slope
+    Texture m_rippleTexture;  // R32F heights of the ripple patch, re-uploaded every frame
+    int m_rippleCells = 0;
     GpuTimer m_gpuTimer{"render"};
 };
 

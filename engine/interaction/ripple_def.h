@@ -1,0 +1,47 @@
+// Interactive ripple layer settings, section [ripples] (SPEC §2.5; seed 001 §III–V).
+#pragma once
+#include "core/schema.h"
+
+#include <string>
+
+namespace ob::interaction {
+
+/// Eq. 6 reference object B, section [ripples.reference].
+struct RippleReferenceDef {
+    float weight = 10.0f;  ///< Bw, kg, > 0
+    float speed = 5.0f;    ///< Bv, m/s, > 0
+    float size = 0.5f;     ///< Bs, radius, m, > 0
+};
+
+template <class V> void describe(V& v, RippleReferenceDef& d) {
+    v.field("weight", d.weight, range(1e-6, 1e9), "reference weight Bw (kg)");
+    v.field("speed", d.speed, range(1e-6, 1e6), "reference speed Bv (m/s)");
+    v.field("size", d.size, range(1e-6, 1e6), "reference size Bs (m)");
+}
+
+/// The ripple patch: a height field in a square of the world that objects disturb.
+struct RippleDef {
+    bool enabled = true;                 ///< false: no ripple layer at all
+    int resolution = 256;                ///< N, cells per side; power of two in [16, 4096]
+    float cell_size = 0.25f;             ///< Δ, metres per cell, [0.01, 100]
+    float damping = 0.95f;               ///< DF of eq. 2, [0, 1]: 0 kills a wave next step, 1 never damps
+    std::string boundary = "absorbing";  ///< "fixed" (border held at 0, reflects) or "absorbing" (sponge band)
+    int sponge_width = 16;               ///< absorbing band width, cells, [1, 512]
+    std::string follow = "fixed";        ///< "fixed" at `center`, or "camera": scrolls in whole cells under the camera
+    glm::vec2 center{0.0f, 0.0f};        ///< patch centre when fixed, world [x, z] m
+    RippleReferenceDef reference;        ///< [ripples.reference]: object B of eq. 6
+};
+
+template <class V> void describe(V& v, RippleDef& d) {
+    v.field("enabled", d.enabled, "ripple layer on or off");
+    v.field("resolution", d.resolution, powerOfTwo(16, 4096), "cells per side (N)");
+    v.field("cell_size", d.cell_size, range(0.01, 100), "metres per cell");
+    v.field("damping", d.damping, range(0, 1), "damping factor DF (eq. 2)");
+    v.field("boundary", d.boundary, Choices{"fixed", "absorbing"}, "border: fixed (reflects) or absorbing (sponge)");
+    v.field("sponge_width", d.sponge_width, range(1, 512), "absorbing band width (cells)");
+    v.field("follow", d.follow, Choices{"fixed", "camera"}, "patch stays at center, or follows the camera");
+    v.field("center", d.center, any(), "patch centre when fixed, world [x, z] m");
+    v.section("reference", d.reference);
+}
+
+} // namespace ob::interaction

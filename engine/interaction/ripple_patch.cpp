@@ -1,0 +1,64 @@
+// Ripple patch placement, world sampling and per-sphere stamping.
+#include "interaction/ripple_patch.h"
+
+#include <cmath>
+#include <glm/geometric.hpp>
+
+namespace ob::interaction {
+
+RipplePatch::RipplePatch(const RippleDef& def)
+    : m_def(def),
+      m_field(def.resolution, def.resolution, def.boundary == "absorbing" ? RippleBoundary::Absorbing : RippleBoundary::Fixed,
+              def.sponge_width) {
+    m_originCell = glm::ivec2(int(std::lround(def.center.x / def.cell_size)), int(std::lround(def.center.y / def.cell_size))) -
+                   glm::ivec2(def.resolution / 2);
+}
+
+void RipplePatch::centerOn(glm::vec2 worldCenter) {
+    glm::ivec2 target = glm::ivec2(int(std::lround(worldCenter.x / m_def.cell_size)), int(std::lround(worldCenter.y / m_def.cell_size))) -
+                        glm::ivec2(m_def.resolution / 2);
+    glm::ivec2 shift = target - m_originCell;
+    if (shift == glm::ivec2(0)) return;
+    m_field.scroll(shift.x, shift.y);
+    m_originCell = target;
+}
+
+glm::vec2 RipplePatch::toGrid(glm::vec2 world) const { return world / m_def.cell_size - glm::vec2(m_originCell); }
+
+// Bilinear sample of a row-major N×M level at grid position g (0 outside).
+static float bilinear(std::span<const float> level, int rows, int cols, glm::vec2 g) {
+    float fx = std::floor(g.x), fz = std::floor(g.y);
+    int x0 = int(fx), z0 = int(fz);
+    if (x0 < 0 || z0 < 0 || x0 + 1 >= cols || z0 + 1 >= rows) return 0.0f;
+    float tx = g.x - fx, tz = g.y - fz;
+    const float* r0 = &level[size_t(z0) * size_t(cols) + size_t(x0)];
+    const float* r1 = r0 + cols;
+    return (r0[0] * (1 - tx) + r0[1] * tx) * (1 - tz) + (r1[0] * (1 - tx) + r1[1] * tx) * tz;
+}
+
+float RipplePatch::heightAt(glm::vec2 world) const {
+    return bilinear(m_field.current(), m_field.rows(), m_field.cols(), toGrid(world));
+}
+
+float RipplePatch::velocityAt(glm::vec2 world, float dt) const {
+    glm::vec2 g = toGrid(world);
+    float now = bilinear(m_field.current(), m_field.rows(), m_field.cols(), g);
+    float before = bilinear(m_field.previous(), m_field.rows(), m_field.cols(), g);
+    return (now - before) / dt;
+}
+
+bool RipplePatch::stampSphere(const BoundingSphere& sphere, SphereContact& contact, const glm::vec3& centre,
+                              const glm::vec3& velocity, float mass, float surfaceY) {
+    glm::vec2 g = toGrid(glm::vec2(centre.x, centre.z));
+    SphereMotion motion;
+    motion.gridX = g.x;
+    motion.gridZ = g.y;
+    motion.centreY = centre.y;
+    motion.verticalVelocity = velocity.y;
+    motion.speed = glm::length(velocity);
+    motion.mass = mass;
+    motion.surfaceY = surfaceY;
+    return stepSphere(m_field, m_footprints, m_def.cell_size, sphere, contact, motion);
+}
+
+} // namespace ob::interaction

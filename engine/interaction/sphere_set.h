@@ -1,0 +1,16 @@
+// The bounding-sphere component: an object's spheres and their Table 2 contact state.
+#pragma once
+#include "interaction/sphere_stamp.h"
+
+#include <vector>
+
+namespace ob::interaction {
+
+/// Spheres in the object's local frame, stamped into the ripple patch in order (seed 001:
+/// an object is one sphere or a set of spheres).
+struct SphereSet {
+    std::vector<BoundingSphere> spheres;
+    std::vector<SphereContact> contacts;  ///< one per sphere, same order
+};
+
+} // namespace ob::interaction

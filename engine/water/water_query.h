@@ -1,0 +1,45 @@
+// WaterQuery: the one interface through which physics and gameplay read the water surface
+// (after Crest's CollProvider / CollProviderNull), and FlatWater, its still-plane stub for tests.
+#pragma once
+#include <cstddef>
+#include <span>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+namespace ob::water {
+
+/// The surface above one world position (x, z) at the query's current time.
+struct WaterSample {
+    float height = 0.0f;             ///< y of the surface, metres
+    glm::vec3 normal{0, 1, 0};       ///< unit normal, y up
+    float verticalVelocity = 0.0f;   ///< ∂height/∂t at the fixed world (x, z), m/s
+};
+
+/// Reads the composite water surface at world positions. Implementations are immutable
+/// between their owner's updates, so any number of threads may query at once.
+class WaterQuery {
+public:
+    virtual ~WaterQuery() = default;
+
+    /// The surface above world (x, z), metres.
+    virtual WaterSample sample(float x, float z) const = 0;
+
+    /// sample() at every point (world x, z); out.size() must equal points.size(). The default
+    /// loops over sample(); implementations override it with a vectorised path.
+    virtual void sampleBatch(std::span<const glm::vec2> points, std::span<WaterSample> out) const;
+};
+
+/// A still, flat sea at height h0: normal up, no motion.
+class FlatWater final : public WaterQuery {
+public:
+    /// The plane y = height (metres).
+    explicit FlatWater(float height = 0.0f) : m_height(height) {}
+
+    WaterSample sample(float x, float z) const override;
+    void sampleBatch(std::span<const glm::vec2> points, std::span<WaterSample> out) const override;
+
+private:
+    float m_height;
+};
+
+} // namespace ob::water
