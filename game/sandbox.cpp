@@ -5,6 +5,7 @@
 #include "core/hash.h"
 #include "ecs/components.h"
 #include "gfx/renderer.h"
+#include "interaction/ripple_patch.h"
 #include "gfx/ui_overlay.h"
 #include "ui_panels.h"
 #include "water_systems.h"
@@ -88,6 +89,12 @@ uint64_t Sandbox::stateHash() {
         h.f32s(&t.position.x, 3);
         h.f32s(&t.rotation.x, 4);
     }
+    if (auto* patch = m_world.resource<interaction::RipplePatch>()) {
+        auto now = patch->field().current(), before = patch->field().previous();
+        h.f32s(now.data(), now.size());
+        h.f32s(before.data(), before.size());
+    }
+    if (auto* ocean = m_world.resource<OceanState>()) h.f64(ocean->mapsTime);
     return h.value();
 }
 
