@@ -6,7 +6,11 @@
 #include "core/log.h"
 #include "gfx/gl.h"
 #include "gfx/renderer.h"
+#include "ecs/components.h"
+#include "objects.h"
 #include "sandbox.h"
+
+#include <glm/gtc/quaternion.hpp>
 
 #include <cerrno>
 #include <cstdio>
@@ -51,7 +55,22 @@ static void writeStats(const std::string& path, Sandbox& sandbox, const std::str
         j["phases"][ecs::phaseName(phase)] = phaseStats(timer.cpuSamples(phase));
         if (!timer.gpuSamples(phase).empty()) j["gpu_phases"][ecs::phaseName(phase)] = phaseStats(timer.gpuSamples(phase));
     }
-    j["entities"] = {{"total", sandbox.world().entityCount()}, {"cameras", sandbox.world().pool<CameraRig>().size()}};
+    j["entities"] = {{"total", sandbox.world().entityCount()},
+                     {"cameras", sandbox.world().pool<CameraRig>().size()},
+                     {"bodies", sandbox.world().pool<Body>().size()}};
+    // Every body at the end: where it is, how it leans, how deep it floats.
+    j["bodies"] = nlohmann::json::array();
+    auto& bodies = sandbox.world().pool<Body>();
+    for (size_t i = 0; i < bodies.size(); ++i) {
+        const Body& b = bodies.components()[i];
+        const ecs::Transform& t = sandbox.world().get<ecs::Transform>(bodies.entities()[i]);
+        glm::vec3 euler = glm::degrees(glm::eulerAngles(t.rotation));  // pitch (x), yaw (y), roll (z)
+        j["bodies"].push_back({{"type", b.type},
+                               {"position", {t.position.x, t.position.y, t.position.z}},
+                               {"roll_deg", euler.z},
+                               {"pitch_deg", euler.x},
+                               {"submerged_fraction", b.submergedFraction}});
+    }
     char hash[32];
     std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(sandbox.stateHash()));
     j["state_hash"] = hash;

@@ -3,6 +3,7 @@
 
 #include "app.h"
 #include "cmd_dump_ocean.h"
+#include "cmd_dump_ripples.h"
 #include "cmd_dump_surface.h"
 #include "ocean/ocean_fft_cpu.h"
 #include "water/composite_water.h"
@@ -133,20 +134,23 @@ int runCli(int argc, char** argv) {
     std::string dumpLayer, dumpOut, dumpPoints;
     double dumpTime = 0.0;
     int dumpGrid = 0;
+    int dumpFrames = -1;
     float dumpExtent = 0.0f;
     SceneFlags dump;
     CLI::App* dumpCmd = app.add_subcommand("dump", "write a layer of the water as a NumPy .npy field");
     dumpCmd->add_option("layer", dumpLayer,
                         "ocean: the first FFT cascade [N, N, 5] = (h, Dx, Dz, dh/dx, dh/dz); "
                         "gerstner: [N, N, 6] = (x, y, z, nx, ny, nz) of rest points (i, j)·E/N; "
-                        "surface: [K, 5] = (height, nx, ny, nz, vertical velocity) at --points")
-        ->required()->check(CLI::IsMember({"ocean", "gerstner", "surface"}));
+                        "surface: [K, 5] = (height, nx, ny, nz, vertical velocity) at --points; "
+                        "ripples: the ripple field Vh(t) [N, N] after --frames K")
+        ->required()->check(CLI::IsMember({"ocean", "gerstner", "surface", "ripples"}));
     dumpCmd->add_option("scene", dump.scene, "scene file")->required();
     dumpCmd->add_option("--time", dumpTime, "simulated time (s)")->check(CLI::Range(0.0, 1e9));
     dumpCmd->add_option("--out", dumpOut, "output .npy file")->required();
     dumpCmd->add_option("--grid", dumpGrid, "gerstner: rest points per side N");
     dumpCmd->add_option("--extent", dumpExtent, "gerstner: side E of the rest grid (m)");
     dumpCmd->add_option("--points", dumpPoints, "surface: float32 .npy [K, 2] of world (x, z)");
+    dumpCmd->add_option("--frames", dumpFrames, "ripples: frames (simulation steps) to run first")->check(CLI::NonNegativeNumber);
     dumpCmd->add_option("--set", dump.sets, "override a scene key: key.path=value (repeatable)");
     dumpCmd->add_option("--seed", dump.seed, "scene seed (same as --set sim.seed=N)")->check(CLI::NonNegativeNumber);
     dumpCmd->callback([&] {
@@ -154,6 +158,10 @@ int runCli(int argc, char** argv) {
             SceneDef scene = dump.load();
             checkWritable(dumpOut, "output");
             if (dumpLayer == "ocean") return dumpOcean(scene.ocean, dumpTime, dumpOut);
+            if (dumpLayer == "ripples") {
+                if (dumpFrames < 0) throw InputError("dump ripples needs --frames K");
+                return dumpRipples(scene, dumpFrames, dumpOut);
+            }
             if (dumpLayer == "gerstner") {
                 if (dumpGrid <= 0 || dumpExtent <= 0.0f) throw InputError("dump gerstner needs --grid N and --extent E (both > 0)");
                 return dumpGerstner(scene.gerstner, scene.ocean.gravity, dumpTime, dumpGrid, dumpExtent, dumpOut, &scene.ocean);

@@ -7,6 +7,7 @@
 #include "gfx/renderer.h"
 #include "interaction/ripple_patch.h"
 #include "gfx/ui_overlay.h"
+#include "objects.h"
 #include "ui_panels.h"
 #include "water_systems.h"
 
@@ -30,7 +31,7 @@ void renderSystem(ecs::World& world, const ecs::Tick& tick) {
     glm::ivec2 size = res->platform->framebufferSize();
     if (size.x <= 0 || size.y <= 0) return;  // minimised
     res->renderer->def() = res->scene->render;
-    res->renderer->render(cameraView(world, size), prepareWaterView(world, tick.time), tick.time, size);
+    res->renderer->render(cameraView(world, size), prepareWaterView(world, tick.time), objectDraws(world), tick.time, size);
     double gpuMs = res->renderer->takeGpuMs();
     if (gpuMs >= 0) res->timer->setGpu(ecs::Phase::Render, gpuMs);
     if (res->ui) {
@@ -49,6 +50,7 @@ struct SystemEntry {
 const SystemEntry SYSTEMS[] = {
     {ecs::Phase::Input, "input", inputSystem},
     {ecs::Phase::Script, "camera", cameraSystem},
+    {ecs::Phase::Physics, "bodies", physicsSystem},
     {ecs::Phase::Interaction, "ripples", interactionSystem},
     {ecs::Phase::Ocean, "ocean", oceanSystem},
     {ecs::Phase::Render, "render", renderSystem},
@@ -62,6 +64,7 @@ Sandbox::Sandbox(const SceneDef& scene) : m_scene(scene), m_schedule(scene.sim) 
     spawnCamera(m_world, m_scene.camera);
     addOcean(m_world, m_scene.ocean, m_scene.gerstner);
     addRipples(m_world, m_scene.ripples, float(m_schedule.stepSeconds()));
+    spawnObjects(m_world, m_scene.physics, m_scene.objects);
 }
 
 Sandbox::~Sandbox() = default;

@@ -1,6 +1,7 @@
 // A scene: every Def of the sandbox, read from a TOML file in config/scenes/.
 #pragma once
 #include "camera.h"
+#include "objects.h"
 #include "ecs/schedule.h"
 #include "gfx/render_def.h"
 #include "interaction/ripple_def.h"
@@ -22,6 +23,8 @@ struct SceneDef {
     ocean::OceanDef ocean;        ///< [ocean]
     ocean::GerstnerDef gerstner;  ///< [gerstner]
     interaction::RippleDef ripples; ///< [ripples]
+    physics::PhysicsDef physics;  ///< [physics]
+    std::vector<ObjectDef> objects; ///< [[objects]]
 };
 
 template <class V> void describe(V& v, SceneDef& s) {
@@ -32,6 +35,8 @@ template <class V> void describe(V& v, SceneDef& s) {
     v.section("ocean", s.ocean);
     v.section("gerstner", s.gerstner);
     v.section("ripples", s.ripples);
+    v.section("physics", s.physics);
+    v.list("objects", s.objects, "floating bodies");
 }
 
 /// Loads a scene file and applies `--set key.path=value` overrides (in order).

@@ -26,6 +26,9 @@ Renderer::Renderer(const RenderDef& def)
     : m_def(def),
       m_skyProgram(loadProgram("sky", {"common_fullscreen.vert", "sky_background.frag"})),
       m_waterProgram(loadProgram("water_surface", {"water_surface.vert", "water_surface.frag"})),
+      m_objectProgram(loadProgram("object_mesh", {"object_mesh.vert", "object_mesh.frag"})),
+      m_sphereMesh(makeSphereMesh(16)),
+      m_boxMesh(makeBoxMesh()),
       m_emptyVao(createVertexArray("fullscreen triangle")),
       m_frameUniforms(createBuffer("frame uniforms", sizeof(FrameUniforms))),
       m_waterUniforms(createBuffer("water uniforms", sizeof(WaterUniforms))) {
@@ -64,7 +67,8 @@ void Renderer::buildGrid(int resolution) {
     glVertexArrayAttribBinding(m_gridVao.id(), 0, 0);
 }
 
-void Renderer::render(const CameraView& camera, const WaterView& water, double time, glm::ivec2 size) {
+void Renderer::render(const CameraView& camera, const WaterView& water, const std::vector<ObjectDraw>& objects, double time,
+                      glm::ivec2 size) {
     m_gpuTimer.begin();
     glm::mat4 viewProjection = camera.projection * camera.view;
     FrameUniforms u{};
@@ -84,6 +88,7 @@ void Renderer::render(const CameraView& camera, const WaterView& water, double t
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 
     // --- passes (sky last: it shades only the pixels nothing else covered)
+    opaquePass(objects);
     waterPass(camera, water);
     skyPass();
 
@@ -100,6 +105,24 @@ void Renderer::skyPass() {
     glUseProgram(m_skyProgram.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glDepthMask(GL_TRUE);
+    glPopDebugGroup();
+}
+
+void Renderer::opaquePass(const std::vector<ObjectDraw>& objects) {
+    if (objects.empty()) return;
+    glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 3, -1, "opaque");
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glEnable(GL_CULL_FACE);
+    glUseProgram(m_objectProgram.id());
+    for (const ObjectDraw& o : objects) {
+        const Mesh& mesh = o.mesh == MeshKind::Sphere ? m_sphereMesh : m_boxMesh;
+        glProgramUniformMatrix4fv(m_objectProgram.id(), 0, 1, GL_FALSE, &o.model[0][0]);
+        glProgramUniform3fv(m_objectProgram.id(), 1, 1, &o.color.x);
+        glBindVertexArray(mesh.vao.id());
+        glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
+    }
+    glDisable(GL_CULL_FACE);
     glPopDebugGroup();
 }
 

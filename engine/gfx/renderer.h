@@ -1,9 +1,11 @@
 // The renderer: a short list of passes over the default framebuffer.
-//   water → the composite sea surface on a projected grid (Gerstner + FFT cascades)
+//   opaque → objects (built-in meshes) lit by the sun and sky
+//   water → the composite sea surface on a projected grid (Gerstner + FFT cascades + ripples)
 //   sky   → background where nothing was drawn: analytic daylight sky and sun disk
 #pragma once
 #include "gfx/gpu_timer.h"
 #include "gfx/handles.h"
+#include "gfx/mesh.h"
 #include "gfx/render_def.h"
 
 #include <array>
@@ -37,6 +39,16 @@ struct WaterView {
     float rippleCellSize = 1.0f;            ///< m per cell
 };
 
+/// The built-in shapes an object can be drawn as.
+enum class MeshKind : uint8_t { Sphere, Box };
+
+/// One opaque object to draw this frame.
+struct ObjectDraw {
+    MeshKind mesh = MeshKind::Sphere;
+    glm::mat4 model{1.0f};          ///< unit mesh → world (scale, rotation, position)
+    glm::vec3 color{0.8f};          ///< base colour (linear RGB)
+};
+
 /// std140 mirror of `WaterUniforms` in shaders/common_water.glsl.
 struct WaterUniforms {
     glm::vec4 corner[4];
@@ -65,19 +77,23 @@ class Renderer {
 public:
     explicit Renderer(const RenderDef& def);
     /// Draws one frame of the scene into the default framebuffer of `size`.
-    void render(const CameraView& camera, const WaterView& water, double time, glm::ivec2 size);
+    void render(const CameraView& camera, const WaterView& water, const std::vector<ObjectDraw>& objects, double time,
+                glm::ivec2 size);
     /// GPU ms of the latest resolved frame (negative until one resolves).
     double takeGpuMs() { return m_gpuTimer.takeResultMs(); }
     RenderDef& def() { return m_def; }
 
 private:
     void skyPass();    // in: frame uniforms, depth; out: colour where nothing was drawn
+    void opaquePass(const std::vector<ObjectDraw>& objects);  // in: frame uniforms, objects; out: colour, depth
     void waterPass(const CameraView& camera, const WaterView& water);  // in: frame uniforms, water layers; out: colour, depth
     void buildGrid(int resolution);
 
     RenderDef m_def;
     Program m_skyProgram;
     Program m_waterProgram;
+    Program m_objectProgram;
+    Mesh m_sphereMesh, m_boxMesh;
     VertexArray m_emptyVao;
     Buffer m_frameUniforms;
     Buffer m_waterUniforms;

@@ -26,7 +26,7 @@ struct RippleDef {
     float cell_size = 0.25f;             ///< Δ, metres per cell, [0.01, 100]
     float damping = 0.95f;               ///< DF of eq. 2, [0, 1]: 0 kills a wave next step, 1 never damps
     std::string boundary = "absorbing";  ///< "fixed" (border held at 0, reflects) or "absorbing" (sponge band)
-    int sponge_width = 16;               ///< absorbing band width, cells, [1, 512]
+    int sponge_width = 32;               ///< absorbing band width, cells, [1, 512]; 32 reflects ≤ 5% of a ring's amplitude
     std::string follow = "fixed";        ///< "fixed" at `center`, or "camera": scrolls in whole cells under the camera
     glm::vec2 center{0.0f, 0.0f};        ///< patch centre when fixed, world [x, z] m
     RippleReferenceDef reference;        ///< [ripples.reference]: object B of eq. 6

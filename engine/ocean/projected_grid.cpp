@@ -32,15 +32,17 @@ GridCorners projectedGridCorners(const glm::mat4& viewProjection, const glm::vec
     if (glm::dot(level, level) > 1e-12f && clip.w > 0.0f) horizonY = clip.y / clip.w;
     else horizonY = forward.y < 0.0f ? 1e9f : -1e9f;  // looking straight down or up
 
-    // Water rows of the screen, a hair short of the horizon (there w → 0).
+    // Water rows of the screen, a hair short of the horizon (there w → 0). The edge nearest
+    // the camera reaches 4× further: crests there rise on screen and would open a gap.
     const float lo = -1.0f - margin, hi = 1.0f + margin, gap = 1e-4f;
+    const float nearLo = -1.0f - 4.0f * margin, nearHi = 1.0f + 4.0f * margin;
     float nearY, farY;
     if (above) {
-        nearY = lo;
+        nearY = nearLo;
         farY = std::min(hi, horizonY - gap);
         if (farY <= nearY) return out;
     } else {
-        nearY = hi;
+        nearY = nearHi;
         farY = std::max(lo, horizonY + gap);
         if (farY >= nearY) return out;
     }

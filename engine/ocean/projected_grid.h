@@ -19,7 +19,7 @@ struct GridCorners {
 
 /// The grid over the part of the screen where the water plane is seen (below the horizon
 /// from above the water, above it from below), extended by `margin` (NDC units) past the
-/// screen edges so displaced waves never show a gap. `viewProjection` must have no roll.
+/// screen edges (4·margin at the edge nearest the camera) so displaced waves never show a gap. `viewProjection` must have no roll.
 GridCorners projectedGridCorners(const glm::mat4& viewProjection, const glm::vec3& eye, float margin);
 
 /// World (x, z) of grid point (u, v) ∈ [0, 1]²: bilinear interpolation of the homogeneous

@@ -1,0 +1,67 @@
+// Built-in meshes.
+#include "gfx/mesh.h"
+
+#include <cmath>
+#include <glm/glm.hpp>
+#include <vector>
+
+namespace ob::gfx {
+
+static Mesh upload(const char* label, const std::vector<glm::vec3>& interleaved, const std::vector<uint32_t>& indices) {
+    Mesh m;
+    m.vertices = createBuffer(label, GLsizeiptr(interleaved.size() * sizeof(glm::vec3)), interleaved.data());
+    m.indices = createBuffer(label, GLsizeiptr(indices.size() * sizeof(uint32_t)), indices.data());
+    m.indexCount = GLsizei(indices.size());
+    m.vao = createVertexArray(label);
+    GLuint vao = m.vao.id();
+    glVertexArrayVertexBuffer(vao, 0, m.vertices.id(), 0, 2 * sizeof(glm::vec3));
+    glVertexArrayElementBuffer(vao, m.indices.id());
+    for (GLuint a = 0; a < 2; ++a) {
+        glEnableVertexArrayAttrib(vao, a);
+        glVertexArrayAttribFormat(vao, a, 3, GL_FLOAT, GL_FALSE, a * sizeof(glm::vec3));
+        glVertexArrayAttribBinding(vao, a, 0);
+    }
+    return m;
+}
+
+Mesh makeSphereMesh(int rings) {
+    const int segments = 2 * rings;
+    std::vector<glm::vec3> v;
+    std::vector<uint32_t> idx;
+    for (int r = 0; r <= rings; ++r)
+        for (int s = 0; s <= segments; ++s) {
+            float theta = float(M_PI) * float(r) / float(rings), phi = 2.0f * float(M_PI) * float(s) / float(segments);
+            glm::vec3 p(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
+            v.push_back(p);
+            v.push_back(p);
+        }
+    for (int r = 0; r < rings; ++r)
+        for (int s = 0; s < segments; ++s) {
+            uint32_t a = uint32_t(r * (segments + 1) + s), b = a + 1, c = a + uint32_t(segments + 1), d = c + 1;
+            idx.insert(idx.end(), {a, c, b, b, c, d});
+        }
+    return upload("sphere mesh", v, idx);
+}
+
+Mesh makeBoxMesh() {
+    std::vector<glm::vec3> v;
+    std::vector<uint32_t> idx;
+    for (int axis = 0; axis < 3; ++axis)
+        for (float sign : {-1.0f, 1.0f}) {
+            glm::vec3 n(0.0f);
+            n[axis] = sign;
+            glm::vec3 u(0.0f), w(0.0f);
+            u[(axis + 1) % 3] = 1.0f;
+            w[(axis + 2) % 3] = 1.0f;
+            if (sign < 0) std::swap(u, w);  // keep counter-clockwise seen from outside
+            uint32_t base = uint32_t(v.size() / 2);
+            for (glm::vec2 c : {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(1, 1), glm::vec2(-1, 1)}) {
+                v.push_back(n + c.x * u + c.y * w);
+                v.push_back(n);
+            }
+            idx.insert(idx.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+        }
+    return upload("box mesh", v, idx);
+}
+
+} // namespace ob::gfx

@@ -1,0 +1,29 @@
+// Rigid-body physics and water forces, section [physics].
+#pragma once
+#include "core/schema.h"
+
+namespace ob::physics {
+
+/// The Bullet world and how the water pushes bodies.
+struct PhysicsDef {
+    float gravity = 9.81f;              ///< m/s², downward, [0, 100]
+    float water_density = 1025.0f;      ///< ρ of sea water, kg/m³, [1, 20000]
+    float linear_drag = 1000.0f;        ///< linear drag per submerged probe area, N·s/m per m², [0, 1e6]; stands in for the
+                                        ///< wave-radiation damping of a heaving body (order ρ·ω·r ≈ 2000 for r = 0.5 m)
+    float quadratic_drag = 0.6f;        ///< ½·ρ·C_d factor: quadratic drag coefficient C_d, [0, 100]
+    float angular_damping = 0.3f;       ///< angular velocity damping per second while in water, [0, 1]
+    bool buoyancy_along_normal = false; ///< true: buoyancy along the surface normal; false: straight up
+    int substeps = 1;                   ///< Bullet sub-steps per simulation step, [1, 16]
+};
+
+template <class V> void describe(V& v, PhysicsDef& d) {
+    v.field("gravity", d.gravity, range(0, 100), "gravity, m/s²");
+    v.field("water_density", d.water_density, range(1, 20000), "water density ρ, kg/m³");
+    v.field("linear_drag", d.linear_drag, range(0, 1e6), "linear drag per submerged probe area, N·s/m per m²");
+    v.field("quadratic_drag", d.quadratic_drag, range(0, 100), "quadratic drag coefficient C_d");
+    v.field("angular_damping", d.angular_damping, range(0, 1), "angular velocity damping per second in water");
+    v.field("buoyancy_along_normal", d.buoyancy_along_normal, "buoyancy along the surface normal instead of up");
+    v.field("substeps", d.substeps, range(1, 16), "Bullet sub-steps per simulation step");
+}
+
+} // namespace ob::physics
