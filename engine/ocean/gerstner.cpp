@@ -1,5 +1,6 @@
 // Gerstner waves: validation, spectrum-derived generation (after Thon et al. 2000) and the
 // vectorised evaluation of SPEC §2.2 (seed 000 eq. 8, seed 002 §2; normal from ∂r/∂β × ∂r/∂α).
+#include "core/simd.h"
 #include "ocean/gerstner.h"
 
 #include "core/log.h"
@@ -12,14 +13,6 @@
 #include <cstdio>
 #include <numbers>
 
-// AVX2 and baseline clones of the hot loops, picked at load time, as in spectrum.cpp.
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(OB_NO_SIMD_CLONES)
-#define OB_VECTOR_KERNEL __attribute__((target_clones("avx2", "default")))
-#elif defined(__GNUC__)
-#define OB_VECTOR_KERNEL __attribute__((noinline))
-#else
-#define OB_VECTOR_KERNEL
-#endif
 
 namespace ob::ocean {
 

@@ -1,5 +1,6 @@
 // CPU spectral ocean: synthesis (eq. 2, 6, 7) → four packed inverse FFTs (eq. 1, 9, FFTW) →
 // SoA channels and the foam Jacobian. SPEC §2.1; seed 000 §2.1, §3.3; seed 003 "Future".
+#include "core/simd.h"
 #include "ocean/ocean_fft_cpu.h"
 
 #include "core/error.h"
@@ -14,14 +15,6 @@
 #include <fftw3.h>
 #include <unistd.h>
 
-// AVX2 and baseline clones of the unpack loop, as in spectrum.cpp.
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(OB_NO_SIMD_CLONES)
-#define OB_VECTOR_KERNEL __attribute__((target_clones("avx2", "default")))
-#elif defined(__GNUC__)
-#define OB_VECTOR_KERNEL __attribute__((noinline))  // keeps the __restrict of its parameters
-#else
-#define OB_VECTOR_KERNEL
-#endif
 
 namespace ob::ocean {
 
@@ -69,25 +62,6 @@ void exportWisdom() {
         if (!ec) return;
     }
     std::filesystem::remove(tmp, ec);
-}
-
-void validate(const OceanDef& def) {
-    std::string problems;
-    const auto check = [&](bool ok, const char* key, const std::string& what) {
-        if (!ok) problems += std::string(problems.empty() ? "" : "\n") + "ocean." + key + ": " + what;
-    };
-    const int n = def.resolution;
-    check(n >= 4 && n <= 4096 && (n & (n - 1)) == 0, "resolution",
-          "must be a power of two in [4, 4096], got " + std::to_string(n));
-    check(def.cascades >= 1 && def.cascades <= 4, "cascades",
-          "must be in [1, 4], got " + std::to_string(def.cascades));
-    check(def.patch_size > 0.0f, "patch_size", "must be > 0 metres");
-    check(def.gravity > 0.0f, "gravity", "must be > 0 m/s²");
-    check(def.wind_speed >= 0.0f, "wind_speed", "must be >= 0 m/s");
-    check(def.wind_direction.x != 0.0f || def.wind_direction.y != 0.0f, "wind_direction", "must not be [0, 0]");
-    check(def.spectrum == "phillips" || def.spectrum == "jonswap", "spectrum",
-          "must be \"phillips\" or \"jonswap\", got \"" + def.spectrum + "\"");
-    if (!problems.empty()) throw InputError(problems);
 }
 
 // Packed pairs → SoA channels, and J from the three displacement derivatives.
@@ -139,7 +113,7 @@ struct OceanFftCpu::Cascade {
 };
 
 OceanFftCpu::OceanFftCpu(const OceanDef& def, int threads) {
-    validate(def);
+    validateOceanDef(def, 4096);
     m_n = def.resolution;
     m_lambda = -def.choppiness;
     const bool twoCores = std::thread::hardware_concurrency() >= 2;

@@ -53,25 +53,6 @@ static_assert(sizeof(Complex) == 8, "std430 vec2");
 
 int signedIndex(int r, int n) { return r < n / 2 ? r : r - n; }
 
-void validate(const OceanDef& def) {
-    std::string problems;
-    const auto check = [&](bool ok, const char* key, const std::string& what) {
-        if (!ok) problems += std::string(problems.empty() ? "" : "\n") + "ocean." + key + ": " + what;
-    };
-    const int n = def.resolution;
-    check(n >= 4 && n <= OceanFftGpu::MAX_RESOLUTION && (n & (n - 1)) == 0, "resolution",
-          "must be a power of two in [4, " + std::to_string(OceanFftGpu::MAX_RESOLUTION) +
-              "] for the GPU backend, got " + std::to_string(n));
-    check(def.cascades >= 1 && def.cascades <= 4, "cascades", "must be in [1, 4], got " + std::to_string(def.cascades));
-    check(def.patch_size > 0.0f, "patch_size", "must be > 0 metres");
-    check(def.gravity > 0.0f, "gravity", "must be > 0 m/s²");
-    check(def.wind_speed >= 0.0f, "wind_speed", "must be >= 0 m/s");
-    check(def.wind_direction.x != 0.0f || def.wind_direction.y != 0.0f, "wind_direction", "must not be [0, 0]");
-    check(def.spectrum == "phillips" || def.spectrum == "jonswap", "spectrum",
-          "must be \"phillips\" or \"jonswap\", got \"" + def.spectrum + "\"");
-    if (!problems.empty()) throw InputError(problems);
-}
-
 GLintptr bytes(size_t count, size_t size) { return GLintptr(count * size); }
 
 } // namespace
@@ -79,7 +60,7 @@ GLintptr bytes(size_t count, size_t size) { return GLintptr(count * size); }
 bool OceanFftGpu::available() { return GLAD_GL_VERSION_4_3 != 0; }
 
 OceanFftGpu::OceanFftGpu(const OceanDef& def) {
-    validate(def);
+    validateOceanDef(def, OceanFftGpu::MAX_RESOLUTION);
     m_n = def.resolution;
     while ((1 << m_log2n) < m_n) ++m_log2n;
     m_lambda = -def.choppiness;

@@ -1,5 +1,7 @@
 // Wave spectra, seeded h̃0(K) and the vectorised synthesis of h̃(K,t): SPEC §2.1 eq. 2–7,
 // seed 000 §2.1, seed 003; JONSWAP after Hasselmann et al. 1973 (formulas in spectrum.h).
+#include "core/error.h"
+#include "core/simd.h"
 #include "ocean/spectrum.h"
 
 #include <algorithm>
@@ -8,15 +10,6 @@
 #include <limits>
 #include <numbers>
 
-// Hot loops are also compiled for AVX2 and picked at load time (ifunc); both clones do the
-// same IEEE operations in the same order (no FMA contraction), so results are bit-identical.
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(OB_NO_SIMD_CLONES)
-#define OB_VECTOR_KERNEL __attribute__((target_clones("avx2", "default")))
-#elif defined(__GNUC__)
-#define OB_VECTOR_KERNEL __attribute__((noinline))  // keeps the __restrict of its parameters
-#else
-#define OB_VECTOR_KERNEL
-#endif
 
 namespace ob::ocean {
 
@@ -358,6 +351,24 @@ void CascadeSpectrum::synthesize(double t, int pairBegin, int pairEnd, const Pac
                      out.dxxDzz + 2 * off, m_k[row], m_n);
         }
     }
+}
+
+void validateOceanDef(const OceanDef& def, int maxResolution) {
+    std::string problems;
+    const auto check = [&](bool ok, const char* key, const std::string& what) {
+        if (!ok) problems += std::string(problems.empty() ? "" : "\n") + "ocean." + key + ": " + what;
+    };
+    const int n = def.resolution;
+    check(n >= 4 && n <= maxResolution && (n & (n - 1)) == 0, "resolution",
+          "must be a power of two in [4, " + std::to_string(maxResolution) + "], got " + std::to_string(n));
+    check(def.cascades >= 1 && def.cascades <= 4, "cascades", "must be in [1, 4], got " + std::to_string(def.cascades));
+    check(def.patch_size > 0.0f, "patch_size", "must be > 0 metres");
+    check(def.gravity > 0.0f, "gravity", "must be > 0 m/s²");
+    check(def.wind_speed >= 0.0f, "wind_speed", "must be >= 0 m/s");
+    check(def.wind_direction.x != 0.0f || def.wind_direction.y != 0.0f, "wind_direction", "must not be [0, 0]");
+    check(def.spectrum == "phillips" || def.spectrum == "jonswap", "spectrum",
+          "must be \"phillips\" or \"jonswap\", got \"" + def.spectrum + "\"");
+    if (!problems.empty()) throw InputError(problems);
 }
 
 } // namespace ob::ocean

@@ -100,6 +100,11 @@ double modeVariance(double kx, double kz, double dk, const SpectrumParams& p);
 /// Side of cascade c's tile, metres.
 double cascadePatchSize(const OceanDef& def, int cascade);
 
+/// Throws ob::InputError listing every key of def no backend can run (resolution a power of
+/// two in [4, maxResolution], cascades in [1, 4], positive sizes, a wind direction), each
+/// line "ocean.key: problem". Backends call it: their callers may bypass the scene loader.
+void validateOceanDef(const OceanDef& def, int maxResolution);
+
 /// Band of wave numbers |K| a cascade keeps, rad/m, half open [kMin, kMax).
 struct WaveBand {
     double kMin = 0.0;  ///< rad/m, inclusive
