@@ -20,9 +20,15 @@ float rippleHeight(vec2 world) {
     return textureLod(u_ripples, uv, 0.0).r;
 }
 
+// True inside the ripple patch (plus one cell).
+bool inRipplePatch(vec2 world) {
+    vec2 cell = (world - u_rippleParams.xy) / u_rippleParams.z;
+    return u_rippleParams.w > 0.0 && all(greaterThan(cell, vec2(-1.0))) && all(lessThan(cell, vec2(u_rippleParams.w)));
+}
+
 // Ripple slope (dh/dx, dh/dz) at world (x, z), central differences over one cell.
 vec2 rippleSlope(vec2 world) {
-    if (u_rippleParams.w <= 0.0) return vec2(0.0);
+    if (!inRipplePatch(world)) return vec2(0.0);
     float h = u_rippleParams.z;
     return vec2(rippleHeight(world + vec2(h, 0.0)) - rippleHeight(world - vec2(h, 0.0)),
                 rippleHeight(world + vec2(0.0, h)) - rippleHeight(world - vec2(0.0, h))) / (2.0 * h);
@@ -34,30 +40,21 @@ vec2 gridPoint(vec2 uv) {
     return p.xz / max(p.w, u_waterParams.w);
 }
 
-// Gerstner displacement of rest point (α, β) at time t (SPEC §2.2): (x − α, y, z − β).
-vec3 gerstnerOffset(vec2 rest, float t) {
-    vec3 d = vec3(0.0);
-    int count = int(u_waterParams.z);
-    for (int m = 0; m < count; ++m) {
-        vec4 w = u_gerstner[m];
-        float k = length(w.xy);
-        float theta = dot(w.xy, rest) - sqrt(u_waterParams.y * k) * t - w.w;
-        d.xz -= (w.xy / k) * w.z * sin(theta);
-        d.y += w.z * cos(theta);
-    }
-    return d;
-}
-
-// Gerstner slope (∂y/∂x, ∂y/∂z) of the displaced surface, from the analytic normal
-// n = ∂r/∂β × ∂r/∂α (SPEC §2.2), as −n.xz / n.y.
-vec2 gerstnerSlope(vec2 rest, float t) {
+// Gerstner waves at rest point (α, β), time t (SPEC §2.2), in one pass over the waves:
+// the displacement (x − α, y, z − β), and the slope (∂y/∂x, ∂y/∂z) of the displaced surface
+// from the analytic normal n = ∂r/∂β × ∂r/∂α, as −n.xz / n.y.
+void gerstner(vec2 rest, float t, out vec3 offset, out vec2 slope) {
+    offset = vec3(0.0);
     float axx = 0.0, axz = 0.0, azz = 0.0, sx = 0.0, sz = 0.0;
     int count = int(u_waterParams.z);
     for (int m = 0; m < count; ++m) {
         vec4 w = u_gerstner[m];
         float k = length(w.xy);
         float theta = dot(w.xy, rest) - sqrt(u_waterParams.y * k) * t - w.w;
-        float ac = w.z * cos(theta) / k, as = w.z * sin(theta);
+        float c = cos(theta), s = sin(theta);
+        offset.xz -= (w.xy / k) * w.z * s;
+        offset.y += w.z * c;
+        float ac = w.z * c / k, as = w.z * s;
         axx += w.x * w.x * ac;
         axz += w.x * w.y * ac;
         azz += w.y * w.y * ac;
@@ -67,7 +64,7 @@ vec2 gerstnerSlope(vec2 rest, float t) {
     vec3 ta = vec3(1.0 - axx, -sx, -axz);   // ∂r/∂α in (x, y, z)
     vec3 tb = vec3(-axz, -sz, 1.0 - azz);   // ∂r/∂β
     vec3 n = cross(tb, ta);
-    return -n.xz / max(n.y, 1e-4);
+    slope = -n.xz / max(n.y, 1e-4);
 }
 
 // Texture coordinate of world rest point p in cascade c (texel i sits at X = i·L/N).

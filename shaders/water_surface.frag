@@ -9,11 +9,12 @@
 
 in vec3 v_world;
 in vec2 v_rest;
+in vec2 v_gerstnerSlope;
 out vec4 o_color;
 
 void main() {
     float t = u_cameraPositionTime.w;
-    vec2 slope = gerstnerSlope(v_rest, t) + rippleSlope(v_world.xz);
+    vec2 slope = v_gerstnerSlope + rippleSlope(v_world.xz);
     float jacobian = 1.0;
     int cascades = int(u_gridParams.z);
     for (int c = 0; c < cascades; ++c) {

@@ -7,6 +7,7 @@
 layout(location = 0) in vec2 a_uv;
 out vec3 v_world;   // displaced surface point (m)
 out vec2 v_rest;    // rest point on the mean plane (m)
+out vec2 v_gerstnerSlope;  // Gerstner slope per vertex: long waves are smooth across a cell
 
 void main() {
     vec2 rest = gridPoint(a_uv);
@@ -19,7 +20,9 @@ void main() {
     float spacing = length(next - rest);
 
     float t = u_cameraPositionTime.w;
-    vec3 pos = vec3(rest.x, 0.0, rest.y) + gerstnerOffset(rest, t);
+    vec3 offset;
+    gerstner(rest, t, offset, v_gerstnerSlope);
+    vec3 pos = vec3(rest.x, 0.0, rest.y) + offset;
     int cascades = int(u_gridParams.z);
     for (int c = 0; c < cascades; ++c) {
         float lod = log2(max(spacing * u_gridParams.w / u_cascadeSize[c], 1.0));
