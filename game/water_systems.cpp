@@ -1,17 +1,18 @@
-// Ocean simulation and its hand-over to the renderer.
+// The water's systems: the ocean, the ripple patch and its stamps, and the hand-over to the
+// renderer.
 #include "water_systems.h"
 
 #include "camera.h"
 #include "core/log.h"
 #include "ecs/components.h"
+#include "gfx/gl.h"
 #include "interaction/ripple_patch.h"
 #include "interaction/sphere_set.h"
-#include "gfx/gl.h"
 #include "ocean/gerstner.h"
 #include "ocean/ocean_fft_cpu.h"
-#include "water/composite_water.h"
 #include "ocean/ocean_fft_gpu.h"
 #include "ocean/ocean_textures.h"
+#include "water/composite_water.h"
 
 namespace ob::game {
 
@@ -64,15 +65,10 @@ void addRipples(ecs::World& world, const interaction::RippleDef& def, float step
     }
 }
 
-// The water surface height (every layer) under world (x, z): what spheres touch.
-static float surfaceHeight(ecs::World& world, const interaction::RipplePatch& patch, glm::vec2 xz) {
-    if (OceanState* ocean = world.resource<OceanState>()) return ocean->water->sample(xz.x, xz.y).height;
-    return patch.heightAt(xz);
-}
-
-void interactionSystem(ecs::World& world, const ecs::Tick& tick) {
+void interactionSystem(ecs::World& world, const ecs::Tick&) {
     auto* patch = world.resource<interaction::RipplePatch>();
-    if (!patch) return;
+    const OceanState* ocean = world.resource<OceanState>();
+    if (!patch || !ocean) return;
     if (patch->def().follow == "camera") {
         auto& rigs = world.pool<CameraRig>();
         if (rigs.size() > 0) {
@@ -93,14 +89,13 @@ void interactionSystem(ecs::World& world, const ecs::Tick& tick) {
         set.contacts.resize(set.spheres.size());
         for (size_t k = 0; k < set.spheres.size(); ++k) {
             glm::vec3 centre = transform->position + transform->rotation * set.spheres[k].offset;
-            glm::vec2 xz(centre.x, centre.z);
-            float surface = surfaceHeight(world, *patch, xz);
+            // Table 2 measures contact against the whole surface (every layer), as rendered.
+            float surface = ocean->water->sample(centre.x, centre.z).height;
             patch->stampSphere(set.spheres[k], set.contacts[k], centre, velocity, mass, surface);
         }
     }
     // --- convolution
     patch->step();
-    (void)tick;
 }
 
 gfx::WaterView prepareWaterView(ecs::World& world, double time) {
