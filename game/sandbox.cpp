@@ -71,7 +71,7 @@ Sandbox::~Sandbox() = default;
 
 void Sandbox::attachPlatform(platform::Platform& platform, bool withUi) {
     m_renderer = std::make_unique<gfx::Renderer>(m_scene.render);
-    attachOceanGpu(m_world);
+    attachWaterGpu(m_world);
     if (withUi && platform.nativeWindow()) m_ui = std::make_unique<gfx::UiOverlay>(platform.nativeWindow());
     m_world.setResource(std::make_unique<FrameResources>(
         FrameResources{&platform, m_renderer.get(), m_ui.get(), &m_schedule.timer(), &m_scene}));

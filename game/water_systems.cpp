@@ -30,7 +30,14 @@ void addOcean(ecs::World& world, const ocean::OceanDef& def, const ocean::Gerstn
     world.setResource(std::move(state));
 }
 
-void attachOceanGpu(ecs::World& world) {
+void attachWaterGpu(ecs::World& world) {
+    // The ripple patch: auto means the GPU where there is one (software rendering: the CPU).
+    if (auto* patch = world.resource<interaction::RipplePatch>()) {
+        const std::string& backend = patch->def().backend;
+        if (backend == "gpu" || (backend == "auto" && !gfx::isSoftwareRenderer())) patch->useGpu();
+        logInfo("ripples: %s backend, %d² cells of %g m", patch->onGpu() ? "gpu (compute shaders)" : "cpu",
+                patch->def().resolution, double(patch->def().cell_size));
+    }
     OceanState* ocean = world.resource<OceanState>();
     if (!ocean) return;
     ocean->textures = std::make_unique<ocean::OceanTextures>(ocean->def.resolution, ocean->def.cascades);

@@ -40,8 +40,9 @@ struct OceanState {
 
 /// Creates the ocean resource from the scene's [ocean] and [gerstner].
 void addOcean(ecs::World& world, const ocean::OceanDef& def, const ocean::GerstnerDef& gerstner);
-/// Creates the textures and, per [ocean] backend, the GPU FFT (needs a current GL context).
-void attachOceanGpu(ecs::World& world);
+/// Creates the textures and, per [ocean] and [ripples] backend, the GPU FFT and the GPU
+/// ripple field (needs a current GL context).
+void attachWaterGpu(ecs::World& world);
 /// Ocean phase: the CPU maps at the end of this step.
 void oceanSystem(ecs::World& world, const ecs::Tick& tick);
 /// Creates the ripple patch resource from the scene's [ripples] (nothing when disabled) and

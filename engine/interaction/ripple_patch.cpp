@@ -1,6 +1,10 @@
 // Ripple patch placement, world sampling and per-sphere stamping.
 #include "interaction/ripple_patch.h"
 
+#include "interaction/ripple_gpu.h"
+
+#include <algorithm>
+
 #include <cmath>
 #include <glm/geometric.hpp>
 
@@ -14,12 +18,34 @@ RipplePatch::RipplePatch(const RippleDef& def)
                    glm::ivec2(def.resolution / 2);
 }
 
+RipplePatch::~RipplePatch() = default;
+
+void RipplePatch::useGpu() {
+    m_gpu = std::make_unique<RippleFieldGpu>(m_field.rows(), m_field.cols(), m_field.boundary(), m_field.spongeWidth());
+    m_gpu->upload(m_field);
+}
+
+void RipplePatch::step() {
+    if (!m_gpu) {
+        m_field.step(m_def.damping);
+        return;
+    }
+    m_gpu->stamp(m_pending);
+    m_pending.clear();
+    m_gpu->step(m_def.damping);
+    m_gpu->readCurrent(m_readback);
+    std::copy(m_readback.begin(), m_readback.end(), m_field.current().begin());
+    m_gpu->readPrevious(m_readback);
+    std::copy(m_readback.begin(), m_readback.end(), m_field.previous().begin());
+}
+
 void RipplePatch::centerOn(glm::vec2 worldCenter) {
     glm::ivec2 target = glm::ivec2(int(std::lround(worldCenter.x / m_def.cell_size)), int(std::lround(worldCenter.y / m_def.cell_size))) -
                         glm::ivec2(m_def.resolution / 2);
     glm::ivec2 shift = target - m_originCell;
     if (shift == glm::ivec2(0)) return;
     m_field.scroll(shift.x, shift.y);
+    if (m_gpu) m_gpu->scroll(shift.x, shift.y);
     m_originCell = target;
 }
 
@@ -58,7 +84,12 @@ bool RipplePatch::stampSphere(const BoundingSphere& sphere, SphereContact& conta
     motion.speed = glm::length(velocity);
     motion.mass = mass;
     motion.surfaceY = surfaceY;
-    return stepSphere(m_field, m_footprints, m_def.cell_size, sphere, contact, motion);
+    if (!m_gpu) return stepSphere(m_field, m_footprints, m_def.cell_size, sphere, contact, motion);
+    RippleStamp stamp;
+    if (!planSphereStamp(m_field.current(), m_field.rows(), m_field.cols(), m_def.cell_size, sphere, contact, motion, stamp))
+        return false;
+    m_pending.push_back(stamp);
+    return true;
 }
 
 } // namespace ob::interaction

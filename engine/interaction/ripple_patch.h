@@ -6,12 +6,25 @@
 #include "interaction/sphere_stamp.h"
 
 #include <glm/vec2.hpp>
+#include <memory>
+#include <vector>
 
 namespace ob::interaction {
 
+class RippleFieldGpu;
+struct RippleStamp;
+
+/// The field runs on the CPU (RippleField) or, once useGpu() is called on a GL context, on the
+/// GPU twin (RippleFieldGpu): Table 2 still decides on the CPU, the stamps and the step run
+/// in compute shaders, and Vh(t), Vh(t−1) are read back after each step into the CPU field,
+/// which stays what queries, hashing and rendering read.
 class RipplePatch {
 public:
     explicit RipplePatch(const RippleDef& def);
+    ~RipplePatch();
+    /// Moves the field to the GPU twin (needs a current GL 4.3+ context).
+    void useGpu();
+    bool onGpu() const { return m_gpu != nullptr; }
 
     /// Moves the patch so its centre is the cell nearest `worldCenter` (scrolls the field).
     void centerOn(glm::vec2 worldCenter);
@@ -27,8 +40,9 @@ public:
     /// Table 2 and eq. 3–7 for one sphere this step (see stepSphere); world centre, m.
     bool stampSphere(const BoundingSphere& sphere, SphereContact& contact, const glm::vec3& centre,
                      const glm::vec3& velocity, float mass, float surfaceY);
-    /// The convolution step of eq. 1–2 with the patch's DF.
-    void step() { m_field.step(m_def.damping); }
+    /// The convolution step of eq. 1–2 with the patch's DF (on the GPU: this step's stamps
+    /// first, then the step, then the read-back).
+    void step();
 
     const RippleDef& def() const { return m_def; }
     RippleField& field() { return m_field; }
@@ -39,6 +53,9 @@ private:
     RippleField m_field;
     FootprintCache m_footprints;
     glm::ivec2 m_originCell{0, 0};  // world cell index of the field's cell (0, 0)
+    std::unique_ptr<RippleFieldGpu> m_gpu;
+    std::vector<RippleStamp> m_pending;  // GPU: this step's stamps, in entity then sphere order
+    std::vector<float> m_readback;
 };
 
 } // namespace ob::interaction
