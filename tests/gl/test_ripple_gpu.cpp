@@ -8,6 +8,7 @@
 #include "platform/platform.h"
 
 #include <catch2/catch.hpp>
+#include "support/ripple_reference.h"
 
 #include <algorithm>
 #include <chrono>
@@ -20,25 +21,14 @@
 
 using namespace ob;
 using namespace ob::interaction;
+using ob::test::randomField;
+using ob::test::load;
 
 namespace {
 
 std::unique_ptr<platform::Platform> glContext() {
     gfx::requestDebugOutput(true);
     return platform::createHeadlessPlatform({16, 16});
-}
-
-std::vector<float> randomField(size_t count, unsigned seed, float lo = -1.0f, float hi = 1.0f) {
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<float> dist(lo, hi);
-    std::vector<float> v(count);
-    for (float& x : v) x = dist(rng);
-    return v;
-}
-
-void load(RippleField& f, const std::vector<float>& cur, const std::vector<float>& prev) {
-    std::copy(cur.begin(), cur.end(), f.current().begin());
-    std::copy(prev.begin(), prev.end(), f.previous().begin());
 }
 
 // Largest |a − b| over two equal-sized arrays, and how many elements differ in any bit.

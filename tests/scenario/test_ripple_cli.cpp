@@ -1,6 +1,7 @@
 // `oceanbox ripple` end to end (SPEC §4): eq. 1–2 with the fixed boundary on .npy files,
 // checked against a naive double-precision reference; bad input exits 2 with a clear message.
 #include "core/npy.h"
+#include "support/ripple_reference.h"
 #include "support/test_support.h"
 
 #include <catch2/catch.hpp>
@@ -16,19 +17,7 @@ std::string quoted(const std::string& s) { return "'" + s + "'"; }
 
 // Eq. 1–2, plainly, in double: 8 neighbours at 1/4, interior cells only, new ring 0.
 std::vector<double> naiveRipple(int n, int m, std::vector<double> cur, std::vector<double> prev, int steps, double df) {
-    for (int k = 0; k < steps; ++k) {
-        std::vector<double> next(cur.size(), 0.0);
-        for (int z = 1; z < n - 1; ++z)
-            for (int x = 1; x < m - 1; ++x) {
-                double buff = 0.0;
-                for (int j = -1; j <= 1; ++j)
-                    for (int i = -1; i <= 1; ++i)
-                        if (i != 0 || j != 0) buff += 0.25 * cur[(z + j) * m + x + i];
-                next[z * m + x] = (buff - prev[z * m + x]) * df;
-            }
-        prev = cur;
-        cur = next;
-    }
+    for (int k = 0; k < steps; ++k) ob::test::naiveRippleStep(n, m, cur, prev, df);
     return cur;
 }
 

@@ -8,6 +8,7 @@
 #include "support/test_support.h"
 
 #include <catch2/catch.hpp>
+#include "support/ripple_reference.h"
 
 #include <atomic>
 #include <cmath>
@@ -17,6 +18,10 @@
 #include <tuple>
 #include <stdexcept>
 #include <vector>
+
+using ob::test::randomField;
+using ob::test::load;
+using ob::test::leapfrogEnergy;
 
 using ob::interaction::RippleBoundary;
 using ob::interaction::RippleField;
@@ -29,33 +34,8 @@ struct NaiveRipple {
     int n, m;
     std::vector<double> cur, prev;
 
-    void step(double df) {
-        std::vector<double> next(cur.size(), 0.0);
-        for (int z = 1; z < n - 1; ++z)
-            for (int x = 1; x < m - 1; ++x) {
-                double buff = 0.0;
-                for (int j = -1; j <= 1; ++j)
-                    for (int i = -1; i <= 1; ++i)
-                        if (i != 0 || j != 0) buff += cur[(z + j) * m + (x + i)] * 0.25;
-                next[z * m + x] = (buff - prev[z * m + x]) * df;
-            }
-        prev = cur;
-        cur = next;
-    }
+    void step(double df) { ob::test::naiveRippleStep(n, m, cur, prev, df); }
 };
-
-std::vector<float> randomField(size_t count, unsigned seed, float lo = -1.0f, float hi = 1.0f) {
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<float> dist(lo, hi);
-    std::vector<float> v(count);
-    for (float& x : v) x = dist(rng);
-    return v;
-}
-
-void load(RippleField& f, const std::vector<float>& cur, const std::vector<float>& prev) {
-    std::copy(cur.begin(), cur.end(), f.current().begin());
-    std::copy(prev.begin(), prev.end(), f.previous().begin());
-}
 
 float at(std::span<const float> level, int cols, int x, int z) { return level[size_t(z) * size_t(cols) + size_t(x)]; }
 
@@ -80,25 +60,6 @@ void gaussianBump(RippleField& f) {
             f.current()[size_t(z * m + x)] = v;
             f.previous()[size_t(z * m + x)] = v;
         }
-}
-
-// Energy of the undamped scheme: for u(t+1) + u(t−1) = A·u(t), with A = ¼·(8-neighbour sum)
-// symmetric, E = |u(t)|² + |u(t−1)|² − u(t)·A·u(t−1) is the same every step.
-double leapfrogEnergy(const RippleField& f) {
-    const int n = f.rows(), m = f.cols();
-    auto u = f.current();
-    auto v = f.previous();
-    double e = 0.0;
-    for (int z = 1; z < n - 1; ++z)
-        for (int x = 1; x < m - 1; ++x) {
-            double av = 0.0;
-            for (int j = -1; j <= 1; ++j)
-                for (int i = -1; i <= 1; ++i)
-                    if (i != 0 || j != 0) av += 0.25 * v[size_t((z + j) * m + x + i)];
-            const double uu = u[size_t(z * m + x)], vv = v[size_t(z * m + x)];
-            e += uu * uu + vv * vv - uu * av;
-        }
-    return e;
 }
 
 } // namespace

@@ -12,6 +12,7 @@
 #include "support/test_support.h"
 
 #include <catch2/catch.hpp>
+#include "support/ripple_reference.h"
 
 #include <algorithm>
 #include <cmath>
@@ -19,29 +20,11 @@
 #include <vector>
 
 using namespace ob::interaction;
+using ob::test::leapfrogEnergy;
 
 namespace {
 
 // Energy of the scheme u(t+1) + u(t−1) = A·u(t) (A = ¼·8-neighbour sum, symmetric):
-// E = |u(t)|² + |u(t−1)|² − u(t)·A·u(t−1), constant for DF = 1. Per eigenmode of A
-// (eigenvalue a ∈ [−1, 2) on the interior) it is u² + v² − a·u·v, positive definite.
-double leapfrogEnergy(const RippleField& f) {
-    const int n = f.rows(), m = f.cols();
-    auto u = f.current();
-    auto v = f.previous();
-    double e = 0.0;
-    for (int z = 1; z < n - 1; ++z)
-        for (int x = 1; x < m - 1; ++x) {
-            double av = 0.0;
-            for (int j = -1; j <= 1; ++j)
-                for (int i = -1; i <= 1; ++i)
-                    if (i != 0 || j != 0) av += 0.25 * v[size_t((z + j) * m + x + i)];
-            const double uu = u[size_t(z * m + x)], vv = v[size_t(z * m + x)];
-            e += uu * uu + vv * vv - uu * av;
-        }
-    return e;
-}
-
 // A drop: an SR cell footprint pushed down to depth·PH/SR at cell (c, c), at rest (AF 0).
 void drop(RippleField& f, float sr, int c, float depthPerCell, float af = 0.0f) {
     stampFootprint(f, makeFootprint(sr), c, c, 0.0f, -depthPerCell, af);
