@@ -1,6 +1,7 @@
 // Gerstner waves: validation, spectrum-derived generation (after Thon et al. 2000) and the
 // vectorised evaluation of SPEC §2.2 (seed 000 eq. 8, seed 002 §2; normal from ∂r/∂β × ∂r/∂α).
 #include "core/simd.h"
+#include "ocean/fast_trig.h"
 #include "ocean/gerstner.h"
 
 #include "core/log.h"
@@ -39,13 +40,7 @@ constexpr float TWO_PI_LO = float(TWO_PI - 6.28125);    // 1.9353072e-3
     const float turns = (theta * INV_TWO_PI_F + ROUND_MAGIC_F) - ROUND_MAGIC_F;
     const float r = (theta - turns * TWO_PI_HI) - turns * TWO_PI_LO;
     const float u = 0.5f * r;
-    const float u2 = u * u;
-    const float su = u * (1.0f + u2 * (-1.0f / 6.0f + u2 * (1.0f / 120.0f + u2 * (-1.0f / 5040.0f
-                   + u2 * (1.0f / 362880.0f + u2 * (-1.0f / 39916800.0f))))));
-    const float cu = 1.0f + u2 * (-0.5f + u2 * (1.0f / 24.0f + u2 * (-1.0f / 720.0f
-                   + u2 * (1.0f / 40320.0f + u2 * (-1.0f / 3628800.0f + u2 * (1.0f / 479001600.0f))))));
-    s = 2.0f * su * cu;
-    c = 1.0f - 2.0f * su * su;
+    halfAngleSinCos(u, s, c);
 }
 
 // --- kernels ----------------------------------------------------------------------------

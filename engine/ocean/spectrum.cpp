@@ -2,6 +2,7 @@
 // seed 000 §2.1, seed 003; JONSWAP after Hasselmann et al. 1973 (formulas in spectrum.h).
 #include "core/error.h"
 #include "core/simd.h"
+#include "ocean/fast_trig.h"
 #include "ocean/spectrum.h"
 
 #include <algorithm>
@@ -30,20 +31,13 @@ constexpr int BLOCK = 16;
 // Signed wave index of FFT-order position r in [0, N).
 int signedIndex(int r, int n) { return r < n / 2 ? r : r - n; }
 
-// sin and cos of ω·t, |error| < 1e-6 (float rounding). The phase is reduced in double to
-// r ∈ [−π, π], then the half angle u = r/2 ∈ [−π/2, π/2] goes through Taylor polynomials
-// (first omitted terms: u^13/13! < 6e-8, u^14/14! < 7e-9) and the double-angle formulas.
+// sin and cos of ω·t, |error| < 1e-6 (float rounding): the phase is reduced in double to
+// r ∈ [−π, π], then halfAngleSinCos (ocean/fast_trig.h).
 [[gnu::always_inline]] inline void phaseSinCos(double omega, double t, float& s, float& c) {
     const double x = omega * t;
     const double turns = (x * INV_TWO_PI + ROUND_MAGIC) - ROUND_MAGIC;
     const float u = 0.5f * float(x - turns * TWO_PI);
-    const float u2 = u * u;
-    const float su = u * (1.0f + u2 * (-1.0f / 6.0f + u2 * (1.0f / 120.0f + u2 * (-1.0f / 5040.0f
-                   + u2 * (1.0f / 362880.0f + u2 * (-1.0f / 39916800.0f))))));
-    const float cu = 1.0f + u2 * (-0.5f + u2 * (1.0f / 24.0f + u2 * (-1.0f / 720.0f
-                   + u2 * (1.0f / 40320.0f + u2 * (-1.0f / 3628800.0f + u2 * (1.0f / 479001600.0f))))));
-    s = 2.0f * su * cu;
-    c = 1.0f - 2.0f * su * su;
+    halfAngleSinCos(u, s, c);
 }
 
 // sin ωt and cos ωt for the columns n = 0 … N/2 of one |m| row of the quarter grid: ω
