@@ -21,6 +21,7 @@ struct ObjectDef {
     glm::vec3 size{1.0f, 1.0f, 1.0f};     ///< box edge lengths [x, y, z], m, each [0.01, 1000]
     float density = 500.0f;               ///< kg/m³, [1, 100000] (water: 1025; below floats)
     glm::vec3 color{0.75f, 0.32f, 0.18f}; ///< base colour, linear RGB
+    std::string model;                    ///< glTF 2.0 file drawn instead of the built-in mesh ("" = built-in)
 };
 
 template <class V> void describe(V& v, ObjectDef& d) {
@@ -31,6 +32,7 @@ template <class V> void describe(V& v, ObjectDef& d) {
     v.field("size", d.size, range(0.01, 1000), "box edge lengths, m");
     v.field("density", d.density, range(1, 100000), "density, kg/m³");
     v.field("color", d.color, range(0, 1), "base colour (linear RGB)");
+    v.field("model", d.model, Choices{}, "glTF 2.0 file (.gltf/.glb) drawn instead of the built-in mesh");
 }
 
 /// A probe sphere in the body's frame: where the water pushes (buoyancy, drag).
@@ -53,6 +55,7 @@ struct Renderable {
     gfx::MeshKind mesh = gfx::MeshKind::Sphere;
     glm::vec3 scale{1.0f};
     glm::vec3 color{0.8f};
+    std::string model;    ///< glTF file replacing `mesh` ("" = built-in)
 };
 
 /// Creates the physics resource and one entity per object (Transform, Motion, Body,
