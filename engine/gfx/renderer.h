@@ -47,7 +47,7 @@ struct ObjectDraw {
     MeshKind mesh = MeshKind::Sphere;
     glm::mat4 model{1.0f};          ///< unit mesh → world (scale, rotation, position)
     glm::vec3 color{0.8f};          ///< base colour (linear RGB)
-    std::string model;              ///< glTF file drawn instead of `mesh` ("" = built-in)
+    std::string modelFile;          ///< glTF file drawn instead of `mesh` ("" = built-in)
 };
 
 /// std140 mirror of `WaterUniforms` in shaders/common_water.glsl.
