@@ -41,7 +41,7 @@ void spawnObjects(ecs::World& world, const physics::PhysicsDef& def, const std::
         world.add<ecs::Transform>(e, {o.position});
         world.add<ecs::Motion>(e, {o.velocity, mass});
         world.add<Body>(e, {o.type, id, probesFor(o), volume, 0.0f});
-        world.add<Renderable>(e, {sphere ? gfx::MeshKind::Sphere : gfx::MeshKind::Box, sphere ? glm::vec3(o.radius) : o.size * 0.5f, o.color});
+        world.add<Renderable>(e, {sphere ? gfx::MeshKind::Sphere : gfx::MeshKind::Box, sphere ? glm::vec3(o.radius) : o.size * 0.5f, o.color, o.model});
         interaction::BoundingSphere bounding;
         bounding.radius = sphere ? o.radius : 0.5f * std::min({o.size.x, o.size.y, o.size.z});
         bounding.direction = interaction::SphereDirection::Down;  // a floating body pushes the water down
@@ -132,7 +132,7 @@ std::vector<gfx::ObjectDraw> objectDraws(ecs::World& world) {
         const ecs::Transform* t = world.find<ecs::Transform>(renderables.entities()[i]);
         if (!t) continue;
         glm::mat4 model = glm::translate(glm::mat4(1.0f), t->position) * glm::mat4_cast(t->rotation) * glm::scale(glm::mat4(1.0f), r.scale);
-        draws.push_back({r.mesh, model, r.color});
+        draws.push_back({r.mesh, model, r.color, r.model});
     }
     return draws;
 }
