@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-namespace ob::gfx {
+namespace ob::assets {
 
 /// One model flattened to a single indexed triangle list in the model's frame (node
 /// transforms applied, every primitive appended). Units are the file's (glTF: metres, y up).
@@ -22,4 +22,4 @@ struct ModelData {
 /// or one with no triangle mesh.
 ModelData loadGltfModel(const std::string& path);
 
-} // namespace ob::gfx
+} // namespace ob::assets
