@@ -55,6 +55,7 @@ static void writeStats(const std::string& path, Sandbox& sandbox, const std::str
         j["phases"][ecs::phaseName(phase)] = phaseStats(timer.cpuSamples(phase));
         if (!timer.gpuSamples(phase).empty()) j["gpu_phases"][ecs::phaseName(phase)] = phaseStats(timer.gpuSamples(phase));
     }
+    for (const auto& [pass, samples] : timer.gpuPassSamples()) j["gpu_passes"][pass] = phaseStats(samples);
     j["entities"] = {{"total", sandbox.world().entityCount()},
                      {"cameras", sandbox.world().pool<CameraRig>().size()},
                      {"bodies", sandbox.world().pool<Body>().size()}};

@@ -73,6 +73,7 @@ gfx::CameraView cameraView(ecs::World& world, glm::ivec2 size) {
     view.view = glm::lookAtRH(t.position, t.position + forwardOf(rig.yaw, rig.pitch), glm::vec3(0, 1, 0));
     float aspect = float(size.x) / float(std::max(size.y, 1));
     view.projection = glm::perspectiveRH_NO(glm::radians(rig.def.fov_deg), aspect, rig.def.near_m, rig.def.far_m);
+    view.nearM = rig.def.near_m;
     view.farM = rig.def.far_m;
     return view;
 }

@@ -9,6 +9,7 @@
 #include "gfx/ui_overlay.h"
 #include "objects.h"
 #include "ui_panels.h"
+#include "water/composite_water.h"
 #include "water_systems.h"
 
 namespace ob::game {
@@ -31,9 +32,17 @@ void renderSystem(ecs::World& world, const ecs::Tick& tick) {
     glm::ivec2 size = res->platform->framebufferSize();
     if (size.x <= 0 || size.y <= 0) return;  // minimised
     res->renderer->def() = res->scene->render;
-    res->renderer->render(cameraView(world, size), prepareWaterView(world, tick.time), objectDraws(world), tick.time, size);
-    double gpuMs = res->renderer->takeGpuMs();
-    if (gpuMs >= 0) res->timer->setGpu(ecs::Phase::Render, gpuMs);
+    gfx::CameraView camera = cameraView(world, size);
+    if (const OceanState* ocean = world.resource<OceanState>(); ocean && ocean->water)
+        camera.waterHeight = ocean->water->sample(camera.position.x, camera.position.z).height;
+    res->renderer->render(camera, prepareWaterView(world, tick.time), objectDraws(world), tick.time, size);
+    gfx::PassTimes passes = res->renderer->takePassTimes();
+    double gpuMs = 0.0;
+    for (const auto& [pass, ms] : passes) {
+        res->timer->addGpuPass(pass, ms);
+        gpuMs += ms;
+    }
+    if (!passes.empty()) res->timer->setGpu(ecs::Phase::Render, gpuMs);
     if (res->ui) {
         res->ui->begin();
         drawPanels(*res->scene, *res->timer);

@@ -1,11 +1,15 @@
-// Per-frame uniforms shared by every pass (mirror: gfx::FrameUniforms, std140).
+// Per-view uniforms shared by every pass (mirror: gfx::FrameUniforms, std140).
 layout(std140, binding = 0) uniform FrameUniforms {
     mat4 u_viewProjection;
     mat4 u_inverseViewProjection;
     vec4 u_cameraPositionTime;   // xyz eye (m), w time (s)
     vec4 u_sunDirectionFresnel;  // xyz toward the sun, w 0 Schlick / 1 exact
     vec4 u_waterColorExposure;   // rgb deep water colour, w exposure
-    vec4 u_viewport;             // xy framebuffer size (px)
+    vec4 u_viewport;             // xy target size (px), z 1 = output linear radiance, w 1 = eye under water
+    vec4 u_clipPlane;            // world plane: keeps dot(plane, (p, 1)) >= 0 (reflection/refraction passes)
+    vec4 u_depthParams;          // near, far (m), water clarity (m), sky cube mip count
+    vec4 u_shading;              // DU/DV strength, normal distortion, glitter strength, glitter shininess
+    vec4 u_switches;             // reflections, refractions, foam (1 on, 0 off)
 };
 
 // World-space view ray through a pixel (ndc in [-1, 1]²).
@@ -14,9 +18,23 @@ vec3 viewRay(vec2 ndc) {
     return normalize(farPoint.xyz / farPoint.w - u_cameraPositionTime.xyz);
 }
 
-// Exposure, filmic tone curve (Narkowicz's ACES fit) and sRGB encoding.
-vec3 toneMap(vec3 radiance) {
+bool eyeUnderwater() { return u_viewport.w > 0.5; }
+
+// Water body colour lit by the sun's height (linear radiance).
+vec3 waterBodyColor() {
+    return u_waterColorExposure.rgb * (0.35 + 0.65 * max(u_sunDirectionFresnel.y, 0.0));
+}
+
+// Light through `dist` metres of water: fades to the body colour (Beer–Lambert by clarity).
+vec3 underwaterFog(vec3 color, float dist) {
+    return mix(waterBodyColor(), color, exp(-dist / (4.0 * u_depthParams.z)));
+}
+
+// Exposure, filmic tone curve (Narkowicz's ACES fit) and sRGB encoding; render targets keep
+// linear radiance (the water pass tone-maps what it reads from them).
+vec4 finalColor(vec3 radiance) {
+    if (u_viewport.z > 0.5) return vec4(radiance, 1.0);
     vec3 x = radiance * u_waterColorExposure.w;
     x = clamp((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
-    return pow(x, vec3(1.0 / 2.2));
+    return vec4(pow(x, vec3(1.0 / 2.2)), 1.0);
 }

@@ -1,12 +1,13 @@
 #version 450 core
-// Opaque objects lit by the sun (Lambert + a little specular) and the sky (hemispheric
-// ambient), with the same aerial perspective as the water.
+// Objects lit by the sun (Lambert + a little specular) and the sky (hemispheric ambient),
+// with the water's aerial perspective above and its fog below.
 #include "common_frame.glsl"
 #include "common_sky.glsl"
 
 in vec3 v_world;
 in vec3 v_normal;
-layout(location = 1) uniform vec3 u_color;
+in vec3 v_color;
+layout(location = 1) uniform vec3 u_tint;
 out vec4 o_color;
 
 void main() {
@@ -17,10 +18,12 @@ void main() {
     vec3 v = toEye / dist;
     vec3 ambient = mix(vec3(0.10, 0.14, 0.18), skyRadiance(vec3(0.0, 1.0, 0.0), sun) * 0.45, 0.5 + 0.5 * n.y);
     vec3 light = ambient + vec3(1.0, 0.92, 0.8) * 1.4 * max(dot(n, sun), 0.0);
-    vec3 color = u_color * light + 0.25 * pow(max(dot(reflect(-sun, n), v), 0.0), 40.0);
-    // Below the mean water level the object is in water: tint it toward the water body.
-    color = mix(color, u_waterColorExposure.rgb, clamp(-v_world.y * 0.35, 0.0, 0.85));
-    vec3 haze = skyRadiance(normalize(vec3(-v.x, 0.0, -v.z)), sun);
-    color = mix(color, haze, 1.0 - exp(-dist * 0.00025));
-    o_color = vec4(toneMap(color), 1.0);
+    vec3 color = u_tint * v_color * light + 0.25 * pow(max(dot(reflect(-sun, n), v), 0.0), 40.0);
+    if (eyeUnderwater()) {
+        color = underwaterFog(color, dist);
+    } else {
+        vec3 haze = skyRadiance(normalize(vec3(-v.x, 0.0, -v.z)), sun);
+        color = mix(color, haze, 1.0 - exp(-dist * 0.00025));
+    }
+    o_color = finalColor(color);
 }

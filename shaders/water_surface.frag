@@ -1,7 +1,10 @@
 #version 450 core
-// Water surface shading: composite normal in slope form (Gerstner + FFT cascades), Fresnel
-// between the sky's reflection and the water body, sun glitter (seed 000), whitecap foam
-// where the FFT Jacobian folds (seed 003), aerial perspective.
+// Water surface shading (SPEC §2.6): composite normal in slope form (Gerstner + FFT cascades
+// + ripples); reflection = sky cube with the mirrored local objects blended over it by their
+// coverage; refraction = what lies below, faded to the water colour by its depth (seed 004
+// eq. 7); both looked up at the pixel offset by the normal (seed 000) and a DU/DV map
+// scrolled in time (seed 004 eq. 4–5); mixed by Fresnel (n = 1.33); plus sun glitter
+// (seed 000) and foam where the FFT Jacobian folds or the ripples are steep.
 #include "common_frame.glsl"
 #include "common_sky.glsl"
 #include "common_fresnel.glsl"
@@ -10,11 +13,28 @@
 in vec3 v_world;
 in vec2 v_rest;
 in vec2 v_gerstnerSlope;
+layout(binding = 3) uniform samplerCube u_sky;
+layout(binding = 4) uniform sampler2D u_reflection;       // rgb linear radiance, a coverage
+layout(binding = 5) uniform sampler2D u_refraction;       // rgb linear radiance
+layout(binding = 6) uniform sampler2D u_refractionDepth;  // window depth of what lies below
+layout(binding = 7) uniform sampler2D u_detail;           // rg DU/DV in [-1, 1], b foam pattern
 out vec4 o_color;
+
+const float DETAIL_TILE = 24.0;            // m per repeat of the detail map
+const vec2 DETAIL_DRIFT = vec2(0.031, 0.017);  // detail map scroll (repeats per s)
+const vec3 SUN_COLOR = vec3(1.0, 0.9, 0.7);
+
+// Eye distance of a window depth (perspective projection, near/far in u_depthParams).
+float eyeDepth(float windowZ) {
+    float n = u_depthParams.x, f = u_depthParams.y;
+    float ndc = 2.0 * windowZ - 1.0;
+    return 2.0 * n * f / (f + n - ndc * (f - n));
+}
 
 void main() {
     float t = u_cameraPositionTime.w;
-    vec2 slope = v_gerstnerSlope + rippleSlope(v_world.xz);
+    vec2 ripple = rippleSlope(v_world.xz);
+    vec2 slope = v_gerstnerSlope + ripple;
     float jacobian = 1.0;
     int cascades = int(u_gridParams.z);
     for (int c = 0; c < cascades; ++c) {
@@ -22,30 +42,60 @@ void main() {
         slope += texture(u_slopes, uv).xy;
         jacobian = min(jacobian, texture(u_displacement, uv).w);
     }
-    vec3 eye = u_cameraPositionTime.xyz;
-    bool fromBelow = eye.y < v_world.y - 0.0 && eye.y < 0.0;
     vec3 n = normalize(vec3(-slope.x, 1.0, -slope.y));
-    if (fromBelow) n = -n;
-
+    vec3 eye = u_cameraPositionTime.xyz;
     vec3 toEye = eye - v_world;
     float dist = length(toEye);
     vec3 v = toEye / dist;
     vec3 sun = u_sunDirectionFresnel.xyz;
+    bool exact = u_sunDirectionFresnel.w > 0.5;
+    vec3 body = waterBodyColor();
+
+    if (eyeUnderwater()) {
+        // The surface from below: Snell's window (the sky refracted in) inside the critical
+        // angle, total internal reflection of the dark water outside it.
+        vec3 nb = -n;
+        vec3 refracted = refract(-v, nb, WATER_IOR);
+        vec3 color = body * 0.5;
+        if (dot(refracted, refracted) > 0.0) {
+            float transmitted = 1.0 - fresnel(dot(refracted, n), exact);
+            color = mix(color, textureLod(u_sky, refracted, 0.0).rgb, transmitted);
+        }
+        o_color = finalColor(underwaterFog(color, dist));
+        return;
+    }
+
+    // --- lookups into the targets, offset by the normal and the scrolling DU/DV map
+    vec2 screen = gl_FragCoord.xy / u_viewport.xy;
+    vec3 detail = texture(u_detail, v_world.xz / DETAIL_TILE + DETAIL_DRIFT * t).rgb;
+    vec2 offset = u_shading.x * detail.xy + u_shading.y * n.xz;
+
     float cosV = max(dot(v, n), 0.0);
     vec3 r = reflect(-v, n);
     r.y = abs(r.y);
-    float F = fresnel(cosV, u_sunDirectionFresnel.w > 0.5);
-    vec3 body = u_waterColorExposure.rgb * (0.35 + 0.65 * max(sun.y, 0.0));
-    vec3 color = mix(body, skyRadiance(r, sun), F);
-    color += vec3(1.0, 0.9, 0.7) * 6.0 * pow(max(dot(r, sun), 0.0), 600.0) * F;
-    float foam = smoothstep(0.6, 0.1, jacobian);
-    color = mix(color, vec3(0.9, 0.95, 1.0) * (0.4 + 0.6 * max(sun.y, 0.0)), foam * 0.8);
-    if (fromBelow) {
-        // Seen from below: the bright window overhead fades into the water's own colour.
-        color = mix(body * 0.6, color, exp(-dist * 0.02));
-    } else {
-        vec3 haze = skyRadiance(normalize(vec3(-v.x, 0.0, -v.z)), sun);
-        color = mix(color, haze, 1.0 - exp(-dist * 0.00025));
+    vec3 reflection = textureLod(u_sky, r, 0.0).rgb;
+    if (u_switches.x > 0.5) {
+        vec4 local = texture(u_reflection, clamp(screen + offset, 0.0, 1.0));
+        reflection = mix(reflection, local.rgb, local.a);
     }
-    o_color = vec4(toneMap(color), 1.0);
+    vec3 refraction = body;
+    if (u_switches.y > 0.5) {
+        vec2 uv = clamp(screen + offset, 0.0, 1.0);
+        float depth = eyeDepth(texture(u_refractionDepth, uv).r) - eyeDepth(gl_FragCoord.z);
+        refraction = mix(body, texture(u_refraction, uv).rgb, exp(-max(depth, 0.0) / u_depthParams.z));
+    }
+
+    float F = fresnel(cosV, exact);
+    vec3 color = mix(refraction, reflection, F);
+    color += SUN_COLOR * u_shading.z * pow(max(dot(r, sun), 0.0), u_shading.w);
+
+    if (u_switches.z > 0.5) {
+        float whitecap = smoothstep(0.6, 0.1, jacobian);
+        float splash = smoothstep(0.12, 0.45, length(ripple));
+        float foam = clamp(max(whitecap, splash) * (0.35 + 0.9 * detail.b), 0.0, 1.0);
+        color = mix(color, vec3(0.9, 0.95, 1.0) * (0.4 + 0.6 * max(sun.y, 0.0)), foam * 0.85);
+    }
+    vec3 haze = textureLod(u_sky, normalize(vec3(-v.x, 0.0, -v.z)), 0.0).rgb;
+    color = mix(color, haze, 1.0 - exp(-dist * 0.00025));
+    o_color = finalColor(color);
 }

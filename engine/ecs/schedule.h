@@ -5,6 +5,8 @@
 #include "ecs/world.h"
 
 #include <array>
+#include <map>
+#include <string>
 #include <chrono>
 #include <cstdint>
 #include <vector>
@@ -52,11 +54,15 @@ public:
     void addCpu(Phase p, double ms) { m_current[size_t(p)] += ms; }
     /// GPU time of a phase for the latest frame whose queries have resolved.
     void setGpu(Phase p, double ms) { m_gpu[size_t(p)].push_back(ms); }
+    /// GPU time of one render pass for the latest frame whose queries have resolved.
+    void addGpuPass(const std::string& pass, double ms) { m_gpuPasses[pass].push_back(ms); }
     void endFrame(double frameMs);
     /// Samples of the phase's CPU ms, one per frame.
     const std::vector<double>& cpuSamples(Phase p) const { return m_cpu[size_t(p)]; }
     const std::vector<double>& gpuSamples(Phase p) const { return m_gpu[size_t(p)]; }
     const std::vector<double>& frameSamples() const { return m_frames; }
+    /// Samples of each render pass's GPU ms, by pass name.
+    const std::map<std::string, std::vector<double>>& gpuPassSamples() const { return m_gpuPasses; }
     /// The latest frame's CPU ms of a phase (0 before the first frame).
     double lastCpu(Phase p) const { return m_cpu[size_t(p)].empty() ? 0.0 : m_cpu[size_t(p)].back(); }
 
@@ -65,6 +71,7 @@ private:
     std::array<std::vector<double>, PHASE_COUNT> m_cpu;
     std::array<std::vector<double>, PHASE_COUNT> m_gpu;
     std::vector<double> m_frames;
+    std::map<std::string, std::vector<double>> m_gpuPasses;
 };
 
 /// Mean and median of samples (0 when empty).

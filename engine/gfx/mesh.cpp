@@ -1,12 +1,15 @@
 // Built-in meshes.
 #include "gfx/mesh.h"
 
+#include "assets/model.h"
+
 #include <cmath>
 #include <glm/glm.hpp>
 #include <vector>
 
 namespace ob::gfx {
 
+// `interleaved` holds position, normal, colour per vertex.
 static Mesh upload(const char* label, const std::vector<glm::vec3>& interleaved, const std::vector<uint32_t>& indices) {
     Mesh m;
     m.vertices = createBuffer(label, GLsizeiptr(interleaved.size() * sizeof(glm::vec3)), interleaved.data());
@@ -14,9 +17,9 @@ static Mesh upload(const char* label, const std::vector<glm::vec3>& interleaved,
     m.indexCount = GLsizei(indices.size());
     m.vao = createVertexArray(label);
     GLuint vao = m.vao.id();
-    glVertexArrayVertexBuffer(vao, 0, m.vertices.id(), 0, 2 * sizeof(glm::vec3));
+    glVertexArrayVertexBuffer(vao, 0, m.vertices.id(), 0, 3 * sizeof(glm::vec3));
     glVertexArrayElementBuffer(vao, m.indices.id());
-    for (GLuint a = 0; a < 2; ++a) {
+    for (GLuint a = 0; a < 3; ++a) {
         glEnableVertexArrayAttrib(vao, a);
         glVertexArrayAttribFormat(vao, a, 3, GL_FLOAT, GL_FALSE, a * sizeof(glm::vec3));
         glVertexArrayAttribBinding(vao, a, 0);
@@ -32,8 +35,7 @@ Mesh makeSphereMesh(int rings) {
         for (int s = 0; s <= segments; ++s) {
             float theta = float(M_PI) * float(r) / float(rings), phi = 2.0f * float(M_PI) * float(s) / float(segments);
             glm::vec3 p(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
-            v.push_back(p);
-            v.push_back(p);
+            v.insert(v.end(), {p, p, glm::vec3(1.0f)});
         }
     for (int r = 0; r < rings; ++r)
         for (int s = 0; s < segments; ++s) {
@@ -54,14 +56,20 @@ Mesh makeBoxMesh() {
             u[(axis + 1) % 3] = 1.0f;
             w[(axis + 2) % 3] = 1.0f;
             if (sign < 0) std::swap(u, w);  // keep counter-clockwise seen from outside
-            uint32_t base = uint32_t(v.size() / 2);
+            uint32_t base = uint32_t(v.size() / 3);
             for (glm::vec2 c : {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(1, 1), glm::vec2(-1, 1)}) {
-                v.push_back(n + c.x * u + c.y * w);
-                v.push_back(n);
+                v.insert(v.end(), {n + c.x * u + c.y * w, n, glm::vec3(1.0f)});
             }
             idx.insert(idx.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
         }
     return upload("box mesh", v, idx);
+}
+
+Mesh makeMesh(const std::string& label, const assets::ModelData& model) {
+    std::vector<glm::vec3> v;
+    v.reserve(model.positions.size() * 3);
+    for (size_t i = 0; i < model.positions.size(); ++i) v.insert(v.end(), {model.positions[i], model.normals[i], model.colors[i]});
+    return upload(label.c_str(), v, model.indices);
 }
 
 } // namespace ob::gfx

@@ -1,10 +1,16 @@
-// Built-in meshes (unit sphere, unit box) as labelled GL buffers: position + normal.
+// Meshes as labelled GL buffers: the built-in unit sphere and box, and glTF models.
 #pragma once
 #include "gfx/handles.h"
 
+#include <string>
+
+namespace ob::assets {
+struct ModelData;
+}
+
 namespace ob::gfx {
 
-/// An indexed triangle mesh; attribute 0 position, 1 normal (vec3 each, interleaved).
+/// An indexed triangle mesh; attributes 0 position, 1 normal, 2 base colour (vec3 each, interleaved).
 struct Mesh {
     VertexArray vao;
     Buffer vertices, indices;
@@ -15,5 +21,7 @@ struct Mesh {
 Mesh makeSphereMesh(int rings);
 /// A box from −1 to 1 on each axis (flat-shaded faces).
 Mesh makeBoxMesh();
+/// A model's triangles (labelled with its file name).
+Mesh makeMesh(const std::string& label, const assets::ModelData& model);
 
 } // namespace ob::gfx

@@ -6,11 +6,20 @@
 
 namespace ob::gfx {
 
-/// Look of the sky and the water surface.
+/// Look of the sky and the water surface; every switch removes its pass or term.
 struct RenderDef {
     glm::vec3 sun_direction{0.35f, 0.30f, 0.88f};  ///< direction toward the sun (world, y up; normalised on use)
     glm::vec3 water_color{0.015f, 0.09f, 0.13f};   ///< deep water body colour (linear RGB, 0..1)
     std::string fresnel = "schlick";                ///< "schlick" approximation or "exact" unpolarised equations (n = 1.33)
+    bool reflections = true;                        ///< planar reflection pass (objects above the water, mirrored); off: sky only
+    bool refractions = true;                        ///< refraction pass (objects below the water, depth colour); off: body colour only
+    float rtt_scale = 0.5f;                         ///< reflection/refraction target size / framebuffer size, [0.1, 1]
+    float dudv_strength = 0.02f;                    ///< DU/DV distortion of the reflection/refraction lookups (fraction of the screen), [0, 0.2]
+    float normal_distortion = 0.05f;                ///< offset of those lookups by the surface normal's slope (seed 000), [0, 0.5]
+    float water_clarity = 4.0f;                     ///< depth (m) over which refracted light fades to the water colour by 1/e, [0.05, 1000]
+    bool foam = true;                               ///< whitecaps where the FFT Jacobian folds and splash rings where ripples are steep
+    float glitter = 6.0f;                           ///< sun glitter strength (× sun colour), [0, 100]
+    float glitter_shininess = 600.0f;               ///< sun glitter exponent (Phong), [1, 10000]
     float exposure = 1.0f;                          ///< scene exposure multiplier before tone mapping, [0.01, 16]
     int grid_resolution = 0;                        ///< projected grid cells per side, [16, 2048]; 0 = auto (128 on a software rasteriser, 512 on a GPU)
 };
@@ -19,6 +28,15 @@ template <class V> void describe(V& v, RenderDef& d) {
     v.field("sun_direction", d.sun_direction, direction(), "direction toward the sun (world, y up)");
     v.field("water_color", d.water_color, range(0, 1), "deep water body colour (linear RGB)");
     v.field("fresnel", d.fresnel, Choices{"schlick", "exact"}, "Fresnel term: Schlick or exact (n = 1.33)");
+    v.field("reflections", d.reflections, "planar reflection pass (local objects mirrored); off: sky only");
+    v.field("refractions", d.refractions, "refraction pass (objects under water, depth colour); off: body colour");
+    v.field("rtt_scale", d.rtt_scale, range(0.1, 1), "reflection/refraction target size / framebuffer size");
+    v.field("dudv_strength", d.dudv_strength, range(0, 0.2), "DU/DV distortion of reflection/refraction (screen fraction)");
+    v.field("normal_distortion", d.normal_distortion, range(0, 0.5), "lookup offset by the surface slope (screen fraction)");
+    v.field("water_clarity", d.water_clarity, range(0.05, 1000), "depth (m) over which refracted light fades to the water colour");
+    v.field("foam", d.foam, "whitecaps (FFT Jacobian) and splash rings (steep ripples)");
+    v.field("glitter", d.glitter, range(0, 100), "sun glitter strength");
+    v.field("glitter_shininess", d.glitter_shininess, range(1, 10000), "sun glitter exponent (Phong)");
     v.field("exposure", d.exposure, range(0.01, 16), "exposure multiplier before tone mapping");
     v.field("grid_resolution", d.grid_resolution, range(0, 2048), "projected grid cells per side; 0 = auto (128 software, 512 GPU)");
 }

@@ -2,6 +2,8 @@
 #include "gfx/renderer.h"
 
 #include "core/error.h"
+#include "assets/model.h"
+#include "gfx/detail_map.h"
 #include "gfx/shader.h"
 #include "ocean/projected_grid.h"
 
@@ -17,20 +19,39 @@ namespace ob::gfx {
 
 constexpr GLuint FRAME_UBO_BINDING = 0;
 constexpr GLuint WATER_UBO_BINDING = 1;
+// Texture units of the water and sky passes (shaders/common_water.glsl, water_surface.frag).
+enum TextureUnit : GLuint { DISPLACEMENT_UNIT, SLOPES_UNIT, RIPPLES_UNIT, SKY_UNIT, REFLECTION_UNIT, REFRACTION_UNIT,
+                            REFRACTION_DEPTH_UNIT, DETAIL_UNIT };
 // The grid reaches this far past the screen edges (NDC), so displaced waves leave no gap.
 constexpr float GRID_MARGIN = 0.15f;
 // Smallest |w| of a projected grid vertex (corners scaled to max w = 1): the horizon bound.
 constexpr float GRID_MIN_W = 2e-5f;
+constexpr int SKY_CUBE_SIZE = 128;
+constexpr int DETAIL_MAP_SIZE = 256;
+// Mean water level the reflection mirrors about and the clip planes cut at (m). The
+// refraction plane reaches a little above it so the waterline leaves no seam.
+constexpr float WATER_LEVEL = 0.0f;
+constexpr float REFRACTION_OVERLAP = 0.25f;
+const char* const PASS_NAMES[] = {"sky_bake", "reflection", "refraction", "opaque", "water", "sky"};
+
+static int mipLevels(int size) {
+    int levels = 1;
+    while (size > 1) size /= 2, ++levels;
+    return levels;
+}
 
 Renderer::Renderer(const RenderDef& def)
     : m_def(def),
+      m_skyBakeProgram(loadProgram("sky bake", {"common_fullscreen.vert", "sky_cube.frag"})),
       m_skyProgram(loadProgram("sky", {"common_fullscreen.vert", "sky_background.frag"})),
       m_waterProgram(loadProgram("water_surface", {"water_surface.vert", "water_surface.frag"})),
       m_objectProgram(loadProgram("object_mesh", {"object_mesh.vert", "object_mesh.frag"})),
       m_sphereMesh(makeSphereMesh(16)),
       m_boxMesh(makeBoxMesh()),
       m_emptyVao(createVertexArray("fullscreen triangle")),
-      m_frameUniforms(createBuffer("frame uniforms", sizeof(FrameUniforms))),
+      m_frameUniforms{createBuffer("frame uniforms: camera", sizeof(FrameUniforms)),
+                      createBuffer("frame uniforms: reflection", sizeof(FrameUniforms)),
+                      createBuffer("frame uniforms: refraction", sizeof(FrameUniforms))},
       m_waterUniforms(createBuffer("water uniforms", sizeof(WaterUniforms))) {
     GLuint id;
     glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &id);
@@ -39,6 +60,25 @@ Renderer::Renderer(const RenderDef& def)
     const float flat[4] = {0.0f, 0.0f, 0.0f, 1.0f};
     glTextureSubImage3D(id, 0, 0, 0, 0, 1, 1, 1, GL_RGBA, GL_FLOAT, flat);
     m_flatMaps = Texture(id);
+
+    glCreateTextures(GL_TEXTURE_CUBE_MAP, 1, &id);
+    glObjectLabel(GL_TEXTURE, id, -1, "sky cube");
+    glTextureStorage2D(id, mipLevels(SKY_CUBE_SIZE), GL_RGBA16F, SKY_CUBE_SIZE, SKY_CUBE_SIZE);
+    glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    m_skyCube = Texture(id);
+    glCreateFramebuffers(1, &id);
+    glObjectLabel(GL_FRAMEBUFFER, id, -1, "sky bake");
+    m_skyBakeFramebuffer = Framebuffer(id);
+
+    const std::vector<glm::vec4> detail = makeDetailMap(DETAIL_MAP_SIZE, 0x0CEA4u);
+    m_detailMap = createTexture2D("water detail (du, dv, foam)", GL_RGBA16F, glm::ivec2(DETAIL_MAP_SIZE), mipLevels(DETAIL_MAP_SIZE));
+    glTextureParameteri(m_detailMap.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTextureParameteri(m_detailMap.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
+    glTextureSubImage2D(m_detailMap.id(), 0, 0, 0, DETAIL_MAP_SIZE, DETAIL_MAP_SIZE, GL_RGBA, GL_FLOAT, detail.data());
+    glGenerateTextureMipmap(m_detailMap.id());
+
+    for (const char* name : PASS_NAMES) m_passTimers.emplace_back(name);
 }
 
 // A (res+1)² vertex grid of (u, v) ∈ [0, 1]², triangles as an index list.
@@ -67,72 +107,194 @@ void Renderer::buildGrid(int resolution) {
     glVertexArrayAttribBinding(m_gridVao.id(), 0, 0);
 }
 
-void Renderer::render(const CameraView& camera, const WaterView& water, const std::vector<ObjectDraw>& objects, double time,
-                      glm::ivec2 size) {
-    m_gpuTimer.begin();
-    glm::mat4 viewProjection = camera.projection * camera.view;
+// The three views: the camera, the camera mirrored in the water plane (keeping what is
+// above it, seed 004 eq. 1–3), and the camera again keeping what is below.
+void Renderer::updateFrameUniforms(const CameraView& camera, double time, glm::ivec2 size) {
     FrameUniforms u{};
+    u.sunDirectionFresnel = glm::vec4(glm::normalize(m_def.sun_direction), m_def.fresnel == "exact" ? 1.0f : 0.0f);
+    u.waterColorExposure = glm::vec4(m_def.water_color, m_def.exposure);
+    u.depthParams = glm::vec4(camera.nearM, camera.farM, m_def.water_clarity, float(mipLevels(SKY_CUBE_SIZE)));
+    u.shading = glm::vec4(m_def.dudv_strength, m_def.normal_distortion, m_def.glitter, m_def.glitter_shininess);
+    u.switches = glm::vec4(m_def.reflections ? 1.0f : 0.0f, m_def.refractions ? 1.0f : 0.0f, m_def.foam ? 1.0f : 0.0f, 0.0f);
+    const float underwater = m_underwater ? 1.0f : 0.0f;
+
+    const glm::mat4 viewProjection = camera.projection * camera.view;
     u.viewProjection = viewProjection;
     u.inverseViewProjection = glm::inverse(viewProjection);
     u.cameraPositionTime = glm::vec4(camera.position, float(time));
-    u.sunDirectionFresnel = glm::vec4(glm::normalize(m_def.sun_direction), m_def.fresnel == "exact" ? 1.0f : 0.0f);
-    u.waterColorExposure = glm::vec4(m_def.water_color, m_def.exposure);
-    u.viewport = glm::vec4(float(size.x), float(size.y), 0.0f, 0.0f);
-    glNamedBufferSubData(m_frameUniforms.id(), 0, sizeof u, &u);
-    glBindBufferBase(GL_UNIFORM_BUFFER, FRAME_UBO_BINDING, m_frameUniforms.id());
+    u.viewport = glm::vec4(float(size.x), float(size.y), 0.0f, underwater);
+    u.clipPlane = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+    glNamedBufferSubData(m_frameUniforms[MAIN_VIEW].id(), 0, sizeof u, &u);
 
+    // Mirror about y = WATER_LEVEL: M = T(h)·S(1, −1, 1)·T(−h).
+    glm::mat4 mirror(1.0f);
+    mirror[1][1] = -1.0f;
+    mirror[3][1] = 2.0f * WATER_LEVEL;
+    const glm::mat4 mirroredViewProjection = viewProjection * mirror;
+    u.viewProjection = mirroredViewProjection;
+    u.inverseViewProjection = glm::inverse(mirroredViewProjection);
+    u.cameraPositionTime = glm::vec4(camera.position.x, 2.0f * WATER_LEVEL - camera.position.y, camera.position.z, float(time));
+    u.viewport = glm::vec4(glm::vec2(m_reflection.size), 1.0f, underwater);
+    u.clipPlane = glm::vec4(0.0f, 1.0f, 0.0f, -WATER_LEVEL);
+    glNamedBufferSubData(m_frameUniforms[REFLECTION_VIEW].id(), 0, sizeof u, &u);
+
+    u.viewProjection = viewProjection;
+    u.inverseViewProjection = glm::inverse(viewProjection);
+    u.cameraPositionTime = glm::vec4(camera.position, float(time));
+    u.viewport = glm::vec4(glm::vec2(m_refraction.size), 1.0f, underwater);
+    u.clipPlane = glm::vec4(0.0f, -1.0f, 0.0f, WATER_LEVEL + REFRACTION_OVERLAP);
+    glNamedBufferSubData(m_frameUniforms[REFRACTION_VIEW].id(), 0, sizeof u, &u);
+}
+
+void Renderer::resizeTargets(glm::ivec2 size) {
+    glm::ivec2 target = glm::max(glm::ivec2(glm::vec2(size) * m_def.rtt_scale + 0.5f), glm::ivec2(1));
+    if (m_reflection.size == target) return;
+    m_reflection = createRenderTarget("reflection target", target);
+    m_refraction = createRenderTarget("refraction target", target);
+}
+
+void Renderer::render(const CameraView& camera, const WaterView& water, const std::vector<ObjectDraw>& objects, double time,
+                      glm::ivec2 size) {
+    m_underwater = camera.position.y < camera.waterHeight;
+    resizeTargets(size);
+    updateFrameUniforms(camera, time, size);
+
+    // --- passes
+    if (glm::normalize(m_def.sun_direction) != m_bakedSun) skyBakePass();
+    const bool above = !m_underwater;
+    if (m_def.reflections && above) reflectionPass(objects);
+    if (m_def.refractions && above) refractionPass(objects);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glViewport(0, 0, size.x, size.y);
     glClearColor(0, 0, 0, 1);
     glClearDepth(1.0);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-
-    // --- passes (sky last: it shades only the pixels nothing else covered)
+    glBindBufferBase(GL_UNIFORM_BUFFER, FRAME_UBO_BINDING, m_frameUniforms[MAIN_VIEW].id());
     opaquePass(objects);
     waterPass(camera, water);
-    skyPass();
-
+    skyPass();  // last: it shades only the pixels nothing else covered
     glBindVertexArray(0);
-    m_gpuTimer.end();
 }
 
-void Renderer::skyPass() {
-    glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 1, -1, "sky");
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LEQUAL);  // the triangle sits on the far plane: only uncovered pixels pass
-    glDepthMask(GL_FALSE);
+PassTimes Renderer::takePassTimes() {
+    PassTimes times;
+    for (int p = 0; p < PASS_COUNT; ++p) {
+        double ms = m_passTimers[size_t(p)].takeResultMs();
+        if (ms >= 0.0) times.emplace_back(PASS_NAMES[p], ms);
+    }
+    return times;
+}
+
+// Faces in GL's cube map order (+x, −x, +y, −y, +z, −z), each as the world direction of face
+// coordinates (s, t) = (ndc.x, ndc.y): columns s axis, t axis, face normal.
+static const glm::mat3 CUBE_FACES[6] = {
+    glm::mat3(glm::vec3(0, 0, -1), glm::vec3(0, -1, 0), glm::vec3(1, 0, 0)),
+    glm::mat3(glm::vec3(0, 0, 1), glm::vec3(0, -1, 0), glm::vec3(-1, 0, 0)),
+    glm::mat3(glm::vec3(1, 0, 0), glm::vec3(0, 0, 1), glm::vec3(0, 1, 0)),
+    glm::mat3(glm::vec3(1, 0, 0), glm::vec3(0, 0, -1), glm::vec3(0, -1, 0)),
+    glm::mat3(glm::vec3(1, 0, 0), glm::vec3(0, -1, 0), glm::vec3(0, 0, 1)),
+    glm::mat3(glm::vec3(-1, 0, 0), glm::vec3(0, -1, 0), glm::vec3(0, 0, -1)),
+};
+
+void Renderer::skyBakePass() {
+    glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, SKY_BAKE_PASS, -1, "sky bake");
+    m_passTimers[SKY_BAKE_PASS].begin();
+    m_bakedSun = glm::normalize(m_def.sun_direction);
+    glBindBufferBase(GL_UNIFORM_BUFFER, FRAME_UBO_BINDING, m_frameUniforms[MAIN_VIEW].id());
+    glBindFramebuffer(GL_FRAMEBUFFER, m_skyBakeFramebuffer.id());
+    glViewport(0, 0, SKY_CUBE_SIZE, SKY_CUBE_SIZE);
+    glDisable(GL_DEPTH_TEST);
+    glUseProgram(m_skyBakeProgram.id());
     glBindVertexArray(m_emptyVao.id());
-    glUseProgram(m_skyProgram.id());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    glDepthMask(GL_TRUE);
+    for (int face = 0; face < 6; ++face) {
+        glNamedFramebufferTextureLayer(m_skyBakeFramebuffer.id(), GL_COLOR_ATTACHMENT0, m_skyCube.id(), 0, face);
+        glProgramUniformMatrix3fv(m_skyBakeProgram.id(), 0, 1, GL_FALSE, &CUBE_FACES[face][0][0]);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
+    glGenerateTextureMipmap(m_skyCube.id());
+    m_passTimers[SKY_BAKE_PASS].end();
+    glPopDebugGroup();
+}
+
+void Renderer::reflectionPass(const std::vector<ObjectDraw>& objects) {
+    glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, REFLECTION_PASS, -1, "reflection");
+    m_passTimers[REFLECTION_PASS].begin();
+    glBindFramebuffer(GL_FRAMEBUFFER, m_reflection.framebuffer.id());
+    glViewport(0, 0, m_reflection.size.x, m_reflection.size.y);
+    glClearColor(0, 0, 0, 0);  // alpha 0: no local reflection, the sky cube shows
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glFrontFace(GL_CW);  // the mirror flips the winding
+    drawObjects(objects, REFLECTION_VIEW);
+    glFrontFace(GL_CCW);
+    m_passTimers[REFLECTION_PASS].end();
+    glPopDebugGroup();
+}
+
+void Renderer::refractionPass(const std::vector<ObjectDraw>& objects) {
+    glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, REFRACTION_PASS, -1, "refraction");
+    m_passTimers[REFRACTION_PASS].begin();
+    glBindFramebuffer(GL_FRAMEBUFFER, m_refraction.framebuffer.id());
+    glViewport(0, 0, m_refraction.size.x, m_refraction.size.y);
+    glClearColor(0, 0, 0, 0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);  // depth 1: open water, the full body colour
+    drawObjects(objects, REFRACTION_VIEW);
+    m_passTimers[REFRACTION_PASS].end();
     glPopDebugGroup();
 }
 
 void Renderer::opaquePass(const std::vector<ObjectDraw>& objects) {
-    if (objects.empty()) return;
-    glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 3, -1, "opaque");
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glEnable(GL_CULL_FACE);
-    glUseProgram(m_objectProgram.id());
-    for (const ObjectDraw& o : objects) {
-        const Mesh& mesh = o.mesh == MeshKind::Sphere ? m_sphereMesh : m_boxMesh;
-        glProgramUniformMatrix4fv(m_objectProgram.id(), 0, 1, GL_FALSE, &o.model[0][0]);
-        glProgramUniform3fv(m_objectProgram.id(), 1, 1, &o.color.x);
-        glBindVertexArray(mesh.vao.id());
-        glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
-    }
-    glDisable(GL_CULL_FACE);
+    glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, OPAQUE_PASS, -1, "opaque");
+    m_passTimers[OPAQUE_PASS].begin();
+    drawObjects(objects, MAIN_VIEW);
+    m_passTimers[OPAQUE_PASS].end();
     glPopDebugGroup();
 }
 
-void Renderer::waterPass(const CameraView& camera, const WaterView& water) {
-    ocean::GridCorners grid = ocean::projectedGridCorners(camera.projection * camera.view, camera.position, GRID_MARGIN);
-    if (!grid.visible) return;
-    // Software rasterisers shade vertices on one thread: a coarser grid there.
-    int resolution = m_def.grid_resolution > 0 ? std::max(m_def.grid_resolution, 16) : (isSoftwareRenderer() ? 128 : 512);
-    if (m_gridResolution != resolution) buildGrid(resolution);
+const Mesh& Renderer::meshFor(const ObjectDraw& object) {
+    if (object.modelFile.empty()) return object.mesh == MeshKind::Sphere ? m_sphereMesh : m_boxMesh;
+    auto it = m_models.find(object.modelFile);
+    if (it == m_models.end()) it = m_models.emplace(object.modelFile, makeMesh(object.modelFile, assets::loadGltfModel(object.modelFile))).first;
+    return it->second;
+}
 
+void Renderer::drawObjects(const std::vector<ObjectDraw>& objects, View view) {
+    if (objects.empty()) return;
+    glBindBufferBase(GL_UNIFORM_BUFFER, FRAME_UBO_BINDING, m_frameUniforms[view].id());
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glEnable(GL_CULL_FACE);
+    if (view != MAIN_VIEW) glEnable(GL_CLIP_DISTANCE0);
+    glUseProgram(m_objectProgram.id());
+    for (const ObjectDraw& o : objects) {
+        const Mesh& mesh = meshFor(o);
+        const glm::vec3 tint = o.modelFile.empty() ? o.color : glm::vec3(1.0f);  // models carry their own colours
+        glProgramUniformMatrix4fv(m_objectProgram.id(), 0, 1, GL_FALSE, &o.model[0][0]);
+        glProgramUniform3fv(m_objectProgram.id(), 1, 1, &tint.x);
+        glBindVertexArray(mesh.vao.id());
+        glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
+    }
+    glDisable(GL_CLIP_DISTANCE0);
+    glDisable(GL_CULL_FACE);
+    glBindBufferBase(GL_UNIFORM_BUFFER, FRAME_UBO_BINDING, m_frameUniforms[MAIN_VIEW].id());
+}
+
+void Renderer::skyPass() {
+    glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, SKY_PASS, -1, "sky");
+    m_passTimers[SKY_PASS].begin();
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);  // the triangle sits on the far plane: only uncovered pixels pass
+    glDepthMask(GL_FALSE);
+    glBindTextureUnit(SKY_UNIT, m_skyCube.id());
+    glBindVertexArray(m_emptyVao.id());
+    glUseProgram(m_skyProgram.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glDepthMask(GL_TRUE);
+    m_passTimers[SKY_PASS].end();
+    glPopDebugGroup();
+}
+
+void Renderer::uploadWaterUniforms(const CameraView& camera, const WaterView& water) {
+    ocean::GridCorners grid = ocean::projectedGridCorners(camera.projection * camera.view, camera.position, GRID_MARGIN);
     WaterUniforms u{};
     for (int i = 0; i < 4; ++i) u.corner[i] = grid.corner[size_t(i)];
     const bool layers = water.cascades > 0 && water.displacement && water.slopes;
@@ -144,17 +306,11 @@ void Renderer::waterPass(const CameraView& camera, const WaterView& water) {
     u.gridParams = glm::vec4(float(m_gridResolution), 0.9f * camera.farM, float(cascades), float(layers ? water.resolution : 1));
     if (water.ripples && water.rippleCells > 0) {
         if (m_rippleCells != water.rippleCells) {
-            GLuint id;
-            glCreateTextures(GL_TEXTURE_2D, 1, &id);
-            glObjectLabel(GL_TEXTURE, id, -1, "ripple heights");
-            glTextureStorage2D(id, 1, GL_R32F, water.rippleCells, water.rippleCells);
-            glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-            glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-            glTextureParameteri(id, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
-            glTextureParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+            m_rippleTexture = createTexture2D("ripple heights", GL_R32F, glm::ivec2(water.rippleCells));
+            glTextureParameteri(m_rippleTexture.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+            glTextureParameteri(m_rippleTexture.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
             const float zero[4] = {0, 0, 0, 0};
-            glTextureParameterfv(id, GL_TEXTURE_BORDER_COLOR, zero);
-            m_rippleTexture = Texture(id);
+            glTextureParameterfv(m_rippleTexture.id(), GL_TEXTURE_BORDER_COLOR, zero);
             m_rippleCells = water.rippleCells;
         }
         glTextureSubImage2D(m_rippleTexture.id(), 0, 0, 0, m_rippleCells, m_rippleCells, GL_RED, GL_FLOAT, water.ripples);
@@ -162,16 +318,30 @@ void Renderer::waterPass(const CameraView& camera, const WaterView& water) {
     }
     glNamedBufferSubData(m_waterUniforms.id(), 0, sizeof u, &u);
     glBindBufferBase(GL_UNIFORM_BUFFER, WATER_UBO_BINDING, m_waterUniforms.id());
+    glBindTextureUnit(DISPLACEMENT_UNIT, layers ? water.displacement->id() : m_flatMaps.id());
+    glBindTextureUnit(SLOPES_UNIT, layers ? water.slopes->id() : m_flatMaps.id());
+    glBindTextureUnit(RIPPLES_UNIT, u.rippleParams.w > 0.0f ? m_rippleTexture.id() : 0);
+}
 
-    glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 2, -1, "water");
-    glBindTextureUnit(0, layers ? water.displacement->id() : m_flatMaps.id());
-    glBindTextureUnit(1, layers ? water.slopes->id() : m_flatMaps.id());
-    glBindTextureUnit(2, u.rippleParams.w > 0.0f ? m_rippleTexture.id() : 0);
+void Renderer::waterPass(const CameraView& camera, const WaterView& water) {
+    if (!ocean::projectedGridCorners(camera.projection * camera.view, camera.position, GRID_MARGIN).visible) return;
+    // Software rasterisers shade vertices on one thread: a coarser grid there.
+    int resolution = m_def.grid_resolution > 0 ? std::max(m_def.grid_resolution, 16) : (isSoftwareRenderer() ? 128 : 512);
+    if (m_gridResolution != resolution) buildGrid(resolution);
+    glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, WATER_PASS, -1, "water");
+    m_passTimers[WATER_PASS].begin();
+    uploadWaterUniforms(camera, water);
+    glBindTextureUnit(SKY_UNIT, m_skyCube.id());
+    glBindTextureUnit(REFLECTION_UNIT, m_reflection.color.id());
+    glBindTextureUnit(REFRACTION_UNIT, m_refraction.color.id());
+    glBindTextureUnit(REFRACTION_DEPTH_UNIT, m_refraction.depth.id());
+    glBindTextureUnit(DETAIL_UNIT, m_detailMap.id());
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glUseProgram(m_waterProgram.id());
     glBindVertexArray(m_gridVao.id());
     glDrawElements(GL_TRIANGLES, m_gridIndexCount, GL_UNSIGNED_INT, nullptr);
+    m_passTimers[WATER_PASS].end();
     glPopDebugGroup();
 }
 

@@ -1,15 +1,20 @@
-// The renderer: a short list of passes over the default framebuffer.
-//   opaque → objects (built-in meshes) lit by the sun and sky
-//   water → the composite sea surface on a projected grid (Gerstner + FFT cascades + ripples)
-//   sky   → background where nothing was drawn: analytic daylight sky and sun disk
+// The renderer: a short list of passes (Renderer::render runs them in this order).
+//   sky bake   → the analytic daylight sky into a cube map, when the sun moves
+//   reflection → objects above the water seen from the mirrored camera (clip plane) → target
+//   refraction → objects below the water from the camera (clip plane) → colour + depth target
+//   opaque     → objects from the camera into the framebuffer
+//   water      → the composite surface on a projected grid, shaded from the targets and sky
+//   sky        → the cube map (or underwater fog) where nothing else was drawn
 #pragma once
 #include "gfx/gpu_timer.h"
 #include "gfx/handles.h"
 #include "gfx/mesh.h"
 #include "gfx/render_def.h"
+#include "gfx/render_target.h"
 
 #include <array>
 #include <glm/mat4x4.hpp>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -20,7 +25,9 @@ struct CameraView {
     glm::vec3 position{0.0f};   ///< eye (world m)
     glm::mat4 view{1.0f};       ///< world → eye
     glm::mat4 projection{1.0f}; ///< eye → clip
+    float nearM = 0.1f;         ///< near clip distance (m)
     float farM = 20000.0f;      ///< far clip distance (m)
+    float waterHeight = 0.0f;   ///< composite water surface height under the eye (m): below it, the underwater look
 };
 
 /// The water layers the surface pass draws (everything optional: absent layers are flat).
@@ -62,50 +69,78 @@ struct WaterUniforms {
 static_assert(sizeof(WaterUniforms) == 16 * (4 + 4 + 32), "WaterUniforms must match std140 layout");
 constexpr int MAX_GERSTNER_WAVES = 32;
 
-/// std140 mirror of `FrameUniforms` in shaders/common_frame.glsl.
+/// std140 mirror of `FrameUniforms` in shaders/common_frame.glsl: one copy per view
+/// (camera, mirrored camera, refraction camera).
 struct FrameUniforms {
     glm::mat4 viewProjection;
     glm::mat4 inverseViewProjection;
     glm::vec4 cameraPositionTime;   ///< xyz eye (m), w simulated time (s)
     glm::vec4 sunDirectionFresnel;  ///< xyz toward the sun (unit), w 0 = Schlick, 1 = exact
     glm::vec4 waterColorExposure;   ///< rgb deep water colour, w exposure
-    glm::vec4 viewport;             ///< xy framebuffer size (px)
+    glm::vec4 viewport;             ///< xy framebuffer size (px), z 1 = write linear radiance (targets), w 1 = eye under water
+    glm::vec4 clipPlane;            ///< world plane (a, b, c, d): keeps a·x + b·y + c·z + d ≥ 0
+    glm::vec4 depthParams;          ///< near, far (m), water clarity (m), sky mip count
+    glm::vec4 shading;              ///< DU/DV strength, normal distortion, glitter, glitter shininess
+    glm::vec4 switches;             ///< reflections, refractions, foam (1 on, 0 off), 0
 };
-static_assert(sizeof(FrameUniforms) == 2 * 64 + 4 * 16, "FrameUniforms must match std140 layout");
+static_assert(sizeof(FrameUniforms) == 2 * 64 + 8 * 16, "FrameUniforms must match std140 layout");
 
-/// Owns the programs and buffers of every pass.
+/// GPU ms of each pass in the latest resolved frame (pass name → ms).
+using PassTimes = std::vector<std::pair<const char*, double>>;
+
+/// Owns the programs, targets and buffers of every pass.
 class Renderer {
 public:
     explicit Renderer(const RenderDef& def);
     /// Draws one frame of the scene into the default framebuffer of `size`.
     void render(const CameraView& camera, const WaterView& water, const std::vector<ObjectDraw>& objects, double time,
                 glm::ivec2 size);
-    /// GPU ms of the latest resolved frame (negative until one resolves).
-    double takeGpuMs() { return m_gpuTimer.takeResultMs(); }
+    /// GPU ms per pass of the latest frame whose timer queries resolved (empty until one does).
+    PassTimes takePassTimes();
     RenderDef& def() { return m_def; }
+    /// The reflection and refraction targets of the latest frame (for tests and debug views).
+    const RenderTarget& reflectionTarget() const { return m_reflection; }
+    const RenderTarget& refractionTarget() const { return m_refraction; }
 
 private:
-    void skyPass();    // in: frame uniforms, depth; out: colour where nothing was drawn
-    void opaquePass(const std::vector<ObjectDraw>& objects);  // in: frame uniforms, objects; out: colour, depth
-    void waterPass(const CameraView& camera, const WaterView& water);  // in: frame uniforms, water layers; out: colour, depth
+    enum View { MAIN_VIEW, REFLECTION_VIEW, REFRACTION_VIEW, VIEW_COUNT };
+    enum Pass { SKY_BAKE_PASS, REFLECTION_PASS, REFRACTION_PASS, OPAQUE_PASS, WATER_PASS, SKY_PASS, PASS_COUNT };
+
+    void skyBakePass();  // in: sun direction; out: m_skyCube (linear radiance, mipmapped)
+    void reflectionPass(const std::vector<ObjectDraw>& objects);  // in: mirrored view, objects; out: m_reflection
+    void refractionPass(const std::vector<ObjectDraw>& objects);  // in: camera view, objects; out: m_refraction colour + depth
+    void opaquePass(const std::vector<ObjectDraw>& objects);      // in: camera view, objects; out: framebuffer colour, depth
+    void waterPass(const CameraView& camera, const WaterView& water);  // in: water layers, targets, sky; out: framebuffer
+    void skyPass();  // in: sky cube, depth; out: colour where nothing was drawn
+
+    void drawObjects(const std::vector<ObjectDraw>& objects, View view);
+    const Mesh& meshFor(const ObjectDraw& object);
+    void updateFrameUniforms(const CameraView& camera, double time, glm::ivec2 size);
+    void resizeTargets(glm::ivec2 size);
+    void uploadWaterUniforms(const CameraView& camera, const WaterView& water);
     void buildGrid(int resolution);
 
     RenderDef m_def;
-    Program m_skyProgram;
-    Program m_waterProgram;
-    Program m_objectProgram;
+    Program m_skyBakeProgram, m_skyProgram, m_waterProgram, m_objectProgram;
     Mesh m_sphereMesh, m_boxMesh;
+    std::map<std::string, Mesh> m_models;  // glTF meshes by file, loaded on first draw
     VertexArray m_emptyVao;
-    Buffer m_frameUniforms;
+    Buffer m_frameUniforms[VIEW_COUNT];
     Buffer m_waterUniforms;
     VertexArray m_gridVao;
     Buffer m_gridVertices, m_gridIndices;
     int m_gridResolution = 0;
     GLsizei m_gridIndexCount = 0;
-    Texture m_flatMaps;  // 1×1 layer: no displacement, J = 1, zero slope
+    Texture m_flatMaps;       // 1×1 layer: no displacement, J = 1, zero slope
     Texture m_rippleTexture;  // R32F heights of the ripple patch, re-uploaded every frame
     int m_rippleCells = 0;
-    GpuTimer m_gpuTimer{"render"};
+    Texture m_skyCube;        // RGBA16F cube map of the sky's radiance
+    Framebuffer m_skyBakeFramebuffer;
+    glm::vec3 m_bakedSun{0.0f};
+    Texture m_detailMap;      // DU/DV (rg) and foam pattern (b), tileable, mipmapped
+    RenderTarget m_reflection, m_refraction;
+    bool m_underwater = false;
+    std::vector<GpuTimer> m_passTimers;
 };
 
 /// Reads the default framebuffer (size px) and writes it as an RGB PNG, top row first.
