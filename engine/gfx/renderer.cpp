@@ -216,13 +216,19 @@ void Renderer::skyBakePass() {
     glPopDebugGroup();
 }
 
+// Binds a target for drawing, cleared to transparent black and the far plane.
+static void clearTarget(const RenderTarget& target) {
+    const float color[4] = {0, 0, 0, 0}, depth = 1.0f;
+    glClearNamedFramebufferfv(target.framebuffer.id(), GL_COLOR, 0, color);
+    glClearNamedFramebufferfv(target.framebuffer.id(), GL_DEPTH, 0, &depth);
+    glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer.id());
+    glViewport(0, 0, target.size.x, target.size.y);
+}
+
 void Renderer::reflectionPass(const std::vector<ObjectDraw>& objects) {
     glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, REFLECTION_PASS, -1, "reflection");
     m_passTimers[REFLECTION_PASS].begin();
-    glBindFramebuffer(GL_FRAMEBUFFER, m_reflection.framebuffer.id());
-    glViewport(0, 0, m_reflection.size.x, m_reflection.size.y);
-    glClearColor(0, 0, 0, 0);  // alpha 0: no local reflection, the sky cube shows
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    clearTarget(m_reflection);  // alpha 0: no local reflection, the sky cube shows
     glFrontFace(GL_CW);  // the mirror flips the winding
     drawObjects(objects, REFLECTION_VIEW);
     glFrontFace(GL_CCW);
@@ -233,10 +239,7 @@ void Renderer::reflectionPass(const std::vector<ObjectDraw>& objects) {
 void Renderer::refractionPass(const std::vector<ObjectDraw>& objects) {
     glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, REFRACTION_PASS, -1, "refraction");
     m_passTimers[REFRACTION_PASS].begin();
-    glBindFramebuffer(GL_FRAMEBUFFER, m_refraction.framebuffer.id());
-    glViewport(0, 0, m_refraction.size.x, m_refraction.size.y);
-    glClearColor(0, 0, 0, 0);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);  // depth 1: open water, the full body colour
+    clearTarget(m_refraction);  // depth 1: open water, the full body colour
     drawObjects(objects, REFRACTION_VIEW);
     m_passTimers[REFRACTION_PASS].end();
     glPopDebugGroup();
@@ -341,6 +344,8 @@ void Renderer::waterPass(const CameraView& camera, const WaterView& water) {
     glUseProgram(m_waterProgram.id());
     glBindVertexArray(m_gridVao.id());
     glDrawElements(GL_TRIANGLES, m_gridIndexCount, GL_UNSIGNED_INT, nullptr);
+    // The targets are drawn into again next frame: never leave them bound for sampling.
+    for (GLuint unit : {REFLECTION_UNIT, REFRACTION_UNIT, REFRACTION_DEPTH_UNIT}) glBindTextureUnit(unit, 0);
     m_passTimers[WATER_PASS].end();
     glPopDebugGroup();
 }
