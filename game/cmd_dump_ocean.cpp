@@ -24,7 +24,7 @@ static std::vector<float> gpuDump(const ob::ocean::OceanDef& def, double time) {
     std::vector<float> data(points * ocean::OCEAN_DUMP_CHANNELS);
     for (size_t p = 0; p < points; ++p) {
         const float* d = &displacement[p * 4];  // (Dx, h, Dz, J), layer 0 first
-        const float* s = &slopes[p * 4];        // (dh/dx, dh/dz, 0, 0)
+        const float* s = &slopes[p * 4];        // (dh/dx, dh/dz, J, 0)
         float* out = &data[p * ocean::OCEAN_DUMP_CHANNELS];
         out[0] = d[1];
         out[1] = d[0];

@@ -10,7 +10,7 @@ layout(std140, binding = 1) uniform WaterUniforms {
 };
 
 layout(binding = 0) uniform sampler2DArray u_displacement;  // layer c: (Dx, h, Dz, J)
-layout(binding = 1) uniform sampler2DArray u_slopes;        // layer c: (dh/dx, dh/dz, 0, 0)
+layout(binding = 1) uniform sampler2DArray u_slopes;        // layer c: (dh/dx, dh/dz, J, 0)
 layout(binding = 2) uniform sampler2D u_ripples;            // ripple heights Vh(t) (m), 0 outside
 
 // Ripple height at world (x, z) (bilinear between cell centres; 0 outside the patch).

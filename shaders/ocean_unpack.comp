@@ -1,7 +1,7 @@
 #version 450 core
 // Ocean maps from the four inverse-transformed packed spectra (SPEC §2.1 eq. 9: f = Re,
 // g = Im) and the foam Jacobian (seed 003 "Future"), as OceanFftCpu's unpack:
-//   displacement = (Dx, h, Dz, J),   slopes = (∂h/∂x, ∂h/∂z, 0, 0),
+//   displacement = (Dx, h, Dz, J),   slopes = (∂h/∂x, ∂h/∂z, J, 0),
 //   J = (1 + λ∂Dx/∂x)(1 + λ∂Dz/∂z) − (λ∂Dx/∂z)².
 // One invocation per texel: x along i, y along j, gl_WorkGroupID.z the cascade (= layer).
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -28,5 +28,5 @@ void main() {
     float dxz = u_lambda * heightDxz.y;
     float jacobian = (1.0 + u_lambda * dxxDzz.x) * (1.0 + u_lambda * dxxDzz.y) - dxz * dxz;
     imageStore(u_displacement, texel, vec4(dispXZ.x, heightDxz.x, dispXZ.y, jacobian));
-    imageStore(u_slopes, texel, vec4(slopeXZ, 0.0, 0.0));
+    imageStore(u_slopes, texel, vec4(slopeXZ, jacobian, 0.0));
 }

@@ -39,8 +39,9 @@ void main() {
     int cascades = int(u_gridParams.z);
     for (int c = 0; c < cascades; ++c) {
         vec3 uv = cascadeCoord(v_rest, c);
-        slope += texture(u_slopes, uv).xy;
-        jacobian = min(jacobian, texture(u_displacement, uv).w);
+        vec3 s = texture(u_slopes, uv).xyz;  // (dh/dx, dh/dz, J)
+        slope += s.xy;
+        jacobian = min(jacobian, s.z);
     }
     vec3 n = normalize(vec3(-slope.x, 1.0, -slope.y));
     vec3 eye = u_cameraPositionTime.xyz;

@@ -33,7 +33,7 @@ struct CameraView {
 /// The water layers the surface pass draws (everything optional: absent layers are flat).
 struct WaterView {
     const Texture* displacement = nullptr;  ///< 2D array, layer per cascade: (Dx, h, Dz, J)
-    const Texture* slopes = nullptr;        ///< 2D array, layer per cascade: (dh/dx, dh/dz, 0, 0)
+    const Texture* slopes = nullptr;        ///< 2D array, layer per cascade: (dh/dx, dh/dz, J, 0)
     int cascades = 0;                       ///< FFT cascades in the textures, [0, 4]
     int resolution = 1;                     ///< FFT N
     std::array<float, 4> cascadeSize{};     ///< tile side per cascade (m)

@@ -33,7 +33,7 @@ OceanTextures::OceanTextures(int resolution, int cascades) : m_n(resolution), m_
     assert(resolution > 0 && (resolution & (resolution - 1)) == 0 && cascades >= 1);
     while ((1 << (m_levels - 1)) < m_n) ++m_levels;
     m_displacement = createMap("ocean displacement (Dx, h, Dz, J)", m_n, m_cascades, m_levels);
-    m_slopes = createMap("ocean slopes (dh/dx, dh/dz)", m_n, m_cascades, m_levels);
+    m_slopes = createMap("ocean slopes (dh/dx, dh/dz, J)", m_n, m_cascades, m_levels);
 }
 
 void OceanTextures::upload(const OceanFftCpu& fft) {
@@ -55,15 +55,16 @@ void OceanTextures::upload(const OceanFftCpu& fft) {
         }
     }
     glTextureSubImage3D(m_displacement.id(), 0, 0, 0, 0, m_n, m_n, m_cascades, GL_RGBA, GL_FLOAT, m_staging.data());
-    // --- slopes: (∂h/∂x, ∂h/∂z, 0, 0); the driver has copied the staging array on return
+    // --- slopes: (∂h/∂x, ∂h/∂z, J, 0); the driver has copied the staging array on return
     for (int c = 0; c < m_cascades; ++c) {
         const float* sx = fft.channel(c, OceanChannel::SlopeX);
         const float* sz = fft.channel(c, OceanChannel::SlopeZ);
+        const float* jac = fft.channel(c, OceanChannel::Jacobian);
         float* out = m_staging.data() + texels * size_t(c) * 4;
         for (size_t p = 0; p < texels; ++p) {
             out[4 * p] = sx[p];
             out[4 * p + 1] = sz[p];
-            out[4 * p + 2] = 0.0f;
+            out[4 * p + 2] = jac[p];
             out[4 * p + 3] = 0.0f;
         }
     }

@@ -13,7 +13,7 @@ class OceanFftCpu;
 /// (the tile is periodic), trilinear filtering with a full mip chain. Texel (i, j) of layer
 /// c is the point X = (i·L_c/N, j·L_c/N) of cascade c's tile (x along i, z along j):
 ///   displacement() = (Dx, h, Dz, J)  metres, metres, metres, dimensionless
-///   slopes()       = (∂h/∂x, ∂h/∂z, 0, 0)
+///   slopes()       = (∂h/∂x, ∂h/∂z, J, 0)   (J again: the surface shader reads one map per pixel)
 /// Dx and Dz are NOT multiplied by λ (the shader applies λ = −choppiness); J already is the
 /// Jacobian of X → X + λD (OceanChannel::Jacobian). Writers fill level 0 only: call
 /// generateMipmaps() after upload() / OceanFftGpu::update() before sampling minified.
@@ -31,7 +31,7 @@ public:
 
     /// (Dx, h, Dz, J) per texel, one layer per cascade.
     const gfx::Texture& displacement() const { return m_displacement; }
-    /// (∂h/∂x, ∂h/∂z, 0, 0) per texel, one layer per cascade.
+    /// (∂h/∂x, ∂h/∂z, J, 0) per texel, one layer per cascade.
     const gfx::Texture& slopes() const { return m_slopes; }
 
     /// CPU backend: copies fft's last update() into level 0 of both textures. Cost per call:
