@@ -114,15 +114,15 @@ const unsigned char* viewElements(const tinygltf::Model& m, int viewIndex, size_
     return data.data() + view.byteOffset + offset;
 }
 
-// An accessor's elements as doubles, `width` per element (sparse substitution applied, an
-// accessor without a buffer view reads as zeros). Integer components only where allowed.
+// An accessor's elements as doubles, `width` components each, integers converted (sparse
+// substitution applied; an accessor without a buffer view starts as zeros).
 struct Values {
     std::vector<double> v;
     size_t count = 0;
     int width = 0;
 };
 
-Values readAccessor(const tinygltf::Model& m, int index, bool floatsOnly, const std::string& what) {
+Values readAccessor(const tinygltf::Model& m, int index, bool allowUint32, const std::string& what) {
     if (index < 0 || size_t(index) >= m.accessors.size())
         throw Corrupt(what + ": accessor " + std::to_string(index) + " does not exist");
     const tinygltf::Accessor& a = m.accessors[size_t(index)];
@@ -132,7 +132,7 @@ Values readAccessor(const tinygltf::Model& m, int index, bool floatsOnly, const 
     const size_t bytes = componentBytes(a.componentType);
     if (out.width == 0) throw Corrupt(name + ": type must be SCALAR or VEC2/3/4");
     if (bytes == 0) throw Corrupt(name + ": unknown componentType " + std::to_string(a.componentType));
-    if (floatsOnly && a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
+    if (!allowUint32 && a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
         throw Corrupt(name + ": componentType must be FLOAT or a (normalized) byte/short");
     if (a.count > MAX_ELEMENTS) throw Corrupt(name + ": count " + num(a.count) + " is too large");
     out.count = a.count;
@@ -175,7 +175,7 @@ Values readAccessor(const tinygltf::Model& m, int index, bool floatsOnly, const 
 }
 
 std::vector<glm::vec3> readVec3(const tinygltf::Model& m, int index, const std::string& what) {
-    Values v = readAccessor(m, index, true, what);
+    Values v = readAccessor(m, index, false, what);
     if (v.width != 3) throw Corrupt(what + " (accessor " + std::to_string(index) + "): type must be VEC3");
     std::vector<glm::vec3> out(v.count);
     for (size_t i = 0; i < v.count; ++i) out[i] = glm::vec3(v.v[3 * i], v.v[3 * i + 1], v.v[3 * i + 2]);
@@ -191,13 +191,13 @@ std::vector<uint32_t> readIndices(const tinygltf::Model& m, int index, const std
              a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT))
             throw Corrupt(what + " (accessor " + std::to_string(index) + "): must be SCALAR unsigned byte, short or int");
     }
-    Values v = readAccessor(m, index, false, what);
+    Values v = readAccessor(m, index, true, what);
     std::vector<uint32_t> out(v.count);
     for (size_t i = 0; i < v.count; ++i) out[i] = uint32_t(v.v[i]);
     return out;
 }
 
-void requireFinite(const std::vector<double>& v, size_t sizeA, size_t sizeB, const std::string& what) {
+void checkNumbers(const std::vector<double>& v, size_t sizeA, size_t sizeB, const std::string& what) {
     if (!v.empty() && v.size() != sizeA && v.size() != sizeB)
         throw Corrupt(what + ": expected " + num(sizeA) + (sizeB != sizeA ? " or " + num(sizeB) : "") + " numbers, got " +
                       num(v.size()));
@@ -208,10 +208,10 @@ void requireFinite(const std::vector<double>& v, size_t sizeA, size_t sizeB, con
 // A node's local transform: its matrix, else T · R · S (spec §3.5.3).
 glm::mat4 localTransform(const tinygltf::Node& n, int index) {
     const std::string name = "node " + std::to_string(index);
-    requireFinite(n.matrix, 16, 16, name + " matrix");
-    requireFinite(n.translation, 3, 3, name + " translation");
-    requireFinite(n.rotation, 4, 4, name + " rotation");
-    requireFinite(n.scale, 3, 3, name + " scale");
+    checkNumbers(n.matrix, 16, 16, name + " matrix");
+    checkNumbers(n.translation, 3, 3, name + " translation");
+    checkNumbers(n.rotation, 4, 4, name + " rotation");
+    checkNumbers(n.scale, 3, 3, name + " scale");
     if (!n.matrix.empty()) {
         glm::dmat4 m = glm::make_mat4(n.matrix.data());  // both column-major
         return glm::mat4(m);
@@ -256,12 +256,12 @@ void appendPrimitive(const tinygltf::Model& m, const tinygltf::Primitive& prim, 
         if (size_t(prim.material) >= m.materials.size())
             throw Corrupt(name + ": material " + std::to_string(prim.material) + " does not exist");
         const std::vector<double>& f = m.materials[size_t(prim.material)].pbrMetallicRoughness.baseColorFactor;
-        requireFinite(f, 4, 4, "material " + std::to_string(prim.material) + " baseColorFactor");
+        checkNumbers(f, 4, 4, "material " + std::to_string(prim.material) + " baseColorFactor");
         if (f.size() == 4) factor = glm::vec3(float(f[0]), float(f[1]), float(f[2]));
     }
     std::vector<glm::vec3> colors(n, factor);
     if (attribute("COLOR_0") >= 0) {
-        Values c = readAccessor(m, attribute("COLOR_0"), true, name + " COLOR_0");
+        Values c = readAccessor(m, attribute("COLOR_0"), false, name + " COLOR_0");
         if (c.width != 3 && c.width != 4) throw Corrupt(name + " COLOR_0: type must be VEC3 or VEC4");
         if (c.count != n) throw Corrupt(name + ": COLOR_0 has " + num(c.count) + " elements, POSITION " + num(n));
         const size_t w = size_t(c.width);

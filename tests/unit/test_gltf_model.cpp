@@ -188,7 +188,7 @@ TEST_CASE("without NORMAL every triangle gets its own flat face normal", "[gltf]
         }
 }
 
-TEST_CASE("node hierarchies compose parent matrix and child rotation; a mirror keeps faces outward", "[gltf]") {
+TEST_CASE("node hierarchies compose parent matrix and child rotation and a mirror keeps faces outward", "[gltf]") {
     TetraOptions o;
     // Parent: a translation by (10, 0, 0) as a column-major matrix; child: 90° about +y,
     // which takes +x to −z and +z to +x.
@@ -212,7 +212,7 @@ TEST_CASE("node hierarchies compose parent matrix and child rotation; a mirror k
     }
 }
 
-TEST_CASE("COLOR_0 multiplies the material's baseColorFactor; normalized bytes read as c/255", "[gltf]") {
+TEST_CASE("COLOR_0 multiplies the material's baseColorFactor and normalized bytes read as c/255", "[gltf]") {
     TetraOptions o;
     append<uint8_t>(o.bytes, {255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 51, 102, 255, 255});
     o.extraAttributes = R"(, "COLOR_0": 3)";
@@ -263,6 +263,25 @@ TEST_CASE("u8 and u32 indices and non-indexed triangles give the same triangles 
     ModelData m = loadGltfModel(writeFile(tempPath("soup.gltf"), json));
     REQUIRE(m.indices.size() == 12);
     for (size_t k = 0; k < 12; ++k) CHECK(m.positions[m.indices[k]] == expected[TETRA_FACES[k]]);
+}
+
+TEST_CASE("a sparse accessor without a buffer view reads as zeros with its substitutions applied", "[gltf]") {
+    const ModelData reference = loadGltfModel(writeTetra({}));
+    TetraOptions o;
+    append<uint8_t>(o.bytes, {3, 1, 2, 0});  // substitution targets (the fourth byte is padding)
+    std::string json = tetraJson(o);
+    json = replaced(json, R"({"buffer": 0, "byteOffset": 72, "byteLength": 48})",
+                    R"({"buffer": 0, "byteOffset": 72, "byteLength": 48}, {"buffer": 0, "byteOffset": 120, "byteLength": 4})");
+    // Positions: no buffer view (zeros); 3 substitutions put the first three values of
+    // bufferView 0 (corners O, X, Y) at elements 3, 1, 2.
+    json = replaced(json, R"({"bufferView": 0, "componentType": 5126, "count": 4,)",
+                    R"({"componentType": 5126, "sparse": {"count": 3, "indices": {"bufferView": 3, "componentType": 5121},
+                        "values": {"bufferView": 0}}, "count": 4,)");
+    ModelData m = loadGltfModel(writeFile(tempPath("sparse.gltf"), json));
+    // Targets 3, 1, 2 take values TETRA[0], TETRA[1], TETRA[2]; element 0 stays zero.
+    const glm::vec3 corners[4] = {{0, 0, 0}, TETRA[1], TETRA[2], TETRA[0]};
+    for (size_t i = 0; i < 4; ++i) CHECK(m.positions[i] == 2.0f * corners[i] + glm::vec3(1, 2, 3));
+    CHECK(m.indices == reference.indices);
 }
 
 TEST_CASE("a .glb and a .gltf with an external .bin load the same as the embedded .gltf", "[gltf]") {
@@ -445,7 +464,7 @@ glm::vec3 dominant(const std::map<std::tuple<float, float, float>, double>& area
 
 } // namespace
 
-TEST_CASE("ship.gltf: closed and outward; hull 3 × 1.5 × 10 m about the origin, bow at +z, rig up to about 7 m; brown hull, off-white sail", "[gltf][models]") {
+TEST_CASE("ship.gltf: closed and outward, hull 3 × 1.5 × 10 m about the origin with the bow at +z, rig up to about 7 m, brown hull and off-white sail", "[gltf][models]") {
     ModelData m = loadGltfModel(modelPath("ship"));
     checkWellFormed(m);
     CHECK(m.boundsMin.x == Approx(-1.5f).margin(1e-4));
@@ -477,7 +496,7 @@ TEST_CASE("ship.gltf: closed and outward; hull 3 × 1.5 × 10 m about the origin
     CHECK(std::min({sail.x, sail.y, sail.z}) > 0.7f);
 }
 
-TEST_CASE("fish.gltf: closed and outward, 1 m long along z with the nose at +z and the tail fin at -z; silver-blue", "[gltf][models]") {
+TEST_CASE("fish.gltf: closed and outward, 1 m long along z with the nose at +z and the tail fin at -z, silver-blue", "[gltf][models]") {
     ModelData m = loadGltfModel(modelPath("fish"));
     checkWellFormed(m);
     CHECK(m.boundsMax.z == Approx(0.5f).margin(1e-3));
@@ -510,7 +529,7 @@ TEST_CASE("cannonball.gltf: a closed unit sphere, radial normals, volume 4/3 pi 
     for (const glm::vec3& c : m.colors) CHECK(std::max({c.x, c.y, c.z}) < 0.2f);  // dark iron
 }
 
-TEST_CASE("cannon.gltf: closed and outward; barrel on the z axis with the muzzle at z = 1.5, pivot at the origin, on a carriage below", "[gltf][models]") {
+TEST_CASE("cannon.gltf: closed and outward, barrel on the z axis with the muzzle at z = 1.5 and the pivot at the origin, on a carriage below", "[gltf][models]") {
     ModelData m = loadGltfModel(modelPath("cannon"));
     checkWellFormed(m);
     CHECK(m.boundsMax.z == Approx(1.5f).margin(1e-3));
