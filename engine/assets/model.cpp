@@ -12,10 +12,9 @@
 #include <filesystem>
 #include <fstream>
 #include <glm/glm.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
-#include <iterator>
-#include <limits>
 
 namespace ob::assets {
 
