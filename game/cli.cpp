@@ -5,6 +5,7 @@
 #include "cmd_dump_ocean.h"
 #include "cmd_dump_ripples.h"
 #include "cmd_dump_surface.h"
+#include "cmd_make_models.h"
 #include "ocean/ocean_fft_cpu.h"
 #include "water/composite_water.h"
 #include "cmd_ripple.h"
@@ -189,6 +190,12 @@ int runCli(int argc, char** argv) {
             return rippleCommand(ripple);
         };
     });
+
+    // make-models: the project's own glTF models
+    std::string modelsOut = "assets/models";
+    CLI::App* modelsCmd = app.add_subcommand("make-models", "write the project's own glTF models (ship, fish, cannonball, cannon)");
+    modelsCmd->add_option("--out", modelsOut, "output folder (default: assets/models)");
+    modelsCmd->callback([&] { action = [&] { return makeModels(modelsOut); }; });
 
     try {
         app.parse(argc, argv);

@@ -39,11 +39,14 @@ template <class V> void describe(V& v, SceneDef& s) {
     v.list("objects", s.objects, "floating bodies");
 }
 
-/// Loads a scene file and applies `--set key.path=value` overrides (in order).
-/// Throws ob::InputError listing every problem (file:line:column: key: message).
+/// Loads a scene file and applies `--set key.path=value` overrides (in order). Each
+/// objects[i].model is resolved (absolute as is; relative: next to the scene file, then the
+/// current folder, then the source tree), stored back as an absolute path, and loaded once
+/// to check it. Throws ob::InputError listing every problem (file:line:column: key: message).
 SceneDef loadScene(const std::string& path, const std::vector<std::string>& overrides = {});
 
-/// As loadScene, from text (`sourceName` names it in messages).
+/// As loadScene, from text (`sourceName` names it in messages; relative model paths start
+/// at the current folder).
 SceneDef parseScene(const std::string& text, const std::string& sourceName, const std::vector<std::string>& overrides = {});
 
 /// The scene `play` opens with no argument: config/scenes/default.toml (from the current

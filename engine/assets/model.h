@@ -22,4 +22,9 @@ struct ModelData {
 /// or one with no triangle mesh.
 ModelData loadGltfModel(const std::string& path);
 
+/// As loadGltfModel, from the bytes of a .gltf or .glb (told apart by the "glTF" magic);
+/// `sourceName` names it in messages, external buffers are looked for in `baseDir`.
+ModelData parseGltfModel(const std::vector<unsigned char>& bytes, const std::string& sourceName,
+                         const std::string& baseDir = "");
+
 } // namespace ob::assets

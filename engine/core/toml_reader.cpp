@@ -106,6 +106,11 @@ void TomlDocument::applyOverride(const std::string& assignment, std::vector<std:
     mergeInto(m_impl->root, parsed, source, errors);
 }
 
+std::string TomlDocument::where(const std::string& keyPath, const std::string& fallback) const {
+    const toml::node* node = m_impl->root.at_path(keyPath).node();
+    return node && node->source().path ? ob::where(node->source()) : fallback;
+}
+
 // ---------------------------------------------------------------------------------------
 
 struct TomlReader::State {

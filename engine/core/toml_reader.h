@@ -18,6 +18,9 @@ public:
     static TomlDocument fromString(const std::string& text, const std::string& sourceName, std::vector<std::string>& errors);
     /// Applies one `--set key.path=value` override (value in TOML syntax; a bare word is a string).
     void applyOverride(const std::string& assignment, std::vector<std::string>& errors);
+    /// Where the value at `keyPath` ("objects[0].model") was written: "file:line:column" (or
+    /// the --set assignment); `fallback` if the document has no such key.
+    std::string where(const std::string& keyPath, const std::string& fallback) const;
     TomlDocument();
     ~TomlDocument();
     TomlDocument(TomlDocument&&) noexcept;
