@@ -1,5 +1,5 @@
-// Platform: a GL 4.5 core context and its events, behind one interface with two
-// implementations: a GLFW window and an OSMesa (llvmpipe) headless context.
+// Platform: a GL 4.5 core context and its events, behind one interface with three
+// implementations: a GLFW window, and headless an OSMesa (llvmpipe) or EGL (GPU) context.
 #pragma once
 #include "core/schema.h"
 
@@ -45,7 +45,7 @@ struct InputState {
 class Platform {
 public:
     virtual ~Platform() = default;
-    /// "glfw" or "osmesa".
+    /// "glfw", "osmesa" or "egl".
     virtual const char* name() const = 0;
     virtual bool headless() const = 0;
     virtual glm::ivec2 framebufferSize() const = 0;
@@ -63,7 +63,12 @@ bool displayAvailable();
 /// Opens a window with a GL 4.5 core context. Throws ob::RuntimeError when it cannot.
 std::unique_ptr<Platform> createWindowPlatform(const WindowDef& def, const std::string& title);
 
-/// Creates an OSMesa GL 4.5 core context rendering into memory. Throws ob::RuntimeError.
+/// Creates a headless GL 4.5 core context of `size`: OSMesa (llvmpipe, the default, what CI
+/// runs) or, with OCEANBOX_HEADLESS_GL=egl, EGL on the GPU (a GPU server has no display).
+/// Throws ob::RuntimeError when the context cannot be made, ob::InputError for another value.
 std::unique_ptr<Platform> createHeadlessPlatform(glm::ivec2 size);
+/// The two headless implementations.
+std::unique_ptr<Platform> createOsmesaPlatform(glm::ivec2 size);
+std::unique_ptr<Platform> createEglPlatform(glm::ivec2 size);
 
 } // namespace ob::platform
