@@ -61,6 +61,7 @@ Renderer::Renderer(const RenderDef& def)
     glTextureSubImage3D(id, 0, 0, 0, 0, 1, 1, 1, GL_RGBA, GL_FLOAT, flat);
     m_flatMaps = Texture(id);
 
+    glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);  // filter across cube faces: no seams in the sky
     glCreateTextures(GL_TEXTURE_CUBE_MAP, 1, &id);
     glObjectLabel(GL_TEXTURE, id, -1, "sky cube");
     glTextureStorage2D(id, mipLevels(SKY_CUBE_SIZE), GL_RGBA16F, SKY_CUBE_SIZE, SKY_CUBE_SIZE);

@@ -118,8 +118,10 @@ void RippleFieldGpu::setBoundary(RippleBoundary boundary, int spongeWidth) {
 }
 
 void RippleFieldGpu::clear() {
-    const float zero = 0.0f;
-    for (const gfx::Buffer& level : m_levels) glClearNamedBufferData(level.id(), GL_R32F, GL_RED, GL_FLOAT, &zero);
+    // Zeros through the same path as upload(): NVIDIA's driver was seen to run a
+    // glClearNamedBufferData after a glNamedBufferSubData issued later (H200, driver 580).
+    const std::vector<float> zeros(m_cells, 0.0f);
+    for (const gfx::Buffer& level : m_levels) glNamedBufferSubData(level.id(), 0, floatBytes(m_cells), zeros.data());
 }
 
 void RippleFieldGpu::upload(std::span<const float> current, std::span<const float> previous) {
