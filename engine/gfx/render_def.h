@@ -21,7 +21,8 @@ struct RenderDef {
     float glitter = 6.0f;                           ///< sun glitter strength (× sun colour), [0, 100]
     float glitter_shininess = 600.0f;               ///< sun glitter exponent (Phong), [1, 10000]
     float exposure = 1.0f;                          ///< scene exposure multiplier before tone mapping, [0.01, 16]
-    int grid_resolution = 0;                        ///< projected grid cells per side, [16, 2048]; 0 = auto (128 on a software rasteriser, 512 on a GPU)
+    float resolution_scale = 1.0f;                  ///< internal render size / framebuffer size, [0.25, 1]; below 1 the frame is scaled up (bilinear)
+    int grid_resolution = 0;                        ///< projected grid cells per side, [16, 2048]; 0 = auto (128 on a software rasteriser, 512 on a GPU, × resolution_scale)
 };
 
 template <class V> void describe(V& v, RenderDef& d) {
@@ -38,7 +39,8 @@ template <class V> void describe(V& v, RenderDef& d) {
     v.field("glitter", d.glitter, range(0, 100), "sun glitter strength");
     v.field("glitter_shininess", d.glitter_shininess, range(1, 10000), "sun glitter exponent (Phong)");
     v.field("exposure", d.exposure, range(0.01, 16), "exposure multiplier before tone mapping");
-    v.field("grid_resolution", d.grid_resolution, range(0, 2048), "projected grid cells per side; 0 = auto (128 software, 512 GPU)");
+    v.field("resolution_scale", d.resolution_scale, range(0.25, 1), "internal render size / framebuffer size (scaled up below 1)");
+    v.field("grid_resolution", d.grid_resolution, range(0, 2048), "projected grid cells per side; 0 = auto (128 software, 512 GPU, × resolution_scale)");
 }
 
 } // namespace ob::gfx

@@ -147,26 +147,32 @@ void Renderer::updateFrameUniforms(const CameraView& camera, double time, glm::i
     glNamedBufferSubData(m_frameUniforms[REFRACTION_VIEW].id(), 0, sizeof u, &u);
 }
 
-void Renderer::resizeTargets(glm::ivec2 size) {
-    glm::ivec2 target = glm::max(glm::ivec2(glm::vec2(size) * m_def.rtt_scale + 0.5f), glm::ivec2(1));
-    if (m_reflection.size == target) return;
-    m_reflection = createRenderTarget("reflection target", target);
-    m_refraction = createRenderTarget("refraction target", target);
+static glm::ivec2 scaled(glm::ivec2 size, float scale) { return glm::max(glm::ivec2(glm::vec2(size) * scale + 0.5f), glm::ivec2(1)); }
+
+void Renderer::resizeTargets(glm::ivec2 internal) {
+    const glm::ivec2 target = scaled(internal, m_def.rtt_scale);
+    if (m_reflection.size != target) {
+        m_reflection = createRenderTarget("reflection target", target);
+        m_refraction = createRenderTarget("refraction target", target);
+    }
+    if (m_def.resolution_scale < 1.0f && m_internal.size != internal) m_internal = createRenderTarget("internal frame", internal);
 }
 
 void Renderer::render(const CameraView& camera, const WaterView& water, const std::vector<ObjectDraw>& objects, double time,
                       glm::ivec2 size) {
     m_underwater = camera.position.y < camera.waterHeight;
-    resizeTargets(size);
-    updateFrameUniforms(camera, time, size);
+    const bool upscale = m_def.resolution_scale < 1.0f;
+    const glm::ivec2 internal = upscale ? scaled(size, m_def.resolution_scale) : size;
+    resizeTargets(internal);
+    updateFrameUniforms(camera, time, internal);
 
     // --- passes
     if (glm::normalize(m_def.sun_direction) != m_bakedSun) skyBakePass();
     const bool above = !m_underwater;
     if (m_def.reflections && above) reflectionPass(objects);
     if (m_def.refractions && above) refractionPass(objects);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glViewport(0, 0, size.x, size.y);
+    glBindFramebuffer(GL_FRAMEBUFFER, upscale ? m_internal.framebuffer.id() : 0);
+    glViewport(0, 0, internal.x, internal.y);
     glClearColor(0, 0, 0, 1);
     glClearDepth(1.0);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -174,6 +180,10 @@ void Renderer::render(const CameraView& camera, const WaterView& water, const st
     opaquePass(objects);
     waterPass(camera, water);
     skyPass();  // last: it shades only the pixels nothing else covered
+    if (upscale)
+        glBlitNamedFramebuffer(m_internal.framebuffer.id(), 0, 0, 0, internal.x, internal.y, 0, 0, size.x, size.y,
+                               GL_COLOR_BUFFER_BIT, GL_LINEAR);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glBindVertexArray(0);
 }
 
@@ -330,7 +340,8 @@ void Renderer::uploadWaterUniforms(const CameraView& camera, const WaterView& wa
 void Renderer::waterPass(const CameraView& camera, const WaterView& water) {
     if (!ocean::projectedGridCorners(camera.projection * camera.view, camera.position, GRID_MARGIN).visible) return;
     // Software rasterisers shade vertices on one thread: a coarser grid there.
-    int resolution = m_def.grid_resolution > 0 ? std::max(m_def.grid_resolution, 16) : (isSoftwareRenderer() ? 128 : 512);
+    const float autoCells = (isSoftwareRenderer() ? 128.0f : 512.0f) * m_def.resolution_scale;
+    int resolution = std::max(m_def.grid_resolution > 0 ? m_def.grid_resolution : int(autoCells), 16);
     if (m_gridResolution != resolution) buildGrid(resolution);
     glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, WATER_PASS, -1, "water");
     m_passTimers[WATER_PASS].begin();

@@ -5,6 +5,7 @@
 //   opaque     → objects from the camera into the framebuffer
 //   water      → the composite surface on a projected grid, shaded from the targets and sky
 //   sky        → the cube map (or underwater fog) where nothing else was drawn
+//   upscale    → the internal image to the framebuffer, when resolution_scale < 1
 #pragma once
 #include "gfx/gpu_timer.h"
 #include "gfx/handles.h"
@@ -116,7 +117,7 @@ private:
     void drawObjects(const std::vector<ObjectDraw>& objects, View view);
     const Mesh& meshFor(const ObjectDraw& object);
     void updateFrameUniforms(const CameraView& camera, double time, glm::ivec2 size);
-    void resizeTargets(glm::ivec2 size);
+    void resizeTargets(glm::ivec2 internal);
     void uploadWaterUniforms(const CameraView& camera, const WaterView& water);
     void buildGrid(int resolution);
 
@@ -139,6 +140,7 @@ private:
     glm::vec3 m_bakedSun{0.0f};
     Texture m_detailMap;      // DU/DV (rg) and foam pattern (b), tileable, mipmapped
     RenderTarget m_reflection, m_refraction;
+    RenderTarget m_internal;  // the frame below full resolution (resolution_scale < 1)
     bool m_underwater = false;
     std::vector<GpuTimer> m_passTimers;
 };
