@@ -62,8 +62,18 @@ public:
     bool headless() const override { return true; }
     glm::ivec2 framebufferSize() const override { return m_size; }
     void pollInput(InputState& in) override { in.pressed.fill(false); in.mouseDelta = {}; in.mouseLeftPressed = false; in.scroll = 0; }
-    // Finish, so frame times include the GPU's work.
-    void present() override { glFinish(); }
+    // As a swap chain does: at most FRAMES_IN_FLIGHT frames queued on the GPU, so frame
+    // times measure throughput (the CPU's next frame overlaps the GPU's last).
+    void present() override {
+        m_fences[m_frame % FRAMES_IN_FLIGHT] = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+        ++m_frame;
+        GLsync& oldest = m_fences[m_frame % FRAMES_IN_FLIGHT];
+        if (oldest) {
+            glClientWaitSync(oldest, GL_SYNC_FLUSH_COMMANDS_BIT, 1000000000ull);
+            glDeleteSync(oldest);
+            oldest = nullptr;
+        }
+    }
 
 private:
     [[noreturn]] void fail(const char* what) {
@@ -78,6 +88,10 @@ private:
     }
     void release() {
         if (m_display == EGL_NO_DISPLAY) return;
+        for (GLsync& fence : m_fences) {
+            if (fence) glDeleteSync(fence);
+            fence = nullptr;
+        }
         eglMakeCurrent(m_display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
         if (m_context != EGL_NO_CONTEXT) eglDestroyContext(m_display, m_context);
         if (m_surface != EGL_NO_SURFACE) eglDestroySurface(m_display, m_surface);
@@ -89,6 +103,9 @@ private:
     EGLDisplay m_display = EGL_NO_DISPLAY;
     EGLSurface m_surface = EGL_NO_SURFACE;
     EGLContext m_context = EGL_NO_CONTEXT;
+    static constexpr int FRAMES_IN_FLIGHT = 2;
+    GLsync m_fences[FRAMES_IN_FLIGHT] = {};
+    unsigned m_frame = 0;
 };
 
 } // namespace
