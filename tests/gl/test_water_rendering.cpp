@@ -253,3 +253,19 @@ TEST_CASE("a frame drawn at half internal resolution and scaled up matches the f
     }
     CHECK(full.maxDifference(half, 0, size.y) > 0);  // it did draw at another size
 }
+
+TEST_CASE("under the surface the frame is water fog and the surface from below, never sky or black", "[gl][render]") {
+    gfx::requestDebugOutput(true);
+    const glm::ivec2 size(160, 90);
+    Image above = renderShipScene(size, {});
+    Image below = renderShipScene(size, {"camera.position=[0.0, -3.0, 0.0]", "camera.target=[0.0, -1.0, -100.0]"});
+    glm::vec3 skyAbove = above.mean(0, 0, size.x, size.y / 3);
+    glm::vec3 top = below.mean(0, 0, size.x, size.y / 3), bottom = below.mean(0, 2 * size.y / 3, size.x, size.y);
+    INFO("below: top " << top.x << " " << top.y << " " << top.z << ", bottom " << bottom.x << " " << bottom.y << " " << bottom.z);
+    CHECK(glm::length(top - skyAbove) > 0.3f);  // no sky where the water is overhead
+    CHECK(top.z > top.x);                       // blue-green water
+    CHECK(bottom.z > bottom.x);
+    int black = 0;
+    for (size_t i = 0; i < below.rgb.size(); i += 3) black += below.rgb[i] + below.rgb[i + 1] + below.rgb[i + 2] < 6;
+    CHECK(black == 0);
+}
