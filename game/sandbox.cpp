@@ -2,12 +2,16 @@
 #include "sandbox.h"
 
 #include "camera.h"
+#include "cannon.h"
 #include "core/hash.h"
 #include "ecs/components.h"
 #include "gfx/renderer.h"
 #include "interaction/ripple_patch.h"
 #include "gfx/ui_overlay.h"
+#include "fish.h"
 #include "objects.h"
+#include "script.h"
+#include "ship.h"
 #include "ui_panels.h"
 #include "water_systems.h"
 
@@ -31,7 +35,9 @@ void renderSystem(ecs::World& world, const ecs::Tick& tick) {
     glm::ivec2 size = res->platform->framebufferSize();
     if (size.x <= 0 || size.y <= 0) return;  // minimised
     res->renderer->def() = res->scene->render;
-    res->renderer->render(cameraView(world, size), prepareWaterView(world, tick.time), objectDraws(world), tick.time, size);
+    std::vector<gfx::ObjectDraw> draws = objectDraws(world);
+    appendFishDraws(world, draws);
+    res->renderer->render(cameraView(world, size), prepareWaterView(world, tick.time), draws, tick.time, size);
     double gpuMs = res->renderer->takeGpuMs();
     if (gpuMs >= 0) res->timer->setGpu(ecs::Phase::Render, gpuMs);
     if (res->ui) {
@@ -49,8 +55,13 @@ struct SystemEntry {
 };
 const SystemEntry SYSTEMS[] = {
     {ecs::Phase::Input, "input", inputSystem},
+    {ecs::Phase::Script, "events", scriptSystem},
+    {ecs::Phase::Script, "ships", shipSystem},
+    {ecs::Phase::Script, "cannons", cannonSystem},
+    {ecs::Phase::Script, "fish", fishSystem},
     {ecs::Phase::Script, "camera", cameraSystem},
     {ecs::Phase::Physics, "bodies", physicsSystem},
+    {ecs::Phase::Interaction, "fish stamps", fishStampSystem},
     {ecs::Phase::Interaction, "ripples", interactionSystem},
     {ecs::Phase::Ocean, "ocean", oceanSystem},
     {ecs::Phase::Render, "render", renderSystem},
@@ -64,7 +75,8 @@ Sandbox::Sandbox(const SceneDef& scene) : m_scene(scene), m_schedule(scene.sim) 
     spawnCamera(m_world, m_scene.camera);
     addOcean(m_world, m_scene.ocean, m_scene.gerstner);
     addRipples(m_world, m_scene.ripples, float(m_schedule.stepSeconds()));
-    spawnObjects(m_world, m_scene.physics, m_scene.objects);
+    spawnObjects(m_world, m_scene.physics, m_scene.objects, m_scene.sim.seed);
+    addScript(m_world, m_scene);
 }
 
 Sandbox::~Sandbox() = default;
@@ -75,6 +87,12 @@ void Sandbox::attachPlatform(platform::Platform& platform, bool withUi) {
     if (withUi && platform.nativeWindow()) m_ui = std::make_unique<gfx::UiOverlay>(platform.nativeWindow());
     m_world.setResource(std::make_unique<FrameResources>(
         FrameResources{&platform, m_renderer.get(), m_ui.get(), &m_schedule.timer(), &m_scene}));
+}
+
+std::vector<std::string> Sandbox::takeScreenshotRequests() {
+    std::vector<std::string> files;
+    if (auto* script = m_world.resource<ScriptState>()) files.swap(script->screenshots);
+    return files;
 }
 
 bool Sandbox::quitRequested() {
@@ -91,6 +109,10 @@ uint64_t Sandbox::stateHash() {
         h.u64(uint32_t(transforms.entities()[i]));
         h.f32s(&t.position.x, 3);
         h.f32s(&t.rotation.x, 4);
+    }
+    for (const FishSchool& school : m_world.pool<FishSchool>().components()) {
+        h.u64(school.size());
+        for (const glm::vec3& p : school.position) h.f32s(&p.x, 3);
     }
     if (auto* patch = m_world.resource<interaction::RipplePatch>()) {
         auto now = patch->field().current(), before = patch->field().previous();

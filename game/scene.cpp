@@ -16,8 +16,10 @@ static SceneDef readScene(TomlDocument& doc, const std::string& source, std::vec
     describe(reader, scene);
     reader.finish();
     // Checks across keys, once every key is read and in range.
-    if (errors.empty())
+    if (errors.empty()) {
         for (const std::string& e : ocean::validate(scene.gerstner, &scene.ocean)) errors.push_back(source + ": " + e);
+        for (const std::string& e : validateEvents(scene, source)) errors.push_back(e);
+    }
     if (!errors.empty()) {
         std::string message;
         for (const std::string& e : errors) message += (message.empty() ? "" : "\n") + e;

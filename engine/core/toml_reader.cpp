@@ -337,4 +337,28 @@ void TomlReader::field(const char* key, std::string& value, Choices choices, con
     m_state->error(*node, key, "must be one of " + list + ", got \"" + str->get() + "\"");
 }
 
+void TomlReader::field(const char* key, std::vector<glm::vec2>& points, Limits limits, const char*) {
+    State& s = *m_state;
+    const toml::node* node = s.lookup(key);
+    if (!node) return;
+    auto arr = node->as_array();
+    if (!arr) {
+        s.error(*node, key, std::string("expected an array of [x, z] pairs, got ") + typeName(*node));
+        return;
+    }
+    std::vector<glm::vec2> out;
+    for (const toml::node& item : *arr) {
+        auto pair = item.as_array();
+        if (!pair || pair->size() != 2) {
+            s.error(item, key, "expected an array of [x, z] pairs");
+            return;
+        }
+        double v[2];
+        for (size_t i = 0; i < 2; ++i)
+            if (!readNumber(s, *pair->get(i), key, v[i]) || !checkRange(s, *pair->get(i), key, v[i], limits)) return;
+        out.emplace_back(float(v[0]), float(v[1]));
+    }
+    points = std::move(out);
+}
+
 } // namespace ob

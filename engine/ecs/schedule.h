@@ -20,12 +20,14 @@ struct SimDef {
     float step_hz = 60.0f;          ///< fixed simulation rate (Hz), [1, 1000]
     int max_steps_per_frame = 8;    ///< catch-up limit when a frame is slow, [1, 64]
     uint64_t seed = 1;              ///< seed for every random choice of the scene
+    float end_time = 0.0f;          ///< simulated seconds a `run` without --frames lasts, [0, 1e6] (0: --frames, default 600)
 };
 
 template <class V> void describe(V& v, SimDef& d) {
     v.field("step_hz", d.step_hz, range(1, 1000), "fixed simulation rate (Hz)");
     v.field("max_steps_per_frame", d.max_steps_per_frame, range(1, 64), "catch-up limit when a frame is slow");
     v.field("seed", d.seed, "seed for every random choice of the scene");
+    v.field("end_time", d.end_time, range(0, 1e6), "simulated seconds a run without --frames lasts (0: none)");
 }
 
 /// The phases of a frame, in execution order.
