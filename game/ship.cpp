@@ -19,11 +19,13 @@ constexpr float COAST_TIME = 4.0f;     // s: at top speed, resistance decelerate
 constexpr float SPEED_TIME = 2.0f;     // s: the engine closes a speed error at this rate
 constexpr float SLIP_TIME = 0.4f;      // s: sideways slip decays at this rate (the keel)
 constexpr float YAW_TIME = 0.5f;       // s: the rudder closes a yaw-rate error at this rate
+constexpr float ROLL_TIME = 1.0f;      // s: bilge keels damp the roll rate at this rate (damping ratio ≈ 0.25
+                                       // at the hull's ≈ 3 s natural roll period, as bilge keels give)
 constexpr float MAX_TURN = 0.21f;      // rad/s at full rudder and full speed (≈ 3 hull lengths radius at 6 m/s)
 constexpr float ARRIVE_RADIUS = 8.0f;  // m: a waypoint this close counts as reached
 constexpr float HEADING_GAIN = 1.0f;   // 1/s: yaw rate asked per radian of heading error
 constexpr float THROTTLE_RATE = 0.5f;  // lever travel per second while W or S is held
-constexpr glm::ivec3 PROBES{3, 3, 9};  // probe lattice across, up, along the hull
+constexpr glm::ivec3 PROBES{5, 3, 9};  // probe lattice across, up, along the hull
 
 // Angle in (−π, π].
 float wrapAngle(float a) {
@@ -144,6 +146,14 @@ void shipSystem(ecs::World& world, const ecs::Tick& tick) {
         const float moment = yawInertia * (wantedYawRate - body.angularVelocity.y) / YAW_TIME;
         // A force F·(bow × up) at the stern (arm L/2 behind the centre) turns about +y by F·L/2.
         body.forces.push_back({glm::cross(bow, glm::vec3(0, 1, 0)) * (moment / (0.5f * SHIP_HULL.z) * wet), stern});
+        // Bilge keels: a couple about the hull's long axis against the roll rate (vertical
+        // forces ±F at the two sides, F·beam = moment).
+        const glm::vec3 keel = t.rotation * glm::vec3(0, 0, 1), side = t.rotation * glm::vec3(1, 0, 0), deck = t.rotation * glm::vec3(0, 1, 0);
+        const float rollInertia = mass * (SHIP_HULL.x * SHIP_HULL.x + SHIP_HULL.y * SHIP_HULL.y) / 12.0f;
+        const float rollMoment = -rollInertia * glm::dot(body.angularVelocity, keel) / ROLL_TIME * wet;
+        const glm::vec3 couple = deck * (rollMoment / SHIP_HULL.x);
+        body.forces.push_back({couple, t.position + side * (0.5f * SHIP_HULL.x)});
+        body.forces.push_back({-couple, t.position - side * (0.5f * SHIP_HULL.x)});
     }
 }
 
