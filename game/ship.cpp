@@ -22,7 +22,7 @@ constexpr float YAW_TIME = 0.5f;       // s: the rudder closes a yaw-rate error 
 constexpr float ROLL_TIME = 1.0f;      // s: bilge keels damp the roll rate at this rate (damping ratio ≈ 0.25
                                        // at the hull's ≈ 3 s natural roll period, as bilge keels give)
 constexpr float MAX_TURN = 0.21f;      // rad/s at full rudder and full speed (≈ 3 hull lengths radius at 6 m/s)
-constexpr float ARRIVE_RADIUS = 8.0f;  // m: a waypoint this close counts as reached
+constexpr float ARRIVE_RADIUS = 5.0f;  // m: a waypoint this close counts as reached
 constexpr float HEADING_GAIN = 1.0f;   // 1/s: yaw rate asked per radian of heading error
 constexpr float THROTTLE_RATE = 0.5f;  // lever travel per second while W or S is held
 constexpr glm::ivec3 PROBES{5, 3, 9};  // probe lattice across, up, along the hull
