@@ -5,6 +5,7 @@
 #include "support/test_support.h"
 
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -69,4 +70,32 @@ TEST_CASE("every scene in config/scenes has a determinism test", "[scenes]") {
     for (const auto& entry : std::filesystem::directory_iterator(std::string(OCEANBOX_SOURCE_DIR) + "/config/scenes"))
         if (entry.path().extension() == ".toml") found.insert(entry.path().stem().string());
     CHECK(found == SCENES);
+}
+
+TEST_CASE("run without --frames stops at [sim] end_time; screenshot events write their PNG", "[scenes]") {
+    const std::string json = test::tempPath("end.json"), png = test::tempPath("event.png");
+    auto r = test::runOceanbox("run config/scenes/ship.toml --headless --size 48x32 --set render.grid_resolution=16 "
+                               "--set sim.end_time=0.5 --set 'events=[{at = 0.25, action = \"screenshot\", file = \"" + png +
+                               "\"}]' --stats " + json);
+    INFO(r.output);
+    REQUIRE(r.exitCode == 0);
+    auto stats = nlohmann::json::parse(std::ifstream(json));
+    CHECK(stats["steps"] == 30);
+    CHECK(stats["events_run"] == 1);
+    // Every body at the end: the ship at rest floats level at its density ratio (450/1025).
+    REQUIRE(stats["bodies"].size() == 1);
+    const auto& ship = stats["bodies"][0];
+    CHECK(ship["type"] == "ship");
+    CHECK(ship["position"].size() == 3);
+    CHECK(std::abs(ship["roll_deg"].get<double>()) < 2.0);
+    CHECK(std::abs(ship["pitch_deg"].get<double>()) < 2.0);
+    CHECK(ship["submerged_fraction"].get<double>() == Approx(450.0 / 1025.0).margin(0.08));
+    CHECK(std::filesystem::file_size(png) > 100);
+    // --frames wins over the end time.
+    r = test::runOceanbox("run config/scenes/ship.toml --headless --size 48x32 --set render.grid_resolution=16 --frames 12 --stats " + json);
+    REQUIRE(r.exitCode == 0);
+    CHECK(nlohmann::json::parse(std::ifstream(json))["steps"] == 12);
+    // An unwritable event screenshot is bad input, caught before the run.
+    r = test::runOceanbox("run config/scenes/ship.toml --headless --frames 1 --set 'events=[{action = \"screenshot\", file = \"/no/such/dir/x.png\"}]'");
+    CHECK(r.exitCode == 2);
 }
