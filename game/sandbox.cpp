@@ -3,6 +3,7 @@
 
 #include "camera.h"
 #include "cannon.h"
+#include "controls.h"
 #include "core/hash.h"
 #include "ecs/components.h"
 #include "gfx/renderer.h"
@@ -42,7 +43,7 @@ void renderSystem(ecs::World& world, const ecs::Tick& tick) {
     if (gpuMs >= 0) res->timer->setGpu(ecs::Phase::Render, gpuMs);
     if (res->ui) {
         res->ui->begin();
-        drawPanels(*res->scene, *res->timer);
+        drawPanels(world, *res->scene, *res->timer);
         res->ui->end();
     }
 }
@@ -55,7 +56,9 @@ struct SystemEntry {
 };
 const SystemEntry SYSTEMS[] = {
     {ecs::Phase::Input, "input", inputSystem},
+    {ecs::Phase::Input, "controls", controlsSystem},
     {ecs::Phase::Script, "events", scriptSystem},
+    {ecs::Phase::Script, "spawn requests", spawnRequestsSystem},
     {ecs::Phase::Script, "ships", shipSystem},
     {ecs::Phase::Script, "cannons", cannonSystem},
     {ecs::Phase::Script, "fish", fishSystem},
@@ -72,6 +75,7 @@ const SystemEntry SYSTEMS[] = {
 Sandbox::Sandbox(const SceneDef& scene) : m_scene(scene), m_schedule(scene.sim) {
     for (const SystemEntry& s : SYSTEMS) m_schedule.add(s.phase, s.name, s.fn);
     m_world.setResource(std::make_unique<platform::InputState>());
+    addControls(m_world);
     spawnCamera(m_world, m_scene.camera);
     addOcean(m_world, m_scene.ocean, m_scene.gerstner);
     addRipples(m_world, m_scene.ripples, float(m_schedule.stepSeconds()));

@@ -36,6 +36,13 @@ constexpr int PHASE_COUNT = int(Phase::Count);
 /// Lower-case phase names ("input", "script", ...), as in stats and benchmarks.
 const char* phaseName(Phase p);
 
+/// Pause and single steps, a resource the input phase may set (window controls): while
+/// paused, frames run input and render only, plus one step per request.
+struct SimControl {
+    bool paused = false;   ///< no simulation steps while true
+    int stepRequests = 0;  ///< steps to run while paused (consumed by the schedule)
+};
+
 /// What a system sees of time. For per-frame phases dt is the frame's simulated time.
 struct Tick {
     double time = 0;     ///< simulated seconds at the start of this step
