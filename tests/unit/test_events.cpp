@@ -107,3 +107,23 @@ TEST_CASE("timeline: events run in the step nearest their time and act on the ob
     // The boat took up its new speed (3 m/s, within the engine's settling).
     CHECK(world.get<ecs::Motion>(boat).velocity.z > 2.0f);
 }
+
+TEST_CASE("pause: frames run no simulation steps; each step request runs exactly one", "[events]") {
+    game::Sandbox sandbox(game::parseScene(TIMELINE, "timeline.toml"));
+    auto* control = sandbox.world().resource<ecs::SimControl>();
+    REQUIRE(control);
+    for (int f = 0; f < 3; ++f) sandbox.frame(f / 60.0);
+    const uint64_t before = sandbox.schedule().steps();
+    CHECK(before == 3);
+    control->paused = true;
+    for (int f = 3; f < 10; ++f) sandbox.frame(f / 60.0);
+    CHECK(sandbox.schedule().steps() == before);
+    control->stepRequests = 2;
+    sandbox.frame(10 / 60.0);
+    CHECK(sandbox.schedule().steps() == before + 2);
+    CHECK(control->stepRequests == 0);
+    control->paused = false;
+    sandbox.frame(11 / 60.0);
+    sandbox.frame(12 / 60.0);
+    CHECK(sandbox.schedule().steps() == before + 4);  // one step per frame again: the paused time is not caught up
+}

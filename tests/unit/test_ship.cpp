@@ -5,6 +5,7 @@
 #include "interaction/ripple_patch.h"
 #include "objects.h"
 #include "sandbox.h"
+#include "platform/platform.h"
 #include "ship.h"
 
 #include <catch2/catch.hpp>
@@ -105,4 +106,32 @@ TEST_CASE("seed 001 fig. 16: a ship at rest leaves a standing deformation, slow 
     CHECK(slow.length > rest.length + 0.5f);
     // Five times faster: the rebound is left behind sooner, the wake is longer.
     CHECK(fast.length > 2.0f * slow.length);
+}
+
+TEST_CASE("the player's ship: W opens the throttle and it settles at its top speed; D turns it to starboard", "[ship]") {
+    game::Sandbox sandbox(game::parseScene("[ocean]\namplitude = 0.0\n[gerstner]\ncount = 0\n[ripples]\nenabled = false\n"
+                                           "[[objects]]\ntype = \"ship\"\nplayer = true\nposition = [0, 0.1, 0]\nspeed = 6.0\n",
+                                           "player.toml"));
+    ecs::World& world = sandbox.world();
+    auto* input = world.resource<platform::InputState>();
+    const ecs::Entity ship = world.pool<game::Ship>().entities()[0];
+    // Hold W for 3 s: the lever runs to full (0.5 per second).
+    input->down[size_t(platform::Key::W)] = true;
+    for (int i = 0; i < 180; ++i) sandbox.step();
+    input->down[size_t(platform::Key::W)] = false;
+    CHECK(world.get<game::Ship>(ship).throttle == 1.0f);
+    for (int i = 0; i < 900; ++i) sandbox.step();
+    // Thrust balances the hull's resistance at the top speed: 6 m/s along the bow (+z).
+    glm::vec3 v = world.get<ecs::Motion>(ship).velocity;
+    CHECK(v.z == Approx(6.0f).margin(0.15f));
+    CHECK(std::abs(v.x) < 0.1f);
+    // Full starboard rudder: the bow swings toward −x (starboard of a +z bow, y up) at about
+    // the rudder's yaw rate, 0.21 rad/s at speed.
+    input->down[size_t(platform::Key::D)] = true;
+    const float heading0 = std::atan2(v.x, v.z);
+    for (int i = 0; i < 120; ++i) sandbox.step();
+    const glm::vec3 bow = world.get<ecs::Transform>(ship).rotation * glm::vec3(0, 0, 1);
+    const float turned = std::atan2(bow.x, bow.z) - heading0;
+    CHECK(turned < 0.0f);
+    CHECK(turned / 2.0f == Approx(-0.21f).margin(0.06f));  // rad/s over the 2 s
 }
