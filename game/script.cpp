@@ -157,6 +157,8 @@ std::vector<std::string> validateEvents(SceneDef& scene, const std::string& sour
         const bool named = e.action == "fire" || e.action == "set_speed" || (e.action == "camera" && e.mode == "follow");
         if (named && !e.target.empty() && !names.count(e.target))
             errors.push_back(where + "target: no object is named '" + e.target + "'");
+        if (e.action == "set_speed" && !(e.value >= 0.0f && e.value <= 100.0f))
+            errors.push_back(where + "value: a speed in [0, 100] m/s, got " + std::to_string(e.value));
         if (e.action == "screenshot" && e.file.empty()) errors.push_back(where + "file: a screenshot needs a file name");
     }
     return errors;

@@ -132,9 +132,13 @@ void shipSystem(ecs::World& world, const ecs::Tick& tick) {
         // target speed and closes the error in SPEED_TIME.
         const float resistance = mass * forward * std::abs(forward) / (top * COAST_TIME);
         const float maxThrust = mass * top / COAST_TIME;
-        const float thrust = std::clamp(mass * targetSpeed * std::abs(targetSpeed) / (top * COAST_TIME) +
-                                            mass * (targetSpeed - forward) / SPEED_TIME,
-                                        -0.5f * maxThrust, 1.5f * maxThrust);
+        // The player's lever at zero idles the engine (the ship coasts); a scripted ship at
+        // speed 0 holds its place (the paper's ship at rest).
+        const bool idle = ship.player && ship.throttle == 0.0f;
+        const float thrust = idle ? 0.0f
+                                  : std::clamp(mass * targetSpeed * std::abs(targetSpeed) / (top * COAST_TIME) +
+                                                   mass * (targetSpeed - forward) / SPEED_TIME,
+                                               -0.5f * maxThrust, 1.5f * maxThrust);
         body.forces.push_back({bow * (thrust * wet), stern});
         body.forces.push_back({-bow * (resistance * wet), t.position});
         // The keel: sideways slip decays in SLIP_TIME.
