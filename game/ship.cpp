@@ -106,7 +106,9 @@ void shipSystem(ecs::World& world, const ecs::Tick& tick) {
         if (ship.player) {
             if (input && !input->uiCapturesKeyboard) {
                 using platform::Key;
-                ship.throttle += THROTTLE_RATE * dt * float(input->isDown(Key::W) - input->isDown(Key::S));
+                const int lever = int(input->isDown(Key::W)) - int(input->isDown(Key::S));
+                ship.throttle += THROTTLE_RATE * dt * float(lever);
+                if (lever == 0 && std::abs(ship.throttle) < 0.03f) ship.throttle = 0.0f;  // the lever's notch at stop
                 ship.rudder = float(input->isDown(Key::D) - input->isDown(Key::A));
             }
             ship.throttle = std::clamp(ship.throttle, -0.5f, 1.0f);
