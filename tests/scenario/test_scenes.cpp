@@ -72,7 +72,7 @@ TEST_CASE("every scene in config/scenes has a determinism test", "[scenes]") {
     CHECK(found == SCENES);
 }
 
-TEST_CASE("run without --frames stops at [sim] end_time; screenshot events write their PNG", "[scenes]") {
+TEST_CASE("run without --frames stops at [sim] end_time, screenshot events write their PNG", "[scenes]") {
     const std::string json = test::tempPath("end.json"), png = test::tempPath("event.png");
     auto r = test::runOceanbox("run config/scenes/ship.toml --headless --size 48x32 --set render.grid_resolution=16 "
                                "--set sim.end_time=0.5 --set 'events=[{at = 0.25, action = \"screenshot\", file = \"" + png +

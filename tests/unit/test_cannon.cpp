@@ -119,7 +119,7 @@ TEST_CASE("a cannonball's impact rings the ripple field: one sign around each ci
     CHECK(std::abs(rings[1].mean) < std::abs(rings[0].mean));
 }
 
-TEST_CASE("cannons fire on events and at their rate; balls sink and are removed below the sink depth", "[cannon]") {
+TEST_CASE("cannons fire on events and at their rate, balls sink and are removed below the sink depth", "[cannon]") {
     std::string text = RING_SCENE;
     text.replace(text.find("ball_radius"), 0, "sink_depth = 3.0\n");
     game::SceneDef scene = game::parseScene(text + "[[events]]\nat = 0.5\naction = \"fire\"\n", "fire.toml");

@@ -108,7 +108,7 @@ TEST_CASE("timeline: events run in the step nearest their time and act on the ob
     CHECK(world.get<ecs::Motion>(boat).velocity.z > 2.0f);
 }
 
-TEST_CASE("pause: frames run no simulation steps; each step request runs exactly one", "[events]") {
+TEST_CASE("pause: frames run no simulation steps, each step request runs exactly one", "[events]") {
     game::Sandbox sandbox(game::parseScene(TIMELINE, "timeline.toml"));
     auto* control = sandbox.world().resource<ecs::SimControl>();
     REQUIRE(control);

@@ -72,7 +72,7 @@ TEST_CASE("a fish stamps only while crossing the surface: up on the way out, dow
     CHECK(school.stamps == uint64_t(rising + falling));
 }
 
-TEST_CASE("fish swim their circle at their speed; the school is deterministic", "[fish]") {
+TEST_CASE("fish swim their circle at their speed, the school is deterministic", "[fish]") {
     auto run = [](int steps) {
         game::Sandbox sandbox(game::parseScene(FISH_SCENE, "fish.toml", {"objects=[{type = \"fish_school\", count = 50, radius = 8.0}]"}));
         for (int i = 0; i < steps; ++i) sandbox.step();

@@ -69,7 +69,7 @@ TEST_CASE("an empty or three-line scene is valid and defaults fill the rest", "[
     CHECK(game::parseScene("", "empty.toml").render.fresnel == "schlick");
 }
 
-TEST_CASE("overrides (--set) change any key with TOML values; a bare word is a string", "[config]") {
+TEST_CASE("overrides (--set) change any key with TOML values, a bare word is a string", "[config]") {
     SceneDef s = game::parseScene("[render]\nfresnel = \"schlick\"\n", "x.toml",
                                   {"render.fresnel=exact", "camera.position=[1, 2, 3]", "sim.step_hz=120", "window.vsync=false",
                                    "render.exposure=2"});
@@ -217,7 +217,7 @@ TEST_CASE("overrides (--set) reach into [[objects]] by index: objects[1].count=N
     CHECK(sceneError(text, {"objects[1]=3"}).rfind("--set objects[1]=3: expected key.path=value", 0) == 0);
 }
 
-TEST_CASE("scene errors in objects and events name the key path; events are checked against the scene", "[config]") {
+TEST_CASE("scene errors in objects and events name the key path, events are checked against the scene", "[config]") {
     CHECK(sceneError("[[objects]]\ntype = \"submarine\"\n") ==
           "bad.toml:2:8: objects[0].type: must be one of \"sphere\", \"box\", \"ship\", \"cannon\", \"fish_school\", got \"submarine\"");
     CHECK(sceneError("[[objects]]\ntype = \"ship\"\nwaypoints = [[1, 2], [3]]\n") ==

@@ -108,7 +108,7 @@ TEST_CASE("seed 001 fig. 16: a ship at rest leaves a standing deformation, slow 
     CHECK(fast.length > 2.0f * slow.length);
 }
 
-TEST_CASE("the player's ship: W opens the throttle and it settles at its top speed; D turns it to starboard", "[ship]") {
+TEST_CASE("the player's ship: W opens the throttle and it settles at its top speed, D turns it to starboard", "[ship]") {
     game::Sandbox sandbox(game::parseScene("[ocean]\namplitude = 0.0\n[gerstner]\ncount = 0\n[ripples]\nenabled = false\n"
                                            "[[objects]]\ntype = \"ship\"\nplayer = true\nposition = [0, 0.1, 0]\nspeed = 6.0\n",
                                            "player.toml"));
