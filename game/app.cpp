@@ -7,12 +7,15 @@
 #include "gfx/gl.h"
 #include "gfx/renderer.h"
 #include "ecs/components.h"
+#include "cannon.h"
+#include "fish.h"
 #include "objects.h"
 #include "sandbox.h"
+#include "script.h"
 
-#include <glm/gtc/quaternion.hpp>
-
+#include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -64,14 +67,34 @@ static void writeStats(const std::string& path, Sandbox& sandbox, const std::str
     auto& bodies = sandbox.world().pool<Body>();
     for (size_t i = 0; i < bodies.size(); ++i) {
         const Body& b = bodies.components()[i];
-        const ecs::Transform& t = sandbox.world().get<ecs::Transform>(bodies.entities()[i]);
-        glm::vec3 euler = glm::degrees(glm::eulerAngles(t.rotation));  // pitch (x), yaw (y), roll (z)
+        const ecs::Entity e = bodies.entities()[i];
+        const ecs::Transform& t = sandbox.world().get<ecs::Transform>(e);
+        const ObjectTag* tag = sandbox.world().find<ObjectTag>(e);
+        const glm::vec2 rollPitch = rollPitchDeg(t.rotation);
         j["bodies"].push_back({{"type", b.type},
+                               {"name", tag ? tag->name : ""},
                                {"position", {t.position.x, t.position.y, t.position.z}},
-                               {"roll_deg", euler.z},
-                               {"pitch_deg", euler.x},
+                               {"roll_deg", rollPitch.x},
+                               {"pitch_deg", rollPitch.y},
                                {"submerged_fraction", b.submergedFraction}});
     }
+    j["cannons"] = nlohmann::json::array();
+    auto& cannons = sandbox.world().pool<Cannon>();
+    for (size_t i = 0; i < cannons.size(); ++i) {
+        const ObjectTag* tag = sandbox.world().find<ObjectTag>(cannons.entities()[i]);
+        j["cannons"].push_back({{"name", tag ? tag->name : ""}, {"shots", cannons.components()[i].shots}});
+    }
+    j["fish_schools"] = nlohmann::json::array();
+    auto& schools = sandbox.world().pool<FishSchool>();
+    for (size_t i = 0; i < schools.size(); ++i) {
+        const FishSchool& s = schools.components()[i];
+        const ObjectTag* tag = sandbox.world().find<ObjectTag>(schools.entities()[i]);
+        size_t airborne = 0;
+        for (const glm::vec3& p : s.position) airborne += p.y > 0.0f ? 1 : 0;
+        j["fish_schools"].push_back({{"name", tag ? tag->name : ""}, {"fish", s.size()}, {"jumps", s.jumps},
+                                     {"stamps", s.stamps}, {"airborne", airborne}});
+    }
+    if (const auto* script = sandbox.world().resource<ScriptState>()) j["events_run"] = script->fired;
     char hash[32];
     std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(sandbox.stateHash()));
     j["state_hash"] = hash;
@@ -94,6 +117,8 @@ static void writeStats(const std::string& path, Sandbox& sandbox, const std::str
 int runScene(const SceneDef& scene, const std::string& scenePath, const RunOptions& options) {
     if (!options.screenshot.empty()) checkWritable(options.screenshot, "screenshot");
     if (!options.stats.empty()) checkWritable(options.stats, "stats");
+    for (const EventDef& e : scene.events)
+        if (e.action == "screenshot") checkWritable(e.file, "event screenshot");
 
     glm::ivec2 size = options.size.x > 0 ? options.size : glm::ivec2(scene.window.width, scene.window.height);
     std::unique_ptr<platform::Platform> platform;
@@ -114,24 +139,33 @@ int runScene(const SceneDef& scene, const std::string& scenePath, const RunOptio
     if (options.realTime) clock = std::make_unique<SteadyClock>();
     else clock = std::make_unique<FixedStepClock>(1.0 / scene.sim.step_hz);
 
-    const bool progress = options.frames > 0 && platform->headless() && isatty(STDERR_FILENO);
-    for (long f = 0; options.frames < 0 || f < options.frames; ++f) {
+    // The run ends after `frames` frames, or once the simulation reaches `endTime`.
+    const bool bounded = options.frames > 0 || options.endTime > 0.0;
+    const bool progress = bounded && platform->headless() && isatty(STDERR_FILENO);
+    const long expected = options.frames > 0 ? options.frames : long(std::ceil(options.endTime * scene.sim.step_hz - 1e-6));
+    for (long f = 0; bounded || !sandbox.quitRequested(); ++f) {
         sandbox.frame(clock->now());
         if (sandbox.quitRequested()) break;
+        const bool last = (options.frames > 0 && f + 1 >= options.frames) ||
+                          (options.endTime > 0.0 && sandbox.schedule().simTime() >= options.endTime - 1e-9);
         // Read back before present: the window's back buffer is undefined after a swap.
-        bool last = options.frames > 0 && f + 1 == options.frames;
+        for (const std::string& file : sandbox.takeScreenshotRequests()) {
+            gfx::writeScreenshot(file, platform->framebufferSize());
+            logInfo("screenshot written to %s", file.c_str());
+        }
         if (last && !options.screenshot.empty()) gfx::writeScreenshot(options.screenshot, platform->framebufferSize());
         platform->present();
         if (progress && (f % 10 == 0 || last))
-            std::fprintf(stderr, "\roceanbox: frame %ld/%ld (%3.0f%%)%s", f + 1, options.frames,
-                         100.0 * double(f + 1) / double(options.frames), last ? "\n" : "");
+            std::fprintf(stderr, "\roceanbox: frame %ld/%ld (%3.0f%%)%s", f + 1, expected,
+                         100.0 * double(f + 1) / double(std::max(expected, 1L)), last ? "\n" : "");
+        if (last) break;
     }
     sandbox.schedule().finish();
-    if (options.frames < 0 && !options.screenshot.empty())
-        logWarn("--screenshot needs --frames N; no screenshot written");
+    if (!bounded && !options.screenshot.empty())
+        logWarn("--screenshot needs --frames N (or [sim] end_time); no screenshot written");
 
     if (!options.stats.empty()) writeStats(options.stats, sandbox, scenePath, *platform);
-    if (!options.screenshot.empty() && options.frames > 0) logInfo("screenshot written to %s", options.screenshot.c_str());
+    if (!options.screenshot.empty() && bounded) logInfo("screenshot written to %s", options.screenshot.c_str());
     if (gfx::glErrorCount() > 0) {
         logWarn("%d GL error(s) were reported during the run", gfx::glErrorCount());
         return EXIT_FAILURE_RUNTIME;

@@ -11,7 +11,8 @@ namespace ob::game {
 struct RunOptions {
     bool window = true;          ///< open a window (falls back to headless without a display)
     bool realTime = false;       ///< wall clock (play) instead of exactly one step per frame
-    long frames = -1;            ///< frames to run; -1: until the window closes
+    long frames = -1;            ///< frames to run; -1: until endTime, else until the window closes
+    double endTime = 0.0;        ///< with frames = -1: stop once the simulation reaches this time (s); 0: none
     glm::ivec2 size{0, 0};       ///< framebuffer size (px); 0: the scene's [window] size
     std::string screenshot;      ///< PNG of the last frame ("" = none)
     std::string stats;           ///< JSON summary ("" = none)

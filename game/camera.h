@@ -1,6 +1,8 @@
-// Camera: the scene's viewpoint, section [camera]; fixed, orbiting or flown by the player.
+// Camera: the scene's viewpoint, section [camera]; fixed, orbiting, flown by the player, or
+// following a ship.
 #pragma once
 #include "core/schema.h"
+#include "ecs/components.h"
 #include "ecs/schedule.h"
 #include "gfx/renderer.h"
 
@@ -10,7 +12,7 @@ namespace ob::game {
 
 /// The scene camera.
 struct CameraDef {
-    std::string mode = "orbit";            ///< "fixed", "orbit" (circles the target) or "fly" (player)
+    std::string mode = "orbit";            ///< "fixed", "orbit" (circles the target), "fly" (player) or "follow" (behind a ship)
     glm::vec3 position{0.0f, 6.0f, -40.0f};///< start eye position (world m)
     glm::vec3 target{0.0f, 0.0f, 0.0f};    ///< point looked at (world m)
     float fov_deg = 60.0f;                 ///< vertical field of view (degrees), [10, 120]
@@ -18,10 +20,14 @@ struct CameraDef {
     float far_m = 20000.0f;                ///< far clip distance (m), [10, 1e6]
     float orbit_speed_deg_s = 4.0f;        ///< orbit mode: angular speed about the target (deg/s)
     float fly_speed_m_s = 20.0f;           ///< fly mode: speed (m/s), Shift ×4
+    std::string follow;                    ///< follow mode: name of the object followed ("" = the player's ship, else the first ship)
+    float follow_distance_m = 28.0f;       ///< follow mode: eye distance behind the object (m), [1, 10000]
+    float follow_height_m = 9.0f;          ///< follow mode: eye height above the object (m), [-100, 10000]
 };
 
 template <class V> void describe(V& v, CameraDef& d) {
-    v.field("mode", d.mode, Choices{"fixed", "orbit", "fly"}, "fixed, orbit the target, or fly (WASD QE, right mouse looks)");
+    v.field("mode", d.mode, Choices{"fixed", "orbit", "fly", "follow"},
+            "fixed, orbit the target, fly (WASD QE, right mouse looks), or follow a ship");
     v.field("position", d.position, any(), "start eye position (world m)");
     v.field("target", d.target, any(), "point looked at (world m)");
     v.field("fov_deg", d.fov_deg, range(10, 120), "vertical field of view (degrees)");
@@ -29,6 +35,9 @@ template <class V> void describe(V& v, CameraDef& d) {
     v.field("far_m", d.far_m, range(10, 1e6), "far clip distance (m)");
     v.field("orbit_speed_deg_s", d.orbit_speed_deg_s, range(-360, 360), "orbit mode: angular speed (deg/s)");
     v.field("fly_speed_m_s", d.fly_speed_m_s, range(0.1, 1000), "fly mode: speed (m/s)");
+    v.field("follow", d.follow, Choices{}, "follow mode: object name (\"\" = the player's ship)");
+    v.field("follow_distance_m", d.follow_distance_m, range(1, 10000), "follow mode: distance behind (m)");
+    v.field("follow_height_m", d.follow_height_m, range(-100, 10000), "follow mode: height above (m)");
 }
 
 /// Camera state on the camera entity (with a Transform).
@@ -36,11 +45,15 @@ struct CameraRig {
     CameraDef def;
     float yaw = 0.0f;    ///< radians about +y; 0 looks along +z
     float pitch = 0.0f;  ///< radians above the horizon
+    glm::vec3 focus{0.0f};  ///< the point looked at (world m): the target, or the followed object
+    bool placed = false;    ///< follow mode: the eye has been put behind the object once
 };
 
 /// Creates the camera entity from its Def.
 ecs::Entity spawnCamera(ecs::World& world, const CameraDef& def);
-/// Script phase: moves the camera (orbit, or fly from the input state).
+/// Points the camera at `target` from `eye` (events, the UI).
+void placeCamera(CameraRig& rig, ecs::Transform& transform, glm::vec3 eye, glm::vec3 target);
+/// Script phase: moves the camera (orbit, fly from the input state, follow a ship).
 void cameraSystem(ecs::World& world, const ecs::Tick& tick);
 /// The view of the first camera entity for a framebuffer of `size`.
 gfx::CameraView cameraView(ecs::World& world, glm::ivec2 size);

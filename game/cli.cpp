@@ -119,6 +119,10 @@ int runCli(int argc, char** argv) {
         action = [&] {
             SceneDef scene = run.load();
             RunOptions o = run.options();
+            if (runCmd->count("--frames") == 0 && scene.sim.end_time > 0.0f) {
+                o.frames = -1;  // the scene says how long it lasts
+                o.endTime = scene.sim.end_time;
+            }
             o.fallbackNote = "no display found: running headless";
             return runScene(scene, run.scene, o);
         };

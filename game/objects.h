@@ -1,9 +1,11 @@
 // Objects of a scene ([[objects]]): floating bodies simulated by Bullet, pushed by the water
-// through probe spheres (buoyancy, drag) and pushing it back through bounding spheres.
+// through probe spheres (buoyancy, drag) and pushing it back through bounding spheres; ships,
+// cannons and fish schools are objects with a behaviour (ship.h, cannon.h, fish.h).
 #pragma once
 #include "core/schema.h"
 #include "ecs/schedule.h"
 #include "gfx/renderer.h"
+#include "interaction/sphere_stamp.h"
 #include "physics/buoyancy.h"
 #include "physics/physics_world.h"
 
@@ -12,33 +14,94 @@
 
 namespace ob::game {
 
-/// One [[objects]] entry.
+/// One [[objects]] entry. One flat Def for every type: a key a type does not use is ignored
+/// (the type column says who reads it).
 struct ObjectDef {
-    std::string type = "sphere";          ///< "sphere" (uses radius) or "box" (uses size)
-    glm::vec3 position{0.0f, 2.0f, 0.0f}; ///< start centre, world m
-    glm::vec3 velocity{0.0f};             ///< start velocity, m/s
-    float radius = 0.5f;                  ///< sphere radius, m, [0.01, 100]
-    glm::vec3 size{1.0f, 1.0f, 1.0f};     ///< box edge lengths [x, y, z], m, each [0.01, 1000]
-    float density = 500.0f;               ///< kg/m³, [1, 100000] (water: 1025; below floats)
-    glm::vec3 color{0.75f, 0.32f, 0.18f}; ///< base colour, linear RGB
-    std::string model;                    ///< glTF 2.0 file drawn instead of the built-in mesh ("" = built-in)
+    std::string type = "sphere";          ///< "sphere", "box", "ship", "cannon" or "fish_school"
+    std::string name;                     ///< all: the name events and the follow camera use ("" = none)
+    glm::vec3 position{0.0f, 2.0f, 0.0f}; ///< all: start centre, world m (fish_school: centre of its water, y ignored)
+    glm::vec3 velocity{0.0f};             ///< sphere, box, ship: start velocity, m/s
+    float radius = 0.5f;                  ///< sphere: radius, m; fish_school: radius of its circle, m; [0.01, 10000]
+    glm::vec3 size{1.0f, 1.0f, 1.0f};     ///< box: edge lengths [x, y, z], m; fish_school "region": [x, _, z] extent, m
+    float density = 500.0f;               ///< sphere, box, ship: kg/m³, [1, 100000] (water: 1025; below floats)
+    glm::vec3 color{0.75f, 0.32f, 0.18f}; ///< all: base colour, linear RGB
+    std::string model;                    ///< all: glTF 2.0 file drawn instead of the built-in mesh ("" = built-in)
+    // --- ship, cannon
+    bool player = false;                  ///< ship: steered with W/S (throttle) A/D (rudder); cannon: aimed with the arrows, fires with Space
+    float yaw_deg = 0.0f;                 ///< ship: start heading; cannon: aim azimuth; deg about +y, 0 faces +z, 90 faces +x
+    float speed = 5.0f;                   ///< ship: cruise (scripted) or top (player) speed, m/s; fish_school: swimming speed, m/s; [0, 100]
+    std::vector<glm::vec2> waypoints;     ///< ship (scripted): [x, z] points visited in order, looping (none: holds its heading)
+    // --- cannon
+    float elevation_deg = 30.0f;          ///< cannon: barrel above the horizon, deg, [-10, 89]
+    float muzzle_speed = 25.0f;           ///< cannon: ball speed leaving the barrel, m/s, [1, 1000]
+    float rate = 0.0f;                    ///< cannon: shots per second on its own, [0, 100] (0: only on events and the fire key)
+    float ball_radius = 0.25f;            ///< cannon: cannonball radius, m, [0.01, 10]
+    float ball_density = 7800.0f;         ///< cannon: cannonball density, kg/m³ (iron), [1, 100000]
+    float sink_depth = 15.0f;             ///< cannon: a ball this far under the mean surface is removed, m, [0.1, 10000]
+    // --- fish_school
+    int count = 10;                       ///< fish_school: number of fish, [1, 1000000]
+    std::string shape = "circle";         ///< fish_school: swim on a "circle" (radius) or inside a "region" (size)
+    float depth = 1.5f;                   ///< fish_school: swimming depth below the mean surface, m, [0, 1000]
+    float jump_height = 1.0f;             ///< fish_school: apex of a jump above the mean surface, m, [0, 100]
+    float jump_interval = 3.0f;           ///< fish_school: mean time between one fish's jumps, s, [0.1, 1e6]
+    float length = 0.6f;                  ///< fish_school: body length of a fish, m, [0.01, 100]
+    bool draw = true;                     ///< fish_school: draw the fish (false: spheres only, as the paper's sweep)
+    // --- bounding spheres (seed 001 §V)
+    std::string spheres = "paper";        ///< "paper": the type's values from seed 001 §V; "custom": the three keys below
+    float sphere_cells = 5.0f;            ///< custom: SR, sphere radius in ripple cells, [0.1, 512]
+    float sphere_height_ratio = 1.0f;     ///< custom: SHR, [0.01, 100]
+    float sphere_af = 0.0f;               ///< custom: AF (eq. 7), [-0.99, 10]
 };
 
 template <class V> void describe(V& v, ObjectDef& d) {
-    v.field("type", d.type, Choices{"sphere", "box"}, "body shape");
-    v.field("position", d.position, any(), "start centre, world m");
-    v.field("velocity", d.velocity, any(), "start velocity, m/s");
-    v.field("radius", d.radius, range(0.01, 100), "sphere radius, m");
-    v.field("size", d.size, range(0.01, 1000), "box edge lengths, m");
-    v.field("density", d.density, range(1, 100000), "density, kg/m³");
+    v.field("type", d.type, Choices{"sphere", "box", "ship", "cannon", "fish_school"}, "what the object is");
+    v.field("name", d.name, Choices{}, "name used by events and the follow camera");
+    v.field("position", d.position, any(), "start centre, world m (fish_school: centre, y ignored)");
+    v.field("velocity", d.velocity, any(), "start velocity, m/s (sphere, box, ship)");
+    v.field("radius", d.radius, range(0.01, 10000), "sphere radius, m; fish_school: circle radius, m");
+    v.field("size", d.size, range(0.01, 10000), "box edge lengths, m; fish_school region: [x, _, z] extent, m");
+    v.field("density", d.density, range(1, 100000), "density, kg/m³ (sphere, box, ship)");
     v.field("color", d.color, range(0, 1), "base colour (linear RGB)");
     v.field("model", d.model, Choices{}, "glTF 2.0 file (.gltf/.glb) drawn instead of the built-in mesh");
+    v.field("player", d.player, "ship: W/S throttle, A/D rudder; cannon: arrows aim, Space fires");
+    v.field("yaw_deg", d.yaw_deg, range(-360, 360), "ship heading / cannon azimuth, deg about +y (0 faces +z)");
+    v.field("speed", d.speed, range(0, 100), "ship: cruise or top speed; fish_school: swimming speed, m/s");
+    v.field("waypoints", d.waypoints, any(), "ship (scripted): [[x, z], ...] visited in order, looping, m");
+    v.field("elevation_deg", d.elevation_deg, range(-10, 89), "cannon: barrel elevation, deg");
+    v.field("muzzle_speed", d.muzzle_speed, range(1, 1000), "cannon: muzzle speed, m/s");
+    v.field("rate", d.rate, range(0, 100), "cannon: shots per second on its own (0: events and the fire key only)");
+    v.field("ball_radius", d.ball_radius, range(0.01, 10), "cannon: cannonball radius, m");
+    v.field("ball_density", d.ball_density, range(1, 100000), "cannon: cannonball density, kg/m³");
+    v.field("sink_depth", d.sink_depth, range(0.1, 10000), "cannon: balls deeper than this are removed, m");
+    v.field("count", d.count, range(1, 1000000), "fish_school: number of fish");
+    v.field("shape", d.shape, Choices{"circle", "region"}, "fish_school: swim on a circle (radius) or in a region (size)");
+    v.field("depth", d.depth, range(0, 1000), "fish_school: swimming depth, m");
+    v.field("jump_height", d.jump_height, range(0, 100), "fish_school: jump apex above the mean surface, m");
+    v.field("jump_interval", d.jump_interval, range(0.1, 1e6), "fish_school: mean time between a fish's jumps, s");
+    v.field("length", d.length, range(0.01, 100), "fish_school: fish body length, m");
+    v.field("draw", d.draw, "fish_school: draw the fish (false: spheres only)");
+    v.field("spheres", d.spheres, Choices{"paper", "custom"}, "bounding spheres: seed 001's values for the type, or custom");
+    v.field("sphere_cells", d.sphere_cells, range(0.1, 512), "custom spheres: SR, radius in ripple cells");
+    v.field("sphere_height_ratio", d.sphere_height_ratio, range(0.01, 100), "custom spheres: SHR");
+    v.field("sphere_af", d.sphere_af, range(-0.99, 10), "custom spheres: AF (eq. 7)");
 }
+
+/// What kind of object an entity is, and its scene name (every spawned object has one).
+struct ObjectTag {
+    std::string type;  ///< the ObjectDef type, or "cannonball"
+    std::string name;  ///< "" = unnamed
+};
 
 /// A probe sphere in the body's frame: where the water pushes (buoyancy, drag).
 struct Probe {
     glm::vec3 offset{0.0f};  ///< m
     float radius = 0.5f;     ///< m
+};
+
+/// A force a behaviour adds for the next physics step.
+struct AppliedForce {
+    glm::vec3 force{0.0f};  ///< N, world
+    glm::vec3 point{0.0f};  ///< world point of application, m
 };
 
 /// A simulated body: its Bullet id, its probes, and what the water did last step.
@@ -48,6 +111,9 @@ struct Body {
     std::vector<Probe> probes;
     float volume = 0.0f;             ///< m³ of the solid
     float submergedFraction = 0.0f;  ///< of the probes' volume under the surface, last step
+    float horizontalDrag = 1.0f;     ///< scale of the probes' drag on horizontal motion (ships: 0, the hull model resists)
+    glm::vec3 angularVelocity{0.0f}; ///< rad/s, world, after the last step
+    std::vector<AppliedForce> forces;  ///< behaviour forces for the next step (cleared by the step)
 };
 
 /// How an object looks: mesh, scale (unit mesh → object), colour.
@@ -58,12 +124,37 @@ struct Renderable {
     std::string model;    ///< glTF file replacing `mesh` ("" = built-in)
 };
 
-/// Creates the physics resource and one entity per object (Transform, Motion, Body,
-/// Renderable, SphereSet with the paper's cannonball sphere: SHR 1, AF 0, SD −1: it pushes down).
-void spawnObjects(ecs::World& world, const physics::PhysicsDef& def, const std::vector<ObjectDef>& objects);
-/// Physics phase: water forces on every probe, the Bullet step, poses back to the entities.
+/// A lattice of counts.x × counts.y × counts.z equal probe spheres at the cell centres of a
+/// box of `size` (m, centred on the origin) whose volumes sum to the box's.
+std::vector<Probe> latticeProbes(glm::vec3 size, glm::ivec3 counts);
+/// The ripple patch's cell size (m), or the [ripples] default when there is no patch:
+/// bounding spheres are sized in cells (seed 001's SR).
+float rippleCellSize(ecs::World& world);
+/// The bounding sphere of an object's "custom" keys, or `paper` when spheres = "paper";
+/// radius in metres from SR cells.
+interaction::BoundingSphere boundingSphereFor(const ObjectDef& def, const interaction::BoundingSphere& paper, float cellSize);
+
+/// Creates the physics resource and every object of the scene (spawnObject, in order).
+void spawnObjects(ecs::World& world, const physics::PhysicsDef& def, const std::vector<ObjectDef>& objects, uint64_t seed);
+/// Creates one object (any type) in a world that has the physics resource; `seed` feeds its
+/// random choices (fish). Returns the object's entity.
+ecs::Entity spawnObject(ecs::World& world, const ObjectDef& def, uint64_t seed);
+/// Creates a floating Bullet body entity (Transform, Motion, Body, Renderable, ObjectTag);
+/// the caller adds its SphereSet. `probes` in the body frame; mass in kg.
+ecs::Entity spawnBody(ecs::World& world, const std::string& type, const std::string& name, physics::BodyId id,
+                      std::vector<Probe> probes, float volume, float mass, const physics::BodyState& start,
+                      const Renderable& look);
+/// Removes a body entity and its Bullet body.
+void destroyBody(ecs::World& world, ecs::Entity e);
+/// The first entity whose ObjectTag name is `name` (None if there is none).
+ecs::Entity findObject(ecs::World& world, const std::string& name);
+/// Physics phase: water forces on every probe and the behaviours' forces, the Bullet step,
+/// poses back to the entities.
 void physicsSystem(ecs::World& world, const ecs::Tick& tick);
 /// What the opaque pass draws this frame.
 std::vector<gfx::ObjectDraw> objectDraws(ecs::World& world);
+/// Roll and pitch (deg) of a rotation for a body whose bow is local +z and deck local +y:
+/// pitch = bow above the horizon, roll = about the bow axis, + when local +x rises.
+glm::vec2 rollPitchDeg(const glm::quat& rotation);
 
 } // namespace ob::game

@@ -2,12 +2,17 @@
 #include "sandbox.h"
 
 #include "camera.h"
+#include "cannon.h"
+#include "controls.h"
 #include "core/hash.h"
 #include "ecs/components.h"
 #include "gfx/renderer.h"
 #include "interaction/ripple_patch.h"
 #include "gfx/ui_overlay.h"
+#include "fish.h"
 #include "objects.h"
+#include "script.h"
+#include "ship.h"
 #include "ui_panels.h"
 #include "water/composite_water.h"
 #include "water_systems.h"
@@ -35,7 +40,9 @@ void renderSystem(ecs::World& world, const ecs::Tick& tick) {
     gfx::CameraView camera = cameraView(world, size);
     if (const OceanState* ocean = world.resource<OceanState>(); ocean && ocean->water)
         camera.waterHeight = ocean->water->sample(camera.position.x, camera.position.z).height;
-    res->renderer->render(camera, prepareWaterView(world, tick.time), objectDraws(world), tick.time, size);
+    std::vector<gfx::ObjectDraw> draws = objectDraws(world);
+    appendFishDraws(world, draws);
+    res->renderer->render(camera, prepareWaterView(world, tick.time), draws, tick.time, size);
     gfx::PassTimes passes = res->renderer->takePassTimes();
     double gpuMs = 0.0;
     for (const auto& [pass, ms] : passes) {
@@ -45,7 +52,7 @@ void renderSystem(ecs::World& world, const ecs::Tick& tick) {
     if (!passes.empty()) res->timer->setGpu(ecs::Phase::Render, gpuMs);
     if (res->ui) {
         res->ui->begin();
-        drawPanels(*res->scene, *res->timer);
+        drawPanels(world, *res->scene, *res->timer);
         res->ui->end();
     }
 }
@@ -58,8 +65,15 @@ struct SystemEntry {
 };
 const SystemEntry SYSTEMS[] = {
     {ecs::Phase::Input, "input", inputSystem},
+    {ecs::Phase::Input, "controls", controlsSystem},
+    {ecs::Phase::Script, "events", scriptSystem},
+    {ecs::Phase::Script, "spawn requests", spawnRequestsSystem},
+    {ecs::Phase::Script, "ships", shipSystem},
+    {ecs::Phase::Script, "cannons", cannonSystem},
+    {ecs::Phase::Script, "fish", fishSystem},
     {ecs::Phase::Script, "camera", cameraSystem},
     {ecs::Phase::Physics, "bodies", physicsSystem},
+    {ecs::Phase::Interaction, "fish stamps", fishStampSystem},
     {ecs::Phase::Interaction, "ripples", interactionSystem},
     {ecs::Phase::Ocean, "ocean", oceanSystem},
     {ecs::Phase::Render, "render", renderSystem},
@@ -70,10 +84,12 @@ const SystemEntry SYSTEMS[] = {
 Sandbox::Sandbox(const SceneDef& scene) : m_scene(scene), m_schedule(scene.sim) {
     for (const SystemEntry& s : SYSTEMS) m_schedule.add(s.phase, s.name, s.fn);
     m_world.setResource(std::make_unique<platform::InputState>());
+    addControls(m_world);
     spawnCamera(m_world, m_scene.camera);
     addOcean(m_world, m_scene.ocean, m_scene.gerstner);
     addRipples(m_world, m_scene.ripples, float(m_schedule.stepSeconds()));
-    spawnObjects(m_world, m_scene.physics, m_scene.objects);
+    spawnObjects(m_world, m_scene.physics, m_scene.objects, m_scene.sim.seed);
+    addScript(m_world, m_scene);
 }
 
 Sandbox::~Sandbox() = default;
@@ -84,6 +100,12 @@ void Sandbox::attachPlatform(platform::Platform& platform, bool withUi) {
     if (withUi && platform.nativeWindow()) m_ui = std::make_unique<gfx::UiOverlay>(platform.nativeWindow());
     m_world.setResource(std::make_unique<FrameResources>(
         FrameResources{&platform, m_renderer.get(), m_ui.get(), &m_schedule.timer(), &m_scene}));
+}
+
+std::vector<std::string> Sandbox::takeScreenshotRequests() {
+    std::vector<std::string> files;
+    if (auto* script = m_world.resource<ScriptState>()) files.swap(script->screenshots);
+    return files;
 }
 
 bool Sandbox::quitRequested() {
@@ -100,6 +122,10 @@ uint64_t Sandbox::stateHash() {
         h.u64(uint32_t(transforms.entities()[i]));
         h.f32s(&t.position.x, 3);
         h.f32s(&t.rotation.x, 4);
+    }
+    for (const FishSchool& school : m_world.pool<FishSchool>().components()) {
+        h.u64(school.size());
+        for (const glm::vec3& p : school.position) h.f32s(&p.x, 3);
     }
     if (auto* patch = m_world.resource<interaction::RipplePatch>()) {
         auto now = patch->field().current(), before = patch->field().previous();

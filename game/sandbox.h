@@ -7,6 +7,8 @@
 
 #include <cstdint>
 #include <memory>
+#include <string>
+#include <vector>
 
 namespace ob::gfx {
 class Renderer;
@@ -38,6 +40,8 @@ public:
     /// Hash of the simulation state (bit-exact: equal hashes mean equal states).
     uint64_t stateHash();
     bool quitRequested();
+    /// PNG files the timeline asked for since the last call (write them after the frame).
+    std::vector<std::string> takeScreenshotRequests();
 
     ecs::World& world() { return m_world; }
     ecs::Schedule& schedule() { return m_schedule; }

@@ -62,6 +62,7 @@ static SceneDef readScene(TomlDocument& doc, const std::string& source, const st
     // Checks across keys and files, once every key is read and in range.
     if (errors.empty()) {
         for (const std::string& e : ocean::validate(scene.gerstner, &scene.ocean)) errors.push_back(source + ": " + e);
+        for (const std::string& e : validateEvents(scene, source)) errors.push_back(e);
         checkModels(scene, doc, source, sceneDir, errors);
     }
     if (!errors.empty()) {

@@ -8,6 +8,7 @@
 #include "ocean/gerstner.h"
 #include "ocean/ocean_def.h"
 #include "platform/platform.h"
+#include "script.h"
 
 #include <string>
 #include <vector>
@@ -25,6 +26,7 @@ struct SceneDef {
     interaction::RippleDef ripples; ///< [ripples]
     physics::PhysicsDef physics;  ///< [physics]
     std::vector<ObjectDef> objects; ///< [[objects]]
+    std::vector<EventDef> events;   ///< [[events]]: the timeline
 };
 
 template <class V> void describe(V& v, SceneDef& s) {
@@ -36,7 +38,8 @@ template <class V> void describe(V& v, SceneDef& s) {
     v.section("gerstner", s.gerstner);
     v.section("ripples", s.ripples);
     v.section("physics", s.physics);
-    v.list("objects", s.objects, "floating bodies");
+    v.list("objects", s.objects, "bodies, ships, cannons, fish schools");
+    v.list("events", s.events, "timeline: actions at simulated times");
 }
 
 /// Loads a scene file and applies `--set key.path=value` overrides (in order). Each

@@ -1,13 +1,45 @@
-// Stats (per-phase ms) and live settings (the [render] keys, edited through their schema).
+// Stats (per-phase ms), the player's ship and cannon, live settings (the [render] keys,
+// edited through their schema) and "save scene as".
 #include "ui_panels.h"
 
+#include "cannon.h"
+#include "core/toml_writer.h"
+#include "ecs/components.h"
 #include "gfx/ui_overlay.h"
+#include "ship.h"
 
+#include <fstream>
 #include <imgui.h>
 
 namespace ob::game {
 
-void drawPanels(SceneDef& scene, const ecs::FrameTimer& timer) {
+std::string saveScene(SceneDef& scene, const std::string& path) {
+    std::ofstream out(path);
+    if (!out) return "cannot write '" + path + "'";
+    out << "# Saved from oceanbox: the keys that differ from the defaults.\n" << writeToml(scene);
+    return out ? "" : "cannot write '" + path + "'";
+}
+
+static void playerPanel(ecs::World& world) {
+    if (const auto* sim = world.resource<ecs::SimControl>(); sim && sim->paused)
+        ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "paused: P resumes, N steps");
+    auto& ships = world.pool<Ship>();
+    for (size_t i = 0; i < ships.size(); ++i) {
+        const Ship& ship = ships.components()[i];
+        if (!ship.player) continue;
+        const glm::vec3 v = world.get<ecs::Motion>(ships.entities()[i]).velocity;
+        ImGui::Text("ship: throttle %+.0f%%  rudder %+.0f  speed %.1f m/s", 100.0 * ship.throttle, double(ship.rudder),
+                    double(std::hypot(v.x, v.z)));
+    }
+    auto& cannons = world.pool<Cannon>();
+    for (size_t i = 0; i < cannons.size(); ++i) {
+        const Cannon& c = cannons.components()[i];
+        if (c.player) ImGui::Text("cannon: yaw %.0f  elevation %.0f  shots %d", double(c.yawDeg), double(c.elevationDeg), c.shots);
+    }
+    ImGui::TextDisabled("W/S throttle  A/D rudder  arrows aim  Space fire  F fish  F12 shot  P pause");
+}
+
+void drawPanels(ecs::World& world, SceneDef& scene, const ecs::FrameTimer& timer) {
     ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
     ImGui::Begin("oceanbox");
     const auto& frames = timer.frameSamples();
@@ -32,8 +64,20 @@ void drawPanels(SceneDef& scene, const ecs::FrameTimer& timer) {
         }
         ImGui::EndTable();
     }
+    playerPanel(world);
     gfx::UiEditor editor;
     editor.section("render", scene.render);
+
+    // --- save scene as
+    static char path[256] = "saved_scene.toml";
+    static std::string status;
+    ImGui::InputText("##path", path, sizeof path);
+    ImGui::SameLine();
+    if (ImGui::Button("save scene as")) {
+        std::string error = saveScene(scene, path);
+        status = error.empty() ? std::string("saved ") + path : error;
+    }
+    if (!status.empty()) ImGui::TextUnformatted(status.c_str());
     ImGui::End();
 }
 

@@ -76,11 +76,12 @@ void interactionSystem(ecs::World& world, const ecs::Tick&) {
     auto* patch = world.resource<interaction::RipplePatch>();
     const OceanState* ocean = world.resource<OceanState>();
     if (!patch || !ocean) return;
-    if (patch->def().follow == "camera") {
+    if (patch->def().follow != "fixed") {
         auto& rigs = world.pool<CameraRig>();
         if (rigs.size() > 0) {
-            glm::vec3 eye = world.get<ecs::Transform>(rigs.entities()[0]).position;
-            patch->centerOn(glm::vec2(eye.x, eye.z));
+            glm::vec3 at = patch->def().follow == "target" ? rigs.components()[0].focus
+                                                           : world.get<ecs::Transform>(rigs.entities()[0]).position;
+            patch->centerOn(glm::vec2(at.x, at.z));
         }
     }
     // --- stamps, in entity then sphere order (overlaps: the later sphere wins)

@@ -5,6 +5,7 @@
 #include <initializer_list>
 #include <limits>
 #include <string>
+#include <vector>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
@@ -38,6 +39,7 @@ using Choices = std::initializer_list<const char*>;
 ///   void field(const char* key, float& value, Limits, const char* doc);
 ///   void field(const char* key, glm::vec2& / glm::vec3& value, Limits, const char* doc);
 ///   void field(const char* key, std::string& value, Choices, const char* doc);
+///   void field(const char* key, std::vector<glm::vec2>& points, Limits, const char* doc);  // [[x, z], ...]
 ///   template <class Def> void section(const char* key, Def& def);
 ///   template <class Item> void list(const char* key, std::vector<Item>& items, const char* doc);
 

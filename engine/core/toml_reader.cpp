@@ -75,16 +75,65 @@ static bool mergeInto(toml::table& into, toml::table& from, const std::string& s
     return true;
 }
 
+// The table a `--set` path's element part names ("objects[1]" or "a.b[0].c[2]"): each
+// dotted segment is a table, each [i] an element of an array of tables. Null (and an error)
+// when a segment is missing.
+static toml::table* elementTable(toml::table& root, const std::string& head, const std::string& source,
+                                 std::vector<std::string>& errors) {
+    static const std::regex SEGMENT(R"(([A-Za-z0-9_-]+)(?:\[([0-9]+)\])?)");
+    toml::table* table = &root;
+    size_t start = 0;
+    while (start <= head.size()) {
+        size_t dot = head.find('.', start);
+        std::string segment = head.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
+        std::smatch m;
+        std::regex_match(segment, m, SEGMENT);
+        toml::node* node = table->get(m[1].str());
+        if (m[2].matched) {
+            size_t index = std::stoul(m[2].str());
+            toml::array* array = node ? node->as_array() : nullptr;
+            toml::node* item = array && index < array->size() ? array->get(index) : nullptr;
+            if (!item || !item->is_table()) {
+                errors.push_back(source + ": '" + m[1].str() + "' has no element [" + m[2].str() + "]");
+                return nullptr;
+            }
+            table = item->as_table();
+        } else {
+            if (!node || !node->is_table()) {
+                errors.push_back(source + ": '" + m[1].str() + "' is not a section");
+                return nullptr;
+            }
+            table = node->as_table();
+        }
+        if (dot == std::string::npos) break;
+        start = dot + 1;
+    }
+    return table;
+}
+
 void TomlDocument::applyOverride(const std::string& assignment, std::vector<std::string>& errors) {
     const std::string source = "--set " + assignment;
     size_t eq = assignment.find('=');
-    static const std::regex KEY_PATH(R"([A-Za-z0-9_-]+(\.[A-Za-z0-9_-]+)*)");
+    // Dotted keys; a segment may pick an element of an array of tables: objects[0].count.
+    static const std::regex KEY_PATH(R"([A-Za-z0-9_-]+(\[[0-9]+\])?(\.[A-Za-z0-9_-]+(\[[0-9]+\])?)*)");
     if (eq == std::string::npos || !std::regex_match(assignment.substr(0, eq), KEY_PATH)) {
         errors.push_back(source + ": expected key.path=value");
         return;
     }
     std::string path = assignment.substr(0, eq);
     std::string text = assignment.substr(eq + 1);
+    // Up to the last [i]: the element table the rest of the path is set in.
+    toml::table* target = &m_impl->root;
+    size_t close = path.rfind(']');
+    if (close != std::string::npos) {
+        if (close + 1 == path.size()) {
+            errors.push_back(source + ": expected key.path=value (a key inside the element: " + path + ".key=value)");
+            return;
+        }
+        target = elementTable(m_impl->root, path.substr(0, close + 1), source, errors);
+        if (!target) return;
+        path = path.substr(close + 2);
+    }
     // The value in TOML syntax; a bare word that is no TOML value is taken as a string.
     // The key path is a TOML dotted key, so the parse builds the nested tables itself.
     toml::table parsed;
@@ -103,7 +152,7 @@ void TomlDocument::applyOverride(const std::string& assignment, std::vector<std:
             return;
         }
     }
-    mergeInto(m_impl->root, parsed, source, errors);
+    mergeInto(*target, parsed, source, errors);
 }
 
 std::string TomlDocument::where(const std::string& keyPath, const std::string& fallback) const {
@@ -340,6 +389,30 @@ void TomlReader::field(const char* key, std::string& value, Choices choices, con
         list += std::string(list.empty() ? "" : ", ") + "\"" + c + "\"";
     }
     m_state->error(*node, key, "must be one of " + list + ", got \"" + str->get() + "\"");
+}
+
+void TomlReader::field(const char* key, std::vector<glm::vec2>& points, Limits limits, const char*) {
+    State& s = *m_state;
+    const toml::node* node = s.lookup(key);
+    if (!node) return;
+    auto arr = node->as_array();
+    if (!arr) {
+        s.error(*node, key, std::string("expected an array of [x, z] pairs, got ") + typeName(*node));
+        return;
+    }
+    std::vector<glm::vec2> out;
+    for (const toml::node& item : *arr) {
+        auto pair = item.as_array();
+        if (!pair || pair->size() != 2) {
+            s.error(item, key, "expected an array of [x, z] pairs");
+            return;
+        }
+        double v[2];
+        for (size_t i = 0; i < 2; ++i)
+            if (!readNumber(s, *pair->get(i), key, v[i]) || !checkRange(s, *pair->get(i), key, v[i], limits)) return;
+        out.emplace_back(float(v[0]), float(v[1]));
+    }
+    points = std::move(out);
 }
 
 } // namespace ob

@@ -43,6 +43,8 @@ public:
     void field(const char* key, glm::vec2& value, Limits limits, const char* doc);
     void field(const char* key, glm::vec3& value, Limits limits, const char* doc);
     void field(const char* key, std::string& value, Choices choices, const char* doc);
+    /// A list of 2D points, `[[x, z], ...]` (may be empty).
+    void field(const char* key, std::vector<glm::vec2>& points, Limits limits, const char* doc);
 
     /// Reads sub-table `key` (absent: defaults stay) into `def` by its describe().
     template <class Def>

@@ -63,15 +63,21 @@ void Schedule::runFrame(World& world, double now) {
     runPhase(world, Phase::Input, Tick{simTime(), frameDt, m_step, 0.0});
 
     // --- simulation: the fixed steps due by now, at most max_steps_per_frame (the rest is dropped)
-    m_accumulator += frameDt;
-    int steps = 0;
     const double h = stepSeconds();
-    while (m_accumulator >= h * (1.0 - 1e-9) && steps < m_def.max_steps_per_frame) {
-        runStep(world);
-        m_accumulator -= h;
-        ++steps;
+    if (SimControl* control = world.resource<SimControl>(); control && control->paused) {
+        // Paused: time stands still; each request runs exactly one step.
+        m_accumulator = 0;
+        for (; control->stepRequests > 0; --control->stepRequests) runStep(world);
+    } else {
+        m_accumulator += frameDt;
+        int steps = 0;
+        while (m_accumulator >= h * (1.0 - 1e-9) && steps < m_def.max_steps_per_frame) {
+            runStep(world);
+            m_accumulator -= h;
+            ++steps;
+        }
+        if (steps == m_def.max_steps_per_frame && m_accumulator > h) m_accumulator = 0;
     }
-    if (steps == m_def.max_steps_per_frame && m_accumulator > h) m_accumulator = 0;
 
     // --- render: once per frame, at the latest simulated state
     runPhase(world, Phase::Render, Tick{simTime(), frameDt, m_step, m_accumulator / h});

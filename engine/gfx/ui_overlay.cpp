@@ -101,6 +101,20 @@ void UiEditor::field(const char* key, std::string& value, Choices choices, const
     tooltip(doc);
 }
 
+void UiEditor::field(const char* key, std::vector<glm::vec2>& points, Limits limits, const char* doc) {
+    float lo, hi;
+    sliderBounds(limits, 0.0f, lo, hi);
+    ImGui::PushID(key);
+    ImGui::Text("%s (%zu)", key, points.size());
+    tooltip(doc);
+    for (size_t i = 0; i < points.size(); ++i) {
+        ImGui::PushID(int(i));
+        ImGui::DragFloat2("##p", &points[i].x, 0.1f, lo, hi);
+        ImGui::PopID();
+    }
+    ImGui::PopID();
+}
+
 bool UiEditor::beginSection(const char* key) {
     if (!ImGui::CollapsingHeader(key)) return false;
     ImGui::PushID(key);

@@ -31,6 +31,7 @@ public:
     void field(const char* key, glm::vec2& value, Limits limits, const char* doc);
     void field(const char* key, glm::vec3& value, Limits limits, const char* doc);
     void field(const char* key, std::string& value, Choices choices, const char* doc);
+    void field(const char* key, std::vector<glm::vec2>& points, Limits limits, const char* doc);
     /// A collapsible header per section.
     template <class Def>
     void section(const char* key, Def& def) {

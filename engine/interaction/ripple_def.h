@@ -28,7 +28,8 @@ struct RippleDef {
     float damping = 0.95f;               ///< DF of eq. 2, [0, 1]: 0 kills a wave next step, 1 never damps
     std::string boundary = "absorbing";  ///< "fixed" (border held at 0, reflects) or "absorbing" (sponge band)
     int sponge_width = 32;               ///< absorbing band width, cells, [1, 512]; 32 reflects ≤ 5% of a ring's amplitude
-    std::string follow = "fixed";        ///< "fixed" at `center`, or "camera": scrolls in whole cells under the camera
+    std::string follow = "fixed";        ///< "fixed" at `center`; "camera": scrolls in whole cells under the camera;
+                                         ///< "target": under the point the camera looks at (a followed ship)
     glm::vec2 center{0.0f, 0.0f};        ///< patch centre when fixed, world [x, z] m
     RippleReferenceDef reference;        ///< [ripples.reference]: object B of eq. 6
 };
@@ -41,7 +42,8 @@ template <class V> void describe(V& v, RippleDef& d) {
     v.field("damping", d.damping, range(0, 1), "damping factor DF (eq. 2)");
     v.field("boundary", d.boundary, Choices{"fixed", "absorbing"}, "border: fixed (reflects) or absorbing (sponge)");
     v.field("sponge_width", d.sponge_width, range(1, 512), "absorbing band width (cells)");
-    v.field("follow", d.follow, Choices{"fixed", "camera"}, "patch stays at center, or follows the camera");
+    v.field("follow", d.follow, Choices{"fixed", "camera", "target"},
+            "patch stays at center, follows the camera, or the point it looks at");
     v.field("center", d.center, any(), "patch centre when fixed, world [x, z] m");
     v.section("reference", d.reference);
 }

@@ -45,6 +45,8 @@ public:
     void step();
 
     const RippleDef& def() const { return m_def; }
+    /// Changes DF (eq. 2) from the next step on, [0, 1].
+    void setDamping(float damping) { m_def.damping = damping; }
     RippleField& field() { return m_field; }
     const RippleField& field() const { return m_field; }
 

@@ -24,7 +24,7 @@ template <class V> void describe(V& v, WindowDef& d) {
 }
 
 /// Keys the game reads.
-enum class Key : uint8_t { W, A, S, D, Q, E, Space, Shift, Escape, Up, Down, Left, Right, F1, Count };
+enum class Key : uint8_t { W, A, S, D, Q, E, Space, Shift, Escape, Up, Down, Left, Right, F1, P, N, F, F12, Count };
 
 /// One frame of input, filled by Platform::pollInput.
 struct InputState {

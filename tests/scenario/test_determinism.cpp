@@ -30,8 +30,8 @@ TEST_CASE("the default scene stepped twice for 120 steps gives the same state ha
     game::SceneDef scene = game::loadScene(game::defaultScenePath());
     uint64_t a = hashAfterSteps(scene, 120);
     CHECK(a == hashAfterSteps(scene, 120));
-    // The hash sees the state: a different camera speed changes it.
-    game::SceneDef other = game::loadScene(game::defaultScenePath(), {"camera.orbit_speed_deg_s=5"});
+    // The hash sees the state: a different camera height behind the followed ship changes it.
+    game::SceneDef other = game::loadScene(game::defaultScenePath(), {"camera.follow_height_m=8"});
     CHECK(a != hashAfterSteps(other, 120));
     CHECK(a != hashAfterSteps(scene, 119));
 }
@@ -39,5 +39,5 @@ TEST_CASE("the default scene stepped twice for 120 steps gives the same state ha
 TEST_CASE("two headless runs of 120 frames report the same state hash", "[determinism]") {
     std::string a = cliHash("");
     CHECK(a == cliHash(""));
-    CHECK(a != cliHash("--set camera.orbit_speed_deg_s=7"));
+    CHECK(a != cliHash("--set camera.follow_height_m=8"));
 }

@@ -6,6 +6,7 @@
 #include "support/test_support.h"
 
 #include <catch2/catch.hpp>
+#include <filesystem>
 
 using namespace ob;
 using game::SceneDef;
@@ -52,7 +53,10 @@ std::vector<std::string> probeErrors(const std::string& text, ProbeScene& out) {
 } // namespace
 
 TEST_CASE("every shipped scene in config/scenes parses", "[config]") {
-    REQUIRE_NOTHROW(game::loadScene(std::string(OCEANBOX_SOURCE_DIR) + "/config/scenes/default.toml"));
+    for (const auto& entry : std::filesystem::directory_iterator(std::string(OCEANBOX_SOURCE_DIR) + "/config/scenes")) {
+        INFO(entry.path());
+        REQUIRE_NOTHROW(game::loadScene(entry.path().string()));
+    }
 }
 
 TEST_CASE("an empty or three-line scene is valid and defaults fill the rest", "[config]") {
@@ -65,7 +69,7 @@ TEST_CASE("an empty or three-line scene is valid and defaults fill the rest", "[
     CHECK(game::parseScene("", "empty.toml").render.fresnel == "schlick");
 }
 
-TEST_CASE("overrides (--set) change any key with TOML values; a bare word is a string", "[config]") {
+TEST_CASE("overrides (--set) change any key with TOML values, a bare word is a string", "[config]") {
     SceneDef s = game::parseScene("[render]\nfresnel = \"schlick\"\n", "x.toml",
                                   {"render.fresnel=exact", "camera.position=[1, 2, 3]", "sim.step_hz=120", "window.vsync=false",
                                    "render.exposure=2"});
@@ -199,4 +203,36 @@ TEST_CASE("arrays of tables read each element by its schema, with indexed key pa
     errors = listErrors("waves = [1, 2]\n", s);
     REQUIRE(errors.size() == 2);
     CHECK(errors[0].find("waves[0]: expected a table, got an integer") != std::string::npos);
+}
+
+TEST_CASE("overrides (--set) reach into [[objects]] by index: objects[1].count=N", "[config]") {
+    const std::string text = "[[objects]]\ntype = \"ship\"\n[[objects]]\ntype = \"fish_school\"\ncount = 3\n";
+    SceneDef s = game::parseScene(text, "x.toml", {"objects[1].count=1000", "objects[0].speed=2.5", "objects[1].position=[1, 0, 2]"});
+    REQUIRE(s.objects.size() == 2);
+    CHECK(s.objects[1].count == 1000);
+    CHECK(s.objects[0].speed == 2.5f);
+    CHECK(s.objects[1].position == glm::vec3(1, 0, 2));
+    CHECK(sceneError(text, {"objects[2].count=1"}) == "--set objects[2].count=1: 'objects' has no element [2]");
+    CHECK(sceneError(text, {"objects[1].count=0"}) == "--set objects[1].count=0: objects[1].count: must be in [1, 1e+06], got 0");
+    CHECK(sceneError(text, {"objects[1]=3"}).rfind("--set objects[1]=3: expected key.path=value", 0) == 0);
+}
+
+TEST_CASE("scene errors in objects and events name the key path, events are checked against the scene", "[config]") {
+    CHECK(sceneError("[[objects]]\ntype = \"submarine\"\n") ==
+          "bad.toml:2:8: objects[0].type: must be one of \"sphere\", \"box\", \"ship\", \"cannon\", \"fish_school\", got \"submarine\"");
+    CHECK(sceneError("[[objects]]\ntype = \"ship\"\nwaypoints = [[1, 2], [3]]\n") ==
+          "bad.toml:3:22: objects[0].waypoints: expected an array of [x, z] pairs");
+    CHECK(sceneError("[[events]]\nat = 1\naction = \"explode\"\n") ==
+          "bad.toml:3:10: events[0].action: must be one of \"fire\", \"spawn\", \"set_speed\", \"set\", \"camera\", \"screenshot\", got \"explode\"");
+    CHECK(sceneError("[[events]]\naction = \"fire\"\ntarget = \"nobody\"\n") == "bad.toml: events[0].target: no object is named 'nobody'");
+    CHECK(sceneError("[[events]]\naction = \"set\"\nkey = \"render.nope\"\n") ==
+          "bad.toml: events[0].key: 'render.nope' is not a number or switch of the scene");
+    CHECK(sceneError("[[events]]\naction = \"set\"\nkey = \"ocean.wind_speed\"\nvalue = 3\n").find("is read once at start") != std::string::npos);
+    CHECK(sceneError("[[events]]\naction = \"set\"\nkey = \"ripples.damping\"\nvalue = 3\n").find("events[0].value: value out of") !=
+          std::string::npos);
+    CHECK(sceneError("[[events]]\naction = \"spawn\"\nobject = { type = \"ship\", speed = -1 }\n") ==
+          "bad.toml:3:35: events[0].object.speed: must be in [0, 100], got -1");
+    CHECK(sceneError("[[events]]\naction = \"set\"\nkey = \"ripples.damping\"\nvalue = 0.9\n[[events]]\naction = \"fire\"\ntarget = \"gun\"\n"
+                     "[[objects]]\ntype = \"cannon\"\nname = \"gun\"\n")
+              .empty());
 }

@@ -1,0 +1,88 @@
+// Writing a Def back to TOML through its describe() schema: the keys whose values differ
+// from the Def's defaults, sections as [a.b], lists as [[a]]; what the loader reads back
+// gives the same Def.
+#pragma once
+#include "core/schema.h"
+
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace ob {
+
+/// A Def as text: its keys (TOML values, formatted), its sections, its lists.
+struct TomlNode {
+    std::vector<std::pair<std::string, std::string>> keys;
+    std::vector<std::pair<std::string, TomlNode>> sections;
+    std::vector<std::pair<std::string, std::vector<TomlNode>>> lists;
+};
+
+/// TOML value text of each field kind (floats in their shortest round-trip form).
+std::string tomlValue(bool v);
+std::string tomlValue(int v);
+std::string tomlValue(uint64_t v);
+std::string tomlValue(float v);
+std::string tomlValue(const glm::vec2& v);
+std::string tomlValue(const glm::vec3& v);
+std::string tomlValue(const std::string& v);
+std::string tomlValue(const std::vector<glm::vec2>& v);
+
+/// Drops from `node` every key equal to `defaults`' (sections recursively, by name).
+void pruneDefaults(TomlNode& node, const TomlNode& defaults);
+/// The TOML document of a node (`prefix` names the table it is, "" at the root).
+std::string emitToml(const TomlNode& node, const std::string& prefix = "");
+
+/// The visitor that collects a Def into a TomlNode; list items are pruned against a
+/// default-constructed item as they are collected.
+class TomlCollector {
+public:
+    explicit TomlCollector(TomlNode& node) : m_node(node) {}
+    void field(const char* key, bool& v, const char*) { add(key, tomlValue(v)); }
+    void field(const char* key, int& v, Limits, const char*) { add(key, tomlValue(v)); }
+    void field(const char* key, uint64_t& v, const char*) { add(key, tomlValue(v)); }
+    void field(const char* key, float& v, Limits, const char*) { add(key, tomlValue(v)); }
+    void field(const char* key, glm::vec2& v, Limits, const char*) { add(key, tomlValue(v)); }
+    void field(const char* key, glm::vec3& v, Limits, const char*) { add(key, tomlValue(v)); }
+    void field(const char* key, std::string& v, Choices, const char*) { add(key, tomlValue(v)); }
+    void field(const char* key, std::vector<glm::vec2>& v, Limits, const char*) { add(key, tomlValue(v)); }
+    template <class Def> void section(const char* key, Def& def) {
+        TomlNode child;
+        TomlCollector c(child);
+        describe(c, def);
+        m_node.sections.emplace_back(key, std::move(child));
+    }
+    template <class Item> void list(const char* key, std::vector<Item>& items, const char*) {
+        Item fresh{};
+        TomlNode defaults;
+        TomlCollector d(defaults);
+        describe(d, fresh);
+        std::vector<TomlNode> nodes;
+        for (Item& item : items) {
+            TomlNode n;
+            TomlCollector c(n);
+            describe(c, item);
+            pruneDefaults(n, defaults);
+            nodes.push_back(std::move(n));
+        }
+        m_node.lists.emplace_back(key, std::move(nodes));
+    }
+
+private:
+    void add(const char* key, std::string text) { m_node.keys.emplace_back(key, std::move(text)); }
+    TomlNode& m_node;
+};
+
+/// `def` as a TOML document of the keys that differ from `Def{}`.
+template <class Def> std::string writeToml(Def& def) {
+    TomlNode node, defaults;
+    TomlCollector c(node);
+    describe(c, def);
+    Def fresh{};
+    TomlCollector d(defaults);
+    describe(d, fresh);
+    pruneDefaults(node, defaults);
+    return emitToml(node);
+}
+
+} // namespace ob

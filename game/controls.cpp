@@ -1,0 +1,65 @@
+// Window controls: keys to pause, step, spawn fish and take screenshots.
+#include "controls.h"
+
+#include "camera.h"
+#include "core/log.h"
+#include "objects.h"
+#include "platform/platform.h"
+#include "script.h"
+
+#include <cstdio>
+#include <filesystem>
+
+namespace ob::game {
+
+void addControls(ecs::World& world) {
+    world.setResource(std::make_unique<WindowControls>());
+    world.setResource(std::make_unique<ecs::SimControl>());
+}
+
+void controlsSystem(ecs::World& world, const ecs::Tick&) {
+    const auto* input = world.resource<platform::InputState>();
+    auto* controls = world.resource<WindowControls>();
+    auto* sim = world.resource<ecs::SimControl>();
+    if (!input || !controls || !sim || input->uiCapturesKeyboard) return;
+    using platform::Key;
+    if (input->wasPressed(Key::P)) {
+        sim->paused = !sim->paused;
+        logInfo("%s", sim->paused ? "paused (P resumes, N steps)" : "running");
+    }
+    if (input->wasPressed(Key::N) && sim->paused) ++sim->stepRequests;
+    if (input->wasPressed(Key::F)) ++controls->spawnFish;
+    if (input->wasPressed(Key::F12)) {
+        // The first free name in the current folder; the frame is written after it is drawn.
+        std::string name;
+        do {
+            char buf[64];
+            std::snprintf(buf, sizeof buf, "oceanbox_shot_%03d.png", ++controls->screenshotCount);
+            name = buf;
+        } while (std::filesystem::exists(name));
+        if (auto* script = world.resource<ScriptState>()) script->screenshots.push_back(name);
+    }
+}
+
+void spawnRequestsSystem(ecs::World& world, const ecs::Tick& tick) {
+    auto* controls = world.resource<WindowControls>();
+    if (!controls || controls->spawnFish == 0) return;
+    glm::vec3 focus(0.0f);
+    auto& rigs = world.pool<CameraRig>();
+    if (rigs.size() > 0) focus = rigs.components()[0].focus;
+    for (; controls->spawnFish > 0; --controls->spawnFish) {
+        ObjectDef fish;
+        fish.type = "fish_school";
+        fish.position = focus;
+        fish.radius = 6.0f;
+        fish.count = 12;
+        fish.speed = 3.0f;
+        fish.jump_interval = 2.0f;
+        fish.length = 0.7f;
+        fish.color = glm::vec3(0.55f, 0.6f, 0.65f);
+        spawnObject(world, fish, tick.step * 31ull + uint64_t(controls->spawnFish));
+        logInfo("fish school spawned at (%.0f, %.0f)", double(focus.x), double(focus.z));
+    }
+}
+
+} // namespace ob::game
