@@ -67,7 +67,9 @@ ecs::Entity spawnCannon(ecs::World& world, const ObjectDef& o) {
     }
     ecs::Entity e = world.create();
     world.add<ecs::Transform>(e, {o.position, aimRotation(o.yaw_deg, o.elevation_deg)});
-    world.add<Renderable>(e, {gfx::MeshKind::Box, glm::vec3(0.22f, 0.22f, 0.5f * CANNON_BARREL), o.color, o.model});
+    // A model is in metres with its pivot at the origin; the built-in box is the barrel.
+    const glm::vec3 scale = o.model.empty() ? glm::vec3(0.22f, 0.22f, 0.5f * CANNON_BARREL) : glm::vec3(1.0f);
+    world.add<Renderable>(e, {gfx::MeshKind::Box, scale, o.color, o.model});
     world.add<ObjectTag>(e, {"cannon", o.name});
     Cannon cannon;
     cannon.player = o.player;

@@ -58,6 +58,7 @@ ecs::Entity spawnFishSchool(ecs::World& world, const ObjectDef& o, uint64_t seed
     s.length = o.length;
     s.draw = o.draw;
     s.color = o.color;
+    s.model = o.model;
     s.sphere = boundingSphereFor(o, paperFishSphere(o.length), rippleCellSize(world));
     s.sphere.direction = interaction::SphereDirection::Auto;  // SD follows the vertical motion in either case
     s.rng = seed * 0x2545F4914F6CDD1Dull + 0x9E3779B97F4A7C15ull;
@@ -178,7 +179,8 @@ void fishStampSystem(ecs::World& world, const ecs::Tick&) {
 void appendFishDraws(ecs::World& world, std::vector<gfx::ObjectDraw>& draws) {
     for (const FishSchool& s : world.pool<FishSchool>().components()) {
         if (!s.draw) continue;
-        const glm::vec3 scale = s.length * glm::vec3(0.09f, 0.12f, 0.5f);  // unit sphere → body
+        // A model is 1 m long; the built-in unit sphere becomes an ellipsoid body.
+        const glm::vec3 scale = s.model.empty() ? s.length * glm::vec3(0.09f, 0.12f, 0.5f) : glm::vec3(s.length);
         const size_t n = std::min(s.size(), MAX_DRAWN_FISH);
         for (size_t i = 0; i < n; ++i) {
             glm::vec3 v = s.velocity[i];
@@ -187,7 +189,7 @@ void appendFishDraws(ecs::World& world, std::vector<gfx::ObjectDraw>& draws) {
             const glm::vec3 up = std::abs(glm::normalize(v).y) > 0.99f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
             const glm::quat q = glm::quatLookAtRH(-glm::normalize(v), up);
             glm::mat4 model = glm::translate(glm::mat4(1.0f), s.position[i]) * glm::mat4_cast(q) * glm::scale(glm::mat4(1.0f), scale);
-            draws.push_back({gfx::MeshKind::Sphere, model, s.color, ""});
+            draws.push_back({gfx::MeshKind::Sphere, model, s.color, s.model});
         }
     }
 }

@@ -27,6 +27,7 @@ struct FishSchool {
     float length = 0.6f;          ///< body length, m
     bool draw = true;             ///< drawn by the opaque pass
     glm::vec3 color{0.6f};        ///< body colour
+    std::string model;            ///< glTF fish (1 m long, nose +z), scaled by length; "" = built-in ellipsoid
     interaction::BoundingSphere sphere;  ///< every fish's bounding sphere
     uint64_t rng = 1;             ///< state of the school's random sequence (jump timing)
     // --- per fish

@@ -95,7 +95,9 @@ static ecs::Entity spawnFloatingBody(ecs::World& world, const ObjectDef& o) {
     start.position = o.position;
     start.linearVelocity = o.velocity;
     physics::BodyId id = sphere ? physicsWorld.addSphere(o.radius, mass, start) : physicsWorld.addBox(o.size * 0.5f, mass, start);
-    Renderable look{sphere ? gfx::MeshKind::Sphere : gfx::MeshKind::Box, sphere ? glm::vec3(o.radius) : o.size * 0.5f, o.color, o.model};
+    // Built-in meshes are unit shapes; a box's model is in metres, a sphere's of radius 1.
+    const glm::vec3 boxScale = o.model.empty() ? o.size * 0.5f : glm::vec3(1.0f);
+    Renderable look{sphere ? gfx::MeshKind::Sphere : gfx::MeshKind::Box, sphere ? glm::vec3(o.radius) : boxScale, o.color, o.model};
     ecs::Entity e = spawnBody(world, o.type, o.name, id, probesFor(o), volume, mass, start, look);
     interaction::BoundingSphere paper;
     paper.radius = sphere ? o.radius : 0.5f * std::min({o.size.x, o.size.y, o.size.z});

@@ -55,7 +55,8 @@ ecs::Entity spawnShip(ecs::World& world, const ObjectDef& o) {
     start.rotation = glm::angleAxis(glm::radians(o.yaw_deg), glm::vec3(0, 1, 0));
     start.linearVelocity = o.velocity;
     physics::BodyId id = physicsWorld.addBox(SHIP_HULL * 0.5f, mass, start);
-    Renderable look{gfx::MeshKind::Box, SHIP_HULL * 0.5f, o.color, o.model};
+    // A model is in metres (the hull box is its hull); the built-in unit box is scaled to the hull.
+    Renderable look{gfx::MeshKind::Box, o.model.empty() ? SHIP_HULL * 0.5f : glm::vec3(1.0f), o.color, o.model};
     ecs::Entity e = spawnBody(world, "ship", o.name, id, latticeProbes(SHIP_HULL, PROBES), volume, mass, start, look);
     world.get<Body>(e).horizontalDrag = 0.0f;  // the hull model below resists horizontal motion
 
