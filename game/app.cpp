@@ -133,23 +133,25 @@ int runScene(const SceneDef& scene, const std::string& scenePath, const RunOptio
     }
     logInfo("%s: %s", platform->name(), gfx::glRendererName());
 
-    Sandbox sandbox(scene);
-    sandbox.attachPlatform(*platform, !platform->headless());
-    std::unique_ptr<Clock> clock;
-    if (options.realTime) clock = std::make_unique<SteadyClock>();
-    else clock = std::make_unique<FixedStepClock>(1.0 / scene.sim.step_hz);
+    auto sandbox = std::make_unique<Sandbox>(scene);
+    sandbox->attachPlatform(*platform, !platform->headless());
+    auto makeClock = [&](const SceneDef& s) -> std::unique_ptr<Clock> {
+        if (options.realTime) return std::make_unique<SteadyClock>();
+        return std::make_unique<FixedStepClock>(1.0 / s.sim.step_hz);
+    };
+    std::unique_ptr<Clock> clock = makeClock(scene);
 
     // The run ends after `frames` frames, or once the simulation reaches `endTime`.
     const bool bounded = options.frames > 0 || options.endTime > 0.0;
     const bool progress = bounded && platform->headless() && isatty(STDERR_FILENO);
     const long expected = options.frames > 0 ? options.frames : long(std::ceil(options.endTime * scene.sim.step_hz - 1e-6));
-    for (long f = 0; bounded || !sandbox.quitRequested(); ++f) {
-        sandbox.frame(clock->now());
-        if (sandbox.quitRequested()) break;
+    for (long f = 0; bounded || !sandbox->quitRequested(); ++f) {
+        sandbox->frame(clock->now());
+        if (sandbox->quitRequested()) break;
         const bool last = (options.frames > 0 && f + 1 >= options.frames) ||
-                          (options.endTime > 0.0 && sandbox.schedule().simTime() >= options.endTime - 1e-9);
+                          (options.endTime > 0.0 && sandbox->schedule().simTime() >= options.endTime - 1e-9);
         // Read back before present: the window's back buffer is undefined after a swap.
-        for (const std::string& file : sandbox.takeScreenshotRequests()) {
+        for (const std::string& file : sandbox->takeScreenshotRequests()) {
             gfx::writeScreenshot(file, platform->framebufferSize());
             logInfo("screenshot written to %s", file.c_str());
         }
@@ -159,12 +161,20 @@ int runScene(const SceneDef& scene, const std::string& scenePath, const RunOptio
             std::fprintf(stderr, "\roceanbox: frame %ld/%ld (%3.0f%%)%s", f + 1, expected,
                          100.0 * double(f + 1) / double(std::max(expected, 1L)), last ? "\n" : "");
         if (last) break;
+        // The UI's "restart with these settings": a new world on the same window.
+        if (std::optional<SceneDef> edited = sandbox->takeRestartRequest()) {
+            logInfo("restarting the scene with the edited settings");
+            sandbox.reset();
+            sandbox = std::make_unique<Sandbox>(*edited);
+            sandbox->attachPlatform(*platform, !platform->headless());
+            clock = makeClock(*edited);
+        }
     }
-    sandbox.schedule().finish();
+    sandbox->schedule().finish();
     if (!bounded && !options.screenshot.empty())
         logWarn("--screenshot needs --frames N (or [sim] end_time); no screenshot written");
 
-    if (!options.stats.empty()) writeStats(options.stats, sandbox, scenePath, *platform);
+    if (!options.stats.empty()) writeStats(options.stats, *sandbox, scenePath, *platform);
     if (!options.screenshot.empty() && bounded) logInfo("screenshot written to %s", options.screenshot.c_str());
     if (gfx::glErrorCount() > 0) {
         logWarn("%d GL error(s) were reported during the run", gfx::glErrorCount());

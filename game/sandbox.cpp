@@ -52,7 +52,7 @@ void renderSystem(ecs::World& world, const ecs::Tick& tick) {
     if (!passes.empty()) res->timer->setGpu(ecs::Phase::Render, gpuMs);
     if (res->ui) {
         res->ui->begin();
-        drawPanels(world, *res->scene, *res->timer);
+        drawPanels(world, *res->scene, *res->timer, *res->restart);
         res->ui->end();
     }
 }
@@ -99,7 +99,7 @@ void Sandbox::attachPlatform(platform::Platform& platform, bool withUi) {
     attachWaterGpu(m_world);
     if (withUi && platform.nativeWindow()) m_ui = std::make_unique<gfx::UiOverlay>(platform.nativeWindow());
     m_world.setResource(std::make_unique<FrameResources>(
-        FrameResources{&platform, m_renderer.get(), m_ui.get(), &m_schedule.timer(), &m_scene}));
+        FrameResources{&platform, m_renderer.get(), m_ui.get(), &m_schedule.timer(), &m_scene, &m_restart}));
 }
 
 std::vector<std::string> Sandbox::takeScreenshotRequests() {

@@ -7,6 +7,8 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -24,6 +26,7 @@ struct FrameResources {
     gfx::UiOverlay* ui = nullptr;          ///< window mode only
     ecs::FrameTimer* timer = nullptr;
     SceneDef* scene = nullptr;             ///< live-edited by the UI
+    std::optional<SceneDef>* restart = nullptr;  ///< set by the UI: rebuild the world from this scene
 };
 
 class Sandbox {
@@ -40,6 +43,8 @@ public:
     /// Hash of the simulation state (bit-exact: equal hashes mean equal states).
     uint64_t stateHash();
     bool quitRequested();
+    /// The scene the UI asked to restart with (validated), once.
+    std::optional<SceneDef> takeRestartRequest() { return std::exchange(m_restart, std::nullopt); }
     /// PNG files the timeline asked for since the last call (write them after the frame).
     std::vector<std::string> takeScreenshotRequests();
 
@@ -53,6 +58,7 @@ private:
     ecs::Schedule m_schedule;
     std::unique_ptr<gfx::Renderer> m_renderer;
     std::unique_ptr<gfx::UiOverlay> m_ui;
+    std::optional<SceneDef> m_restart;
 };
 
 } // namespace ob::game

@@ -1,13 +1,15 @@
-// Stats (per-phase ms), the player's ship and cannon, live settings (the [render] keys,
-// edited through their schema) and "save scene as".
+// Stats (per-phase ms and their graph), the player's ship and cannon, live settings (the
+// [render] keys), every other scene key on a copy applied by restarting, "save scene as".
 #include "ui_panels.h"
 
 #include "cannon.h"
+#include "core/error.h"
 #include "core/toml_writer.h"
 #include "ecs/components.h"
 #include "gfx/ui_overlay.h"
 #include "ship.h"
 
+#include <cfloat>
 #include <fstream>
 #include <imgui.h>
 
@@ -18,6 +20,62 @@ std::string saveScene(SceneDef& scene, const std::string& path) {
     if (!out) return "cannot write '" + path + "'";
     out << "# Saved from oceanbox: the keys that differ from the defaults.\n" << writeToml(scene);
     return out ? "" : "cannot write '" + path + "'";
+}
+
+std::string checkEditedScene(SceneDef& scene) {
+    try {
+        parseScene(writeToml(scene), "edited scene");
+        return "";
+    } catch (const InputError& e) {
+        return e.what();
+    }
+}
+
+// The last frames' CPU ms per phase and frame ms, as lines.
+static void timingGraph(const ecs::FrameTimer& timer) {
+    static constexpr size_t HISTORY = 240;
+    auto plot = [](const char* label, const std::vector<double>& samples) {
+        const size_t n = std::min(samples.size(), HISTORY);
+        if (n == 0) return;
+        float values[HISTORY];
+        for (size_t i = 0; i < n; ++i) values[i] = float(samples[samples.size() - n + i]);
+        ImGui::PlotLines(label, values, int(n), 0, nullptr, 0.0f, FLT_MAX, ImVec2(0, 36));
+    };
+    plot("frame ms", timer.frameSamples());
+    for (int p = 0; p < ecs::PHASE_COUNT; ++p) plot(ecs::phaseName(ecs::Phase(p)), timer.cpuSamples(ecs::Phase(p)));
+}
+
+// Every other section, edited on a copy; applied by rebuilding the world from it.
+static void sceneEditor(const SceneDef& scene, std::optional<SceneDef>& restart) {
+    static SceneDef edited;
+    static const SceneDef* source = nullptr;
+    static std::string problem;
+    if (source != &scene) {
+        edited = scene;
+        source = &scene;
+        problem.clear();
+    }
+    if (!ImGui::CollapsingHeader("scene (applied on restart)")) return;
+    gfx::UiEditor editor;
+    editor.section("sim", edited.sim);
+    editor.section("camera", edited.camera);
+    editor.section("ocean", edited.ocean);
+    editor.section("gerstner", edited.gerstner);
+    editor.section("ripples", edited.ripples);
+    editor.section("physics", edited.physics);
+    editor.list("objects", edited.objects, "");
+    editor.list("events", edited.events, "");
+    if (ImGui::Button("restart with these settings")) {
+        edited.render = scene.render;  // the live [render] keys carry over
+        problem = checkEditedScene(edited);
+        if (problem.empty()) restart = edited;
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("revert")) {
+        edited = scene;
+        problem.clear();
+    }
+    if (!problem.empty()) ImGui::TextWrapped("%s", problem.c_str());
 }
 
 static void playerPanel(ecs::World& world) {
@@ -39,7 +97,7 @@ static void playerPanel(ecs::World& world) {
     ImGui::TextDisabled("W/S throttle  A/D rudder  arrows aim  Space fire  F fish  F12 shot  P pause");
 }
 
-void drawPanels(ecs::World& world, SceneDef& scene, const ecs::FrameTimer& timer) {
+void drawPanels(ecs::World& world, SceneDef& scene, const ecs::FrameTimer& timer, std::optional<SceneDef>& restart) {
     ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
     ImGui::Begin("oceanbox");
     const auto& frames = timer.frameSamples();
@@ -64,9 +122,11 @@ void drawPanels(ecs::World& world, SceneDef& scene, const ecs::FrameTimer& timer
         }
         ImGui::EndTable();
     }
+    if (ImGui::CollapsingHeader("timing graph")) timingGraph(timer);
     playerPanel(world);
     gfx::UiEditor editor;
     editor.section("render", scene.render);
+    sceneEditor(scene, restart);
 
     // --- save scene as
     static char path[256] = "saved_scene.toml";

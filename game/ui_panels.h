@@ -4,12 +4,18 @@
 #include "ecs/schedule.h"
 #include "scene.h"
 
+#include <optional>
 #include <string>
 
 namespace ob::game {
 
-/// Draws the panels (inside an ImGui frame).
-void drawPanels(ecs::World& world, SceneDef& scene, const ecs::FrameTimer& timer);
+/// Draws the panels (inside an ImGui frame). [render] keys apply live; the other sections
+/// are edited on a copy that "restart with these settings" hands to `restart` once valid.
+void drawPanels(ecs::World& world, SceneDef& scene, const ecs::FrameTimer& timer, std::optional<SceneDef>& restart);
+
+/// Checks an edited scene as a scene file would be checked (written as TOML, read back):
+/// "" when valid, else the loader's messages.
+std::string checkEditedScene(SceneDef& scene);
 
 /// Writes the scene as TOML (the keys that differ from the defaults) to `path`; returns ""
 /// or what went wrong.
