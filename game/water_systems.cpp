@@ -47,7 +47,10 @@ void attachWaterGpu(ecs::World& world) {
         logWarn("ocean: compute shaders unavailable, using the CPU backend");
         gpu = false;
     }
-    if (gpu) ocean->gpu = std::make_unique<ocean::OceanFftGpu>(ocean->def);
+    if (gpu) {
+        ocean->gpu = std::make_unique<ocean::OceanFftGpu>(ocean->def);
+        ocean->cpuNext = std::make_unique<ocean::OceanFftCpu>(ocean->def);
+    }
     logInfo("ocean: %s backend, %d² × %d cascade(s)", gpu ? "gpu (compute shaders)" : "cpu (FFTW)", ocean->def.resolution,
             ocean->def.cascades);
 }
@@ -57,8 +60,20 @@ void oceanSystem(ecs::World& world, const ecs::Tick& tick) {
     if (!ocean) return;
     // The state after this step is the state at its end time.
     ocean->mapsTime = tick.time + tick.dt;
-    ocean->cpu->update(ocean->mapsTime);
+    if (ocean->prefetch.valid()) ocean->prefetch.get();
+    if (ocean->cpuNext && ocean->prefetchTime == ocean->mapsTime) {
+        std::swap(ocean->cpu, ocean->cpuNext);
+        ocean->water->setFft(ocean->cpu.get());
+    } else {
+        ocean->cpu->update(ocean->mapsTime);
+    }
     ocean->water->update(ocean->mapsTime);
+    if (ocean->cpuNext) {
+        // The next step's end time as the schedule will compute it (step / rate + step length);
+        // should the bits differ, the next step computes its maps itself.
+        ocean->prefetchTime = double(tick.step + 1) / (1.0 / tick.dt) + tick.dt;
+        ocean->prefetch = std::async(std::launch::async, [fft = ocean->cpuNext.get(), t = ocean->prefetchTime] { fft->update(t); });
+    }
 }
 
 void addRipples(ecs::World& world, const interaction::RippleDef& def, float stepSeconds) {

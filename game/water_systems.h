@@ -6,6 +6,7 @@
 #include "interaction/ripple_def.h"
 #include "ocean/ocean_def.h"
 
+#include <future>
 #include <memory>
 #include <vector>
 
@@ -29,6 +30,11 @@ struct OceanState {
     ocean::OceanDef def;
     std::vector<ocean::GerstnerWave> waves;        ///< explicit + spectrum-generated Gerstner waves
     std::unique_ptr<ocean::OceanFftCpu> cpu;       ///< FFTW maps (the CPU backend, and the query's data)
+    /// With the GPU backend the query's maps of the next step are computed on another thread
+    /// while this frame renders (the step times are known ahead); null otherwise.
+    std::unique_ptr<ocean::OceanFftCpu> cpuNext;
+    std::future<void> prefetch;                    ///< cpuNext->update(prefetchTime) in flight
+    double prefetchTime = -1.0;
     std::unique_ptr<water::CompositeWater> water;  ///< the WaterQuery: Gerstner + cascades + ripples
     double mapsTime = -1.0;                        ///< time of the CPU maps (s)
     // GPU side (null in a pure simulation)

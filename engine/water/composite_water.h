@@ -75,6 +75,9 @@ public:
     CompositeWater(std::span<const ocean::GerstnerWave> waves, float gravity,
                    const ocean::OceanFftCpu* fft = nullptr, CompositeSettings settings = {});
 
+    /// Points the query at another CPU ocean of the same resolution and cascades (the double
+    /// buffer of a prefetched step); update() then records its maps.
+    void setFft(const ocean::OceanFftCpu* fft) { m_fft = fft; }
     /// Sets the ripple layer (replaces any earlier hook).
     void setRipple(RippleHook hook);
     /// Sets the time, seconds, and records the FFT's new maps for its rates. Call once per

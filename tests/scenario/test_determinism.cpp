@@ -41,3 +41,7 @@ TEST_CASE("two headless runs of 120 frames report the same state hash", "[determ
     CHECK(a == cliHash(""));
     CHECK(a != cliHash("--set camera.follow_height_m=8"));
 }
+
+TEST_CASE("the GPU ocean backend (whose query maps are computed a step ahead on another thread) gives the CPU backend's state hash", "[determinism]") {
+    CHECK(cliHash("--set ocean.backend=gpu") == cliHash("--set ocean.backend=cpu"));
+}
