@@ -4,36 +4,18 @@
 #include "gfx/renderer.h"
 #include "platform/platform.h"
 #include "sandbox.h"
+#include "support/test_image.h"
 #include "support/test_support.h"
 
 #include <catch2/catch.hpp>
-#include <stb_image.h>
 
 using namespace ob;
+using test::Image;
+using test::loadPng;
 
 namespace {
 
-struct Image {
-    int w = 0, h = 0;
-    std::vector<unsigned char> rgb;
-    glm::vec3 mean(int x0, int y0, int x1, int y1) const {  // rows top-down, [x0,x1)×[y0,y1)
-        glm::dvec3 sum(0.0);
-        for (int y = y0; y < y1; ++y)
-            for (int x = x0; x < x1; ++x)
-                for (int c = 0; c < 3; ++c) sum[c] += rgb[size_t((y * w + x) * 3 + c)];
-        return glm::vec3(sum / double((x1 - x0) * (y1 - y0)) / 255.0);
-    }
-};
 
-Image loadPng(const std::string& path) {
-    Image img;
-    int n = 0;
-    unsigned char* data = stbi_load(path.c_str(), &img.w, &img.h, &n, 3);
-    REQUIRE(data);
-    img.rgb.assign(data, data + size_t(img.w) * size_t(img.h) * 3);
-    stbi_image_free(data);
-    return img;
-}
 
 } // namespace
 

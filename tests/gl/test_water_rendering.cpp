@@ -6,6 +6,7 @@
 #include "gfx/shader.h"
 #include "platform/platform.h"
 #include "sandbox.h"
+#include "support/test_image.h"
 #include "support/test_support.h"
 
 #include <catch2/catch.hpp>
@@ -13,9 +14,10 @@
 #include <cstdlib>
 #include <filesystem>
 #include <glm/gtc/matrix_transform.hpp>
-#include <stb_image.h>
 
 using namespace ob;
+using test::Image;
+using test::loadPng;
 namespace fs = std::filesystem;
 
 namespace {
@@ -69,23 +71,6 @@ Coverage coverage(const std::vector<glm::vec4>& texels, glm::ivec2 size) {
     return c;
 }
 
-struct Image {
-    int w = 0, h = 0;
-    std::vector<unsigned char> rgb;
-    glm::vec3 mean(int x0, int y0, int x1, int y1) const {  // rows top-down, [x0,x1)×[y0,y1)
-        glm::dvec3 sum(0.0);
-        for (int y = y0; y < y1; ++y)
-            for (int x = x0; x < x1; ++x)
-                for (int c = 0; c < 3; ++c) sum[c] += rgb[size_t((y * w + x) * 3 + c)];
-        return glm::vec3(sum / double((x1 - x0) * (y1 - y0)) / 255.0);
-    }
-    // Largest channel difference to `o` over rows [y0, y1).
-    int maxDifference(const Image& o, int y0, int y1) const {
-        int d = 0;
-        for (size_t i = size_t(y0 * w * 3); i < size_t(y1 * w * 3); ++i) d = std::max(d, std::abs(int(rgb[i]) - int(o.rgb[i])));
-        return d;
-    }
-};
 
 // A level camera 4 m above the sea looking along −z; a red box ("ship") afloat 25 m ahead.
 const char* SHIP_SCENE = R"(
@@ -116,12 +101,8 @@ Image renderShipScene(glm::ivec2 size, const std::vector<std::string>& overrides
     std::string path = test::tempPath("ship.png");
     gfx::writeScreenshot(path, size);
     CHECK(gfx::glErrorCount() == errorsBefore);
-    Image img;
-    int n = 0;
-    unsigned char* data = stbi_load(path.c_str(), &img.w, &img.h, &n, 3);
-    REQUIRE(data);
-    img.rgb.assign(data, data + size_t(img.w) * size_t(img.h) * 3);
-    stbi_image_free(data);
+    Image img = loadPng(path);
+    REQUIRE(img.w == size.x);
     return img;
 }
 

@@ -36,3 +36,21 @@ std::string writeFile(const std::string& path, const std::string& text) {
 }
 
 } // namespace ob::test
+
+#include "support/test_image.h"
+
+#include <stb_image.h>
+
+namespace ob::test {
+
+Image loadPng(const std::string& path) {
+    Image img;
+    int n = 0;
+    unsigned char* data = stbi_load(path.c_str(), &img.w, &img.h, &n, 3);
+    if (!data) return Image{};
+    img.rgb.assign(data, data + size_t(img.w) * size_t(img.h) * 3);
+    stbi_image_free(data);
+    return img;
+}
+
+} // namespace ob::test
