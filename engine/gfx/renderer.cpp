@@ -178,7 +178,7 @@ void Renderer::render(const CameraView& camera, const WaterView& water, const st
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glBindBufferBase(GL_UNIFORM_BUFFER, FRAME_UBO_BINDING, m_frameUniforms[MAIN_VIEW].id());
     opaquePass(objects);
-    waterPass(camera, water);
+    waterPass(camera, water, internal.y);
     skyPass();  // last: it shades only the pixels nothing else covered
     if (upscale)
         glBlitNamedFramebuffer(m_internal.framebuffer.id(), 0, 0, 0, internal.x, internal.y, 0, 0, size.x, size.y,
@@ -337,11 +337,13 @@ void Renderer::uploadWaterUniforms(const CameraView& camera, const WaterView& wa
     glBindTextureUnit(RIPPLES_UNIT, u.rippleParams.w > 0.0f ? m_rippleTexture.id() : 0);
 }
 
-void Renderer::waterPass(const CameraView& camera, const WaterView& water) {
+void Renderer::waterPass(const CameraView& camera, const WaterView& water, int internalHeight) {
     if (!ocean::projectedGridCorners(camera.projection * camera.view, camera.position, GRID_MARGIN).visible) return;
     // Software rasterisers shade vertices on one thread: a coarser grid there.
-    const float autoCells = (isSoftwareRenderer() ? 128.0f : 512.0f) * m_def.resolution_scale;
-    int resolution = std::max(m_def.grid_resolution > 0 ? m_def.grid_resolution : int(autoCells), 16);
+    // Auto: a grid row per 3 px of internal height on a GPU, per 6 px on a software rasteriser
+    // (which shades vertices on one thread), within [32, 512].
+    const int autoCells = std::clamp(internalHeight / (isSoftwareRenderer() ? 6 : 3), 32, 512);
+    int resolution = std::max(m_def.grid_resolution > 0 ? m_def.grid_resolution : autoCells, 16);
     if (m_gridResolution != resolution) buildGrid(resolution);
     glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, WATER_PASS, -1, "water");
     m_passTimers[WATER_PASS].begin();

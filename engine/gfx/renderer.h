@@ -111,7 +111,7 @@ private:
     void reflectionPass(const std::vector<ObjectDraw>& objects);  // in: mirrored view, objects; out: m_reflection
     void refractionPass(const std::vector<ObjectDraw>& objects);  // in: camera view, objects; out: m_refraction colour + depth
     void opaquePass(const std::vector<ObjectDraw>& objects);      // in: camera view, objects; out: framebuffer colour, depth
-    void waterPass(const CameraView& camera, const WaterView& water);  // in: water layers, targets, sky; out: framebuffer
+    void waterPass(const CameraView& camera, const WaterView& water, int internalHeight);  // in: water layers, targets, sky; out: framebuffer
     void skyPass();  // in: sky cube, depth; out: colour where nothing was drawn
 
     void drawObjects(const std::vector<ObjectDraw>& objects, View view);

@@ -22,7 +22,7 @@ template <class V> void describe(V& v, RippleReferenceDef& d) {
 /// The ripple patch: a height field in a square of the world that objects disturb.
 struct RippleDef {
     bool enabled = true;                 ///< false: no ripple layer at all
-    std::string backend = "auto";        ///< "cpu", "gpu" (compute shaders), "auto": gpu on a hardware GPU, cpu on software rendering
+    std::string backend = "auto";        ///< "cpu", "gpu" (compute shaders), "auto": gpu on a hardware GPU from 2048² cells, else cpu
     int resolution = 256;                ///< N, cells per side; power of two in [16, 4096]
     float cell_size = 0.25f;             ///< Δ, metres per cell, [0.01, 100]
     float damping = 0.95f;               ///< DF of eq. 2, [0, 1]: 0 kills a wave next step, 1 never damps

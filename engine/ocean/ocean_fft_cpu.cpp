@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <mutex>
 #include <string>
+#include <algorithm>
 #include <thread>
 #include <fftw3.h>
 #include <unistd.h>
@@ -20,10 +21,12 @@ namespace ob::ocean {
 
 namespace {
 
-// update() splits over two threads from this N on. Measured (2-core EPYC, FFTW 3.3.10):
+// update() splits over threads (up to MAX_THREADS, one whole transform each at a time, so
+// the bits do not depend on the count) from this N on. Measured (2-core EPYC, FFTW 3.3.10):
 // N = 128 takes 0.15 ms on one thread, 0.17 ms on two (thread start and barriers cost more
 // than they save); N = 256 takes 0.8 ms on one, 0.5 ms on two.
 constexpr int PARALLEL_MIN_N = 256;
+constexpr unsigned MAX_THREADS = 4;
 constexpr int BLOCK = 16;  // see spectrum.cpp: whole blocks vectorise at -O2
 
 // The FFTW planner (and plan destruction, wisdom I/O) is not thread-safe; fftwf_execute is.
@@ -116,8 +119,8 @@ OceanFftCpu::OceanFftCpu(const OceanDef& def, int threads) {
     validateOceanDef(def, 4096);
     m_n = def.resolution;
     m_lambda = -def.choppiness;
-    const bool twoCores = std::thread::hardware_concurrency() >= 2;
-    m_threads = threads > 0 ? threads : (m_n >= PARALLEL_MIN_N && twoCores ? 2 : 1);
+    const int cores = int(std::clamp(std::thread::hardware_concurrency(), 1u, MAX_THREADS));
+    m_threads = threads > 0 ? threads : (m_n >= PARALLEL_MIN_N ? cores : 1);
     for (int c = 0; c < def.cascades; ++c) m_cascades.push_back(std::make_unique<Cascade>(def, c));
 
     // One plan serves every buffer: same size, in place, fftwf_alloc alignment.
