@@ -183,7 +183,17 @@ int benchSpheres(const SpheresBenchArgs& a) {
 
 void addBenchCommand(CLI::App& app, std::function<int()>& action, const std::string& commandLine) {
     CLI::App* bench = app.add_subcommand("bench", "benchmarks that reproduce the papers' tables (spheres, fields, ocean, frame)");
-    bench->require_subcommand(1);
+    bench->require_subcommand(0, 1);
+    bench->callback([&action, bench] {
+        if (!bench->get_subcommands().empty()) return;
+        std::string got;
+        for (const std::string& word : bench->remaining()) got += (got.empty() ? "" : " ") + word;
+        action = [got] {
+            throw InputError("bench: expected a kind, spheres, fields, ocean or frame" +
+                             (got.empty() ? std::string() : ", got '" + got + "'"));
+            return EXIT_BAD_INPUT;
+        };
+    });
 
     // bench spheres
     auto spheres = std::make_shared<SpheresBenchArgs>();
@@ -242,6 +252,10 @@ void addBenchCommand(CLI::App& app, std::function<int()>& action, const std::str
     r->add_option("--set", frame->sets, "override a scene key: key.path=value (repeatable)");
     addOutputFlags(r, frame->output);
     r->callback([&action, frame] { action = [frame] { return benchFrame(*frame); }; });
+
+    // A word that is no kind lands in bench's extras and is named in the message (set after
+    // the subcommands, which would otherwise inherit it).
+    bench->allow_extras();
 }
 
 } // namespace ob::game

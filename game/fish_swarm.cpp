@@ -15,8 +15,10 @@ namespace ob::game {
 namespace {
 
 constexpr float GRAVITY = 9.81f;  // m/s²
-// Fish per parallel chunk: below it a worker costs more than the fish it would take.
-constexpr int MIN_FISH_PER_CHUNK = 4096;
+// Fish per chunk of the parallel passes (at most MAX_CHUNKS chunks): below it a worker costs
+// more than the fish it would take.
+constexpr int FISH_PER_CHUNK = 8192;
+constexpr int MAX_CHUNKS = 64;
 
 using Ms = std::chrono::duration<double, std::milli>;
 double msSince(std::chrono::steady_clock::time_point t0) { return Ms(std::chrono::steady_clock::now() - t0).count(); }
@@ -45,6 +47,10 @@ FishSwarm::FishSwarm(const FishSwarmDef& def)
     m_cx.resize(n);
     m_cz.resize(n);
     m_verdict.resize(n);
+    const int chunks = std::clamp(def.count / FISH_PER_CHUNK, 1, MAX_CHUNKS);
+    m_chunkStamps.resize(size_t(chunks));
+    m_chunkFirst.resize(size_t(chunks));
+    m_chunkFirstContacts.resize(size_t(chunks));
     std::mt19937_64 rng(def.seed);
     std::uniform_real_distribution<float> across(0.0f, float(def.field - 1));
     std::uniform_real_distribution<float> heading(0.0f, 2.0f * std::numbers::pi_v<float>);
@@ -63,33 +69,18 @@ FishSwarm::FishSwarm(const FishSwarmDef& def)
 }
 
 void FishSwarm::step() {
-    const int n = m_def.count;
+    if (m_def.mode == StampMode::Batched) {
+        stepBatched();
+        return;
+    }
     // --- the surface each fish sees: y = 0 plus Vh(t) at its centre cell, before any stamp
     const auto t0 = std::chrono::steady_clock::now();
-    parallelFor(0, n, MIN_FISH_PER_CHUNK, [this](int b, int e) {
-        for (int i = b; i < e; ++i) {
-            const int cx = centreCell(m_gx[size_t(i)]), cz = centreCell(m_gz[size_t(i)]);
-            const bool inside = cx >= 0 && cx < m_field.cols() && cz >= 0 && cz < m_field.rows();
-            m_cx[size_t(i)] = cx;
-            m_cz[size_t(i)] = cz;
-            m_surface[size_t(i)] = inside ? m_field.currentAt(cx, cz) : 0.0f;
-        }
-    });
-    // --- Table 2 and eq. 3–7, in fish order
-    if (m_def.mode == StampMode::Batched) stampBatched();
-    else stampSequential();
-    m_timings.stamp = msSince(t0);
-    // --- move along the arcs
-    const auto t1 = std::chrono::steady_clock::now();
-    move();
-    m_timings.move = msSince(t1);
-    // --- convolution
-    const auto t2 = std::chrono::steady_clock::now();
-    m_field.step(m_def.damping);
-    m_timings.step = msSince(t2);
-}
-
-void FishSwarm::stampSequential() {
+    for (size_t i = 0; i < size_t(m_def.count); ++i) {
+        const int cx = centreCell(m_gx[i]), cz = centreCell(m_gz[i]);
+        const bool inside = cx >= 0 && cx < m_field.cols() && cz >= 0 && cz < m_field.rows();
+        m_surface[i] = inside ? m_field.currentAt(cx, cz) : 0.0f;
+    }
+    // --- Table 2 and eq. 3–7 per fish, in order
     int stamps = 0;
     for (size_t i = 0; i < size_t(m_def.count); ++i) {
         interaction::SphereMotion m;
@@ -101,68 +92,106 @@ void FishSwarm::stampSequential() {
         stamps += interaction::stepSphere(m_field, m_cache, m_def.cell_size, m_sphere, m_contacts[i], m);
     }
     m_lastStamps = stamps;
+    m_timings.stamp = msSince(t0);
+    // --- move along the arcs
+    const auto t1 = std::chrono::steady_clock::now();
+    for (size_t i = 0; i < size_t(m_def.count); ++i) moveFish(i);
+    m_timings.move = msSince(t1);
+    // --- convolution
+    const auto t2 = std::chrono::steady_clock::now();
+    m_field.step(m_def.damping);
+    m_timings.step = msSince(t2);
 }
 
-void FishSwarm::stampBatched() {
-    const int n = m_def.count;
+void FishSwarm::stepBatched() {
+    const auto t0 = std::chrono::steady_clock::now();
+    const int chunks = int(m_chunkStamps.size());
     const float radius = m_sphere.radius;
-    // Table 2's verdict needs no field read (only eq. 5's base does), so every fish decides
-    // at once; the base of a first contact is filled in below, in order.
-    parallelFor(0, n, MIN_FISH_PER_CHUNK, [this, radius](int b, int e) {
-        for (int i = b; i < e; ++i) {
-            interaction::SphereContact& c = m_contacts[size_t(i)];
-            const bool wasInContact = c.inContact();
-            const bool stamp = interaction::updateContact(c, m_y[size_t(i)], radius, m_surface[size_t(i)], 0.0f);
-            m_verdict[size_t(i)] = uint8_t(stamp) | uint8_t(stamp && !wasInContact) << 1;
+    // --- per fish, in parallel: the surface it sees, Table 2's verdict, then the move. The
+    // verdict needs no field read (only eq. 5's base at a first contact does: filled in below).
+    parallelFor(0, chunks, 1, [this, radius](int c0, int c1) {
+        for (int c = c0; c < c1; ++c) {
+            uint32_t stamps = 0;
+            for (size_t i = chunkBegin(c); i < chunkBegin(c + 1); ++i) {
+                const int cx = centreCell(m_gx[i]), cz = centreCell(m_gz[i]);
+                const bool inside = cx >= 0 && cx < m_field.cols() && cz >= 0 && cz < m_field.rows();
+                const float surface = inside ? m_field.currentAt(cx, cz) : 0.0f;
+                interaction::SphereContact& contact = m_contacts[i];
+                const bool wasInContact = contact.inContact();
+                const bool stamp = interaction::updateContact(contact, m_y[i], radius, surface, 0.0f);
+                m_cx[i] = cx;
+                m_cz[i] = cz;
+                m_verdict[i] = uint8_t(stamp) | uint8_t(stamp && !wasInContact) << 1 | uint8_t(m_vy[i] > 0.0f) << 2;
+                stamps += stamp;
+                moveFish(i);
+            }
+            m_chunkStamps[size_t(c)] = stamps;
         }
     });
-    // Stamps in fish order; a first contact reads Vh(t) at its centre after every earlier
-    // fish's stamp, as stepSphere does.
+    // --- the stamps, in fish order: chunk c's go after every earlier chunk's
     const interaction::FootprintProfile& fp = m_cache.get(m_sphere.radius / m_def.cell_size);
-    const float shr = m_sphere.heightRatio, cell = m_def.cell_size, af = m_sphere.accelerationFactor;
-    const int rows = m_field.rows(), cols = m_field.cols();
-    int stamps = 0;
-    for (size_t i = 0; i < size_t(n); ++i) {
-        const uint8_t verdict = m_verdict[i];
-        if (!verdict) continue;
-        const int cx = m_cx[i], cz = m_cz[i];
-        interaction::SphereContact& c = m_contacts[i];
-        if (verdict & 2) {
-            const bool inside = cx >= 0 && cx < cols && cz >= 0 && cz < rows;
-            c.baseRipple = inside ? m_batch.currentAt(m_field, cx, cz) : 0.0f;
-        }
-        const float sd = m_vy[i] > 0.0f ? 1.0f : -1.0f;
-        m_batch.push(fp, cx, cz, c.baseRipple, sd * shr * cell, af);
-        ++stamps;
+    size_t total = 0;
+    for (int c = 0; c < chunks; ++c) {
+        m_chunkFirst[size_t(c)] = total;
+        total += m_chunkStamps[size_t(c)];
     }
+    const size_t first = m_batch.grow(total);
+    const float shr = m_sphere.heightRatio, cell = m_def.cell_size, af = m_sphere.accelerationFactor;
+    parallelFor(0, chunks, 1, [&](int c0, int c1) {
+        for (int c = c0; c < c1; ++c) {
+            size_t k = first + m_chunkFirst[size_t(c)];
+            std::vector<std::pair<uint32_t, uint32_t>>& firsts = m_chunkFirstContacts[size_t(c)];
+            firsts.clear();
+            for (size_t i = chunkBegin(c); i < chunkBegin(c + 1); ++i) {
+                const uint8_t verdict = m_verdict[i];
+                if (!(verdict & 1)) continue;
+                if (verdict & 2) firsts.emplace_back(uint32_t(k), uint32_t(i));
+                const float sd = verdict & 4 ? 1.0f : -1.0f;
+                m_batch.set(k++, fp, m_cx[i], m_cz[i], m_contacts[i].baseRipple, sd * shr * cell, af);
+            }
+        }
+    });
+    // --- first contacts, in order: eq. 5's base is Vh(t) at the centre after every earlier
+    // fish's stamp, as stepSphere reads it
+    const int rows = m_field.rows(), cols = m_field.cols();
+    for (int c = 0; c < chunks; ++c)
+        for (const auto& [k, i] : m_chunkFirstContacts[size_t(c)]) {
+            const int cx = m_cx[i], cz = m_cz[i];
+            const bool inside = cx >= 0 && cx < cols && cz >= 0 && cz < rows;
+            const float base = inside ? m_batch.currentAt(m_field, cx, cz, k) : 0.0f;
+            m_contacts[i].baseRipple = base;
+            m_batch.setBase(k, base);
+        }
     m_batch.apply(m_field);
-    m_lastStamps = stamps;
+    m_lastStamps = int(total);
+    m_timings.stamp = msSince(t0);
+    m_timings.move = 0.0;  // inside the pass above
+    // --- convolution
+    const auto t2 = std::chrono::steady_clock::now();
+    m_field.step(m_def.damping);
+    m_timings.step = msSince(t2);
 }
 
-void FishSwarm::move() {
-    const float dt = m_dt, depth = m_depth, launch = m_launchSpeed, edge = float(m_def.field - 1);
-    parallelFor(0, m_def.count, MIN_FISH_PER_CHUNK, [&](int b, int e) {
-        for (size_t i = size_t(b); i < size_t(e); ++i) {
-            // Exact ballistic step; at the launch depth a falling fish turns into a new jump.
-            m_y[i] += m_vy[i] * dt - 0.5f * GRAVITY * dt * dt;
-            m_vy[i] -= GRAVITY * dt;
-            if (m_y[i] < -depth && m_vy[i] < 0.0f) {
-                m_y[i] = -2.0f * depth - m_y[i];
-                m_vy[i] = launch;
-            }
-            // Swim in the heading, bouncing off the field's edges.
-            m_gx[i] += m_vx[i] * dt;
-            m_gz[i] += m_vz[i] * dt;
-            if (m_gx[i] < 0.0f || m_gx[i] > edge) {
-                m_gx[i] = std::clamp(m_gx[i] < 0.0f ? -m_gx[i] : 2.0f * edge - m_gx[i], 0.0f, edge);
-                m_vx[i] = -m_vx[i];
-            }
-            if (m_gz[i] < 0.0f || m_gz[i] > edge) {
-                m_gz[i] = std::clamp(m_gz[i] < 0.0f ? -m_gz[i] : 2.0f * edge - m_gz[i], 0.0f, edge);
-                m_vz[i] = -m_vz[i];
-            }
-        }
-    });
+void FishSwarm::moveFish(size_t i) {
+    const float dt = m_dt, edge = float(m_def.field - 1);
+    // Exact ballistic step; at the launch depth a falling fish turns into a new jump.
+    m_y[i] += m_vy[i] * dt - 0.5f * GRAVITY * dt * dt;
+    m_vy[i] -= GRAVITY * dt;
+    if (m_y[i] < -m_depth && m_vy[i] < 0.0f) {
+        m_y[i] = -2.0f * m_depth - m_y[i];
+        m_vy[i] = m_launchSpeed;
+    }
+    // Swim in the heading, bouncing off the field's edges.
+    m_gx[i] += m_vx[i] * dt;
+    m_gz[i] += m_vz[i] * dt;
+    if (m_gx[i] < 0.0f || m_gx[i] > edge) {
+        m_gx[i] = std::clamp(m_gx[i] < 0.0f ? -m_gx[i] : 2.0f * edge - m_gx[i], 0.0f, edge);
+        m_vx[i] = -m_vx[i];
+    }
+    if (m_gz[i] < 0.0f || m_gz[i] > edge) {
+        m_gz[i] = std::clamp(m_gz[i] < 0.0f ? -m_gz[i] : 2.0f * edge - m_gz[i], 0.0f, edge);
+        m_vz[i] = -m_vz[i];
+    }
 }
 
 } // namespace ob::game

@@ -6,6 +6,7 @@
 #include "interaction/stamp_batch.h"
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace ob::game {
@@ -43,6 +44,7 @@ public:
 
     /// One step: Table 2 and the stamps in fish order (seed 001: stamp, then move), the fish
     /// move, then the convolution step (eq. 1–2). Allocates nothing once the batch has grown.
+    /// Batched, the moves run in the Table 2 pass (their time counts as stamping).
     void step();
 
     /// Wall ms of the last step's phases.
@@ -64,9 +66,10 @@ public:
     float worldY(size_t i) const { return m_y[i]; }
 
 private:
-    void stampBatched();
-    void stampSequential();
-    void move();
+    void stepBatched();
+    void moveFish(size_t i);
+    // First fish of chunk c of the parallel passes (c = chunk count: one past the last fish).
+    size_t chunkBegin(int c) const { return size_t(m_def.count) * size_t(c) / m_chunkStamps.size(); }
 
     FishSwarmDef m_def;
     interaction::RippleField m_field;
@@ -78,10 +81,15 @@ private:
     // height (m) and vertical velocity (m/s).
     std::vector<float> m_gx, m_gz, m_vx, m_vz, m_y, m_vy;
     std::vector<interaction::SphereContact> m_contacts;
-    // Per step scratch: surface seen, centre cell, Table 2 verdict (bit 0 stamp, bit 1 first contact).
+    // Per step scratch: surface seen (sequential mode), centre cell, Table 2 verdict (bit 0
+    // stamp, bit 1 first contact, bit 2 rising); per chunk: stamps, index of its first stamp,
+    // its first contacts as (stamp, fish).
     std::vector<float> m_surface;
     std::vector<int> m_cx, m_cz;
     std::vector<uint8_t> m_verdict;
+    std::vector<uint32_t> m_chunkStamps;
+    std::vector<size_t> m_chunkFirst;
+    std::vector<std::vector<std::pair<uint32_t, uint32_t>>> m_chunkFirstContacts;
     Timings m_timings;
     int m_lastStamps = 0;
 };
