@@ -161,10 +161,13 @@ int benchSpheres(const SpheresBenchArgs& a) {
     if (!a.output.out.empty()) table.writeCsv(a.output.out, machine);
     if (!a.output.chart.empty()) {
         Chart chart;
-        chart.title = "Jumping fish: fps against spheres (SR " + cell(a.radiusCells) + ", " + std::to_string(a.field) + "² field)";
+        char title[128];
+        std::snprintf(title, sizeof title, "Jumping fish: fps against spheres (SR %g, %d² field)", double(a.radiusCells), a.field);
+        chart.title = title;
         chart.xLabel = "fish (one bounding sphere each)";
         chart.yLabel = "frames per second";
         chart.logX = true;
+        chart.logY = true;
         chart.series.push_back(ours);
         ChartSeries paper{"seed 001 Table 5 (2.6 GHz CPU, 2008)", {}, {}, true};
         for (const PaperSwarmFps& p : SEED001_TABLE5) {

@@ -48,9 +48,13 @@ FishSwarm::FishSwarm(const FishSwarmDef& def)
     m_cz.resize(n);
     m_verdict.resize(n);
     const int chunks = std::clamp(def.count / FISH_PER_CHUNK, 1, MAX_CHUNKS);
-    m_chunkStamps.resize(size_t(chunks));
+    m_chunkStamping.resize(size_t(chunks));
     m_chunkFirst.resize(size_t(chunks));
     m_chunkFirstContacts.resize(size_t(chunks));
+    for (int c = 0; c < chunks; ++c) {
+        m_chunkStamping[size_t(c)].reserve(chunkBegin(c + 1) - chunkBegin(c));
+        m_chunkFirstContacts[size_t(c)].reserve(chunkBegin(c + 1) - chunkBegin(c));
+    }
     std::mt19937_64 rng(def.seed);
     std::uniform_real_distribution<float> across(0.0f, float(def.field - 1));
     std::uniform_real_distribution<float> heading(0.0f, 2.0f * std::numbers::pi_v<float>);
@@ -105,13 +109,14 @@ void FishSwarm::step() {
 
 void FishSwarm::stepBatched() {
     const auto t0 = std::chrono::steady_clock::now();
-    const int chunks = int(m_chunkStamps.size());
+    const int chunks = int(m_chunkStamping.size());
     const float radius = m_sphere.radius;
     // --- per fish, in parallel: the surface it sees, Table 2's verdict, then the move. The
     // verdict needs no field read (only eq. 5's base at a first contact does: filled in below).
     parallelFor(0, chunks, 1, [this, radius](int c0, int c1) {
         for (int c = c0; c < c1; ++c) {
-            uint32_t stamps = 0;
+            std::vector<uint32_t>& stamping = m_chunkStamping[size_t(c)];
+            stamping.clear();
             for (size_t i = chunkBegin(c); i < chunkBegin(c + 1); ++i) {
                 const int cx = centreCell(m_gx[i]), cz = centreCell(m_gz[i]);
                 const bool inside = cx >= 0 && cx < m_field.cols() && cz >= 0 && cz < m_field.rows();
@@ -121,11 +126,10 @@ void FishSwarm::stepBatched() {
                 const bool stamp = interaction::updateContact(contact, m_y[i], radius, surface, 0.0f);
                 m_cx[i] = cx;
                 m_cz[i] = cz;
-                m_verdict[i] = uint8_t(stamp) | uint8_t(stamp && !wasInContact) << 1 | uint8_t(m_vy[i] > 0.0f) << 2;
-                stamps += stamp;
+                m_verdict[i] = uint8_t(!wasInContact) << 1 | uint8_t(m_vy[i] > 0.0f) << 2;
+                if (stamp) stamping.push_back(uint32_t(i));  // capacity: the chunk's fish
                 moveFish(i);
             }
-            m_chunkStamps[size_t(c)] = stamps;
         }
     });
     // --- the stamps, in fish order: chunk c's go after every earlier chunk's
@@ -133,7 +137,7 @@ void FishSwarm::stepBatched() {
     size_t total = 0;
     for (int c = 0; c < chunks; ++c) {
         m_chunkFirst[size_t(c)] = total;
-        total += m_chunkStamps[size_t(c)];
+        total += m_chunkStamping[size_t(c)].size();
     }
     const size_t first = m_batch.grow(total);
     const float shr = m_sphere.heightRatio, cell = m_def.cell_size, af = m_sphere.accelerationFactor;
@@ -142,10 +146,9 @@ void FishSwarm::stepBatched() {
             size_t k = first + m_chunkFirst[size_t(c)];
             std::vector<std::pair<uint32_t, uint32_t>>& firsts = m_chunkFirstContacts[size_t(c)];
             firsts.clear();
-            for (size_t i = chunkBegin(c); i < chunkBegin(c + 1); ++i) {
+            for (const uint32_t i : m_chunkStamping[size_t(c)]) {
                 const uint8_t verdict = m_verdict[i];
-                if (!(verdict & 1)) continue;
-                if (verdict & 2) firsts.emplace_back(uint32_t(k), uint32_t(i));
+                if (verdict & 2) firsts.emplace_back(uint32_t(k), i);
                 const float sd = verdict & 4 ? 1.0f : -1.0f;
                 m_batch.set(k++, fp, m_cx[i], m_cz[i], m_contacts[i].baseRipple, sd * shr * cell, af);
             }
@@ -172,7 +175,7 @@ void FishSwarm::stepBatched() {
     m_timings.step = msSince(t2);
 }
 
-void FishSwarm::moveFish(size_t i) {
+inline void FishSwarm::moveFish(size_t i) {
     const float dt = m_dt, edge = float(m_def.field - 1);
     // Exact ballistic step; at the launch depth a falling fish turns into a new jump.
     m_y[i] += m_vy[i] * dt - 0.5f * GRAVITY * dt * dt;

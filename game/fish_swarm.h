@@ -69,7 +69,7 @@ private:
     void stepBatched();
     void moveFish(size_t i);
     // First fish of chunk c of the parallel passes (c = chunk count: one past the last fish).
-    size_t chunkBegin(int c) const { return size_t(m_def.count) * size_t(c) / m_chunkStamps.size(); }
+    size_t chunkBegin(int c) const { return size_t(m_def.count) * size_t(c) / m_chunkStamping.size(); }
 
     FishSwarmDef m_def;
     interaction::RippleField m_field;
@@ -81,13 +81,13 @@ private:
     // height (m) and vertical velocity (m/s).
     std::vector<float> m_gx, m_gz, m_vx, m_vz, m_y, m_vy;
     std::vector<interaction::SphereContact> m_contacts;
-    // Per step scratch: surface seen (sequential mode), centre cell, Table 2 verdict (bit 0
-    // stamp, bit 1 first contact, bit 2 rising); per chunk: stamps, index of its first stamp,
-    // its first contacts as (stamp, fish).
+    // Per step scratch: surface seen (sequential mode), centre cell, Table 2 verdict (bit 1
+    // first contact if it stamps, bit 2 rising); per chunk: its stamping fish, the index of its
+    // first stamp, its first contacts as (stamp, fish).
     std::vector<float> m_surface;
     std::vector<int> m_cx, m_cz;
     std::vector<uint8_t> m_verdict;
-    std::vector<uint32_t> m_chunkStamps;
+    std::vector<std::vector<uint32_t>> m_chunkStamping;
     std::vector<size_t> m_chunkFirst;
     std::vector<std::vector<std::pair<uint32_t, uint32_t>>> m_chunkFirstContacts;
     Timings m_timings;

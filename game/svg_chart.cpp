@@ -42,7 +42,8 @@ std::string num(double v) {
 // Tick label: 1, 2.5, 30, 1k, 100k, 0.01.
 std::string tickLabel(double v) {
     char buf[32];
-    if (std::fabs(v) >= 1000 && std::fmod(v, 1000) == 0) std::snprintf(buf, sizeof buf, "%gk", v / 1000);
+    if (std::fabs(v) >= 1e6 && std::fmod(v, 1e6) == 0) std::snprintf(buf, sizeof buf, "%gM", v / 1e6);
+    else if (std::fabs(v) >= 1000 && std::fmod(v, 1000) == 0) std::snprintf(buf, sizeof buf, "%gk", v / 1000);
     else std::snprintf(buf, sizeof buf, "%g", v);
     return buf;
 }
@@ -112,11 +113,16 @@ void header(std::ostringstream& s, double w, double h, const std::string& title)
     s << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << num(w) << "\" height=\"" << num(h)
       << "\" viewBox=\"0 0 " << num(w) << " " << num(h) << "\" font-family=\"sans-serif\" font-size=\"12\">\n";
     s << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-    s << "<text x=\"" << num(w / 2) << "\" y=\"24\" text-anchor=\"middle\" font-size=\"15\">" << escape(title)
+    s << "<text x=\"" << num(std::min(w, WIDTH) / 2) << "\" y=\"24\" text-anchor=\"middle\" font-size=\"15\">" << escape(title)
       << "</text>\n";
 }
 
 std::string lineChart(const Chart& c) {
+    // The legend takes the right side, as wide as its longest label (about 7 px a character).
+    size_t longest = 0;
+    for (const ChartSeries& sr : c.series) longest = std::max(longest, sr.label.size());
+    const double legend = std::max(RIGHT_GAP, 56.0 + 7.0 * double(longest));
+    const double width = WIDTH - RIGHT_GAP + legend;
     const double x0 = LEFT, x1 = WIDTH - RIGHT_GAP, y0 = HEIGHT - BOTTOM_GAP, y1 = TOP;
     std::vector<double> xs, ys;
     for (const ChartSeries& s : c.series)
@@ -128,7 +134,7 @@ std::string lineChart(const Chart& c) {
     const Axis ax = makeAxis(xs, c.logX, x0, x1, true), ay = makeAxis(ys, c.logY, y0, y1, false);
 
     std::ostringstream s;
-    header(s, WIDTH, HEIGHT, c.title);
+    header(s, width, HEIGHT, c.title);
     // --- grid and ticks
     s << "<g stroke=\"#e4e4e4\">\n";
     for (double t : ay.ticks) s << "<line x1=\"" << num(x0) << "\" x2=\"" << num(x1) << "\" y1=\"" << num(ay.map(t)) << "\" y2=\"" << num(ay.map(t)) << "\"/>\n";

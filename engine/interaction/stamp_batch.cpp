@@ -20,9 +20,10 @@ namespace {
 constexpr int TILE = 16;
 
 // A read first walks back over this many newest stamps. In a crowd (100,000 spheres of SR 20
-// over 128² cells, each covering 8 % of the field) one of them covers the cell after about a
-// dozen, and the index is never built; a sparse field falls through to the index.
-constexpr size_t RECENT_SCAN = 96;
+// over 128² cells, each covering 8 % of the field, 2 % of a corner cell's surroundings) one of
+// them covers the cell after a dozen, or a few hundred at the corners, and the index is never
+// built; a sparse field falls through to the index.
+constexpr size_t RECENT_SCAN = 1024;
 
 // The list is applied backwards when its newest stamps cover the interior this many times over;
 // below, forward. Measured on 128² cells (2-core EPYC): 1,000 stamps of SR 5 (4.2 times over)
