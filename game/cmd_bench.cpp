@@ -84,8 +84,10 @@ int benchSpheres(const SpheresBenchArgs& a) {
     checkRange("--frames", a.frames, 1, 1000000);
     checkRange("--warmup", a.warmup, 0, 1000000);
     if (a.seed < 0) throw InputError("--seed: must be >= 0");
+    checkRange("--workers", a.workers, 0, 256);
     const auto [w, h] = parseSize("--size", a.size);
     checkOutputs(a.output);
+    setWorkerCount(a.workers);
 
     // --- optional rendering: the water surface with the ripple layer, headless
     std::unique_ptr<platform::Platform> platform;
@@ -212,6 +214,7 @@ void addBenchCommand(CLI::App& app, std::function<int()>& action, const std::str
     s->add_option("--stamping", spheres->stamping, "batched (default) or sequential (stepSphere per fish, the reference)")
         ->check(CLI::IsMember({"batched", "sequential"}));
     s->add_option("--seed", spheres->seed, "swarm seed (default 1)");
+    s->add_option("--workers", spheres->workers, "worker threads (default 0: every core)");
     addOutputFlags(s, spheres->output);
     s->callback([&action, spheres] { action = [spheres] { return benchSpheres(*spheres); }; });
 

@@ -31,6 +31,7 @@ struct SpheresBenchArgs {
     int frames = 60;           ///< measured frames per count
     int warmup = 20;           ///< frames run first, not measured
     std::string stamping = "batched";  ///< "batched" or "sequential" (stepSphere per fish)
+    int workers = 0;           ///< worker threads, 0 = every core
     long long seed = 1;
 };
 

@@ -17,7 +17,7 @@ namespace {
 constexpr float GRAVITY = 9.81f;  // m/s²
 // Fish per chunk of the parallel passes (at most MAX_CHUNKS chunks): below it a worker costs
 // more than the fish it would take.
-constexpr int FISH_PER_CHUNK = 8192;
+constexpr int FISH_PER_CHUNK = 2048;
 constexpr int MAX_CHUNKS = 64;
 
 using Ms = std::chrono::duration<double, std::milli>;
@@ -117,15 +117,20 @@ void FishSwarm::stepBatched() {
         for (int c = c0; c < c1; ++c) {
             std::vector<uint32_t>& stamping = m_chunkStamping[size_t(c)];
             stamping.clear();
-            for (size_t i = chunkBegin(c); i < chunkBegin(c + 1); ++i) {
+            const size_t begin = chunkBegin(c), end = chunkBegin(c + 1);
+            // The field reads first, in a loop of their own: Table 2's branches hang on the
+            // surface, and waiting for each read there would stall every fish.
+            for (size_t i = begin; i < end; ++i) {
                 const int cx = centreCell(m_gx[i]), cz = centreCell(m_gz[i]);
                 const bool inside = cx >= 0 && cx < m_field.cols() && cz >= 0 && cz < m_field.rows();
-                const float surface = inside ? m_field.currentAt(cx, cz) : 0.0f;
-                interaction::SphereContact& contact = m_contacts[i];
-                const bool wasInContact = contact.inContact();
-                const bool stamp = interaction::updateContact(contact, m_y[i], radius, surface, 0.0f);
                 m_cx[i] = cx;
                 m_cz[i] = cz;
+                m_surface[i] = inside ? m_field.currentAt(cx, cz) : 0.0f;
+            }
+            for (size_t i = begin; i < end; ++i) {
+                interaction::SphereContact& contact = m_contacts[i];
+                const bool wasInContact = contact.inContact();
+                const bool stamp = interaction::updateContact(contact, m_y[i], radius, m_surface[i], 0.0f);
                 m_verdict[i] = uint8_t(!wasInContact) << 1 | uint8_t(m_vy[i] > 0.0f) << 2;
                 if (stamp) stamping.push_back(uint32_t(i));  // capacity: the chunk's fish
                 moveFish(i);

@@ -81,7 +81,7 @@ private:
     // height (m) and vertical velocity (m/s).
     std::vector<float> m_gx, m_gz, m_vx, m_vz, m_y, m_vy;
     std::vector<interaction::SphereContact> m_contacts;
-    // Per step scratch: surface seen (sequential mode), centre cell, Table 2 verdict (bit 1
+    // Per step scratch: surface seen, centre cell, Table 2 verdict (bit 1
     // first contact if it stamps, bit 2 rising); per chunk: its stamping fish, the index of its
     // first stamp, its first contacts as (stamp, fish).
     std::vector<float> m_surface;
