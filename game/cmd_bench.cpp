@@ -118,7 +118,7 @@ int benchSpheres(const SpheresBenchArgs& a) {
                                      : "none (fish not drawn)");
 
     Progress progress("spheres");
-    ChartSeries ours{a.render ? "oceanbox (rendered)" : "oceanbox (no rendering)", {}, {}, false};
+    ChartSeries ours{a.render ? "oceanbox (rendered)" : "oceanbox (no rendering)", {}, {}, false, 0};
     for (size_t k = 0; k < a.counts.size(); ++k) {
         FishSwarmDef def = base;
         def.count = int(a.counts[k]);
@@ -171,7 +171,7 @@ int benchSpheres(const SpheresBenchArgs& a) {
         chart.logX = true;
         chart.logY = true;
         chart.series.push_back(ours);
-        ChartSeries paper{"seed 001 Table 5 (2.6 GHz CPU, 2008)", {}, {}, true};
+        ChartSeries paper{"seed 001 Table 5 (2.6 GHz CPU, 2008)", {}, {}, true, 1};
         for (const PaperSwarmFps& p : SEED001_TABLE5) {
             paper.x.push_back(p.count);
             paper.y.push_back(p.fps);

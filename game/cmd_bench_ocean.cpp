@@ -158,9 +158,13 @@ int benchOcean(const OceanBenchArgs& a) {
 
     Progress progress("ocean");
     std::map<std::string, ChartSeries> series;
+    // Colours pair each of our series with the paper's column it answers.
+    const std::map<std::string, int> colours{{"cpu0", 0}, {"cpu1", 1}, {"cpu2", 2}, {"fftw", 3},
+                                             {"gpu0", 4}, {"gpu1", 5}, {"gpu2", 6}};
     const auto add = [&](const std::string& key, const std::string& label, double x, double y) {
         ChartSeries& sr = series[key];
         sr.label = label;
+        sr.colour = colours.at(key);
         sr.x.push_back(x);
         sr.y.push_back(y);
     };
@@ -214,16 +218,17 @@ int benchOcean(const OceanBenchArgs& a) {
             const char* label;
             double PaperOceanFps::*value;
             bool render;
+            int colour;
         };
-        const Column columns[] = {{"seed 000 T1 sim + render GPU", &PaperOceanFps::simRenderGpu, true},
-                                  {"seed 000 T1 sim + render CPU", &PaperOceanFps::simRenderCpu, true},
-                                  {"seed 000 T2 sim GPU", &PaperOceanFps::simGpu, false},
-                                  {"seed 000 T2 sim CPU", &PaperOceanFps::simCpu, false},
-                                  {"seed 000 T3 FFT GPU", &PaperOceanFps::fftGpu, false},
-                                  {"seed 000 T3 FFTW (P4 3 GHz)", &PaperOceanFps::fftCpuFftw, false}};
+        const Column columns[] = {{"seed 000 T1 sim + render CPU", &PaperOceanFps::simRenderCpu, true, 0},
+                                  {"seed 000 T2 sim CPU", &PaperOceanFps::simCpu, false, 1},
+                                  {"seed 000 T3 FFTW (P4 3 GHz)", &PaperOceanFps::fftCpuFftw, false, 3},
+                                  {"seed 000 T1 sim + render GPU", &PaperOceanFps::simRenderGpu, true, 4},
+                                  {"seed 000 T2 sim GPU", &PaperOceanFps::simGpu, false, 5},
+                                  {"seed 000 T3 FFT GPU", &PaperOceanFps::fftGpu, false, 6}};
         for (const Column& c : columns) {
             if (c.render && a.noRender) continue;
-            ChartSeries paper{c.label, {}, {}, true};
+            ChartSeries paper{c.label, {}, {}, true, c.colour};
             for (const PaperOceanFps& p : SEED000_TABLES) {
                 paper.x.push_back(p.size);
                 paper.y.push_back(p.*c.value);

@@ -89,8 +89,10 @@ int benchFields(const FieldsBenchArgs& a) {
             const std::string what = a.scenes[k] + " " + std::to_string(size) + "²";
             const auto record = [&](const char* render, double ms) {
                 table.addRow({a.scenes[k], std::to_string(size), render, cell(1000.0 / ms), cell(ms)});
+                const bool full = std::string(render) == "full";
                 ChartSeries& sr = series[a.scenes[k] + ", " + render];
-                sr.label = "oceanbox " + a.scenes[k] + (std::string(render) == "full" ? "" : ", spheres only");
+                sr.label = "oceanbox " + a.scenes[k] + (full ? "" : ", spheres only");
+                sr.colour = 2 * int(k) + (full ? 0 : 1);
                 sr.x.push_back(double(size));
                 sr.y.push_back(1000.0 / ms);
             };
@@ -118,13 +120,18 @@ int benchFields(const FieldsBenchArgs& a) {
         chart.logY = true;
         for (auto& [key, sr] : series) chart.series.push_back(sr);
         // The paper's curve for each scene it measured; for scenes it did not, its "all" scene.
-        std::vector<std::string> paperScenes;
-        for (const std::string& s : a.scenes)
+        // Colours: a paper scene takes our scene's pair; the "all" stand-in the next pair.
+        std::vector<std::pair<std::string, int>> paperScenes;
+        for (size_t k = 0; k < a.scenes.size(); ++k)
             for (const PaperFieldFps& p : SEED001_TABLE3)
-                if (s == p.scene && std::find(paperScenes.begin(), paperScenes.end(), s) == paperScenes.end()) paperScenes.push_back(s);
-        if (paperScenes.empty()) paperScenes.push_back("all");
-        for (const std::string& s : paperScenes) {
-            ChartSeries full{"seed 001 Table 3 " + s, {}, {}, true}, only{"seed 001 Table 3 " + s + ", spheres only", {}, {}, true};
+                if (a.scenes[k] == p.scene) {
+                    paperScenes.emplace_back(a.scenes[k], 2 * int(k));
+                    break;
+                }
+        if (paperScenes.empty()) paperScenes.emplace_back("all", 2 * int(a.scenes.size()));
+        for (const auto& [s, colour] : paperScenes) {
+            ChartSeries full{"seed 001 Table 3 " + s, {}, {}, true, colour};
+            ChartSeries only{"seed 001 Table 3 " + s + ", spheres only", {}, {}, true, colour + 1};
             for (const PaperFieldFps& p : SEED001_TABLE3) {
                 if (s != p.scene) continue;
                 full.x.push_back(p.size);

@@ -57,8 +57,11 @@ public:
     /// Spheres that stamped in the last step.
     int lastStamps() const { return m_lastStamps; }
 
+    /// The ripple field the fish stamp.
     const interaction::RippleField& field() const { return m_field; }
+    /// Table 2 state of each fish's sphere, in fish order.
     const std::vector<interaction::SphereContact>& contacts() const { return m_contacts; }
+    /// The settings it was built with.
     const FishSwarmDef& def() const { return m_def; }
     /// Centre of fish i, world m: x = column·Δ, z = row·Δ (cell (0, 0) at the origin), y up.
     float worldX(size_t i) const { return m_gx[i] * m_def.cell_size; }

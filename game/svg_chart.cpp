@@ -154,7 +154,7 @@ std::string lineChart(const Chart& c) {
     // --- series: a polyline and markers each, legend entry on the right
     for (size_t k = 0; k < c.series.size(); ++k) {
         const ChartSeries& sr = c.series[k];
-        const std::string colour = PALETTE[k % std::size(PALETTE)];
+        const std::string colour = PALETTE[size_t(sr.colour >= 0 ? sr.colour : int(k)) % std::size(PALETTE)];
         std::string points;
         std::ostringstream markers;
         for (size_t i = 0; i < std::min(sr.x.size(), sr.y.size()); ++i) {

@@ -12,6 +12,7 @@ struct ChartSeries {
     std::string label;
     std::vector<double> x, y;  ///< same length
     bool reference = false;    ///< a paper's numbers: dashed line, open markers
+    int colour = -1;           ///< palette index (the paper's series takes its partner's); −1: by position
 };
 
 /// A line chart, or a bar chart when `categories` is set (one bar per category from the

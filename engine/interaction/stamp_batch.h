@@ -81,7 +81,9 @@ public:
 
     /// Stamps queued.
     size_t size() const { return m_stamps.size(); }
+    /// Rows (N, z) of the fields it applies to.
     int rows() const { return m_rows; }
+    /// Columns (M, x) of the fields it applies to.
     int cols() const { return m_cols; }
 
 private:
