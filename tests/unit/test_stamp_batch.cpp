@@ -57,7 +57,7 @@ TEST_CASE("a batch of overlapping stamps equals stampFootprint in list order, bi
           "[stamp][batch]") {
     // 300 × 263: not a multiple of 64 columns (partial coverage words), and enough work that
     // the interior splits into row bands.
-    for (int count : {1, 7, 400, 3000}) {  // 400: light overlap (forward), 3000: heavy (backward walk)
+    for (int count : {1, 7, 400, 6000}) {  // 400: light overlap (forward), 6000: heavy (backward walk)
         const auto stamps = randomStamps(count, 300, 263, uint32_t(count));
         FootprintCache cache;
         RippleField reference(300, 263);
