@@ -21,15 +21,15 @@ namespace ob::interaction {
 /// 128² field is done after the last few hundred stamps. The values are computed with the
 /// same float operations in the same order as stampFootprint, so the field gets its bits.
 ///
-/// Where the stamps overlap little (they cover the interior less than a few times over), the
-/// walk's bookkeeping costs more than the overwrites it saves, and apply() writes every stamp
-/// forward instead, in order: the same bits.
+/// Where the stamps overlap little, or in short row spans, the walk's per-span bookkeeping
+/// costs more than the overwrites it saves, and apply() writes every stamp forward instead,
+/// in order: the same bits.
 ///
 /// Cells no stamp reaches never become final, and would keep the walk going to the list's
 /// start. When a band has looked at its cell count in spans without writing a cell, it marks
-/// them: it
-/// dilates the stamp centres by each footprint's shape (row bit masks, shifted and OR-ed), so
-/// that only cells some stamp reaches count as open, and the walk stops when those are final.
+/// them: it dilates the stamp centres by each footprint's shape (row bit masks, shifted and
+/// OR-ed), so that only cells some stamp reaches count as open, and the walk stops when those
+/// are final.
 ///
 /// Threads: the interior rows are split into bands; each band walks the whole list on its
 /// own rows with its own bits, so any split gives the same field.
@@ -88,10 +88,10 @@ public:
 
 private:
     struct Stamp {
-        const FootprintProfile* fp;
-        int cx, cz;
-        int reach;  // rows cz − reach .. cz + reach carry the footprint; −1: writes nothing
-        float base, heightScale, af;
+        const FootprintProfile* fp = nullptr;
+        int cx = 0, cz = 0;
+        int reach = -1;  // rows cz − reach .. cz + reach carry the footprint; −1: writes nothing (and a slot not yet set)
+        float base = 0.0f, heightScale = 0.0f, af = 0.0f;
     };
     Stamp makeStamp(const FootprintProfile& fp, int cx, int cz, float base, float heightScale, float af) const;
     bool covers(const Stamp& s, int x, int z, float& value) const;
