@@ -81,16 +81,16 @@ void BenchTable::writeCsv(const std::string& path, const MachineInfo& machine) c
 }
 
 void BenchTable::printMarkdown(std::FILE* out) const {
-    std::string line = "|";
-    for (const auto& c : m_columns) line += " " + c + " |";
-    std::fprintf(out, "%s\n|", line.c_str());
-    for (size_t c = 0; c < m_columns.size(); ++c) std::fprintf(out, "---|");
-    std::fprintf(out, "\n");
-    for (const auto& row : m_rows) {
-        line = "|";
-        for (const auto& c : row) line += " " + c + " |";
-        std::fprintf(out, "%s\n", line.c_str());
-    }
+    const auto printRow = [out](const std::vector<std::string>& cells) {
+        std::fputc('|', out);
+        for (const auto& c : cells) std::fprintf(out, " %s |", c.c_str());
+        std::fputc('\n', out);
+    };
+    printRow(m_columns);
+    std::fputc('|', out);
+    for (size_t c = 0; c < m_columns.size(); ++c) std::fputs("---|", out);
+    std::fputc('\n', out);
+    for (const auto& row : m_rows) printRow(row);
     std::fflush(out);
 }
 
