@@ -2,6 +2,7 @@
 #include "cli.h"
 
 #include "app.h"
+#include "cmd_bench.h"
 #include "cmd_dump_ocean.h"
 #include "cmd_dump_ripples.h"
 #include "cmd_dump_surface.h"
@@ -68,11 +69,6 @@ struct SceneFlags {
     }
 };
 
-int notBuiltYet(const char* what) {
-    std::fprintf(stderr, "oceanbox: %s: not built yet\n", what);
-    return EXIT_FAILURE_RUNTIME;
-}
-
 } // namespace
 
 int runCli(int argc, char** argv) {
@@ -129,11 +125,9 @@ int runCli(int argc, char** argv) {
     });
 
     // bench KIND
-    std::string benchKind;
-    CLI::App* benchCmd = app.add_subcommand("bench", "benchmarks that reproduce the papers' tables (spheres, fields, ocean, frame)");
-    benchCmd->add_option("kind", benchKind, "spheres | fields | ocean | frame")->required();
-    benchCmd->allow_extras();
-    benchCmd->callback([&] { action = [] { return notBuiltYet("bench"); }; });
+    std::string commandLine = "oceanbox";
+    for (int i = 1; i < argc; ++i) commandLine += std::string(" ") + argv[i];
+    addBenchCommand(app, action, commandLine);
 
     // dump LAYER SCENE
     std::string dumpLayer, dumpOut, dumpPoints;

@@ -17,6 +17,8 @@
 #include "water/composite_water.h"
 #include "water_systems.h"
 
+#include <algorithm>
+
 namespace ob::game {
 
 namespace {
@@ -111,6 +113,22 @@ std::vector<std::string> Sandbox::takeScreenshotRequests() {
 bool Sandbox::quitRequested() {
     auto* input = m_world.resource<platform::InputState>();
     return input && input->quit;
+}
+
+std::vector<std::pair<std::string, double>> Sandbox::timings(size_t skipFrames) const {
+    const ecs::FrameTimer& timer = m_schedule.timer();
+    const auto median = [skipFrames](const std::vector<double>& samples) {
+        const size_t skip = std::min(skipFrames, samples.size() > 0 ? samples.size() - 1 : 0);
+        return ecs::median(std::vector<double>(samples.begin() + long(skip), samples.end()));
+    };
+    std::vector<std::pair<std::string, double>> out;
+    if (timer.frameSamples().empty()) return out;
+    out.emplace_back("frame", median(timer.frameSamples()));
+    for (int p = 0; p < ecs::PHASE_COUNT; ++p) out.emplace_back(ecs::phaseName(ecs::Phase(p)), median(timer.cpuSamples(ecs::Phase(p))));
+    for (int p = 0; p < ecs::PHASE_COUNT; ++p)
+        if (!timer.gpuSamples(ecs::Phase(p)).empty())
+            out.emplace_back(std::string("gpu.") + ecs::phaseName(ecs::Phase(p)), median(timer.gpuSamples(ecs::Phase(p))));
+    return out;
 }
 
 uint64_t Sandbox::stateHash() {

@@ -8,8 +8,8 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
-#include <utility>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace ob::gfx {
@@ -42,6 +42,11 @@ public:
     void step() { m_schedule.runStep(m_world); }
     /// Hash of the simulation state (bit-exact: equal hashes mean equal states).
     uint64_t stateHash();
+    /// Every timing the sandbox measures, as (name, median ms per frame) over the frames
+    /// after the first `skipFrames`: "frame" (wall, frame start to frame start), then each
+    /// phase's CPU time ("input", "script", ...), then each GPU-timed span ("gpu.render", ...).
+    /// Empty before the first finished frame.
+    std::vector<std::pair<std::string, double>> timings(size_t skipFrames = 0) const;
     bool quitRequested();
     /// The scene the UI asked to restart with (validated), once.
     std::optional<SceneDef> takeRestartRequest() { return std::exchange(m_restart, std::nullopt); }

@@ -44,38 +44,6 @@ const FootprintProfile& FootprintCache::get(float radiusCells) {
     return it->second;
 }
 
-bool updateContact(SphereContact& c, float centreY, float radius, float surfaceY, float rippleAtCentre) {
-    const float bottom = centreY - radius, top = centreY + radius;
-    if (c.phase != ContactPhase::Contact) {
-        if (bottom > surfaceY) {
-            c.phase = ContactPhase::Airborne;
-            return false;
-        }
-        if (top >= surfaceY || c.phase == ContactPhase::Airborne) {
-            // Step 1, first contact. A sphere that went from entirely above to entirely
-            // below within one step crossed the surface during it: it stamps this once.
-            c.phase = ContactPhase::Contact;
-            c.fixHeight = surfaceY;
-            c.baseRipple = rippleAtCentre;
-            return true;
-        }
-        c.phase = ContactPhase::Free;
-        return false;
-    }
-    if (bottom > std::max(c.fixHeight, surfaceY)) {
-        // Out of the water: the next touch is a new first contact.
-        c.phase = ContactPhase::Airborne;
-        return false;
-    }
-    if (top < c.fixHeight) {
-        // Step 2: entirely below fixHeight, no stamp.
-        if (top < c.fixHeight - 2.0f * radius) c.phase = ContactPhase::Free;
-        return false;
-    }
-    // Step 3: crossing fixHeight (top >= fixHeight here).
-    return bottom <= c.fixHeight;
-}
-
 void stampFootprint(RippleField& field, const FootprintProfile& fp, int cx, int cz, float base, float heightScale,
                     float af) {
     const int rows = field.rows(), cols = field.cols();

@@ -7,6 +7,7 @@
 
 #include <barrier>
 #include <cassert>
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <mutex>
@@ -202,10 +203,18 @@ void OceanFftCpu::unpackRows(int rowBegin, int rowEnd) {
 void OceanFftCpu::update(double t) {
     m_time = t;
     const int transforms = cascadeCount() * OCEAN_PACKED_TRANSFORMS;
+    using Clock = std::chrono::steady_clock;
+    const auto ms = [](Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
+    Clock::time_point marks[4];
     if (m_threads == 1) {
+        marks[0] = Clock::now();
         synthesizeRows(0, m_n / 2 + 1);
+        marks[1] = Clock::now();
         for (int k = 0; k < transforms; ++k) transform(k);
+        marks[2] = Clock::now();
         unpackRows(0, m_n);
+        marks[3] = Clock::now();
+        m_stageMs = {ms(marks[0], marks[1]), ms(marks[1], marks[2]), ms(marks[2], marks[3])};
         return;
     }
     // Every worker runs the three stages on its share; a barrier separates them because a
@@ -218,17 +227,22 @@ void OceanFftCpu::update(double t) {
         // --- stage 1: packed spectra at time t (eq. 2, 6, 7; eq. 9 packing), by row pairs {m, −m}
         synthesizeRows(pairs * w / m_threads, pairs * (w + 1) / m_threads);
         sync.arrive_and_wait();
+        if (w == 0) marks[1] = Clock::now();
         // --- stage 2: unnormalised inverse FFTs (eq. 1), whole transforms per worker
         for (int k = w; k < transforms; k += m_threads) transform(k);
         sync.arrive_and_wait();
+        if (w == 0) marks[2] = Clock::now();
         // --- stage 3: unpack to channels and the Jacobian, by rows
         unpackRows(rowBegin, rowEnd);
     };
+    marks[0] = Clock::now();
     std::vector<std::thread> helpers;
     helpers.reserve(m_threads - 1);
     for (int w = 1; w < m_threads; ++w) helpers.emplace_back(work, w);
     work(0);
     for (auto& helper : helpers) helper.join();
+    marks[3] = Clock::now();
+    m_stageMs = {ms(marks[0], marks[1]), ms(marks[1], marks[2]), ms(marks[2], marks[3])};
 }
 
 } // namespace ob::ocean

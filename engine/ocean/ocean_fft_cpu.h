@@ -59,6 +59,15 @@ public:
     /// Workers update() uses.
     int threadCount() const { return m_threads; }
 
+    /// Wall ms of the last update()'s stages (seen from the calling thread; barriers end each).
+    struct StageMs {
+        double synthesis = 0.0;   ///< eq. 2, 6, 7 into the packed spectra
+        double transforms = 0.0;  ///< the packed inverse FFTs (FFTW)
+        double unpack = 0.0;      ///< channels and the Jacobian
+    };
+    /// Stage times of the last update() (benchmarks: seed 000 Table 3's "FFT only").
+    const StageMs& lastStageMs() const { return m_stageMs; }
+
     /// Channel ch of cascade c after the last update(): N·N floats, row-major [j][i].
     const float* channel(int cascade, OceanChannel ch) const;
     /// Writes cascade c as [N][N][5] floats (h, Dx, Dz, ∂h/∂x, ∂h/∂z per point) into out.
@@ -82,6 +91,7 @@ private:
     int m_threads = 1;
     float m_lambda = 0.0f;
     double m_time = 0.0;
+    StageMs m_stageMs;
     fftwf_plan_s* m_plan = nullptr;  // one in-place backward plan for every buffer (new-array execute)
     std::vector<std::unique_ptr<Cascade>> m_cascades;
 };

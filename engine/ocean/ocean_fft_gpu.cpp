@@ -8,6 +8,7 @@
 #include "ocean/ocean_textures.h"
 
 #include <cassert>
+#include <chrono>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -150,11 +151,20 @@ void OceanFftGpu::update(double t, OceanTextures& out) {
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
     // --- stage 2: inverse FFT of every row, then of every column (eq. 1), in place
+    std::chrono::steady_clock::time_point fftStart;
+    if (m_profiling) {
+        glFinish();
+        fftStart = std::chrono::steady_clock::now();
+    }
     glUseProgram(m_fft.id());
     for (int columns = 0; columns < 2; ++columns) {
         glProgramUniform1i(m_fft.id(), COLUMNS_LOCATION, columns);
         glDispatchCompute(n, OCEAN_PACKED_TRANSFORMS, cascades);
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    }
+    if (m_profiling) {
+        glFinish();
+        m_transformMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - fftStart).count();
     }
 
     // --- stage 3: unpack into the map layers and the Jacobian

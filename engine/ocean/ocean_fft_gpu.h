@@ -62,11 +62,20 @@ public:
     /// Time of the last update(), seconds (0 before the first).
     double time() const { return m_time; }
 
+    /// Benchmarks: with profiling on, update() finishes the GL queue before and after the
+    /// inverse FFT dispatches (stage 2) and keeps their wall time (seed 000 Table 3's "FFT
+    /// only"). Off by default: the two glFinish calls stall the pipeline.
+    void setProfiling(bool on) { m_profiling = on; }
+    /// Wall ms of the last profiled update()'s FFT dispatches (0 when not profiling).
+    double lastTransformMs() const { return m_transformMs; }
+
 private:
     int m_n = 0;
     int m_log2n = 0;
     float m_lambda = 0.0f;
     double m_time = 0.0;
+    bool m_profiling = false;
+    double m_transformMs = 0.0;
     std::vector<double> m_patchSizes;
     gfx::Program m_synthesize;   // ocean_spectrum.comp: h̃(K,t) → four packed spectra
     gfx::Program m_fft;          // ocean_fft.comp: N-point inverse DFT of rows or columns, in place

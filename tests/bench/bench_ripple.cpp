@@ -1,8 +1,11 @@
 // Ripple layer benchmarks (SPEC §2.5, seed 001): the eq. 1–2 step per field size, boundary and
-// worker count, and bounding-sphere stamping (Table 2, eq. 3–7) of many spheres in contact.
+// worker count, bounding-sphere stamping (Table 2, eq. 3–7) of many spheres in contact, one by
+// one and batched, and the Table 5 fish swarm.
 #include "core/parallel.h"
+#include "fish_swarm.h"
 #include "interaction/ripple_field.h"
 #include "interaction/sphere_stamp.h"
+#include "interaction/stamp_batch.h"
 
 #include <benchmark/benchmark.h>
 
@@ -113,6 +116,58 @@ void BM_StampFootprint(benchmark::State& state) {
     state.SetItemsProcessed(state.iterations() * state.range(0));
 }
 
+// queueSphere per sphere into a StampBatch, then one apply: the same spheres and result as
+// BM_StepSphere. Args: spheres, SR in cells, workers.
+void BM_QueueSphere(benchmark::State& state) {
+    SphereCrowd crowd(int(state.range(0)), int(state.range(1)));
+    ob::setWorkerCount(int(state.range(2)));
+    FootprintCache cache;
+    StampBatch batch(STAMP_FIELD, STAMP_FIELD);
+    for (auto _ : state) {
+        int stamped = 0;
+        for (size_t i = 0; i < crowd.motions.size(); ++i)
+            stamped += queueSphere(batch, crowd.field, cache, CELL_SIZE, crowd.def, crowd.contacts[i], crowd.motions[i]);
+        batch.apply(crowd.field);
+        benchmark::DoNotOptimize(stamped);
+    }
+    state.SetItemsProcessed(state.iterations() * state.range(0));
+    ob::setWorkerCount(0);
+}
+
+// StampBatch::push per sphere, then one apply: the same stamps and result as BM_StampFootprint.
+// Args: spheres, SR in cells, workers.
+void BM_StampBatch(benchmark::State& state) {
+    SphereCrowd crowd(int(state.range(0)), int(state.range(1)));
+    ob::setWorkerCount(int(state.range(2)));
+    const FootprintProfile footprint = makeFootprint(float(state.range(1)));
+    StampBatch batch(STAMP_FIELD, STAMP_FIELD);
+    for (auto _ : state) {
+        for (const SphereMotion& m : crowd.motions)
+            batch.push(footprint, int(m.gridX), int(m.gridZ), 0.0f, -CELL_SIZE, 0.0f);
+        batch.apply(crowd.field);
+        benchmark::ClobberMemory();
+    }
+    state.SetItemsProcessed(state.iterations() * state.range(0));
+    ob::setWorkerCount(0);
+}
+
+// One FishSwarm step (Table 5: fish of SR 20 on jump arcs over 128² cells, DF 0.93): Table 2,
+// stamps, moves and eq. 1–2. Args: fish, batched (1) or sequential stepSphere (0).
+void BM_FishSwarm(benchmark::State& state) {
+    ob::game::FishSwarmDef def;
+    def.count = int(state.range(0));
+    def.mode = state.range(1) ? ob::game::StampMode::Batched : ob::game::StampMode::Sequential;
+    ob::game::FishSwarm swarm(def);
+    for (int i = 0; i < 30; ++i) swarm.step();  // the batch grows to its size
+    int64_t stamps = 0;
+    for (auto _ : state) {
+        swarm.step();
+        stamps += swarm.lastStamps();
+    }
+    state.counters["stamps_per_step"] = double(stamps) / double(std::max<int64_t>(1, state.iterations()));
+    state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+
 BENCHMARK(BM_StepSphere)
     ->ArgNames({"spheres", "SR"})
     ->Args({100000, 20})->Args({1000, 5})->Args({1000, 7})
@@ -121,6 +176,23 @@ BENCHMARK(BM_StepSphere)
 BENCHMARK(BM_StampFootprint)
     ->ArgNames({"spheres", "SR"})
     ->Args({100000, 20})->Args({1000, 5})->Args({1000, 7})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+
+BENCHMARK(BM_QueueSphere)
+    ->ArgNames({"spheres", "SR", "workers"})
+    ->Args({100000, 20, 1})->Args({100000, 20, 2})->Args({1000, 5, 2})->Args({1000, 7, 2})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(BM_StampBatch)
+    ->ArgNames({"spheres", "SR", "workers"})
+    ->Args({100000, 20, 1})->Args({100000, 20, 2})->Args({1000, 5, 2})->Args({1000, 7, 2})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(BM_FishSwarm)
+    ->ArgNames({"fish", "batched"})
+    ->Args({1, 1})->Args({1000, 1})->Args({10000, 1})->Args({100000, 1})->Args({100000, 0})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 

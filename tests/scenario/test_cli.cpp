@@ -83,12 +83,6 @@ TEST_CASE("an unwritable output path exits 2 before anything runs, and writes no
     CHECK(r.exitCode == 2);
 }
 
-TEST_CASE("subcommands whose subsystem is not built yet say so and exit 1", "[cli]") {
-    auto r = runOceanbox("bench spheres");
-    CHECK(r.exitCode == 1);
-    CHECK(r.output.find("not built yet") != std::string::npos);
-}
-
 TEST_CASE("play without a display falls back to headless, says so in one line, and keeps a screenshot", "[cli]") {
     std::string png = tempPath("play.png");
     auto r = runOceanbox("play --frames 3 --size 64x48 --screenshot " + png + " < /dev/null");
