@@ -128,6 +128,7 @@ std::vector<std::pair<std::string, double>> Sandbox::timings(size_t skipFrames) 
     for (int p = 0; p < ecs::PHASE_COUNT; ++p)
         if (!timer.gpuSamples(ecs::Phase(p)).empty())
             out.emplace_back(std::string("gpu.") + ecs::phaseName(ecs::Phase(p)), median(timer.gpuSamples(ecs::Phase(p))));
+    for (const auto& [pass, samples] : timer.gpuPassSamples()) out.emplace_back("gpu.pass." + pass, median(samples));
     return out;
 }
 
