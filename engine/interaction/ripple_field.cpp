@@ -109,6 +109,21 @@ void RippleField::rebuildSponge() {
         m_colSponge[size_t(x)] = spongeFactor(std::min(x, m_cols - 1 - x), m_spongeWidth);
 }
 
+RippleField& RippleField::operator=(const RippleField& o) {
+    if (this == &o) return *this;
+    m_rows = o.m_rows;
+    m_cols = o.m_cols;
+    m_cells = o.m_cells;
+    m_boundary = o.m_boundary;
+    m_spongeWidth = o.m_spongeWidth;
+    m_storage = o.m_storage;
+    m_cur = m_storage.data() + (o.m_cur - o.m_storage.data());
+    m_prev = m_storage.data() + (o.m_prev - o.m_storage.data());
+    m_rowSponge = o.m_rowSponge;
+    m_colSponge = o.m_colSponge;
+    return *this;
+}
+
 void RippleField::step(float damping) {
     const int rows = m_rows, cols = m_cols;
     float* const out = m_prev;

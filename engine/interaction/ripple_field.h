@@ -23,6 +23,12 @@ public:
     RippleField(int rows, int cols, RippleBoundary boundary = RippleBoundary::Fixed,
                 int spongeWidth = DEFAULT_SPONGE_WIDTH);
 
+    /// Copies own their levels (the level pointers point into the copy's storage).
+    RippleField(const RippleField& o) { *this = o; }
+    RippleField& operator=(const RippleField& o);
+    RippleField(RippleField&&) noexcept = default;  // the storage moves, its pointers stay valid
+    RippleField& operator=(RippleField&&) noexcept = default;
+
     /// One step of eq. 1–2 with damping DF in [0, 1] (0 kills waves next step, 1 keeps them),
     /// then Vh(t−1) <- Vh(t), Vh(t) <- Vh(t+1) by swapping pointers. Allocates nothing;
     /// rows are split over the worker pool for large fields, bit-identical for any count.

@@ -396,3 +396,18 @@ TEST_CASE("ripple command: a 2x2 field is all border and comes out 0", "[ripple]
     REQUIRE(ob::game::rippleCommand({in, "", out, 1, 1.0f}) == 0);
     REQUIRE(ob::readNpy(out).data == std::vector<float>(4, 0.0f));
 }
+
+TEST_CASE("a copied ripple field owns its levels: stepping the copy leaves the original as it was", "[ripple]") {
+    ob::interaction::RippleField a(16, 16);
+    a.current()[8 * 16 + 8] = 1.0f;
+    a.step(1.0f);  // the level pointers now sit swapped in the storage
+    ob::interaction::RippleField b = a;
+    std::vector<float> before(a.current().begin(), a.current().end());
+    b.step(1.0f);
+    b.step(1.0f);
+    CHECK(std::equal(before.begin(), before.end(), a.current().begin()));
+    CHECK(!std::equal(before.begin(), before.end(), b.current().begin()));
+    ob::interaction::RippleField c(4, 4);
+    c = a;
+    CHECK(std::equal(before.begin(), before.end(), c.current().begin()));
+}
