@@ -90,7 +90,7 @@ TEST_CASE("a headless frame of the default scene shows sky above the horizon and
     CHECK(varied);
 }
 
-TEST_CASE("looking straight up shows only sky; looking down only sea", "[gl]") {
+TEST_CASE("looking straight up shows only sky, looking down only sea", "[gl]") {
     gfx::requestDebugOutput(true);
     const glm::ivec2 size(64, 64);
     auto platform = platform::createHeadlessPlatform(size);

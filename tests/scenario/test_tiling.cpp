@@ -34,7 +34,7 @@ double repetition(const std::string& scene) {
 
 } // namespace
 
-TEST_CASE("the spectrum alone repeats every tile; the composite sea does not", "[tiling]") {
+TEST_CASE("the spectrum alone repeats every tile, the composite sea does not", "[tiling]") {
     CHECK(repetition("config/scenes/spectrum_only.toml") < 1e-3);
     CHECK(repetition("config/scenes/default.toml") > 0.1);  // measured 0.19
 }

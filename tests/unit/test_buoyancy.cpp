@@ -24,7 +24,7 @@ TEST_CASE("submerged sphere volume: 0 above, half at the centre, whole below, eq
     }
 }
 
-TEST_CASE("a probe at rest feels rho g V up; drag opposes motion relative to the water", "[physics]") {
+TEST_CASE("a probe at rest feels rho g V up, drag opposes motion relative to the water", "[physics]") {
     physics::PhysicsDef def;
     physics::ProbeState p;
     p.radius = 0.5f;
@@ -65,7 +65,7 @@ TEST_CASE("Archimedes: a floating sphere settles with the submerged fraction equ
     }
 }
 
-TEST_CASE("Archimedes: a floating box's draft is its density ratio times its height; a dense one sinks", "[physics]") {
+TEST_CASE("Archimedes: a floating box's draft is its density ratio times its height, a dense one sinks", "[physics]") {
     glm::vec3 pos;
     settle("type = \"box\"\nsize = [2.0, 1.0, 1.5]\nposition = [0, 1.0, 0]\ndensity = 400.0\n", 1800, &pos);
     // Draft d = 1.0 m · 400 / 1025: the centre sits at (1.0 / 2 − d) above the water.

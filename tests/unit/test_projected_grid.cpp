@@ -82,7 +82,7 @@ TEST_CASE("with the horizon on screen the grid stops at it and the w clamp bound
     }
 }
 
-TEST_CASE("looking at the sky from above the water shows no grid; from below the water it does", "[grid]") {
+TEST_CASE("looking at the sky from above the water shows no grid, from below the water it does", "[grid]") {
     glm::vec3 eye(0, 5, 0);
     CHECK_FALSE(projectedGridCorners(camera(eye, glm::vec3(0, 200, 10)), eye, 0.05f).visible);
     glm::vec3 diver(0, -5, 0);

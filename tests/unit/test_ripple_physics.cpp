@@ -199,7 +199,7 @@ TEST_CASE("DF < 1 makes the discrete energy decay monotonically over 50-step win
     }
 }
 
-TEST_CASE("eq. 7: AF sets the stamp's vertical velocity AF*Vh; one step later the centre differs from AF = 0 by DF*AF*Vh(t)",
+TEST_CASE("eq. 7: AF sets the stamp's vertical velocity AF*Vh, one step later the centre differs from AF = 0 by DF*AF*Vh(t)",
           "[ripple]") {
     // Eq. 7 writes Vh(t−1) = Vh(t)·(1 − AF); eq. 2 then gives Vh(t+1) = (Buff − Vh(t−1))·DF,
     // with Buff the same for every AF: the difference from AF = 0 is DF·AF·Vh(t) on the footprint.

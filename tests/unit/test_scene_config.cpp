@@ -65,7 +65,7 @@ TEST_CASE("an empty or three-line scene is valid and defaults fill the rest", "[
     CHECK(game::parseScene("", "empty.toml").render.fresnel == "schlick");
 }
 
-TEST_CASE("overrides (--set) change any key with TOML values; a bare word is a string", "[config]") {
+TEST_CASE("overrides (--set) change any key with TOML values, a bare word is a string", "[config]") {
     SceneDef s = game::parseScene("[render]\nfresnel = \"schlick\"\n", "x.toml",
                                   {"render.fresnel=exact", "camera.position=[1, 2, 3]", "sim.step_hz=120", "window.vsync=false",
                                    "render.exposure=2"});

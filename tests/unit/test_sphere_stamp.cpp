@@ -85,7 +85,7 @@ TEST_CASE("eq. 6: O = (2, 3, 1) against B = (1, 1, 1) gives AF = 5", "[stamp]") 
     CHECK(accelerationFactor(2, 10, 0.25f, 10, 5, 0.5f) == Approx(-0.2f));
 }
 
-TEST_CASE("eq. 7: over the footprint Vh(t-1) becomes Vh(t) - Vh(t)*AF; elsewhere it is untouched", "[stamp]") {
+TEST_CASE("eq. 7: over the footprint Vh(t-1) becomes Vh(t) - Vh(t)*AF, elsewhere it is untouched", "[stamp]") {
     RippleField f(11, 11);
     fillInterior(f, 0.0f, 0.5f);
     const FootprintProfile fp = makeFootprint(3.0f);
@@ -155,7 +155,7 @@ TEST_CASE("Table 2: first contact stores fixHeight and the centre's ripple as eq
     CHECK(c.baseRipple == 0.05f);
 }
 
-TEST_CASE("Table 2: a sphere entirely below fixHeight does not stamp; one crossing it does", "[stamp][table2]") {
+TEST_CASE("Table 2: a sphere entirely below fixHeight does not stamp, one crossing it does", "[stamp][table2]") {
     SphereContact c;
     REQUIRE(updateContact(c, 0.0f, 0.5f, 0.0f, 0.0f));  // first contact at the surface, fixHeight 0
     // Crossing fixHeight = 0 (bottom −0.9, top 0.1), even with the live surface above the top.
@@ -176,7 +176,7 @@ TEST_CASE("Table 2: a sphere entirely below fixHeight does not stamp; one crossi
     CHECK(c.baseRipple == 0.07f);
 }
 
-TEST_CASE("Table 2: leaving the water resets contact; the next touch stores a new fixHeight", "[stamp][table2]") {
+TEST_CASE("Table 2: leaving the water resets contact, the next touch stores a new fixHeight", "[stamp][table2]") {
     SphereContact c;
     REQUIRE(updateContact(c, 0.0f, 0.5f, 0.0f, 0.0f));
     // Bottom 0.1 above fixHeight 0 but the raised live surface (0.2) still reaches it: no

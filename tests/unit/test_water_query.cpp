@@ -128,7 +128,7 @@ TEST_CASE("Gerstner-only sea: sample() at the displaced position of each rest po
     }
 }
 
-TEST_CASE("Inversion: Newton converges to 0.1 mm in a few evaluations; fixed point contracts at ≈ ‖∂D/∂α‖ ≤ Σ k·a per step", "[water]") {
+TEST_CASE("Inversion: Newton converges to 0.1 mm in a few evaluations, fixed point contracts at ≈ ‖∂D/∂α‖ ≤ Σ k·a per step", "[water]") {
     CompositeSettings newton;
     newton.maxIterations = 64;
     CompositeSettings fixed = newton;
@@ -294,7 +294,7 @@ TEST_CASE("Vertical velocity equals ∂height/∂t at a fixed world point (finit
     }
 }
 
-TEST_CASE("Ripple hook: height, slope and rate are added at the world position; an absent slope comes from differences", "[water]") {
+TEST_CASE("Ripple hook: height, slope and rate are added at the world position, an absent slope comes from differences", "[water]") {
     CompositeWater water({}, GF);
     water.update(0.0);
     RippleHook hook;
@@ -352,7 +352,7 @@ TEST_CASE("Exact and slope-sum normals agree on a Gerstner-only sea (its slope i
     }
 }
 
-TEST_CASE("dump surface: [K, 2] world points in, [K, 5] = (height, nx, ny, nz, vertical velocity) out; bad shapes are InputErrors", "[water]") {
+TEST_CASE("dump surface: [K, 2] world points in, [K, 5] = (height, nx, ny, nz, vertical velocity) out, bad shapes are InputErrors", "[water]") {
     const ocean::OceanDef def = smallOcean();
     ocean::OceanFftCpu fft(def, 1);
     CompositeWater water(SEED002_FIRST8, GF, &fft);
