@@ -28,12 +28,30 @@ namespace ob::game {
 void checkWritable(const std::string& path, const char* what) {
     std::filesystem::path p(path);
     std::filesystem::path dir = p.parent_path().empty() ? "." : p.parent_path();
-    if (std::filesystem::is_directory(p))
-        throw InputError(std::string("cannot write ") + what + " '" + path + "': it is a folder");
+    const std::string head = std::string("cannot write ") + what + " '" + path + "': ";
+    if (std::filesystem::is_directory(p)) throw InputError(head + "it is a folder (give a file name)");
     if (!std::filesystem::is_directory(dir))
-        throw InputError(std::string("cannot write ") + what + " '" + path + "': folder '" + dir.string() + "' does not exist");
+        throw InputError(head + "folder '" + dir.string() + "' does not exist (create it or choose another path)");
     if (access(dir.c_str(), W_OK) != 0)
-        throw InputError(std::string("cannot write ") + what + " '" + path + "': folder '" + dir.string() + "' is not writable");
+        throw InputError(head + "folder '" + dir.string() + "' is not writable (choose another path)");
+}
+
+void writeTextFile(const std::string& path, const std::string& text, const char* what) {
+    const std::string head = std::string("cannot write ") + what + " '" + path + "': ";
+    const std::string tmp = path + ".tmp";
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    if (!out) throw InputError(head + std::strerror(errno) + " (choose another path)");  // nothing made: nothing to remove
+    out << text;
+    out.close();
+    if (!out) {
+        std::remove(tmp.c_str());
+        throw RuntimeError(head + "writing " + tmp + " failed (disk full?)");
+    }
+    if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+        const int err = errno;
+        std::remove(tmp.c_str());
+        throw InputError(head + std::strerror(err) + " (choose another path)");
+    }
 }
 
 static nlohmann::json phaseStats(const std::vector<double>& samples) {
@@ -99,19 +117,7 @@ static void writeStats(const std::string& path, Sandbox& sandbox, const std::str
     std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(sandbox.stateHash()));
     j["state_hash"] = hash;
 
-    std::string tmp = path + ".tmp";
-    {
-        std::ofstream out(tmp);
-        out << j.dump(2) << "\n";
-        if (!out) {
-            std::remove(tmp.c_str());
-            throw InputError("cannot write stats '" + path + "'");
-        }
-    }
-    if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-        std::remove(tmp.c_str());
-        throw InputError("cannot write stats '" + path + "': " + std::strerror(errno));
-    }
+    writeTextFile(path, j.dump(2) + "\n", "stats");
 }
 
 int runScene(const SceneDef& scene, const std::string& scenePath, const RunOptions& options) {

@@ -25,4 +25,9 @@ int runScene(const SceneDef& scene, const std::string& scenePath, const RunOptio
 /// Throws ob::InputError unless `path` can be created (its folder exists and is writable).
 void checkWritable(const std::string& path, const char* what);
 
+/// Writes `text` to `path` whole or not at all: into path + ".tmp", then renamed over
+/// `path`. Throws ob::InputError naming `what` and the path when it cannot (the temporary
+/// file removed).
+void writeTextFile(const std::string& path, const std::string& text, const char* what);
+
 } // namespace ob::game

@@ -7,6 +7,7 @@
 #include "cmd_dump_ripples.h"
 #include "cmd_dump_surface.h"
 #include "cmd_make_models.h"
+#include "cmd_soak.h"
 #include "ocean/ocean_fft_cpu.h"
 #include "water/composite_water.h"
 #include "cmd_ripple.h"
@@ -188,6 +189,21 @@ int runCli(int argc, char** argv) {
             return rippleCommand(ripple);
         };
     });
+
+    // soak SCENE: a long headless simulation with invariants checked
+    SceneFlags soak;
+    SoakOptions soakOptions;
+    CLI::App* soakCmd = app.add_subcommand("soak", "simulate a scene headless (no rendering) for a long time, checking "
+                                                   "finite fields, bounded heights, floating bodies and flat memory");
+    soakCmd->add_option("scene", soak.scene, "scene file")->required();
+    soakCmd->add_option("--seconds", soakOptions.seconds, "simulated seconds (default 3600: one hour)")
+        ->check(CLI::Range(1e-3, 1e7));
+    soakCmd->add_option("--check-every", soakOptions.checkEvery, "check the invariants every N steps (default 1)")
+        ->check(CLI::Range(1, 1000000));
+    soakCmd->add_option("--stats", soakOptions.stats, "write a JSON summary (steps/s, maxima, RSS, state hash)");
+    soakCmd->add_option("--set", soak.sets, "override a scene key: key.path=value (repeatable)");
+    soakCmd->add_option("--seed", soak.seed, "scene seed (same as --set sim.seed=N)")->check(CLI::NonNegativeNumber);
+    soakCmd->callback([&] { action = [&] { return soakCommand(soak.load(), soak.scene, soakOptions); }; });
 
     // make-models: the project's own glTF models
     std::string modelsOut = "assets/models";

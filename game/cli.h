@@ -1,4 +1,4 @@
-// The command line: play, run, bench, dump, ripple, make-models (SPEC §4).
+// The command line: play, run, bench, dump, ripple, soak, make-models (SPEC §4).
 #pragma once
 
 namespace ob::game {

@@ -1,6 +1,7 @@
 // `oceanbox make-models`: the procedural models of model_shapes.cpp written through tinygltf.
 #include "cmd_make_models.h"
 
+#include "app.h"
 #include "assets/gltf_library.h"
 #include "core/error.h"
 #include "core/log.h"
@@ -114,10 +115,7 @@ int makeModels(const std::string& outDir) {
     for (const ShapeModel& model : buildProjectModels()) {
         const std::string path = (fs::path(outDir) / (model.name + ".gltf")).string();
         const std::string text = gltfText(model);
-        std::ofstream file(path, std::ios::binary | std::ios::trunc);
-        file << text;
-        file.close();
-        if (!file) throw InputError("cannot write '" + path + "'");
+        writeTextFile(path, text, "model");
         size_t triangles = 0;
         for (const ShapePart& part : model.parts) triangles += part.indices.size() / 3;
         logInfo("%s: %zu parts, %zu triangles", path.c_str(), model.parts.size(), triangles);

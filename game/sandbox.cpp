@@ -11,6 +11,7 @@
 #include "gfx/ui_overlay.h"
 #include "fish.h"
 #include "objects.h"
+#include "ocean/ocean_fft_cpu.h"
 #include "script.h"
 #include "ship.h"
 #include "ui_panels.h"
@@ -151,7 +152,16 @@ uint64_t Sandbox::stateHash() {
         h.f32s(now.data(), now.size());
         h.f32s(before.data(), before.size());
     }
-    if (auto* ocean = m_world.resource<OceanState>()) h.f64(ocean->mapsTime);
+    auto& motions = m_world.pool<ecs::Motion>();
+    for (size_t i = 0; i < motions.size(); ++i) h.f32s(&motions.components()[i].velocity.x, 3);
+    if (auto* ocean = m_world.resource<OceanState>()) {
+        h.f64(ocean->mapsTime);
+        // The maps themselves: FFTW's plan and the worker split must not change a bit of them.
+        const ocean::OceanFftCpu& fft = *ocean->cpu;
+        const size_t count = size_t(fft.resolution()) * size_t(fft.resolution());
+        for (int c = 0; c < fft.cascadeCount(); ++c)
+            for (int ch = 0; ch < ocean::OCEAN_CHANNEL_COUNT; ++ch) h.f32s(fft.channel(c, ocean::OceanChannel(ch)), count);
+    }
     return h.value();
 }
 

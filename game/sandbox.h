@@ -40,7 +40,8 @@ public:
     void frame(double now) { m_schedule.runFrame(m_world, now); }
     /// One simulation step without input or render.
     void step() { m_schedule.runStep(m_world); }
-    /// Hash of the simulation state (bit-exact: equal hashes mean equal states).
+    /// Hash of the simulation state (bit-exact: equal hashes mean equal states): the step,
+    /// every transform and velocity, both ripple levels and every ocean map.
     uint64_t stateHash();
     /// Every timing the sandbox measures, as (name, median ms per frame) over the frames
     /// after the first `skipFrames`: "frame" (wall, frame start to frame start), then each

@@ -4,6 +4,7 @@
 #include "core/error.h"
 
 #include <bit>
+#include <cerrno>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -196,7 +197,7 @@ void writeNpy(const std::string& path, const std::vector<size_t>& shape, const f
     const std::string tmp = path + ".tmp";
     {
         std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        if (!out) throw RuntimeError(path + ": cannot open " + tmp + " for writing");
+        if (!out) throw InputError("cannot write output '" + path + "': " + std::strerror(errno) + " (choose another path)");
         const unsigned char pre[10] = {0x93, 'N', 'U', 'M', 'P', 'Y', 1, 0,
                                        static_cast<unsigned char>(header.size() & 0xFF),
                                        static_cast<unsigned char>(header.size() >> 8)};
@@ -206,14 +207,15 @@ void writeNpy(const std::string& path, const std::vector<size_t>& shape, const f
         out.close();
         if (!out) {
             std::remove(tmp.c_str());
-            throw RuntimeError(path + ": writing " + tmp + " failed (disk full or unwritable?)");
+            throw RuntimeError("cannot write output '" + path + "': writing " + tmp + " failed (disk full?)");
         }
     }
     std::error_code ec;
     std::filesystem::rename(tmp, path, ec);
     if (ec) {
         std::remove(tmp.c_str());
-        throw RuntimeError(path + ": cannot rename " + tmp + " into place: " + ec.message());
+        throw InputError("cannot write output '" + path + "': cannot rename " + tmp + " into place: " + ec.message() +
+                         " (choose another path)");
     }
 }
 

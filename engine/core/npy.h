@@ -20,7 +20,8 @@ NpyArray readNpy(const std::string& path);
 
 /// Writes a version 1.0 .npy file ('<f4', C order) holding product(shape) values from data.
 /// Writes path + ".tmp" and renames it over path, so a failed write leaves no half file.
-/// Throws ob::RuntimeError if the file cannot be written.
+/// Throws ob::InputError if the path cannot be created (the user's choice: exit 2),
+/// ob::RuntimeError if writing fails part way (disk full).
 void writeNpy(const std::string& path, const std::vector<size_t>& shape, const float* data);
 
 } // namespace ob

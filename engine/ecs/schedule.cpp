@@ -14,9 +14,14 @@ const char* phaseName(Phase p) {
 
 void FrameTimer::beginFrame() { m_current.fill(0.0); }
 
+void FrameTimer::record(std::vector<double>& series, double ms) {
+    if (series.size() >= 2 * MAX_SAMPLES) series.erase(series.begin(), series.begin() + long(MAX_SAMPLES));
+    series.push_back(ms);
+}
+
 void FrameTimer::endFrame(double frameMs) {
-    for (int p = 0; p < PHASE_COUNT; ++p) m_cpu[size_t(p)].push_back(m_current[size_t(p)]);
-    m_frames.push_back(frameMs);
+    for (int p = 0; p < PHASE_COUNT; ++p) record(m_cpu[size_t(p)], m_current[size_t(p)]);
+    record(m_frames, frameMs);
 }
 
 double mean(const std::vector<double>& samples) {

@@ -56,15 +56,20 @@ struct Tick {
 /// A system: a free function over the world.
 using SystemFn = void (*)(World&, const Tick&);
 
-/// Per-phase CPU (and GPU where measured) milliseconds, one sample per frame.
+/// Per-phase CPU (and GPU where measured) milliseconds, one sample per frame. A series
+/// keeps its latest samples only, between MAX_SAMPLES and 2·MAX_SAMPLES of them once that
+/// many frames ran, so a window left open for days holds a bounded amount of memory.
 class FrameTimer {
 public:
+    /// Samples a series keeps at least (10 minutes at 60 fps) before its oldest are dropped.
+    static constexpr size_t MAX_SAMPLES = 36000;
+
     void beginFrame();
     void addCpu(Phase p, double ms) { m_current[size_t(p)] += ms; }
     /// GPU time of a phase for the latest frame whose queries have resolved.
-    void setGpu(Phase p, double ms) { m_gpu[size_t(p)].push_back(ms); }
+    void setGpu(Phase p, double ms) { record(m_gpu[size_t(p)], ms); }
     /// GPU time of one render pass for the latest frame whose queries have resolved.
-    void addGpuPass(const std::string& pass, double ms) { m_gpuPasses[pass].push_back(ms); }
+    void addGpuPass(const std::string& pass, double ms) { record(m_gpuPasses[pass], ms); }
     void endFrame(double frameMs);
     /// Samples of the phase's CPU ms, one per frame.
     const std::vector<double>& cpuSamples(Phase p) const { return m_cpu[size_t(p)]; }
@@ -76,6 +81,9 @@ public:
     double lastCpu(Phase p) const { return m_cpu[size_t(p)].empty() ? 0.0 : m_cpu[size_t(p)].back(); }
 
 private:
+    // Appends; at 2·MAX_SAMPLES drops the oldest MAX_SAMPLES (amortised O(1) per sample).
+    static void record(std::vector<double>& series, double ms);
+
     std::array<double, PHASE_COUNT> m_current{};
     std::array<std::vector<double>, PHASE_COUNT> m_cpu;
     std::array<std::vector<double>, PHASE_COUNT> m_gpu;

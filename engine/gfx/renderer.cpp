@@ -374,13 +374,22 @@ void writeScreenshot(const std::string& path, glm::ivec2 size) {
     std::vector<unsigned char> flipped(pixels.size());
     for (int y = 0; y < size.y; ++y)
         std::memcpy(&flipped[stride * size_t(y)], &pixels[stride * size_t(size.y - 1 - y)], stride);
-    std::string tmp = path + ".tmp";
-    errno = 0;
-    int ok = stbi_write_png(tmp.c_str(), size.x, size.y, 3, flipped.data(), int(stride));
-    if (!ok || std::rename(tmp.c_str(), path.c_str()) != 0) {
-        int err = errno;
+    // Into path.tmp, then renamed: a failed write never leaves half a picture at path.
+    const std::string tmp = path + ".tmp";
+    const std::string head = "cannot write screenshot '" + path + "': ";
+    FILE* file = std::fopen(tmp.c_str(), "wb");
+    if (!file) throw InputError(head + std::strerror(errno) + " (choose another path)");  // nothing made: nothing to remove
+    const auto put = [](void* f, void* data, int size) { std::fwrite(data, 1, size_t(size), static_cast<FILE*>(f)); };
+    const int encoded = stbi_write_png_to_func(put, file, size.x, size.y, 3, flipped.data(), int(stride));
+    const bool written = encoded && !std::ferror(file);
+    if (std::fclose(file) != 0 || !written) {
         std::remove(tmp.c_str());
-        throw InputError("cannot write screenshot '" + path + "': " + std::strerror(err ? err : EIO));
+        throw RuntimeError(head + "writing " + tmp + " failed (disk full?)");
+    }
+    if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+        const int err = errno;
+        std::remove(tmp.c_str());
+        throw InputError(head + std::strerror(err) + " (choose another path)");
     }
 }
 

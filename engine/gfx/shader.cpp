@@ -25,11 +25,14 @@ struct Expansion {
     std::string text;
 };
 
+// The file's path as messages give it: the folder it is read from, then its name.
+std::string shaderPath(const std::string& name) { return shaderDirectory() + "/" + name; }
+
 void expand(const std::string& name, Expansion& out, int depth) {
-    if (depth > 16) throw RuntimeError("shaders/" + name + ": #include nested too deeply (a cycle?)");
-    std::ifstream in(shaderDirectory() + "/" + name);
-    if (!in) throw RuntimeError("shader file not found: " + shaderDirectory() + "/" + name +
-                                " (set OCEANBOX_SHADER_DIR to the shaders/ folder)");
+    if (depth > 16) throw RuntimeError(shaderPath(name) + ": #include nested too deeply (a cycle?); fix the #include lines");
+    std::ifstream in(shaderPath(name));
+    if (!in) throw RuntimeError("shader file not found: " + shaderPath(name) +
+                                " (set OCEANBOX_SHADER_DIR to a complete copy of the shaders/ folder)");
     int index = int(out.files.size());
     out.files.push_back(name);
     std::string line;
@@ -50,7 +53,7 @@ void expand(const std::string& name, Expansion& out, int depth) {
     }
 }
 
-// Rewrites "0:12(5): error" (Mesa) and "0(12) : error" (NVIDIA) to "shaders/file:12: error".
+// Rewrites "0:12(5): error" (Mesa) and "0(12) : error" (NVIDIA) to "<folder>/file:12: error".
 std::string mapLog(const std::string& log, const std::vector<std::string>& files) {
     static const std::regex LOCATION(R"((\d+)[:(](\d+)\)?(\(\d+\))?\s*:)");
     std::string out;
@@ -60,7 +63,7 @@ std::string mapLog(const std::string& log, const std::vector<std::string>& files
         std::smatch m;
         if (std::regex_search(line, m, LOCATION) && m.position(0) < 4) {
             size_t file = std::stoul(m[1].str());
-            std::string name = file < files.size() ? "shaders/" + files[file] : "?";
+            std::string name = file < files.size() ? shaderPath(files[file]) : "?";
             line = name + ":" + m[2].str() + ":" + m.suffix().str();
         }
         out += "  " + line + "\n";
@@ -74,7 +77,7 @@ GLenum stageOf(const std::string& name) {
     if (ends(".frag")) return GL_FRAGMENT_SHADER;
     if (ends(".comp")) return GL_COMPUTE_SHADER;
     if (ends(".geom")) return GL_GEOMETRY_SHADER;
-    throw RuntimeError("shaders/" + name + ": unknown shader stage (expected .vert .frag .comp .geom)");
+    throw RuntimeError(shaderPath(name) + ": unknown shader stage (expected .vert .frag .comp .geom)");
 }
 
 } // namespace
@@ -98,7 +101,9 @@ Program loadProgram(const char* label, std::initializer_list<const char*> files)
             glGetShaderiv(shader.id(), GL_INFO_LOG_LENGTH, &len);
             std::string log(size_t(len > 0 ? len : 1), '\0');
             glGetShaderInfoLog(shader.id(), GLsizei(log.size()), nullptr, log.data());
-            throw RuntimeError(std::string("shader shaders/") + file + " failed to compile:\n" + mapLog(log.c_str(), e.files));
+            throw RuntimeError("shader " + shaderPath(file) + " failed to compile (fix the lines below, or set "
+                               "OCEANBOX_SHADER_DIR to a good copy of the shaders/ folder):\n" +
+                               mapLog(log.c_str(), e.files));
         }
         glAttachShader(program.id(), shader.id());
         shaders.push_back(std::move(shader));
@@ -111,7 +116,8 @@ Program loadProgram(const char* label, std::initializer_list<const char*> files)
         glGetProgramiv(program.id(), GL_INFO_LOG_LENGTH, &len);
         std::string log(size_t(len > 0 ? len : 1), '\0');
         glGetProgramInfoLog(program.id(), GLsizei(log.size()), nullptr, log.data());
-        throw RuntimeError(std::string("program '") + label + "' failed to link:\n" + log.c_str());
+        throw RuntimeError(std::string("program '") + label + "' failed to link (its stages disagree; fix the shaders " +
+                           "in " + shaderDirectory() + "):\n" + mapLog(log.c_str(), {}));
     }
     for (auto& s : shaders) glDetachShader(program.id(), s.id());
     return program;

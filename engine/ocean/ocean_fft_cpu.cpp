@@ -4,6 +4,8 @@
 #include "ocean/ocean_fft_cpu.h"
 
 #include "core/error.h"
+#include "core/log.h"
+#include "core/parallel.h"
 
 #include <barrier>
 #include <cassert>
@@ -14,7 +16,9 @@
 #include <string>
 #include <algorithm>
 #include <thread>
+#include <fcntl.h>
 #include <fftw3.h>
+#include <sys/file.h>
 #include <unistd.h>
 
 
@@ -44,28 +48,76 @@ std::string wisdomPath() {
     return {};
 }
 
-// Called with the planner mutex held. A missing or stale file just means measuring again.
-void importWisdomOnce() {
-    static bool imported = false;
-    if (imported) return;
-    imported = true;
-    const std::string path = wisdomPath();
-    if (!path.empty()) fftwf_import_wisdom_from_filename(path.c_str());
-}
+// The wisdom file's inter-process lock (flock on path + ".lock"), held while a process
+// reads the wisdom, plans and writes it back: processes planning at once then agree on one
+// measured plan per size instead of each measuring its own (different plans round
+// differently: see plan()).
+class WisdomLock {
+public:
+    explicit WisdomLock(const std::string& path) {
+        if (path.empty()) return;
+        std::error_code ec;
+        std::filesystem::create_directories(std::filesystem::path(path).parent_path(), ec);
+        m_fd = ::open((path + ".lock").c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+        if (m_fd >= 0 && ::flock(m_fd, LOCK_EX) != 0) {
+            ::close(m_fd);
+            m_fd = -1;
+        }
+    }
+    ~WisdomLock() {
+        if (m_fd < 0) return;
+        ::flock(m_fd, LOCK_UN);
+        ::close(m_fd);
+    }
+    WisdomLock(const WisdomLock&) = delete;
+    WisdomLock& operator=(const WisdomLock&) = delete;
+    bool held() const { return m_fd >= 0; }
 
-// Called with the planner mutex held. Writes a temporary file and renames it, so a
-// concurrent reader never sees half a file; every failure is silent (it is a cache).
-void exportWisdom() {
-    const std::string path = wisdomPath();
-    if (path.empty()) return;
+private:
+    int m_fd = -1;
+};
+
+// Called with both locks held. Writes a temporary file and renames it, so a reader never
+// sees half a file. Returns false when the cache cannot be written.
+bool exportWisdom(const std::string& path) {
     std::error_code ec;
-    std::filesystem::create_directories(std::filesystem::path(path).parent_path(), ec);
     const std::string tmp = path + ".tmp" + std::to_string(::getpid());
     if (fftwf_export_wisdom_to_filename(tmp.c_str())) {
         std::filesystem::rename(tmp, path, ec);
-        if (!ec) return;
+        if (!ec) return true;
     }
     std::filesystem::remove(tmp, ec);
+    return false;
+}
+
+// The one N×N in-place backward plan. Different FFTW plans of the same transform round
+// differently (measured: FFTW_ESTIMATE, _MEASURE and _PATIENT plans of 256² disagree in the
+// last bits), and FFTW_MEASURE picks a plan by timing, so two processes that each measure
+// may get different bits. The plan therefore comes from the shared wisdom file whenever it
+// has one for N; the first process that needs N measures it and writes it there, under the
+// file lock, so every later run on the machine uses the same plan. Without a usable cache
+// the plan is FFTW_ESTIMATE's: chosen without timing, the same in every run, but slower.
+fftwf_plan plan(int n, fftwf_complex* buffer) {
+    std::lock_guard<std::mutex> lock(plannerMutex());
+    const std::string path = wisdomPath();
+    WisdomLock fileLock(path);
+    if (fileLock.held()) {
+        fftwf_import_wisdom_from_filename(path.c_str());  // a missing or stale file: measure below
+        fftwf_plan p = fftwf_plan_dft_2d(n, n, buffer, buffer, FFTW_BACKWARD, FFTW_MEASURE | FFTW_WISDOM_ONLY);
+        if (p) return p;
+        // FFTW_MEASURE overwrites the buffer, which holds nothing yet.
+        p = fftwf_plan_dft_2d(n, n, buffer, buffer, FFTW_BACKWARD, FFTW_MEASURE);
+        if (!p || exportWisdom(path)) return p;
+        fftwf_destroy_plan(p);
+    }
+    static bool warned = false;
+    if (!warned) {
+        warned = true;
+        logWarn("the FFTW wisdom cache %s cannot be written: using estimated FFT plans (the same in every run, but "
+                "slower); set XDG_CACHE_HOME to a writable folder for measured ones",
+                path.empty() ? "(no HOME or XDG_CACHE_HOME)" : path.c_str());
+    }
+    return fftwf_plan_dft_2d(n, n, buffer, buffer, FFTW_BACKWARD, FFTW_ESTIMATE);
 }
 
 // Packed pairs → SoA channels, and J from the three displacement derivatives.
@@ -120,21 +172,13 @@ OceanFftCpu::OceanFftCpu(const OceanDef& def, int threads) {
     validateOceanDef(def, 4096);
     m_n = def.resolution;
     m_lambda = -def.choppiness;
-    const int cores = int(std::clamp(std::thread::hardware_concurrency(), 1u, MAX_THREADS));
+    const int cores = std::clamp(workerCount(), 1, int(MAX_THREADS));
     m_threads = threads > 0 ? threads : (m_n >= PARALLEL_MIN_N ? cores : 1);
     for (int c = 0; c < def.cascades; ++c) m_cascades.push_back(std::make_unique<Cascade>(def, c));
 
     // One plan serves every buffer: same size, in place, fftwf_alloc alignment.
-    // FFTW_MEASURE overwrites the buffer, which holds nothing yet.
-    std::lock_guard<std::mutex> lock(plannerMutex());
-    importWisdomOnce();
-    fftwf_complex* buffer = m_cascades[0]->buffers[0];
-    m_plan = fftwf_plan_dft_2d(m_n, m_n, buffer, buffer, FFTW_BACKWARD, FFTW_MEASURE | FFTW_WISDOM_ONLY);
-    if (!m_plan) {
-        m_plan = fftwf_plan_dft_2d(m_n, m_n, buffer, buffer, FFTW_BACKWARD, FFTW_MEASURE);
-        if (!m_plan) throw RuntimeError("FFTW could not plan a " + std::to_string(m_n) + "² transform");
-        exportWisdom();
-    }
+    m_plan = plan(m_n, m_cascades[0]->buffers[0]);
+    if (!m_plan) throw RuntimeError("FFTW could not plan a " + std::to_string(m_n) + "² transform");
 }
 
 OceanFftCpu::~OceanFftCpu() {

@@ -29,13 +29,15 @@ constexpr int OCEAN_DUMP_CHANNELS = 5;
 /// Packed complex transforms per cascade (PackedSpectra, eq. 9).
 constexpr int OCEAN_PACKED_TRANSFORMS = 4;
 
-/// The FFT ocean on the CPU (FFTW single precision). Plans are made once with FFTW_MEASURE
-/// and cached as FFTW wisdom in $XDG_CACHE_HOME/oceanbox/fftw_wisdom_f (else
-/// ~/.cache/oceanbox/fftw_wisdom_f; a cache that cannot be read or written is ignored).
+/// The FFT ocean on the CPU (FFTW single precision). Plans are measured once per machine and
+/// shared through FFTW wisdom in $XDG_CACHE_HOME/oceanbox/fftw_wisdom_f (else
+/// ~/.cache/oceanbox/fftw_wisdom_f, under a file lock), so every run uses the same plan and
+/// gets the same bits; without a writable cache, FFTW_ESTIMATE plans (also the same every run).
 class OceanFftCpu {
 public:
     /// Builds every cascade of def (seeded h̃0, FFT plans). threads: workers for update(),
-    /// 0 = auto (2 when N ≥ 256 and the machine has 2 cores, else 1). Throws ob::InputError
+    /// 0 = auto (2 when N ≥ 256 and ob::workerCount() ≥ 2, else 1). Any count gives the
+    /// same bits: each transform runs whole on one thread, the other stages point by point. Throws ob::InputError
     /// naming the key for a def no loader would accept (resolution not a power of two in
     /// [4, 4096], cascades outside [1, 4], non-positive sizes).
     explicit OceanFftCpu(const OceanDef& def, int threads = 0);

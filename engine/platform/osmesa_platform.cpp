@@ -7,7 +7,9 @@
 #include "core/error.h"
 
 #include <GL/osmesa.h>
+#include <cstdlib>
 #include <dlfcn.h>
+#include <string>
 #include <vector>
 
 namespace ob::platform {
@@ -54,8 +56,14 @@ public:
                                OSMESA_CONTEXT_MINOR_VERSION, 5,
                                0};
         m_context = api.createContextAttribs(attribs, nullptr);
-        if (!m_context)
+        if (!m_context) {
+            // Mesa caps its versions at MESA_GL_VERSION_OVERRIDE: name it when it is the cause.
+            const char* cap = std::getenv("MESA_GL_VERSION_OVERRIDE");
+            if (cap && *cap)
+                throw RuntimeError(std::string("could not create an OSMesa OpenGL 4.5 core context: MESA_GL_VERSION_OVERRIDE=") +
+                                   cap + " caps Mesa below it (unset it; oceanbox needs OpenGL 4.5)");
             throw RuntimeError("could not create an OSMesa OpenGL 4.5 core context (install libosmesa6 from Mesa 22 or newer)");
+        }
         m_pixels.resize(size_t(size.x) * size_t(size.y));
         if (!api.makeCurrent(m_context, m_pixels.data(), GL_UNSIGNED_BYTE, size.x, size.y)) {
             api.destroyContext(m_context);

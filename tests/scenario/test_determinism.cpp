@@ -1,8 +1,18 @@
-// Determinism: the same scene and seed give the same state hash; a different scene does not.
+// Determinism: the same scene and seed give the same state hash (every transform, velocity,
+// ripple level and ocean map) across runs, worker counts, ocean thread counts and processes
+// that plan their FFTs at the same time; a different scene does not.
+#include "core/parallel.h"
+#include "interaction/ripple_patch.h"
+#include "ocean/ocean_fft_cpu.h"
 #include "sandbox.h"
 #include "support/test_support.h"
+#include "water_systems.h"
 
+#include <algorithm>
 #include <catch2/catch.hpp>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -24,6 +34,17 @@ std::string cliHash(const std::string& extra) {
     return nlohmann::json::parse(std::ifstream(json))["state_hash"].get<std::string>();
 }
 
+std::string statsHash(const std::string& path) {
+    std::ifstream in(path);
+    REQUIRE(in);
+    return nlohmann::json::parse(in)["state_hash"].get<std::string>();
+}
+
+// Restores the default worker count however a test ends.
+struct WorkerCountGuard {
+    ~WorkerCountGuard() { setWorkerCount(0); }
+};
+
 } // namespace
 
 TEST_CASE("the default scene stepped twice for 120 steps gives the same state hash", "[determinism]") {
@@ -44,4 +65,82 @@ TEST_CASE("two headless runs of 120 frames report the same state hash", "[determ
 
 TEST_CASE("the GPU ocean backend (whose query maps are computed a step ahead on another thread) gives the CPU backend's state hash", "[determinism]") {
     CHECK(cliHash("--set ocean.backend=gpu") == cliHash("--set ocean.backend=cpu"));
+}
+
+TEST_CASE("the state hash is the same with 1, 2, 3 and 8 workers (ripple rows and ocean threads split)", "[determinism][parallel]") {
+    // A 1024² patch splits its 1022 interior rows into chunks of 32 (MIN_CELLS_PER_CHUNK /
+    // 1024), so every worker count here really splits it; the 256² ocean runs on 2 threads
+    // once 2 workers are set. The bodies fall in within the 150 steps and ring the patch.
+    WorkerCountGuard guard;
+    game::SceneDef scene = game::loadScene(game::defaultScenePath(), {"ripples.resolution=1024", "ripples.cell_size=0.05"});
+    std::vector<uint64_t> hashes;
+    for (int workers : {1, 2, 3, 8}) {
+        setWorkerCount(workers);
+        game::Sandbox sandbox(scene);
+        CHECK(sandbox.world().resource<game::OceanState>()->cpu->threadCount() == std::min(workers, 4));
+        for (int i = 0; i < 150; ++i) sandbox.step();
+        auto field = sandbox.world().resource<interaction::RipplePatch>()->field().current();
+        CHECK(*std::max_element(field.begin(), field.end()) > 1e-3f);  // the stamps reached the patch
+        hashes.push_back(sandbox.stateHash());
+    }
+    for (size_t i = 1; i < hashes.size(); ++i) CHECK(hashes[i] == hashes[0]);
+}
+
+TEST_CASE("ocean maps are bit-identical on 1, 2, 3 and 8 threads at any time", "[determinism][ocean]") {
+    game::SceneDef scene = game::loadScene(game::defaultScenePath());
+    ocean::OceanDef def = scene.ocean;
+    def.cascades = 3;
+    ocean::OceanFftCpu one(def, 1);
+    const size_t bytes = size_t(def.resolution) * size_t(def.resolution) * sizeof(float);
+    for (int threads : {2, 3, 8}) {
+        ocean::OceanFftCpu many(def, threads);
+        for (double t : {0.0, 17.25, 3600.0}) {
+            one.update(t);
+            many.update(t);
+            for (int c = 0; c < def.cascades; ++c)
+                for (int ch = 0; ch < ocean::OCEAN_CHANNEL_COUNT; ++ch) {
+                    INFO("threads " << threads << ", t " << t << ", cascade " << c << ", channel " << ch);
+                    CHECK(std::memcmp(one.channel(c, ocean::OceanChannel(ch)), many.channel(c, ocean::OceanChannel(ch)), bytes) == 0);
+                }
+        }
+    }
+}
+
+TEST_CASE("processes that plan their FFTs at the same time with an empty wisdom cache agree bit for bit", "[determinism][ocean]") {
+    // FFTW_MEASURE picks a plan by timing and different plans round differently: without the
+    // wisdom file's lock, two processes measuring at once could disagree.
+    const std::string cache = test::tempPath("wisdom_cache");
+    std::filesystem::create_directories(cache);
+    std::vector<std::string> stats;
+    std::string command;
+    for (int k = 0; k < 3; ++k) {
+        stats.push_back(test::tempPath("plan_" + std::to_string(k) + ".json"));
+        command += "XDG_CACHE_HOME='" + cache + "' \"$OCEANBOX\" soak config/scenes/default.toml --seconds 1 --stats " +
+                   stats.back() + " > /dev/null & ";
+    }
+    auto r = test::runShell(command + "wait");
+    INFO(r.output);
+    CHECK(std::filesystem::exists(cache + "/oceanbox/fftw_wisdom_f"));
+    const std::string first = statsHash(stats[0]);
+    for (const std::string& s : stats) CHECK(statsHash(s) == first);
+    // A later run reads the plan the first one measured.
+    const std::string later = test::tempPath("plan_later.json");
+    r = test::runShell("XDG_CACHE_HOME='" + cache + "' \"$OCEANBOX\" soak config/scenes/default.toml --seconds 1 --stats " + later);
+    INFO(r.output);
+    REQUIRE(r.exitCode == 0);
+    CHECK(statsHash(later) == first);
+}
+
+TEST_CASE("without a writable wisdom cache the estimated FFT plans give the same hash in every run", "[determinism][ocean]") {
+    std::vector<std::string> hashes;
+    for (int k = 0; k < 2; ++k) {
+        const std::string json = test::tempPath("estimate.json");
+        auto r = test::runShell("XDG_CACHE_HOME=/proc/oceanbox-no-cache \"$OCEANBOX\" soak config/scenes/default.toml "
+                                "--seconds 1 --stats " + json);
+        INFO(r.output);
+        REQUIRE(r.exitCode == 0);
+        CHECK(r.output.find("cannot be written: using estimated FFT plans") != std::string::npos);
+        hashes.push_back(statsHash(json));
+    }
+    CHECK(hashes[0] == hashes[1]);
 }

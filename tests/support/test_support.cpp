@@ -10,8 +10,11 @@
 
 namespace ob::test {
 
-ProcessResult runOceanbox(const std::string& args) {
-    std::string cmd = std::string("cd '") + OCEANBOX_SOURCE_DIR + "' && '" + OCEANBOX_EXE + "' " + args + " 2>&1";
+ProcessResult runOceanbox(const std::string& args) { return runShell("\"$OCEANBOX\" " + args); }
+
+ProcessResult runShell(const std::string& command) {
+    std::string cmd = std::string("cd '") + OCEANBOX_SOURCE_DIR + "' && OCEANBOX='" + OCEANBOX_EXE + "' && { " + command +
+                      "; } 2>&1";
     ProcessResult result;
     FILE* pipe = popen(cmd.c_str(), "r");
     if (!pipe) return result;

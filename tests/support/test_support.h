@@ -13,6 +13,10 @@ struct ProcessResult {
 /// from the repository root.
 ProcessResult runOceanbox(const std::string& args);
 
+/// Runs a shell command line from the repository root; `$OCEANBOX` in it names the
+/// executable (build/bin/oceanbox).
+ProcessResult runShell(const std::string& command);
+
 /// A fresh path under the system temp folder (the file does not exist yet).
 std::string tempPath(const std::string& name);
 
