@@ -4,6 +4,8 @@
 #include "cmd_soak.h"
 
 #include "app.h"
+#include "cannon.h"
+#include "fish.h"
 #include "core/error.h"
 #include "core/log.h"
 #include "ecs/components.h"
@@ -23,6 +25,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <span>
 #include <unistd.h>
@@ -146,10 +149,18 @@ SoakBounds soakBounds(Sandbox& sandbox) {
         b.seaHs = 4.0f * float(std::sqrt(seaVariance));
         for (const ocean::GerstnerWave& w : ocean->waves) b.gerstnerAmplitude += std::fabs(w.amplitude);
     }
+    // The largest stamp any source can make: an object's overlapping spheres chain through
+    // eq. 5's base (each stamps over the one before), so a set counts its spheres' sum; balls
+    // and fish are spawned later, so their templates count from the start.
+    auto scale = [](const interaction::BoundingSphere& s) { return s.radius * s.heightRatio; };
     float stamp = 0.0f;
-    auto& sets = world.pool<interaction::SphereSet>();
-    for (const interaction::SphereSet& set : sets.components())
-        for (const interaction::BoundingSphere& s : set.spheres) stamp = std::max(stamp, s.radius * s.heightRatio);
+    for (const interaction::SphereSet& set : world.pool<interaction::SphereSet>().components()) {
+        float sum = 0.0f;
+        for (const interaction::BoundingSphere& s : set.spheres) sum += scale(s);
+        stamp = std::max(stamp, sum);
+    }
+    for (const Cannon& c : world.pool<Cannon>().components()) stamp = std::max(stamp, scale(c.ballSphere));
+    for (const FishSchool& f : world.pool<FishSchool>().components()) stamp = std::max(stamp, scale(f.sphere));
     b.ripple = std::max(1e-3f, RIPPLE_STAMPS * stamp);
     b.surface = b.gerstnerAmplitude + b.ripple;
     for (float h : b.cascadeHeight) b.surface += h;
@@ -174,7 +185,7 @@ void checkSoakInvariants(Sandbox& sandbox, const SoakBounds& bounds, SoakReport&
             }
             if (s.maxAbs > bounds.ripple)
                 fail(sandbox, std::string("ripple field ") + name + " reaches |Vh| = " + fmt(s.maxAbs) +
-                                  " m, beyond the bound " + fmt(bounds.ripple) + " m (4 × the largest stamp)");
+                                  " m, beyond the bound " + fmt(bounds.ripple) + " m (4 × the largest stamp source)");
             report.maxRipple = std::max(report.maxRipple, s.maxAbs);
         }
     }
@@ -248,9 +259,17 @@ int soakCommand(const SceneDef& scene, const std::string& scenePath, const SoakO
     if (!options.stats.empty()) checkWritable(options.stats, "stats");
 
     Sandbox sandbox(scene);  // no platform: simulation phases only
-    const SoakBounds bounds = soakBounds(sandbox);
+    // The ripple bound holds from the end of the warm-up: a dense swarm's stamps chain through
+    // eq. 5's base (each fish stamps over the field the others left) to several stamps' height,
+    // a damped random walk with no a-priori bound. Until then only finiteness is checked; after
+    // it, the larger of the stamp bound and 4 × the warm-up's maximum, which a blow-up (growth
+    // without bound) crosses and the stationary walk does not.
+    const SoakBounds sceneBounds = soakBounds(sandbox);
+    SoakBounds bounds = sceneBounds;
+    bounds.ripple = bounds.surface = std::numeric_limits<float>::infinity();
     const uint64_t steps = uint64_t(std::llround(options.seconds * double(scene.sim.step_hz)));
-    const uint64_t warmup = std::min<uint64_t>(uint64_t(WARMUP_SECONDS * double(scene.sim.step_hz)), steps / 10);
+    const uint64_t warmup =
+        std::max<uint64_t>(1, std::min<uint64_t>(uint64_t(WARMUP_SECONDS * double(scene.sim.step_hz)), steps / 10));
     logInfo("soak: %s, %llu steps (%g s simulated), invariants every %d step(s)", scenePath.c_str(),
             static_cast<unsigned long long>(steps), options.seconds, options.checkEvery);
 
@@ -259,7 +278,7 @@ int soakCommand(const SceneDef& scene, const std::string& scenePath, const SoakO
     std::vector<float> ceiling;
     for (size_t i = 0; i < bodies.size(); ++i) {
         const float start = sandbox.world().get<ecs::Transform>(bodies.entities()[i]).position.y;
-        ceiling.push_back(std::max(start, 0.0f) + bounds.surface + BODY_EXTENTS * bodyExtent(bodies.components()[i]));
+        ceiling.push_back(std::max(start, 0.0f) + sceneBounds.surface + BODY_EXTENTS * bodyExtent(bodies.components()[i]));
     }
 
     SoakReport report;
@@ -283,7 +302,12 @@ int soakCommand(const SceneDef& scene, const std::string& scenePath, const SoakO
         if (s % RSS_EVERY_STEPS == 0 || s == steps || s == warmup) {
             const double rss = residentMiB();
             report.rssMaxMiB = std::max(report.rssMaxMiB, rss);
-            if (s == warmup) report.rssWarmMiB = rss;
+            if (s == warmup) {
+                report.rssWarmMiB = rss;
+                report.warmupRipple = report.maxRipple;
+                bounds.ripple = std::max(sceneBounds.ripple, RIPPLE_STAMPS * report.maxRipple);
+                bounds.surface = sceneBounds.surface - sceneBounds.ripple + bounds.ripple;
+            }
             if (s == steps) report.rssEndMiB = rss;
         }
         if (progress && std::chrono::steady_clock::now() - lastProgress > std::chrono::seconds(1)) {
@@ -307,10 +331,11 @@ int soakCommand(const SceneDef& scene, const std::string& scenePath, const SoakO
     std::printf("soak: %s: %llu steps, %.0f s simulated in %.1f s (%.0f steps/s)\n", scenePath.c_str(),
                 static_cast<unsigned long long>(report.steps), report.simulatedSeconds, report.wallSeconds,
                 double(report.steps) / std::max(report.wallSeconds, 1e-9));
-    std::printf("soak: max |h| per cascade %s m; sea Hs %.3g m; max |ripple| %.3g m (bound %.3g); max |surface| under "
-                "bodies %.3g m (bound %.3g); lowest floating body %.3g m\n",
-                cascades.c_str(), double(bounds.seaHs), double(report.maxRipple), double(bounds.ripple),
-                double(report.maxSurface), double(bounds.surface), double(report.minFloatingDepth));
+    std::printf("soak: max |h| per cascade %s m; sea Hs %.3g m; max |ripple| %.3g m (%.3g in the warm-up; bound %.3g); max |surface| under "
+                "bodies %.3g m (bound %.3g); lowest floating body centre %s\n",
+                cascades.c_str(), double(bounds.seaHs), double(report.maxRipple), double(report.warmupRipple), double(bounds.ripple),
+                double(report.maxSurface), double(bounds.surface),
+                std::isfinite(report.minFloatingDepth) ? (fmt(report.minFloatingDepth) + " m from the surface").c_str() : "(none)");
     std::printf("soak: RSS start %.1f MiB, after warm-up %.1f MiB, end %.1f MiB, max %.1f MiB (growth %.2f MiB, "
                 "allowed %.1f%s)\n",
                 report.rssStartMiB, report.rssWarmMiB, report.rssEndMiB, report.rssMaxMiB, growth, allowed,
@@ -329,10 +354,11 @@ int soakCommand(const SceneDef& scene, const std::string& scenePath, const SoakO
         j["cascade_height_bound_m"] = bounds.cascadeHeight;
         j["sea_hs_m"] = bounds.seaHs;
         j["max_ripple_m"] = report.maxRipple;
+        j["warmup_ripple_m"] = report.warmupRipple;
         j["ripple_bound_m"] = bounds.ripple;
         j["max_surface_m"] = report.maxSurface;
         j["surface_bound_m"] = bounds.surface;
-        j["min_floating_depth_m"] = report.minFloatingDepth;
+        if (std::isfinite(report.minFloatingDepth)) j["min_floating_depth_m"] = report.minFloatingDepth;
         j["rss_mib"] = {{"start", report.rssStartMiB}, {"warm", report.rssWarmMiB}, {"end", report.rssEndMiB},
                         {"max", report.rssMaxMiB}, {"growth", growth}, {"allowed", allowed}};
         char hash[32];

@@ -5,6 +5,7 @@
 #include "scene.h"
 
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -23,7 +24,7 @@ struct SoakOptions {
 struct SoakBounds {
     std::vector<float> cascadeHeight;  ///< |h| of each FFT cascade map, m: 8 σ of its t = 0 map (twice its Hs)
     float gerstnerAmplitude = 0.0f;    ///< Σ a_m of the Gerstner waves, m: their sum can never exceed it
-    float ripple = 0.0f;               ///< |Vh| of the ripple patch, m: 4 × the largest stamp (radius · SHR)
+    float ripple = 0.0f;               ///< |Vh| of the ripple patch, m: 4 × the largest stamp source (radius · SHR; an object's spheres summed, cannon balls and fish included)
     float surface = 0.0f;              ///< |y| of the composite surface, m: the three layers' bounds added
     float seaHs = 0.0f;                ///< significant wave height of the FFT cascades together, m (4 σ)
 };
@@ -35,8 +36,9 @@ struct SoakReport {
     double wallSeconds = 0.0;
     std::vector<float> maxCascadeHeight;  ///< max |h| seen per cascade, m
     float maxRipple = 0.0f;               ///< max |Vh| seen, m
+    float warmupRipple = 0.0f;            ///< max |Vh| seen in the warm-up, m
     float maxSurface = 0.0f;              ///< max |y| of the surface under the bodies, m
-    float minFloatingDepth = 0.0f;        ///< lowest (centre − surface) of a floating body, m (0: none)
+    float minFloatingDepth = std::numeric_limits<float>::infinity();  ///< lowest (centre − surface) of a floating body, m (inf: none)
     double rssStartMiB = 0.0;             ///< after the sandbox is built
     double rssWarmMiB = 0.0;              ///< after the warm-up (the first 60 simulated s, at most 1/10 of the run)
     double rssEndMiB = 0.0;
