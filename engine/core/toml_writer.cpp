@@ -69,10 +69,10 @@ void pruneDefaults(TomlNode& node, const TomlNode& defaults) {
             if (dk == key) pruneDefaults(child, dchild);
     // A list is kept whole unless it is empty: then it is dropped when the default is empty
     // too, else written as the key `name = []` (an empty array of tables has no [[ ]] form).
-    std::vector<std::pair<std::string, std::vector<TomlNode>>> lists;
+    std::vector<TomlNode::List> lists;
     for (auto& [key, items] : node.lists) {
         if (!items.empty()) {
-            lists.emplace_back(key, std::move(items));
+            lists.push_back({key, std::move(items)});
             continue;
         }
         bool defaultEmpty = true;

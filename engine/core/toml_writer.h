@@ -11,11 +11,23 @@
 
 namespace ob {
 
-/// A Def as text: its keys (TOML values, formatted), its sections, its lists.
+/// A Def as text: its keys (TOML values, formatted), its sections, its lists. Sections and
+/// lists are named structs, not pairs: a pair may not hold the incomplete TomlNode (clang
+/// with libstdc++ rejects it).
 struct TomlNode {
+    struct Section;
+    struct List;
     std::vector<std::pair<std::string, std::string>> keys;
-    std::vector<std::pair<std::string, TomlNode>> sections;
-    std::vector<std::pair<std::string, std::vector<TomlNode>>> lists;
+    std::vector<Section> sections;
+    std::vector<List> lists;
+};
+struct TomlNode::Section {
+    std::string name;
+    TomlNode node;
+};
+struct TomlNode::List {
+    std::string name;
+    std::vector<TomlNode> items;
 };
 
 /// TOML value text of each field kind (floats in their shortest round-trip form).
@@ -50,7 +62,7 @@ public:
         TomlNode child;
         TomlCollector c(child);
         describe(c, def);
-        m_node.sections.emplace_back(key, std::move(child));
+        m_node.sections.push_back({key, std::move(child)});
     }
     template <class Item> void list(const char* key, std::vector<Item>& items, const char*) {
         Item fresh{};
@@ -65,7 +77,7 @@ public:
             pruneDefaults(n, defaults);
             nodes.push_back(std::move(n));
         }
-        m_node.lists.emplace_back(key, std::move(nodes));
+        m_node.lists.push_back({key, std::move(nodes)});
     }
 
 private:
