@@ -2,7 +2,9 @@
 // unknown keys rejected. Every error is collected; nothing stops at the first.
 #include "core/toml_reader.h"
 
+#include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <regex>
 #include <set>
@@ -90,7 +92,10 @@ static toml::table* elementTable(toml::table& root, const std::string& head, con
         std::regex_match(segment, m, SEGMENT);
         toml::node* node = table->get(m[1].str());
         if (m[2].matched) {
-            size_t index = std::stoul(m[2].str());
+            // An index too large for size_t (a fuzzer's 30 digits) names no element either.
+            const std::string digits = m[2].str();
+            size_t index = SIZE_MAX;
+            std::from_chars(digits.data(), digits.data() + digits.size(), index);
             toml::array* array = node ? node->as_array() : nullptr;
             toml::node* item = array && index < array->size() ? array->get(index) : nullptr;
             if (!item || !item->is_table()) {

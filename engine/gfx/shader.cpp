@@ -3,6 +3,8 @@
 
 #include "core/error.h"
 
+#include <charconv>
+#include <cstdint>
 #include <cstdlib>
 #include <fstream>
 #include <regex>
@@ -62,7 +64,9 @@ std::string mapLog(const std::string& log, const std::vector<std::string>& files
     while (std::getline(lines, line)) {
         std::smatch m;
         if (std::regex_search(line, m, LOCATION) && m.position(0) < 4) {
-            size_t file = std::stoul(m[1].str());
+            const std::string digits = m[1].str();
+            size_t file = SIZE_MAX;  // a number beyond size_t names no file
+            std::from_chars(digits.data(), digits.data() + digits.size(), file);
             std::string name = file < files.size() ? shaderPath(files[file]) : "?";
             line = name + ":" + m[2].str() + ":" + m.suffix().str();
         }
