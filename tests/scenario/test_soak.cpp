@@ -80,3 +80,23 @@ TEST_CASE("oceanbox soak runs a scene headless, checks every step and reports ra
     CHECK(test::runOceanbox("soak config/scenes/default.toml --seconds 0").exitCode == 2);
     CHECK(test::runOceanbox("soak config/scenes/default.toml --check-every 0").exitCode == 2);
 }
+
+TEST_CASE("the soak's ripple bound counts balls and fish spawned later and an object's overlapping spheres", "[soak]") {
+    // Seed 001's spheres: a ball SR 5 cells, SHR 1; a ship six of SR 7, SHR 0.2, which chain
+    // through eq. 5's base where they overlap; a fish radius 0.35 × length, SHR 1.4. The
+    // bound is 4 stamps of the largest source, before any ball is fired or fish jumps.
+    const std::string dir = std::string(OCEANBOX_SOURCE_DIR) + "/config/scenes/";
+    const struct {
+        const char* scene;
+        float bound;
+    } cases[] = {
+        {"cannon.toml", 4.0f * 5.0f * 0.1f * 1.0f},          // cell 0.1 m
+        {"ship.toml", 4.0f * 6.0f * 7.0f * 0.2f * 0.2f},     // cell 0.2 m
+        {"fish.toml", 4.0f * 0.35f * 0.8f * 1.4f},           // length 0.8 m
+    };
+    for (const auto& c : cases) {
+        INFO(c.scene);
+        game::Sandbox sandbox(game::loadScene(dir + c.scene));
+        CHECK(game::soakBounds(sandbox).ripple == Approx(c.bound).epsilon(1e-5));
+    }
+}
