@@ -3,6 +3,7 @@
 
 #include "core/clock.h"
 #include "core/error.h"
+#include "core/file_write.h"
 #include "core/log.h"
 #include "gfx/gl.h"
 #include "gfx/renderer.h"
@@ -37,21 +38,7 @@ void checkWritable(const std::string& path, const char* what) {
 }
 
 void writeTextFile(const std::string& path, const std::string& text, const char* what) {
-    const std::string head = std::string("cannot write ") + what + " '" + path + "': ";
-    const std::string tmp = path + ".tmp";
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw InputError(head + std::strerror(errno) + " (choose another path)");  // nothing made: nothing to remove
-    out << text;
-    out.close();
-    if (!out) {
-        std::remove(tmp.c_str());
-        throw RuntimeError(head + "writing " + tmp + " failed (disk full?)");
-    }
-    if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-        const int err = errno;
-        std::remove(tmp.c_str());
-        throw InputError(head + std::strerror(err) + " (choose another path)");
-    }
+    writeFileWhole(path, what, [&](std::ostream& out) { out << text; });
 }
 
 static nlohmann::json phaseStats(const std::vector<double>& samples) {

@@ -2,6 +2,7 @@
 #include "bench_report.h"
 
 #include "core/error.h"
+#include "core/file_write.h"
 #include "gfx/gl.h"
 #include "platform/platform.h"
 
@@ -57,9 +58,7 @@ void BenchTable::addRow(std::vector<std::string> cells) {
 }
 
 void BenchTable::writeCsv(const std::string& path, const MachineInfo& machine) const {
-    const std::string tmp = path + ".tmp";
-    {
-        std::ofstream out(tmp);
+    writeFileWhole(path, "CSV", [&](std::ostream& out) {
         out << "# " << m_command << "\n";
         out << "# machine: cpu " << machine.cpu << "; cores " << machine.cores << "; gl " << machine.renderer << "\n";
         for (const auto& [key, value] : m_settings) out << "# " << key << ": " << value << "\n";
@@ -69,15 +68,7 @@ void BenchTable::writeCsv(const std::string& path, const MachineInfo& machine) c
             for (size_t c = 0; c < row.size(); ++c) out << (c ? "," : "") << row[c];
             out << "\n";
         }
-        if (!out) {
-            std::remove(tmp.c_str());
-            throw RuntimeError("cannot write '" + path + "'");
-        }
-    }
-    if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-        std::remove(tmp.c_str());
-        throw RuntimeError("cannot write '" + path + "'");
-    }
+    });
 }
 
 void BenchTable::printMarkdown(std::FILE* out) const {

@@ -3,11 +3,11 @@
 #include "svg_chart.h"
 
 #include "core/error.h"
+#include "core/file_write.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <set>
 #include <sstream>
 
@@ -230,19 +230,7 @@ std::string barChart(const Chart& c) {
 std::string chartSvg(const Chart& chart) { return chart.categories.empty() ? lineChart(chart) : barChart(chart); }
 
 void writeChart(const std::string& path, const Chart& chart) {
-    const std::string tmp = path + ".tmp";
-    {
-        std::ofstream out(tmp);
-        out << chartSvg(chart);
-        if (!out) {
-            std::remove(tmp.c_str());
-            throw RuntimeError("cannot write chart '" + path + "'");
-        }
-    }
-    if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-        std::remove(tmp.c_str());
-        throw RuntimeError("cannot write chart '" + path + "'");
-    }
+    writeFileWhole(path, "chart", [&](std::ostream& out) { out << chartSvg(chart); });
 }
 
 } // namespace ob::game

@@ -2,13 +2,12 @@
 #include "core/npy.h"
 
 #include "core/error.h"
+#include "core/file_write.h"
 
 #include <bit>
-#include <cerrno>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
-#include <filesystem>
 #include <fstream>
 #include <limits>
 
@@ -194,29 +193,14 @@ void writeNpy(const std::string& path, const std::vector<size_t>& shape, const f
     header += '\n';
     if (header.size() > 0xFFFF) throw RuntimeError(path + ": shape too long for a version 1.0 .npy header");
 
-    const std::string tmp = path + ".tmp";
-    {
-        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        if (!out) throw InputError("cannot write output '" + path + "': " + std::strerror(errno) + " (choose another path)");
+    writeFileWhole(path, "output", [&](std::ostream& out) {
         const unsigned char pre[10] = {0x93, 'N', 'U', 'M', 'P', 'Y', 1, 0,
                                        static_cast<unsigned char>(header.size() & 0xFF),
                                        static_cast<unsigned char>(header.size() >> 8)};
         out.write(reinterpret_cast<const char*>(pre), sizeof pre);
         out.write(header.data(), std::streamsize(header.size()));
         if (count) out.write(reinterpret_cast<const char*>(data), std::streamsize(count * sizeof(float)));
-        out.close();
-        if (!out) {
-            std::remove(tmp.c_str());
-            throw RuntimeError("cannot write output '" + path + "': writing " + tmp + " failed (disk full?)");
-        }
-    }
-    std::error_code ec;
-    std::filesystem::rename(tmp, path, ec);
-    if (ec) {
-        std::remove(tmp.c_str());
-        throw InputError("cannot write output '" + path + "': cannot rename " + tmp + " into place: " + ec.message() +
-                         " (choose another path)");
-    }
+    });
 }
 
 } // namespace ob

@@ -2,6 +2,7 @@
 #include "gfx/renderer.h"
 
 #include "core/error.h"
+#include "core/file_write.h"
 #include "assets/model.h"
 #include "gfx/detail_map.h"
 #include "gfx/shader.h"
@@ -374,23 +375,11 @@ void writeScreenshot(const std::string& path, glm::ivec2 size) {
     std::vector<unsigned char> flipped(pixels.size());
     for (int y = 0; y < size.y; ++y)
         std::memcpy(&flipped[stride * size_t(y)], &pixels[stride * size_t(size.y - 1 - y)], stride);
-    // Into path.tmp, then renamed: a failed write never leaves half a picture at path.
-    const std::string tmp = path + ".tmp";
-    const std::string head = "cannot write screenshot '" + path + "': ";
-    FILE* file = std::fopen(tmp.c_str(), "wb");
-    if (!file) throw InputError(head + std::strerror(errno) + " (choose another path)");  // nothing made: nothing to remove
-    const auto put = [](void* f, void* data, int size) { std::fwrite(data, 1, size_t(size), static_cast<FILE*>(f)); };
-    const int encoded = stbi_write_png_to_func(put, file, size.x, size.y, 3, flipped.data(), int(stride));
-    const bool written = encoded && !std::ferror(file);
-    if (std::fclose(file) != 0 || !written) {
-        std::remove(tmp.c_str());
-        throw RuntimeError(head + "writing " + tmp + " failed (disk full?)");
-    }
-    if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-        const int err = errno;
-        std::remove(tmp.c_str());
-        throw InputError(head + std::strerror(err) + " (choose another path)");
-    }
+    std::string png;
+    const auto put = [](void* to, void* data, int size) { static_cast<std::string*>(to)->append(static_cast<char*>(data), size_t(size)); };
+    if (!stbi_write_png_to_func(put, &png, size.x, size.y, 3, flipped.data(), int(stride)))
+        throw RuntimeError("cannot write screenshot '" + path + "': PNG encoding failed");
+    writeFileWhole(path, "screenshot", [&](std::ostream& out) { out.write(png.data(), std::streamsize(png.size())); });
 }
 
 } // namespace ob::gfx
