@@ -53,24 +53,8 @@ constexpr GLbitfield WRITE_BARRIERS =
 bool planSphereStamp(std::span<const float> current, int rows, int cols, float cellSize, const BoundingSphere& def,
                      SphereContact& contact, const SphereMotion& m, RippleStamp& out) {
     assert(cellSize > 0.0f && def.radius > 0.0f && current.size() == size_t(rows) * size_t(cols));
-    // The same decisions and numbers as stepSphere (sphere_stamp.cpp), step for step.
-    const int cx = int(std::clamp(std::floor(m.gridX + 0.5f), -1.0e9f, 1.0e9f));
-    const int cz = int(std::clamp(std::floor(m.gridZ + 0.5f), -1.0e9f, 1.0e9f));
-    const bool inside = cx >= 0 && cx < cols && cz >= 0 && cz < rows;
-    const float ripple = inside ? current[size_t(cz) * size_t(cols) + size_t(cx)] : 0.0f;
-    if (!updateContact(contact, m.centreY, def.radius, m.surfaceY, ripple)) return false;
-
-    float sd = float(int(def.direction));
-    if (def.direction == SphereDirection::Auto) sd = m.verticalVelocity > 0.0f ? 1.0f : -1.0f;
-    out.accelerationFactor = def.afFromMotion ? accelerationFactor(m.mass, m.speed, def.radius, def.reference.weight,
-                                                                   def.reference.speed, def.reference.size)
-                                              : def.accelerationFactor;
-    out.cx = cx;
-    out.cz = cz;
-    out.radiusCells = def.radius / cellSize;
-    out.base = contact.baseRipple;
-    out.heightScale = sd * def.heightRatio * cellSize;
-    return true;
+    return planStamp(rows, cols, cellSize, def, contact, m,
+                     [&](int x, int z) { return current[size_t(z) * size_t(cols) + size_t(x)]; }, out);
 }
 
 bool RippleFieldGpu::available() { return GLAD_GL_VERSION_4_3 != 0; }

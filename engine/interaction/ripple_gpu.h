@@ -14,14 +14,6 @@ namespace ob::interaction {
 
 /// One eq. 5 + eq. 7 footprint to apply on the GPU: the arguments stampFootprint takes, with
 /// the footprint named by its SR. Table 2 (updateContact) decides on the CPU which go in.
-struct RippleStamp {
-    int cx = 0, cz = 0;          ///< centre cell (column x, row z); may lie outside the field
-    float radiusCells = 0.0f;    ///< SR, cells; <= 0 stamps nothing
-    float base = 0.0f;           ///< eq. 5 base height, m (the centre's ripple at first contact)
-    float heightScale = 0.0f;    ///< SD·SHR·cell size, m per cell of PH
-    float accelerationFactor = 0.0f;  ///< AF of eq. 7
-};
-
 /// Table 2 for one sphere, as stepSphere decides it, without touching a field: updates the
 /// contact and, when the sphere stamps this step, fills `out` with the stamp stepSphere would
 /// apply. `current` is Vh(t) (rows × cols, row-major) as the caller last read it back: the

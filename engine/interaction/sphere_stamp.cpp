@@ -70,20 +70,11 @@ void stampFootprint(RippleField& field, const FootprintProfile& fp, int cx, int 
 bool stepSphere(RippleField& field, FootprintCache& cache, float cellSize, const BoundingSphere& def,
                 SphereContact& contact, const SphereMotion& m) {
     assert(cellSize > 0.0f && def.radius > 0.0f);
-    // Clamped so that a sphere far off the patch converts to int safely (it stamps nothing).
-    const int cx = int(std::clamp(std::floor(m.gridX + 0.5f), -1.0e9f, 1.0e9f));
-    const int cz = int(std::clamp(std::floor(m.gridZ + 0.5f), -1.0e9f, 1.0e9f));
-    const bool inside = cx >= 0 && cx < field.cols() && cz >= 0 && cz < field.rows();
-    const float ripple = inside ? field.currentAt(cx, cz) : 0.0f;
-    if (!updateContact(contact, m.centreY, def.radius, m.surfaceY, ripple)) return false;
-
-    float sd = float(int(def.direction));
-    if (def.direction == SphereDirection::Auto) sd = m.verticalVelocity > 0.0f ? 1.0f : -1.0f;
-    const float af = def.afFromMotion ? accelerationFactor(m.mass, m.speed, def.radius, def.reference.weight,
-                                                           def.reference.speed, def.reference.size)
-                                      : def.accelerationFactor;
-    const FootprintProfile& fp = cache.get(def.radius / cellSize);
-    stampFootprint(field, fp, cx, cz, contact.baseRipple, sd * def.heightRatio * cellSize, af);
+    RippleStamp st;
+    if (!planStamp(field.rows(), field.cols(), cellSize, def, contact, m,
+                   [&](int x, int z) { return field.currentAt(x, z); }, st))
+        return false;
+    stampFootprint(field, cache.get(st.radiusCells), st.cx, st.cz, st.base, st.heightScale, st.accelerationFactor);
     return true;
 }
 

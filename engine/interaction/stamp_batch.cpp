@@ -416,22 +416,12 @@ void StampBatch::clear() {
 bool queueSphere(StampBatch& batch, const RippleField& field, FootprintCache& cache, float cellSize,
                  const BoundingSphere& def, SphereContact& contact, const SphereMotion& m) {
     assert(cellSize > 0.0f && def.radius > 0.0f);
-    // stepSphere (sphere_stamp.cpp) step for step, with the read of Vh(t) through the batch.
-    const int cx = int(std::clamp(std::floor(m.gridX + 0.5f), -1.0e9f, 1.0e9f));
-    const int cz = int(std::clamp(std::floor(m.gridZ + 0.5f), -1.0e9f, 1.0e9f));
-    const bool inside = cx >= 0 && cx < field.cols() && cz >= 0 && cz < field.rows();
-    // The read only matters at first contact; it is cheap either way but not free.
-    const bool mayTouch = !contact.inContact();
-    const float ripple = inside && mayTouch ? batch.currentAt(field, cx, cz) : 0.0f;
-    if (!updateContact(contact, m.centreY, def.radius, m.surfaceY, ripple)) return false;
-
-    float sd = float(int(def.direction));
-    if (def.direction == SphereDirection::Auto) sd = m.verticalVelocity > 0.0f ? 1.0f : -1.0f;
-    const float af = def.afFromMotion ? accelerationFactor(m.mass, m.speed, def.radius, def.reference.weight,
-                                                           def.reference.speed, def.reference.size)
-                                      : def.accelerationFactor;
-    const FootprintProfile& fp = cache.get(def.radius / cellSize);
-    batch.push(fp, cx, cz, contact.baseRipple, sd * def.heightRatio * cellSize, af);
+    // stepSphere's decision, with the read of Vh(t) through the batch.
+    RippleStamp st;
+    if (!planStamp(field.rows(), field.cols(), cellSize, def, contact, m,
+                   [&](int x, int z) { return batch.currentAt(field, x, z); }, st))
+        return false;
+    batch.push(cache.get(st.radiusCells), st.cx, st.cz, st.base, st.heightScale, st.accelerationFactor);
     return true;
 }
 
