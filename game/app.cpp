@@ -5,11 +5,13 @@
 #include "core/error.h"
 #include "core/file_write.h"
 #include "core/log.h"
+#include "core/toml_writer.h"
 #include "gfx/gl.h"
 #include "gfx/renderer.h"
 #include "ecs/components.h"
 #include "cannon.h"
 #include "fish.h"
+#include "input_script.h"
 #include "objects.h"
 #include "sandbox.h"
 #include "script.h"
@@ -39,6 +41,14 @@ void checkWritable(const std::string& path, const char* what) {
 
 void writeTextFile(const std::string& path, const std::string& text, const char* what) {
     writeFileWhole(path, what, [&](std::ostream& out) { out << text; });
+}
+
+// Whether two [camera] sections say the same (compared as the TOML they write).
+static bool sameCamera(const CameraDef& a, const CameraDef& b) {
+    SceneDef x, y;
+    x.camera = a;
+    y.camera = b;
+    return writeToml(x) == writeToml(y);
 }
 
 static nlohmann::json phaseStats(const std::vector<double>& samples) {
@@ -112,6 +122,9 @@ int runScene(const SceneDef& scene, const std::string& scenePath, const RunOptio
     if (!options.stats.empty()) checkWritable(options.stats, "stats");
     for (const EventDef& e : scene.events)
         if (e.action == "screenshot") checkWritable(e.file, "event screenshot");
+    // Scripted input goes through the same queue as the window's events.
+    std::vector<platform::InputEvent> scripted;
+    if (!options.input.empty()) scripted = scriptEvents(loadInputScript(options.input));
 
     glm::ivec2 size = options.size.x > 0 ? options.size : glm::ivec2(scene.window.width, scene.window.height);
     std::unique_ptr<platform::Platform> platform;
@@ -126,18 +139,31 @@ int runScene(const SceneDef& scene, const std::string& scenePath, const RunOptio
     }
     logInfo("%s: %s", platform->name(), gfx::glRendererName());
 
-    auto sandbox = std::make_unique<Sandbox>(scene);
-    sandbox->attachPlatform(*platform, !platform->headless());
+    // A fixed clock advances stepsPerFrame steps a frame (what a slow machine does in play);
+    // the catch-up limit must let it.
+    auto withSteps = [&](SceneDef s) {
+        s.sim.max_steps_per_frame = std::max(s.sim.max_steps_per_frame, options.stepsPerFrame);
+        return s;
+    };
+    auto makeSandbox = [&](const SceneDef& s) {
+        auto made = std::make_unique<Sandbox>(withSteps(s));
+        made->attachPlatform(*platform, !platform->headless());
+        made->setScriptedInput(scripted);
+        if (!options.realTime) made->schedule().setFirstFrameSeconds(options.stepsPerFrame / double(s.sim.step_hz));
+        return made;
+    };
     auto makeClock = [&](const SceneDef& s) -> std::unique_ptr<Clock> {
         if (options.realTime) return std::make_unique<SteadyClock>();
-        return std::make_unique<FixedStepClock>(1.0 / s.sim.step_hz);
+        return std::make_unique<FixedStepClock>(options.stepsPerFrame / double(s.sim.step_hz));
     };
+    auto sandbox = makeSandbox(scene);
     std::unique_ptr<Clock> clock = makeClock(scene);
 
     // The run ends after `frames` frames, or once the simulation reaches `endTime`.
     const bool bounded = options.frames > 0 || options.endTime > 0.0;
     const bool progress = bounded && platform->headless() && isatty(STDERR_FILENO);
-    const long expected = options.frames > 0 ? options.frames : long(std::ceil(options.endTime * scene.sim.step_hz - 1e-6));
+    const long expected = options.frames > 0 ? options.frames
+                                             : long(std::ceil(options.endTime * scene.sim.step_hz / options.stepsPerFrame - 1e-6));
     for (long f = 0; bounded || !sandbox->quitRequested(); ++f) {
         sandbox->frame(clock->now());
         if (sandbox->quitRequested()) break;
@@ -157,9 +183,12 @@ int runScene(const SceneDef& scene, const std::string& scenePath, const RunOptio
         // The UI's "restart with these settings": a new world on the same window.
         if (std::optional<SceneDef> edited = sandbox->takeRestartRequest()) {
             logInfo("restarting the scene with the edited settings");
+            const std::optional<CameraPose> pose = sandbox->cameraPose();
+            const bool cameraEdited = !sameCamera(sandbox->scene().camera, edited->camera);
             sandbox.reset();
-            sandbox = std::make_unique<Sandbox>(*edited);
-            sandbox->attachPlatform(*platform, !platform->headless());
+            sandbox = makeSandbox(*edited);
+            // The player keeps looking from where they were (in the edited mode, if they edited it).
+            if (pose) sandbox->setCameraPose(*pose, !cameraEdited);
             clock = makeClock(*edited);
         }
     }

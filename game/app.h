@@ -17,6 +17,8 @@ struct RunOptions {
     std::string screenshot;      ///< PNG of the last frame ("" = none)
     std::string stats;           ///< JSON summary ("" = none)
     std::string fallbackNote;    ///< what to say when falling back to headless
+    std::string input;           ///< scripted input file (TOML, game/input_script.h; "" = none)
+    int stepsPerFrame = 1;       ///< fixed clock only: simulation steps each rendered frame advances
 };
 
 /// Runs the scene; returns the process exit code. Throws ob::InputError / ob::RuntimeError.

@@ -27,7 +27,7 @@ struct CameraDef {
 
 template <class V> void describe(V& v, CameraDef& d) {
     v.field("mode", d.mode, Choices{"fixed", "orbit", "fly", "follow"},
-            "fixed, orbit the target, fly (WASD QE, right mouse looks), or follow a ship");
+            "fixed, orbit the target, fly (WASD QE, right drag looks), or follow a ship; C cycles");
     v.field("position", d.position, any(), "start eye position (world m)");
     v.field("target", d.target, any(), "point looked at (world m)");
     v.field("fov_deg", d.fov_deg, range(10, 120), "vertical field of view (degrees)");
@@ -40,21 +40,48 @@ template <class V> void describe(V& v, CameraDef& d) {
     v.field("follow_height_m", d.follow_height_m, range(-100, 10000), "follow mode: height above (m)");
 }
 
+/// How close the camera comes to the water from above (m): follow and orbit eyes stay this
+/// far above the surface below them, the fly camera FLY_CLEARANCE_M.
+constexpr float CAMERA_CLEARANCE_M = 1.0f;
+constexpr float FLY_CLEARANCE_M = 0.5f;
+/// Fly mode: seconds Q is held against the surface before the camera dives through it.
+constexpr float DIVE_HOLD_S = 0.6f;
+
 /// Camera state on the camera entity (with a Transform).
 struct CameraRig {
     CameraDef def;
+    std::string startMode;  ///< the scene's mode (C cycles through it when it is "fixed")
     float yaw = 0.0f;    ///< radians about +y; 0 looks along +z
     float pitch = 0.0f;  ///< radians above the horizon
     glm::vec3 focus{0.0f};  ///< the point looked at (world m): the target, or the followed object
     bool placed = false;    ///< follow mode: the eye has been put behind the object once
+    // The player's steering (mouse drag, wheel) of the follow camera's arm.
+    float followYaw = 0.0f;    ///< radians the arm is turned about the object from straight behind
+    float followLift = 0.0f;   ///< radians the arm is raised above the scene's elevation
+    float followZoom = 1.0f;   ///< arm length over the scene's
+    // Fly mode: below the water only on purpose.
+    bool underwater = false;   ///< the player dived (Q held at the surface)
+    float diveHold = 0.0f;     ///< seconds Q has been held against the surface
+    double lastSimTime = 0.0;  ///< simulated time at the last update (automatic motion follows it)
 };
 
 /// Creates the camera entity from its Def.
 ecs::Entity spawnCamera(ecs::World& world, const CameraDef& def);
 /// Points the camera at `target` from `eye` (events, the UI).
 void placeCamera(CameraRig& rig, ecs::Transform& transform, glm::vec3 eye, glm::vec3 target);
-/// Script phase: moves the camera (orbit, fly from the input state, follow a ship).
+/// Render phase, before drawing (once per frame, also while paused): moves the camera from
+/// the frame's input (right drag orbits or looks, wheel zooms, fly keys) and its mode's
+/// motion (orbit, follow), and keeps it above the water unless the player dived.
 void cameraSystem(ecs::World& world, const ecs::Tick& tick);
+/// C: the next mode of follow (when there is a ship to follow) → orbit → fly (→ fixed when
+/// the scene starts fixed).
+void cycleCameraMode(ecs::World& world);
+/// Whether the camera flies (W/S/A/D/Q/E move it, not the ship).
+bool cameraFlies(ecs::World& world);
+/// The camera's mode now ("" without a camera).
+std::string cameraMode(ecs::World& world);
+/// The object the follow mode tracks (None when there is none).
+ecs::Entity followedObject(ecs::World& world, const std::string& name);
 /// The view of the first camera entity for a framebuffer of `size`.
 gfx::CameraView cameraView(ecs::World& world, glm::ivec2 size);
 

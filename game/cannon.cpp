@@ -3,7 +3,7 @@
 
 #include "ecs/components.h"
 #include "interaction/sphere_set.h"
-#include "platform/platform.h"
+#include "controls.h"
 
 #include <algorithm>
 #include <cmath>
@@ -97,7 +97,7 @@ void cannonSystem(ecs::World& world, const ecs::Tick& tick) {
     for (ecs::Entity e : sunk) destroyBody(world, e);
 
     // --- aim and fire
-    const auto* input = world.resource<platform::InputState>();
+    const auto* input = world.resource<StepInput>();
     const float dt = float(tick.dt);
     auto& cannons = world.pool<Cannon>();
     for (size_t i = 0; i < cannons.size(); ++i) {
@@ -105,13 +105,10 @@ void cannonSystem(ecs::World& world, const ecs::Tick& tick) {
         if (cannons.components()[i].player && input) {
             Cannon& c = cannons.components()[i];
             using platform::Key;
-            if (!input->uiCapturesKeyboard) {
-                c.yawDeg += AIM_RATE_DEG_S * dt * float(input->isDown(Key::Left) - input->isDown(Key::Right));
-                c.elevationDeg = std::clamp(c.elevationDeg + AIM_RATE_DEG_S * dt * float(input->isDown(Key::Up) - input->isDown(Key::Down)),
-                                            -10.0f, 89.0f);
-                c.fireRequested = c.fireRequested || input->wasPressed(Key::Space);
-            }
-            if (!input->uiCapturesMouse) c.fireRequested = c.fireRequested || input->mouseLeftPressed;
+            c.yawDeg += AIM_RATE_DEG_S * dt * float(input->isDown(Key::Left) - input->isDown(Key::Right));
+            c.elevationDeg = std::clamp(c.elevationDeg + AIM_RATE_DEG_S * dt * float(input->isDown(Key::Up) - input->isDown(Key::Down)),
+                                        -10.0f, 89.0f);
+            c.fireRequested = c.fireRequested || input->wasPressed(Key::Space) || input->wasClicked(platform::MouseButton::Left);
         }
         Cannon& c = cannons.components()[i];
         ecs::Transform& pivot = world.get<ecs::Transform>(e);

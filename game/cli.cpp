@@ -34,6 +34,8 @@ struct SceneFlags {
     long long seed = -1;
     std::string screenshot;
     std::string stats;
+    std::string input;
+    int stepsPerFrame = 1;
 
     void addTo(CLI::App* cmd, long defaultFrames) {
         frames = defaultFrames;
@@ -44,6 +46,10 @@ struct SceneFlags {
         cmd->add_option("--seed", seed, "scene seed (same as --set sim.seed=N)")->check(CLI::NonNegativeNumber);
         cmd->add_option("--screenshot", screenshot, "write the last frame to this PNG");
         cmd->add_option("--stats", stats, "write a JSON summary (frames, per-phase ms, entities, state hash)");
+        cmd->add_option("--input", input, "scripted input: a TOML file of [[press]] and [[mouse]] entries (README)");
+        cmd->add_option("--steps-per-frame", stepsPerFrame,
+                        "fixed clock: simulation steps each rendered frame advances (a slow machine's frame), 1-64")
+            ->check(CLI::Range(1, 64));
     }
 
     SceneDef load() const {
@@ -58,6 +64,8 @@ struct SceneFlags {
         o.frames = frames;
         o.screenshot = screenshot;
         o.stats = stats;
+        o.input = input;
+        o.stepsPerFrame = stepsPerFrame;
         if (!size.empty()) {
             std::smatch m;
             static const std::regex WXH(R"((\d{1,5})x(\d{1,5}))");
@@ -69,6 +77,21 @@ struct SceneFlags {
         return o;
     }
 };
+
+// `play --help`: every key and mouse action (the overlay shows those of the scene).
+const char* const PLAY_KEYS = R"(Keys and mouse (H shows and hides the overlay, which lists those this scene uses):
+  right drag    orbit the camera about what it looks at (fly mode: look around)
+  wheel         zoom: follow distance, orbit radius (fly mode: move forward)
+  C             camera mode: follow (a ship) -> orbit -> fly
+  W/S  A/D      ship: throttle, rudder (fly mode: move the camera)
+  Q/E  Shift    fly mode: down, up; Shift x4 speed; hold Q at the surface to dive
+  arrows        cannon: aim (yaw, elevation)
+  Space, click  cannon: fire one ball per press
+  F             a school of fish where the camera looks
+  P  N          pause and resume; one step while paused
+  F12           screenshot (oceanbox_shot_NNN.png)
+  H             show or hide the overlay
+  Esc           quit)";
 
 } // namespace
 
@@ -86,6 +109,7 @@ int runCli(int argc, char** argv) {
     CLI::App* playCmd = app.add_subcommand("play", "open a scene in a window (headless with a screenshot where there is no display)");
     playCmd->add_option("scene", play.scene, "scene file (default: config/scenes/default.toml)");
     play.addTo(playCmd, 0);
+    playCmd->footer(PLAY_KEYS);
     playCmd->callback([&] {
         action = [&] {
             SceneDef scene = play.load();

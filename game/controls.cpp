@@ -1,10 +1,9 @@
-// Window controls: keys to pause, step, spawn fish and take screenshots.
+// The player's controls: the input queue's two consumers and the keys of the frame.
 #include "controls.h"
 
 #include "camera.h"
 #include "core/log.h"
 #include "objects.h"
-#include "platform/platform.h"
 #include "script.h"
 
 #include <cstdio>
@@ -13,23 +12,38 @@
 namespace ob::game {
 
 void addControls(ecs::World& world) {
+    world.setResource(std::make_unique<platform::InputQueue>());
+    world.setResource(std::make_unique<platform::InputState>());
+    world.setResource(std::make_unique<StepInput>());
     world.setResource(std::make_unique<WindowControls>());
     world.setResource(std::make_unique<ecs::SimControl>());
+}
+
+void frameInputSystem(ecs::World& world, const ecs::Tick& tick) {
+    auto* queue = world.resource<platform::InputQueue>();
+    auto* input = world.resource<platform::InputState>();
+    if (!queue || !input) return;
+    if (auto* script = world.resource<ScriptedInput>())
+        for (; script->next < script->events.size() && script->events[script->next].time <= tick.clock; ++script->next)
+            queue->push(script->events[script->next]);
+    input->beginConsume();
+    queue->drainFrame(tick.clock, *input);
 }
 
 void controlsSystem(ecs::World& world, const ecs::Tick&) {
     const auto* input = world.resource<platform::InputState>();
     auto* controls = world.resource<WindowControls>();
     auto* sim = world.resource<ecs::SimControl>();
-    if (!input || !controls || !sim || input->uiCapturesKeyboard) return;
+    if (!input || !controls || !sim) return;
     using platform::Key;
-    if (input->wasPressed(Key::P)) {
+    for (int i = 0; i < input->pressCount(Key::P); ++i) {
         sim->paused = !sim->paused;
         logInfo("%s", sim->paused ? "paused (P resumes, N steps)" : "running");
     }
-    if (input->wasPressed(Key::N) && sim->paused) ++sim->stepRequests;
-    if (input->wasPressed(Key::F)) ++controls->spawnFish;
-    if (input->wasPressed(Key::F12)) {
+    if (sim->paused) sim->stepRequests += input->pressCount(Key::N);
+    if (input->wasPressed(Key::H)) controls->showOverlay = !controls->showOverlay;
+    for (int i = 0; i < input->pressCount(Key::C); ++i) cycleCameraMode(world);
+    for (int i = 0; i < input->pressCount(Key::F12); ++i) {
         // The first free name in the current folder; the frame is written after it is drawn.
         std::string name;
         do {
@@ -39,6 +53,16 @@ void controlsSystem(ecs::World& world, const ecs::Tick&) {
         } while (std::filesystem::exists(name));
         if (auto* script = world.resource<ScriptState>()) script->screenshots.push_back(name);
     }
+}
+
+void stepInputSystem(ecs::World& world, const ecs::Tick& tick) {
+    auto* queue = world.resource<platform::InputQueue>();
+    auto* input = world.resource<StepInput>();
+    if (!queue || !input) return;
+    input->beginConsume();
+    queue->drainStep(tick.clock, *input);
+    input->keysMoveCamera = cameraFlies(world);
+    if (auto* controls = world.resource<WindowControls>()) controls->spawnFish += input->pressCount(platform::Key::F);
 }
 
 void spawnRequestsSystem(ecs::World& world, const ecs::Tick& tick) {

@@ -1,20 +1,43 @@
-// Window controls: pause (P), single step while paused (N), a new fish school at the point
-// the camera looks at (F), a screenshot (F12).
+// The player's controls: the frame's keys (pause P, step N, screenshot F12, camera mode C,
+// overlay H, quit Esc) and the simulation's input (held keys and presses, per fixed step).
 #pragma once
 #include "ecs/schedule.h"
+#include "platform/input.h"
+
+#include <vector>
 
 namespace ob::game {
 
-/// Requests the input phase collects for the simulation (a resource).
+/// What the fixed steps see of the input (a resource): events drained up to each step's
+/// clock time, so a press is seen by exactly one step whatever the frame rate.
+struct StepInput : platform::InputState {
+    bool keysMoveCamera = false;  ///< the camera flies: W/S/A/D/Q/E are the camera's, not the ship's
+};
+
+/// Scripted input events not yet queued (a resource; `run --input`).
+struct ScriptedInput {
+    std::vector<platform::InputEvent> events;  ///< in time order
+    size_t next = 0;
+};
+
+/// Requests the frame's keys make of the simulation, and the overlay switch (a resource).
 struct WindowControls {
     int spawnFish = 0;        ///< fish schools to spawn at the camera's focus next step
     int screenshotCount = 0;  ///< screenshots taken so far (names oceanbox_shot_NNN.png)
+    bool showOverlay = true;  ///< H: the UI overlay is drawn
 };
 
-/// Creates the controls and SimControl resources.
+/// Creates the input queue, the frame's and the steps' input state, the controls and
+/// SimControl resources.
 void addControls(ecs::World& world);
-/// Input phase, after the platform's events: P, N, F, F12.
+/// Input phase: queues the scripted events due by this frame's clock, then gives the frame
+/// its events (call after the platform's events are queued).
+void frameInputSystem(ecs::World& world, const ecs::Tick& tick);
+/// Input phase, after frameInputSystem: P, N, F12, H, C.
 void controlsSystem(ecs::World& world, const ecs::Tick& tick);
+/// Script phase, first: the events due by this step's clock time into StepInput; F asks for
+/// a fish school.
+void stepInputSystem(ecs::World& world, const ecs::Tick& tick);
 /// Script phase: spawns the fish schools asked for.
 void spawnRequestsSystem(ecs::World& world, const ecs::Tick& tick);
 

@@ -24,13 +24,24 @@ namespace ob::game {
 
 namespace {
 
-// Input phase: the platform's events into the InputState resource.
-void inputSystem(ecs::World& world, const ecs::Tick&) {
+// Input phase, first: the platform's events into the input queue, stamped with the clock
+// time the frame started at (they came since then), so this frame's first step sees them.
+// Presses, clicks, wheel and motion the UI takes are not the game's.
+void platformInputSystem(ecs::World& world, const ecs::Tick& tick) {
     auto* res = world.resource<FrameResources>();
     auto* input = world.resource<platform::InputState>();
-    if (!res || !res->platform || !input) return;
-    res->platform->pollInput(*input);
+    auto* queue = world.resource<platform::InputQueue>();
+    if (!res || !res->platform || !input || !queue) return;
     if (res->ui) res->ui->captureFlags(input->uiCapturesMouse, input->uiCapturesKeyboard);
+    std::vector<platform::InputEvent> events;
+    res->platform->pollEvents(events);
+    using T = platform::InputEvent::Type;
+    for (platform::InputEvent& e : events) {
+        if (input->uiCapturesKeyboard && e.type == T::KeyDown) continue;
+        if (input->uiCapturesMouse && (e.type == T::ButtonDown || e.type == T::Move || e.type == T::Scroll)) continue;
+        e.time = tick.clock - tick.dt;
+        queue->push(e);
+    }
 }
 
 // Render phase: the passes, then the UI, then present.
@@ -67,18 +78,20 @@ struct SystemEntry {
     ecs::SystemFn fn;
 };
 const SystemEntry SYSTEMS[] = {
-    {ecs::Phase::Input, "input", inputSystem},
+    {ecs::Phase::Input, "platform input", platformInputSystem},
+    {ecs::Phase::Input, "frame input", frameInputSystem},
     {ecs::Phase::Input, "controls", controlsSystem},
+    {ecs::Phase::Script, "step input", stepInputSystem},
     {ecs::Phase::Script, "events", scriptSystem},
     {ecs::Phase::Script, "spawn requests", spawnRequestsSystem},
     {ecs::Phase::Script, "ships", shipSystem},
     {ecs::Phase::Script, "cannons", cannonSystem},
     {ecs::Phase::Script, "fish", fishSystem},
-    {ecs::Phase::Script, "camera", cameraSystem},
     {ecs::Phase::Physics, "bodies", physicsSystem},
     {ecs::Phase::Interaction, "fish stamps", fishStampSystem},
     {ecs::Phase::Interaction, "ripples", interactionSystem},
     {ecs::Phase::Ocean, "ocean", oceanSystem},
+    {ecs::Phase::Render, "camera", cameraSystem},
     {ecs::Phase::Render, "render", renderSystem},
 };
 
@@ -86,7 +99,6 @@ const SystemEntry SYSTEMS[] = {
 
 Sandbox::Sandbox(const SceneDef& scene) : m_scene(scene), m_schedule(scene.sim) {
     for (const SystemEntry& s : SYSTEMS) m_schedule.add(s.phase, s.name, s.fn);
-    m_world.setResource(std::make_unique<platform::InputState>());
     addControls(m_world);
     spawnCamera(m_world, m_scene.camera);
     addOcean(m_world, m_scene.ocean, m_scene.gerstner);
@@ -103,6 +115,31 @@ void Sandbox::attachPlatform(platform::Platform& platform, bool withUi) {
     if (withUi && platform.nativeWindow()) m_ui = std::make_unique<gfx::UiOverlay>(platform.nativeWindow());
     m_world.setResource(std::make_unique<FrameResources>(
         FrameResources{&platform, m_renderer.get(), m_ui.get(), &m_schedule.timer(), &m_scene, &m_restart}));
+}
+
+void Sandbox::setScriptedInput(std::vector<platform::InputEvent> events) {
+    m_world.setResource(std::make_unique<ScriptedInput>(ScriptedInput{std::move(events), 0}));
+}
+
+std::optional<CameraPose> Sandbox::cameraPose() {
+    auto& rigs = m_world.pool<CameraRig>();
+    if (rigs.size() == 0) return std::nullopt;
+    return CameraPose{rigs.components()[0], m_world.get<ecs::Transform>(rigs.entities()[0])};
+}
+
+void Sandbox::setCameraPose(const CameraPose& pose, bool keepMode) {
+    auto& rigs = m_world.pool<CameraRig>();
+    if (rigs.size() == 0) return;
+    CameraRig& rig = rigs.components()[0];
+    const CameraDef def = rig.def;
+    const std::string startMode = rig.startMode;
+    rig = pose.rig;
+    rig.lastSimTime = 0.0;  // the new world's clock starts again
+    if (!keepMode) {
+        rig.def = def;
+        rig.startMode = startMode;
+    }
+    m_world.get<ecs::Transform>(rigs.entities()[0]) = pose.transform;
 }
 
 std::vector<std::string> Sandbox::takeScreenshotRequests() {

@@ -3,6 +3,8 @@
 #pragma once
 #include "ecs/schedule.h"
 #include "ecs/world.h"
+#include "camera.h"
+#include "platform/input.h"
 #include "scene.h"
 
 #include <cstdint>
@@ -29,6 +31,12 @@ struct FrameResources {
     std::optional<SceneDef>* restart = nullptr;  ///< set by the UI: rebuild the world from this scene
 };
 
+/// Where the camera is and how the player has steered it (kept across a restart).
+struct CameraPose {
+    CameraRig rig;
+    ecs::Transform transform;
+};
+
 class Sandbox {
 public:
     /// Builds the world from the scene (entities, resources) and the phase table.
@@ -51,6 +59,13 @@ public:
     bool quitRequested();
     /// The scene the UI asked to restart with (validated), once.
     std::optional<SceneDef> takeRestartRequest() { return std::exchange(m_restart, std::nullopt); }
+    /// Input events (clock time order) fed to the input queue as the clock reaches them.
+    void setScriptedInput(std::vector<platform::InputEvent> events);
+    /// The camera's pose (none without a camera).
+    std::optional<CameraPose> cameraPose();
+    /// Puts the camera where `pose` says; `keepMode`: its mode and settings too (else this
+    /// scene's [camera] keeps them).
+    void setCameraPose(const CameraPose& pose, bool keepMode);
     /// PNG files the timeline asked for since the last call (write them after the frame).
     std::vector<std::string> takeScreenshotRequests();
 

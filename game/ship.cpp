@@ -5,7 +5,7 @@
 
 #include "ecs/components.h"
 #include "interaction/sphere_set.h"
-#include "platform/platform.h"
+#include "controls.h"
 
 #include <algorithm>
 #include <cmath>
@@ -82,7 +82,7 @@ ecs::Entity spawnShip(ecs::World& world, const ObjectDef& o) {
 
 void shipSystem(ecs::World& world, const ecs::Tick& tick) {
     auto& ships = world.pool<Ship>();
-    const auto* input = world.resource<platform::InputState>();
+    const auto* input = world.resource<StepInput>();
     const float dt = float(tick.dt);
     for (size_t i = 0; i < ships.size(); ++i) {
         Ship& ship = ships.components()[i];
@@ -105,7 +105,7 @@ void shipSystem(ecs::World& world, const ecs::Tick& tick) {
         // --- pilot: throttle and rudder
         float targetSpeed = ship.speed;
         if (ship.player) {
-            if (input && !input->uiCapturesKeyboard) {
+            if (input && !input->keysMoveCamera) {
                 using platform::Key;
                 const int lever = int(input->isDown(Key::W)) - int(input->isDown(Key::S));
                 ship.throttle += THROTTLE_RATE * dt * float(lever);

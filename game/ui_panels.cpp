@@ -2,24 +2,37 @@
 // [render] keys), every other scene key on a copy applied by restarting, "save scene as".
 #include "ui_panels.h"
 
+#include "camera.h"
 #include "cannon.h"
+#include "controls.h"
 #include "core/error.h"
+#include "core/file_write.h"
 #include "core/toml_writer.h"
 #include "ecs/components.h"
 #include "gfx/ui_overlay.h"
 #include "ship.h"
 
 #include <cfloat>
-#include <fstream>
+#include <filesystem>
 #include <imgui.h>
 
 namespace ob::game {
 
-std::string saveScene(SceneDef& scene, const std::string& path) {
-    std::ofstream out(path);
-    if (!out) return "cannot write '" + path + "'";
-    out << "# Saved from oceanbox: the keys that differ from the defaults.\n" << writeToml(scene);
-    return out ? "" : "cannot write '" + path + "'";
+std::string saveScene(SceneDef scene, const std::string& path) {
+    // Model paths are absolute once loaded; the file names them relative to itself, so the
+    // scene and its models move together.
+    namespace fs = std::filesystem;
+    const fs::path folder = fs::absolute(fs::path(path)).parent_path();
+    for (ObjectDef& o : scene.objects)
+        if (!o.model.empty() && fs::path(o.model).is_absolute()) o.model = fs::path(o.model).lexically_relative(folder).string();
+    try {
+        writeFileWhole(path, "scene", [&](std::ostream& out) {
+            out << "# Saved from oceanbox: the keys that differ from the defaults.\n" << writeToml(scene);
+        });
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "";
 }
 
 std::string checkEditedScene(SceneDef& scene) {
@@ -45,8 +58,9 @@ static void timingGraph(const ecs::FrameTimer& timer) {
     for (int p = 0; p < ecs::PHASE_COUNT; ++p) plot(ecs::phaseName(ecs::Phase(p)), timer.cpuSamples(ecs::Phase(p)));
 }
 
-// Every other section, edited on a copy; applied by rebuilding the world from it.
-static void sceneEditor(const SceneDef& scene, std::optional<SceneDef>& restart) {
+// Every other section, edited on a copy; applied by rebuilding the world from it. Returns
+// the copy as the panel shows it (with the live [render] keys).
+static SceneDef sceneEditor(const SceneDef& scene, std::optional<SceneDef>& restart) {
     static SceneDef edited;
     static const SceneDef* source = nullptr;
     static std::string problem;
@@ -55,7 +69,8 @@ static void sceneEditor(const SceneDef& scene, std::optional<SceneDef>& restart)
         source = &scene;
         problem.clear();
     }
-    if (!ImGui::CollapsingHeader("scene (applied on restart)")) return;
+    edited.render = scene.render;  // the live [render] keys carry over
+    if (!ImGui::CollapsingHeader("scene (applied on restart)")) return edited;
     gfx::UiEditor editor;
     editor.section("sim", edited.sim);
     editor.section("camera", edited.camera);
@@ -66,7 +81,6 @@ static void sceneEditor(const SceneDef& scene, std::optional<SceneDef>& restart)
     editor.list("objects", edited.objects, "");
     editor.list("events", edited.events, "");
     if (ImGui::Button("restart with these settings")) {
-        edited.render = scene.render;  // the live [render] keys carry over
         problem = checkEditedScene(edited);
         if (problem.empty()) restart = edited;
     }
@@ -76,6 +90,22 @@ static void sceneEditor(const SceneDef& scene, std::optional<SceneDef>& restart)
         problem.clear();
     }
     if (!problem.empty()) ImGui::TextWrapped("%s", problem.c_str());
+    return edited;
+}
+
+std::vector<std::string> keyHelp(ecs::World& world) {
+    const bool flying = cameraFlies(world);
+    bool ship = false, cannon = false;
+    for (const Ship& s : world.pool<Ship>().components()) ship = ship || s.player;
+    for (const Cannon& c : world.pool<Cannon>().components()) cannon = cannon || c.player;
+    std::vector<std::string> lines;
+    if (flying) lines.push_back("W/S/A/D move  Q/E down/up  Shift fast  hold Q at the surface: dive");
+    else if (ship) lines.push_back("W/S throttle  A/D rudder");
+    if (cannon) lines.push_back("arrows aim  Space or left click: fire");
+    lines.push_back(std::string("right drag ") + (flying ? "look" : "orbit") + "  wheel " + (flying ? "forward" : "zoom") +
+                    "  C camera mode (now " + cameraMode(world) + ")");
+    lines.push_back("F fish  P pause  N step (paused)  F12 screenshot  H hide this  Esc quit");
+    return lines;
 }
 
 static void playerPanel(ecs::World& world) {
@@ -94,10 +124,11 @@ static void playerPanel(ecs::World& world) {
         const Cannon& c = cannons.components()[i];
         if (c.player) ImGui::Text("cannon: yaw %.0f  elevation %.0f  shots %d", double(c.yawDeg), double(c.elevationDeg), c.shots);
     }
-    ImGui::TextDisabled("W/S throttle  A/D rudder  arrows aim  Space fire  F fish  F12 shot  P pause");
+    for (const std::string& line : keyHelp(world)) ImGui::TextDisabled("%s", line.c_str());
 }
 
 void drawPanels(ecs::World& world, SceneDef& scene, const ecs::FrameTimer& timer, std::optional<SceneDef>& restart) {
+    if (const auto* controls = world.resource<WindowControls>(); controls && !controls->showOverlay) return;
     ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
     ImGui::Begin("oceanbox");
     const auto& frames = timer.frameSamples();
@@ -126,7 +157,7 @@ void drawPanels(ecs::World& world, SceneDef& scene, const ecs::FrameTimer& timer
     playerPanel(world);
     gfx::UiEditor editor;
     editor.section("render", scene.render);
-    sceneEditor(scene, restart);
+    const SceneDef shown = sceneEditor(scene, restart);
 
     // --- save scene as
     static char path[256] = "saved_scene.toml";
@@ -134,7 +165,7 @@ void drawPanels(ecs::World& world, SceneDef& scene, const ecs::FrameTimer& timer
     ImGui::InputText("##path", path, sizeof path);
     ImGui::SameLine();
     if (ImGui::Button("save scene as")) {
-        std::string error = saveScene(scene, path);
+        std::string error = saveScene(shown, path);
         status = error.empty() ? std::string("saved ") + path : error;
     }
     if (!status.empty()) ImGui::TextUnformatted(status.c_str());

@@ -6,6 +6,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace ob::game {
 
@@ -17,8 +18,11 @@ void drawPanels(ecs::World& world, SceneDef& scene, const ecs::FrameTimer& timer
 /// "" when valid, else the loader's messages.
 std::string checkEditedScene(SceneDef& scene);
 
-/// Writes the scene as TOML (the keys that differ from the defaults) to `path`; returns ""
-/// or what went wrong.
-std::string saveScene(SceneDef& scene, const std::string& path);
+/// Writes the scene as TOML (the keys that differ from the defaults) to `path`, whole or
+/// not at all, model paths relative to the file's folder; returns "" or what went wrong.
+std::string saveScene(SceneDef scene, const std::string& path);
+
+/// The keys and mouse actions that do something in this world now (the overlay's help).
+std::vector<std::string> keyHelp(ecs::World& world);
 
 } // namespace ob::game

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <filesystem>
 #include <regex>
 #include <set>
 #include <toml++/toml.h>
@@ -35,12 +36,31 @@ static std::string parseErrorText(const toml::parse_error& e) {
 
 TomlDocument TomlDocument::fromFile(const std::string& path, std::vector<std::string>& errors) {
     TomlDocument doc;
-    FILE* f = std::fopen(path.c_str(), "rb");
-    if (!f) {
-        errors.push_back(path + ": cannot open scene file");
+    // What is not a readable, non-empty regular file says so (a folder would read as an
+    // error deep in the parser, a device could block or read forever, an empty file would
+    // silently be all defaults).
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    const fs::file_status status = fs::status(path, ec);
+    if (fs::is_directory(status)) {
+        errors.push_back(path + ": is a folder, not a TOML file");
         return doc;
     }
+    if (fs::exists(status) && !fs::is_regular_file(status)) {
+        errors.push_back(path + ": is not a regular file (a device, pipe or socket); give a TOML file");
+        return doc;
+    }
+    FILE* f = std::fopen(path.c_str(), "rb");
+    if (!f) {
+        errors.push_back(path + ": cannot open file (" + (fs::exists(status) ? "no read permission" : "no such file") + ")");
+        return doc;
+    }
+    const bool empty = std::fgetc(f) == EOF;
     std::fclose(f);
+    if (empty) {
+        errors.push_back(path + ": is empty (a TOML file with at least one key is expected)");
+        return doc;
+    }
     try {
         doc.m_impl->root = toml::parse_file(path);
     } catch (const toml::parse_error& e) {

@@ -47,8 +47,8 @@ void Schedule::runPhase(World& world, Phase phase, const Tick& tick) {
     m_timer.addCpu(phase, Ms(std::chrono::steady_clock::now() - t0).count());
 }
 
-void Schedule::runStep(World& world) {
-    Tick tick{simTime(), stepSeconds(), m_step, 0.0};
+void Schedule::runStep(World& world, double clock) {
+    const Tick tick{simTime(), stepSeconds(), m_step, clock};
     // --- simulation phases, in table order
     for (Phase p : {Phase::Script, Phase::Physics, Phase::Interaction, Phase::Ocean}) runPhase(world, p, tick);
     ++m_step;
@@ -61,31 +61,34 @@ void Schedule::runFrame(World& world, double now) {
     m_frameStart = std::chrono::steady_clock::now();
     m_frameOpen = true;
     m_timer.beginFrame();
-    double frameDt = m_lastNow < 0 ? stepSeconds() : now - m_lastNow;
+    const double h = stepSeconds();
+    const double frameDt = m_lastNow < 0 ? (m_firstFrameSeconds > 0 ? m_firstFrameSeconds : h) : now - m_lastNow;
+    const double before = now - frameDt;
     m_lastNow = now;
 
     // --- input: once per frame
-    runPhase(world, Phase::Input, Tick{simTime(), frameDt, m_step, 0.0});
+    runPhase(world, Phase::Input, Tick{simTime(), frameDt, m_step, now});
 
-    // --- simulation: the fixed steps due by now, at most max_steps_per_frame (the rest is dropped)
-    const double h = stepSeconds();
+    // --- simulation: the fixed steps due by now, at most max_steps_per_frame (the rest is
+    // dropped). Step j of n reaches the clock at before + (j+1)/n of the frame, so the
+    // input of the frame is spread over its steps in the order it came.
     if (SimControl* control = world.resource<SimControl>(); control && control->paused) {
         // Paused: time stands still; each request runs exactly one step.
         m_accumulator = 0;
-        for (; control->stepRequests > 0; --control->stepRequests) runStep(world);
+        for (; control->stepRequests > 0; --control->stepRequests) runStep(world, now);
     } else {
         m_accumulator += frameDt;
-        int steps = 0;
-        while (m_accumulator >= h * (1.0 - 1e-9) && steps < m_def.max_steps_per_frame) {
-            runStep(world);
+        int due = 0;
+        for (double a = m_accumulator; a >= h * (1.0 - 1e-9) && due < m_def.max_steps_per_frame; a -= h) ++due;
+        for (int j = 0; j < due; ++j) {
+            runStep(world, j + 1 == due ? now : before + frameDt * double(j + 1) / double(due));
             m_accumulator -= h;
-            ++steps;
         }
-        if (steps == m_def.max_steps_per_frame && m_accumulator > h) m_accumulator = 0;
+        if (due == m_def.max_steps_per_frame && m_accumulator > h) m_accumulator = 0;
     }
 
     // --- render: once per frame, at the latest simulated state
-    runPhase(world, Phase::Render, Tick{simTime(), frameDt, m_step, m_accumulator / h});
+    runPhase(world, Phase::Render, Tick{simTime(), frameDt, m_step, now});
     ++m_frames;
 }
 

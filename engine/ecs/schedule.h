@@ -45,12 +45,13 @@ struct SimControl {
     int stepRequests = 0;  ///< steps to run while paused (consumed by the schedule)
 };
 
-/// What a system sees of time. For per-frame phases dt is the frame's simulated time.
+/// What a system sees of time. For per-frame phases dt is the frame's clock time.
 struct Tick {
-    double time = 0;     ///< simulated seconds at the start of this step
-    double dt = 0;       ///< step length (s)
-    uint64_t step = 0;   ///< index of this simulation step
-    double alpha = 0;    ///< render phase: fraction of a step between the last state and now
+    double time = 0;     ///< simulated seconds at the start of this step (frame phases: now)
+    double dt = 0;       ///< step length (s); frame phases: the clock time since the last frame
+    uint64_t step = 0;   ///< index of this simulation step (frame phases: the next one)
+    double clock = 0;    ///< the run's clock time this step or frame reaches: input stamped
+                         ///< before it belongs to it (platform::InputQueue)
 };
 
 /// A system: a free function over the world.
@@ -106,8 +107,12 @@ public:
     /// Closes the open frame's timing (runFrame does it for the previous frame; call it
     /// after the last frame's present).
     void finish();
-    /// Runs only the simulation phases for one step (headless simulation without a frame).
-    void runStep(World& world);
+    /// Runs only the simulation phases for one step (headless simulation without a frame);
+    /// its input is what was stamped before the end of the step on the simulated clock.
+    void runStep(World& world) { runStep(world, simTime() + stepSeconds()); }
+    /// The first frame's clock interval (s; default one step): a run that advances K steps a
+    /// frame starts with K.
+    void setFirstFrameSeconds(double seconds) { m_firstFrameSeconds = seconds; }
     const FrameTimer& timer() const { return m_timer; }
     FrameTimer& timer() { return m_timer; }
     double simTime() const { return double(m_step) / m_def.step_hz; }
@@ -122,6 +127,7 @@ private:
         SystemFn fn;
     };
     void runPhase(World& world, Phase phase, const Tick& tick);
+    void runStep(World& world, double clock);
 
     SimDef m_def;
     std::vector<Entry> m_systems;
@@ -132,6 +138,7 @@ private:
     std::chrono::steady_clock::time_point m_frameStart;
     bool m_frameOpen = false;
     double m_accumulator = 0;
+    double m_firstFrameSeconds = 0;  // 0: one step
 };
 
 } // namespace ob::ecs

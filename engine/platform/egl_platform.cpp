@@ -61,7 +61,7 @@ public:
     const char* name() const override { return "egl"; }
     bool headless() const override { return true; }
     glm::ivec2 framebufferSize() const override { return m_size; }
-    void pollInput(InputState& in) override { in.pressed.fill(false); in.mouseDelta = {}; in.mouseLeftPressed = false; in.scroll = 0; }
+    void pollEvents(std::vector<InputEvent>&) override {}
     // As a swap chain does: at most FRAMES_IN_FLIGHT frames queued on the GPU, so frame
     // times measure throughput (the CPU's next frame overlaps the GPU's last).
     void present() override {

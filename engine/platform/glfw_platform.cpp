@@ -5,7 +5,10 @@
 #include "core/error.h"
 
 #include <GLFW/glfw3.h>
+#include <algorithm>
 #include <cstdlib>
+#include <iterator>
+#include <vector>
 
 namespace ob::platform {
 
@@ -20,7 +23,7 @@ namespace {
 constexpr int KEY_CODES[size_t(Key::Count)] = {
     GLFW_KEY_W, GLFW_KEY_A, GLFW_KEY_S, GLFW_KEY_D, GLFW_KEY_Q, GLFW_KEY_E, GLFW_KEY_SPACE,
     GLFW_KEY_LEFT_SHIFT, GLFW_KEY_ESCAPE, GLFW_KEY_UP, GLFW_KEY_DOWN, GLFW_KEY_LEFT, GLFW_KEY_RIGHT, GLFW_KEY_F1,
-    GLFW_KEY_P, GLFW_KEY_N, GLFW_KEY_F, GLFW_KEY_F12};
+    GLFW_KEY_P, GLFW_KEY_N, GLFW_KEY_F, GLFW_KEY_F12, GLFW_KEY_H, GLFW_KEY_C};
 
 class GlfwPlatform final : public Platform {
 public:
@@ -39,10 +42,36 @@ public:
         glfwMakeContextCurrent(m_window);
         glfwSwapInterval(def.vsync ? 1 : 0);
         gfx::initGl(reinterpret_cast<GLADloadfunc>(glfwGetProcAddress));
+        // Every event is queued as it is delivered, so order and short taps survive a slow frame.
         glfwSetWindowUserPointer(m_window, this);
-        glfwSetScrollCallback(m_window, [](GLFWwindow* w, double, double dy) {
-            static_cast<GlfwPlatform*>(glfwGetWindowUserPointer(w))->m_scroll += float(dy);
+        glfwSetKeyCallback(m_window, [](GLFWwindow* w, int key, int, int action, int) {
+            if (action == GLFW_REPEAT) return;
+            const int* code = std::find(std::begin(KEY_CODES), std::end(KEY_CODES), key);
+            if (key == GLFW_KEY_RIGHT_SHIFT) code = std::find(std::begin(KEY_CODES), std::end(KEY_CODES), GLFW_KEY_LEFT_SHIFT);
+            if (code == std::end(KEY_CODES)) return;
+            InputEvent e;
+            e.type = action == GLFW_PRESS ? InputEvent::Type::KeyDown : InputEvent::Type::KeyUp;
+            e.key = Key(code - std::begin(KEY_CODES));
+            self(w)->m_events.push_back(e);
         });
+        glfwSetMouseButtonCallback(m_window, [](GLFWwindow* w, int button, int action, int) {
+            if (button != GLFW_MOUSE_BUTTON_LEFT && button != GLFW_MOUSE_BUTTON_RIGHT) return;
+            InputEvent e;
+            e.type = action == GLFW_PRESS ? InputEvent::Type::ButtonDown : InputEvent::Type::ButtonUp;
+            e.button = button == GLFW_MOUSE_BUTTON_LEFT ? MouseButton::Left : MouseButton::Right;
+            self(w)->m_events.push_back(e);
+        });
+        glfwSetCursorPosCallback(m_window, [](GLFWwindow* w, double x, double y) {
+            GlfwPlatform* p = self(w);
+            const glm::vec2 cursor{float(x), float(y)};
+            if (p->m_cursorKnown) p->m_events.push_back({InputEvent::Type::Move, 0.0, Key::W, MouseButton::Left, cursor - p->m_cursor});
+            p->m_cursor = cursor;
+            p->m_cursorKnown = true;
+        });
+        glfwSetScrollCallback(m_window, [](GLFWwindow* w, double, double dy) {
+            self(w)->m_events.push_back({InputEvent::Type::Scroll, 0.0, Key::W, MouseButton::Left, glm::vec2(0.0f, float(dy))});
+        });
+        glfwSetWindowCloseCallback(m_window, [](GLFWwindow* w) { self(w)->m_events.push_back({InputEvent::Type::Close}); });
     }
     ~GlfwPlatform() override {
         glfwDestroyWindow(m_window);
@@ -59,34 +88,21 @@ public:
         return {w, h};
     }
 
-    void pollInput(InputState& in) override {
+    void pollEvents(std::vector<InputEvent>& out) override {
         glfwPollEvents();
-        for (size_t k = 0; k < size_t(Key::Count); ++k) {
-            bool now = glfwGetKey(m_window, KEY_CODES[k]) == GLFW_PRESS;
-            in.pressed[k] = now && !in.down[k];
-            in.down[k] = now;
-        }
-        double x, y;
-        glfwGetCursorPos(m_window, &x, &y);
-        glm::vec2 mouse{float(x), float(y)};
-        in.mouseDelta = m_firstPoll ? glm::vec2(0.0f) : mouse - in.mouse;
-        in.mouse = mouse;
-        m_firstPoll = false;
-        bool left = glfwGetMouseButton(m_window, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
-        in.mouseLeftPressed = left && !in.mouseLeft;
-        in.mouseLeft = left;
-        in.mouseRight = glfwGetMouseButton(m_window, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
-        in.scroll = m_scroll;
-        m_scroll = 0.0f;
-        in.quit = glfwWindowShouldClose(m_window) || in.wasPressed(Key::Escape);
+        out.insert(out.end(), m_events.begin(), m_events.end());
+        m_events.clear();
     }
 
     void present() override { glfwSwapBuffers(m_window); }
 
 private:
+    static GlfwPlatform* self(GLFWwindow* w) { return static_cast<GlfwPlatform*>(glfwGetWindowUserPointer(w)); }
+
     GLFWwindow* m_window = nullptr;
-    float m_scroll = 0.0f;
-    bool m_firstPoll = true;
+    std::vector<InputEvent> m_events;  // delivered since the last poll, in order
+    glm::vec2 m_cursor{0.0f};
+    bool m_cursorKnown = false;
 };
 
 } // namespace

@@ -76,7 +76,7 @@ public:
     const char* name() const override { return "osmesa"; }
     bool headless() const override { return true; }
     glm::ivec2 framebufferSize() const override { return m_size; }
-    void pollInput(InputState& in) override { in.pressed.fill(false); in.mouseDelta = {}; in.mouseLeftPressed = false; in.scroll = 0; }
+    void pollEvents(std::vector<InputEvent>&) override {}
     // Finish, so frame times include the rasteriser's work.
     void present() override { glFinish(); }
 

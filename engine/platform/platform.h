@@ -2,11 +2,12 @@
 // implementations: a GLFW window, and headless an OSMesa (llvmpipe) or EGL (GPU) context.
 #pragma once
 #include "core/schema.h"
+#include "platform/input.h"
 
-#include <array>
 #include <glm/vec2.hpp>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace ob::platform {
 
@@ -23,24 +24,6 @@ template <class V> void describe(V& v, WindowDef& d) {
     v.field("vsync", d.vsync, "wait for the display's refresh (window only)");
 }
 
-/// Keys the game reads.
-enum class Key : uint8_t { W, A, S, D, Q, E, Space, Shift, Escape, Up, Down, Left, Right, F1, P, N, F, F12, Count };
-
-/// One frame of input, filled by Platform::pollInput.
-struct InputState {
-    std::array<bool, size_t(Key::Count)> down{};     ///< keys held now
-    std::array<bool, size_t(Key::Count)> pressed{};  ///< keys that went down this frame
-    glm::vec2 mouse{0.0f};       ///< cursor (px from the top left)
-    glm::vec2 mouseDelta{0.0f};  ///< cursor motion this frame (px)
-    bool mouseLeft = false, mouseRight = false;
-    bool mouseLeftPressed = false;
-    float scroll = 0.0f;         ///< wheel steps this frame
-    bool quit = false;           ///< the window was closed or Escape pressed
-    bool uiCapturesMouse = false, uiCapturesKeyboard = false;
-    bool isDown(Key k) const { return down[size_t(k)]; }
-    bool wasPressed(Key k) const { return pressed[size_t(k)]; }
-};
-
 /// A GL 4.5 core context with a default framebuffer of framebufferSize().
 class Platform {
 public:
@@ -49,8 +32,8 @@ public:
     virtual const char* name() const = 0;
     virtual bool headless() const = 0;
     virtual glm::ivec2 framebufferSize() const = 0;
-    /// Gathers this frame's events into `input` (headless: nothing happens).
-    virtual void pollInput(InputState& input) = 0;
+    /// Appends the events that arrived since the last call, in order (headless: none).
+    virtual void pollEvents(std::vector<InputEvent>& out) = 0;
     /// Shows the finished frame (window) or completes it (headless).
     virtual void present() = 0;
     /// The GLFWwindow* for the UI backend (null when headless).

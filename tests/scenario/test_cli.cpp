@@ -63,7 +63,7 @@ TEST_CASE("bad scene files exit 2 naming file, line and key", "[cli]") {
 
     r = runOceanbox("run /no/such/scene.toml --headless --frames 1");
     CHECK(r.exitCode == 2);
-    CHECK(r.output.find("/no/such/scene.toml: cannot open scene file") != std::string::npos);
+    CHECK(r.output.find("/no/such/scene.toml: cannot open file (no such file)") != std::string::npos);
 
     std::string syntax = writeFile(tempPath("syntax.toml"), "[window\nwidth = 3\n");
     r = runOceanbox("run " + syntax + " --headless --frames 1");

@@ -123,7 +123,7 @@ TEST_CASE("a missing scene file is one clear error", "[config]") {
         game::loadScene("/nonexistent/scene.toml");
         FAIL("no error");
     } catch (const InputError& e) {
-        CHECK(std::string(e.what()) == "/nonexistent/scene.toml: cannot open scene file");
+        CHECK(std::string(e.what()) == "/nonexistent/scene.toml: cannot open file (no such file)");
     }
 }
 

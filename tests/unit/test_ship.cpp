@@ -113,12 +113,14 @@ TEST_CASE("the player's ship: W opens the throttle and it settles at its top spe
                                            "[[objects]]\ntype = \"ship\"\nplayer = true\nposition = [0, 0.1, 0]\nspeed = 6.0\n",
                                            "player.toml"));
     ecs::World& world = sandbox.world();
-    auto* input = world.resource<platform::InputState>();
+    // The keys go through the input queue as a window's events do, stamped in simulated time.
+    auto* queue = world.resource<platform::InputQueue>();
+    using T = platform::InputEvent::Type;
     const ecs::Entity ship = world.pool<game::Ship>().entities()[0];
     // Hold W for 3 s: the lever runs to full (0.5 per second).
-    input->down[size_t(platform::Key::W)] = true;
+    queue->push({T::KeyDown, 0.0, platform::Key::W});
+    queue->push({T::KeyUp, 3.0, platform::Key::W});
     for (int i = 0; i < 180; ++i) sandbox.step();
-    input->down[size_t(platform::Key::W)] = false;
     CHECK(world.get<game::Ship>(ship).throttle == 1.0f);
     for (int i = 0; i < 900; ++i) sandbox.step();
     // Thrust balances the hull's resistance at the top speed: 6 m/s along the bow (+z).
@@ -127,7 +129,7 @@ TEST_CASE("the player's ship: W opens the throttle and it settles at its top spe
     CHECK(std::abs(v.x) < 0.1f);
     // Full starboard rudder: the bow swings toward −x (starboard of a +z bow, y up) at about
     // the rudder's yaw rate, 0.21 rad/s at speed.
-    input->down[size_t(platform::Key::D)] = true;
+    queue->push({T::KeyDown, 18.0, platform::Key::D});
     const float heading0 = std::atan2(v.x, v.z);
     for (int i = 0; i < 120; ++i) sandbox.step();
     const glm::vec3 bow = world.get<ecs::Transform>(ship).rotation * glm::vec3(0, 0, 1);
