@@ -113,6 +113,11 @@ int runCli(int argc, char** argv) {
     playCmd->callback([&] {
         action = [&] {
             SceneDef scene = play.load();
+            if (scene.info.purpose == "benchmark")
+                logInfo("%s is a benchmark scene: %s", play.scene.c_str(),
+                        scene.info.note.empty() ? "it measures, it is not meant to look like the sea" : scene.info.note.c_str());
+            else if (!scene.info.note.empty())
+                logInfo("%s", scene.info.note.c_str());
             RunOptions o = play.options();
             o.realTime = true;
             if (o.frames == 0) o.frames = -1;

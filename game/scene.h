@@ -15,8 +15,20 @@
 
 namespace ob::game {
 
+/// What a scene is for, section [scene].
+struct SceneInfoDef {
+    std::string purpose = "play";  ///< "play" (a sight to play) or "benchmark" (a measurement; `play` says so)
+    std::string note;              ///< one line `play` prints when it opens the scene ("" = none)
+};
+
+template <class V> void describe(V& v, SceneInfoDef& d) {
+    v.field("purpose", d.purpose, Choices{"play", "benchmark"}, "a scene to play, or a benchmark (play says so)");
+    v.field("note", d.note, Choices{}, "one line play prints when it opens the scene");
+}
+
 /// Everything a scene file can say; every section and key is optional.
 struct SceneDef {
+    SceneInfoDef info;            ///< [scene]
     ecs::SimDef sim;              ///< [sim]
     platform::WindowDef window;   ///< [window]
     CameraDef camera;             ///< [camera]
@@ -30,6 +42,7 @@ struct SceneDef {
 };
 
 template <class V> void describe(V& v, SceneDef& s) {
+    v.section("scene", s.info);
     v.section("sim", s.sim);
     v.section("window", s.window);
     v.section("camera", s.camera);

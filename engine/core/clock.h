@@ -24,12 +24,15 @@ private:
     std::chrono::steady_clock::time_point m_start = std::chrono::steady_clock::now();
 };
 
-/// Advances by a fixed interval at every call (scripted and headless runs, tests).
+/// Advances by a fixed interval at every call (scripted and headless runs, tests). The
+/// first call returns one interval: the first frame covers [0, interval] of the run, so its
+/// steps reach the clock times a run of one step a frame reaches (input stamped t acts in
+/// the step that holds t, whatever the frame's length).
 class FixedStepClock final : public Clock {
 public:
     /// `frameSeconds`: simulated time per frame (s), > 0.
     explicit FixedStepClock(double frameSeconds) : m_frameSeconds(frameSeconds) {}
-    double now() override { return double(m_frames++) * m_frameSeconds; }
+    double now() override { return double(++m_frames) * m_frameSeconds; }
 
 private:
     double m_frameSeconds;
