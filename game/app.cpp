@@ -149,6 +149,7 @@ int runScene(const SceneDef& scene, const std::string& scenePath, const RunOptio
         auto made = std::make_unique<Sandbox>(withSteps(s));
         made->attachPlatform(*platform, !platform->headless());
         made->setScriptedInput(scripted);
+        if (options.dynamicResolution) made->enableDynamicResolution();
         if (!options.realTime) made->schedule().setFirstFrameSeconds(options.stepsPerFrame / double(s.sim.step_hz));
         return made;
     };

@@ -19,6 +19,7 @@ struct RunOptions {
     std::string fallbackNote;    ///< what to say when falling back to headless
     std::string input;           ///< scripted input file (TOML, game/input_script.h; "" = none)
     int stepsPerFrame = 1;       ///< fixed clock only: simulation steps each rendered frame advances
+    bool dynamicResolution = false;  ///< the internal scale holds [render] target_fps
 };
 
 /// Runs the scene; returns the process exit code. Throws ob::InputError / ob::RuntimeError.

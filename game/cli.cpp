@@ -66,6 +66,7 @@ struct SceneFlags {
         o.stats = stats;
         o.input = input;
         o.stepsPerFrame = stepsPerFrame;
+        for (const std::string& set : sets) o.dynamicResolution = o.dynamicResolution || set.rfind("render.target_fps", 0) == 0;
         if (!size.empty()) {
             std::smatch m;
             static const std::regex WXH(R"((\d{1,5})x(\d{1,5}))");
@@ -120,11 +121,13 @@ int runCli(int argc, char** argv) {
                 logInfo("%s", scene.info.note.c_str());
             RunOptions o = play.options();
             o.realTime = true;
+            o.dynamicResolution = true;
             if (o.frames == 0) o.frames = -1;
             if (!platform::displayAvailable() || play.headless) {
                 // No window to look at: run a fixed number of frames and keep a picture.
                 o.window = false;
                 o.realTime = false;
+                o.dynamicResolution = play.options().dynamicResolution;  // reproducible unless asked
                 if (o.frames < 0) o.frames = 600;
                 if (o.screenshot.empty()) o.screenshot = "oceanbox.png";
             }

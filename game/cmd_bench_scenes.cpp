@@ -165,6 +165,10 @@ int benchFrame(const FrameBenchArgs& a) {
     setLogQuiet(true);
     Sandbox sandbox(scene);
     sandbox.attachPlatform(*platform, false);
+    // --set render.target_fps=N: the internal scale follows the frame time, as in play.
+    bool dynamic = false;
+    for (const std::string& s : a.sets) dynamic = dynamic || s.rfind("render.target_fps", 0) == 0;
+    if (dynamic) sandbox.enableDynamicResolution();
     Progress progress("frame");
     runFrames(sandbox, platform.get(), a.warmup + a.frames, scene.sim.step_hz, progress, a.scene, 1, 1);
     progress.done();
@@ -178,6 +182,13 @@ int benchFrame(const FrameBenchArgs& a) {
                                 " warm-up; medians; one simulation step per frame");
     table.setting("passes", "frame: wall ms frame to frame; other names: CPU ms of a phase; gpu.NAME: GPU ms of a timed span");
     for (const std::string& s : a.sets) table.setting("set", s);
+    if (const auto* d = sandbox.world().resource<DynamicScale>(); dynamic && d && d->control) {
+        const double frameMs = timings.empty() ? 0.0 : timings.front().second;
+        table.setting("dynamic resolution", "settled at scale " + cell(d->control->scale()) + " after " +
+                                                std::to_string(d->control->changes()) + " change(s), holding " +
+                                                cell(frameMs > 0 ? 1000.0 / frameMs : 0.0) + " fps (target " +
+                                                cell(scene.render.target_fps) + ")");
+    }
     Chart chart;
     chart.title = "Frame of " + a.scene + " (" + std::to_string(w) + "x" + std::to_string(h) + ", " + machine.renderer + ")";
     chart.xLabel = "ms per frame (median)";

@@ -19,6 +19,7 @@
 #include "water_systems.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace ob::game {
 
@@ -51,6 +52,15 @@ void renderSystem(ecs::World& world, const ecs::Tick& tick) {
     glm::ivec2 size = res->platform->framebufferSize();
     if (size.x <= 0 || size.y <= 0) return;  // minimised
     res->renderer->def() = res->scene->render;
+    // Dynamic resolution: the last frame's time sets this frame's internal scale.
+    if (auto* dynamic = world.resource<DynamicScale>(); dynamic && res->scene->render.target_fps > 0.0f) {
+        auto& control = dynamic->control;
+        if (!control || std::abs(control->targetSeconds() * res->scene->render.target_fps - 1.0) > 1e-6)
+            control.emplace(res->scene->render.target_fps, res->scene->render.resolution_scale);
+        else if (!res->timer->frameSamples().empty())
+            control->update(res->timer->frameSamples().back() / 1000.0);
+        res->renderer->def().resolution_scale = control->scale();
+    }
     gfx::CameraView camera = cameraView(world, size);
     if (const OceanState* ocean = world.resource<OceanState>(); ocean && ocean->water)
         camera.waterHeight = ocean->water->sample(camera.position.x, camera.position.z).height;
@@ -141,6 +151,8 @@ void Sandbox::setCameraPose(const CameraPose& pose, bool keepMode) {
     }
     m_world.get<ecs::Transform>(rigs.entities()[0]) = pose.transform;
 }
+
+void Sandbox::enableDynamicResolution() { m_world.setResource(std::make_unique<DynamicScale>()); }
 
 std::vector<std::string> Sandbox::takeScreenshotRequests() {
     std::vector<std::string> files;

@@ -3,6 +3,7 @@
 #pragma once
 #include "ecs/schedule.h"
 #include "ecs/world.h"
+#include "gfx/dynamic_resolution.h"
 #include "camera.h"
 #include "platform/input.h"
 #include "scene.h"
@@ -29,6 +30,12 @@ struct FrameResources {
     ecs::FrameTimer* timer = nullptr;
     SceneDef* scene = nullptr;             ///< live-edited by the UI
     std::optional<SceneDef>* restart = nullptr;  ///< set by the UI: rebuild the world from this scene
+};
+
+/// Dynamic resolution, when on (a resource): the controller, made at the first frame and
+/// again when [render] target_fps changes.
+struct DynamicScale {
+    std::optional<gfx::DynamicResolution> control;
 };
 
 /// Where the camera is and how the player has steered it (kept across a restart).
@@ -59,6 +66,9 @@ public:
     bool quitRequested();
     /// The scene the UI asked to restart with (validated), once.
     std::optional<SceneDef> takeRestartRequest() { return std::exchange(m_restart, std::nullopt); }
+    /// The internal scale follows the frame time to hold [render] target_fps (play; a `run`
+    /// only when asked, so its frames stay reproducible).
+    void enableDynamicResolution();
     /// Input events (clock time order) fed to the input queue as the clock reaches them.
     void setScriptedInput(std::vector<platform::InputEvent> events);
     /// The camera's pose (none without a camera).

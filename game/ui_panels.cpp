@@ -5,6 +5,7 @@
 #include "camera.h"
 #include "cannon.h"
 #include "controls.h"
+#include "sandbox.h"
 #include "core/error.h"
 #include "core/file_write.h"
 #include "core/toml_writer.h"
@@ -134,6 +135,11 @@ void drawPanels(ecs::World& world, SceneDef& scene, const ecs::FrameTimer& timer
     const auto& frames = timer.frameSamples();
     double frameMs = frames.empty() ? 0.0 : frames.back();
     ImGui::Text("frame %.2f ms (%.0f fps)", frameMs, frameMs > 0 ? 1000.0 / frameMs : 0.0);
+    if (const auto* dynamic = world.resource<DynamicScale>(); dynamic && dynamic->control && scene.render.target_fps > 0.0f)
+        ImGui::Text("resolution scale %.2f (dynamic, holding %.0f fps)", double(dynamic->control->scale()),
+                    double(scene.render.target_fps));
+    else
+        ImGui::Text("resolution scale %.2f", double(scene.render.resolution_scale));
     if (ImGui::BeginTable("phases", 3)) {
         ImGui::TableSetupColumn("phase");
         ImGui::TableSetupColumn("cpu ms");

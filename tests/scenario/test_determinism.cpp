@@ -51,8 +51,8 @@ TEST_CASE("the default scene stepped twice for 120 steps gives the same state ha
     game::SceneDef scene = game::loadScene(game::defaultScenePath());
     uint64_t a = hashAfterSteps(scene, 120);
     CHECK(a == hashAfterSteps(scene, 120));
-    // The hash sees the state: a different camera height behind the followed ship changes it.
-    game::SceneDef other = game::loadScene(game::defaultScenePath(), {"camera.follow_height_m=8"});
+    // The hash sees the state: another drag on the bodies (their poses, their ripples) changes it.
+    game::SceneDef other = game::loadScene(game::defaultScenePath(), {"physics.linear_drag=900"});
     CHECK(a != hashAfterSteps(other, 120));
     CHECK(a != hashAfterSteps(scene, 119));
 }

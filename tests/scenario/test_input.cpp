@@ -35,7 +35,7 @@ int shots(const nlohmann::json& stats) { return stats["cannons"][0]["shots"].get
 
 } // namespace
 
-TEST_CASE("one scripted Space press fires one ball at 1, 3 and 8 steps a frame; a 5 ms tap fires", "[input]") {
+TEST_CASE("one scripted Space press fires one ball at 1, 3 and 8 steps a frame, a 5 ms tap fires", "[input]") {
     const std::string press = "[[press]]\nat = 1.0\nkey = \"space\"\nhold = 0.3\n";
     const std::string tap = "[[press]]\nat = 1.01\nkey = \"space\"\nhold = 0.005\n";
     const std::string click = "[[mouse]]\nat = 1.5\nbutton = \"left\"\nhold = 0.2\n";

@@ -101,6 +101,8 @@ TEST_CASE("timeline: events run in the step nearest their time and act on the ob
     CHECK(rig.def.mode == "fixed");
     CHECK(world.get<ecs::Transform>(world.pool<game::CameraRig>().entities()[0]).position == glm::vec3(10, 3, 0));
     stepTo(3.1);
+    // The camera moves once per frame (the render phase), not per step: one frame's update.
+    game::cameraSystem(world, ecs::Tick{sandbox.schedule().simTime(), 1.0 / 60.0, sandbox.schedule().steps(), 0.0});
     CHECK(rig.def.mode == "follow");
     CHECK(rig.focus.z > world.get<ecs::Transform>(boat).position.z);  // looks ahead of the boat
     CHECK(world.resource<game::ScriptState>()->fired == 7);

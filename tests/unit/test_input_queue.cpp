@@ -48,7 +48,7 @@ TEST_CASE("a held key is down for the steps between its press and release, where
     CHECK(presses == 1);
 }
 
-TEST_CASE("events keep their order; one stamped before the last is raised to it", "[input]") {
+TEST_CASE("events keep their order, one stamped before the last is raised to it", "[input]") {
     platform::InputQueue queue;
     queue.push({T::KeyDown, 1.0, Key::P});
     queue.push({T::KeyUp, 0.5, Key::P});  // out of order: raised to 1.0, still after the press
@@ -60,7 +60,7 @@ TEST_CASE("events keep their order; one stamped before the last is raised to it"
     CHECK_FALSE(frame.isDown(Key::P));
 }
 
-TEST_CASE("mouse: clicks, motion and wheel add up until consumed; Escape and Close quit", "[input]") {
+TEST_CASE("mouse: clicks, motion and wheel add up until consumed, Escape and Close quit", "[input]") {
     platform::InputState s;
     s.apply({T::ButtonDown, 0, Key::W, platform::MouseButton::Right});
     s.apply({T::Move, 0, Key::W, platform::MouseButton::Left, {3.0f, -2.0f}});
