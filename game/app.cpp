@@ -28,21 +28,6 @@
 
 namespace ob::game {
 
-void checkWritable(const std::string& path, const char* what) {
-    std::filesystem::path p(path);
-    std::filesystem::path dir = p.parent_path().empty() ? "." : p.parent_path();
-    const std::string head = std::string("cannot write ") + what + " '" + path + "': ";
-    if (std::filesystem::is_directory(p)) throw InputError(head + "it is a folder (give a file name)");
-    if (!std::filesystem::is_directory(dir))
-        throw InputError(head + "folder '" + dir.string() + "' does not exist (create it or choose another path)");
-    if (access(dir.c_str(), W_OK) != 0)
-        throw InputError(head + "folder '" + dir.string() + "' is not writable (choose another path)");
-}
-
-void writeTextFile(const std::string& path, const std::string& text, const char* what) {
-    writeFileWhole(path, what, [&](std::ostream& out) { out << text; });
-}
-
 // Whether two [camera] sections say the same (compared as the TOML they write).
 static bool sameCamera(const CameraDef& a, const CameraDef& b) {
     SceneDef x, y;

@@ -1,5 +1,6 @@
 // Running a scene: `play` (interactive, real time) and `run` (scripted, fixed time per frame).
 #pragma once
+#include "core/file_write.h"  // checkWritable, writeTextFile: what the commands write
 #include "scene.h"
 
 #include <glm/vec2.hpp>
@@ -25,12 +26,5 @@ struct RunOptions {
 /// Runs the scene; returns the process exit code. Throws ob::InputError / ob::RuntimeError.
 int runScene(const SceneDef& scene, const std::string& scenePath, const RunOptions& options);
 
-/// Throws ob::InputError unless `path` can be created (its folder exists and is writable).
-void checkWritable(const std::string& path, const char* what);
-
-/// Writes `text` to `path` whole or not at all: into path + ".tmp", then renamed over
-/// `path`. Throws ob::InputError naming `what` and the path when it cannot (the temporary
-/// file removed).
-void writeTextFile(const std::string& path, const std::string& text, const char* what);
 
 } // namespace ob::game

@@ -13,4 +13,12 @@ namespace ob {
 /// writing fails part way (disk full); the temporary is removed either way.
 void writeFileWhole(const std::string& path, const std::string& what, const std::function<void(std::ostream&)>& write);
 
+/// writeFileWhole of a text.
+void writeTextFile(const std::string& path, const std::string& text, const char* what);
+
+/// Throws ob::InputError unless `path` can be created (its folder exists and is writable, it
+/// is not a folder), naming `what` and what to do: checked before a run, so a bad output path
+/// fails at once, not after the work.
+void checkWritable(const std::string& path, const char* what);
+
 } // namespace ob

@@ -1,5 +1,6 @@
 // Def schema: every Def struct lists its keys once, in a `describe(Visitor&, Def&)` beside it.
-// The same list drives the TOML loader (core/toml_reader), the ImGui editor and `--help-keys`.
+// The same list drives the TOML loader (core/toml_reader), the TOML writer (core/toml_writer)
+// and the ImGui editor (gfx/ui_overlay).
 #pragma once
 #include <cstdint>
 #include <initializer_list>
