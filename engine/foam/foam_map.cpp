@@ -1,0 +1,258 @@
+// Persistent foam map: semi-Lagrangian advection, exact decay, the four sources (laws in the header).
+#include "foam/foam_map.h"
+
+#include "core/hash.h"
+#include "core/parallel.h"
+#include "core/simd.h"
+#include "interaction/ripple_patch.h"
+#include "splash/splash_particles.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace ob::foam {
+
+namespace {
+
+// Rows per parallelFor chunk: 512² is 32 chunks of 16 rows, ~8 µs each.
+constexpr int ROW_CHUNK = 16;
+
+// Coverage of a row-major n×n map at cell (i, j), 0 outside.
+inline float cellOr0(const float* f, int n, int i, int j) {
+    return (i < 0 || j < 0 || i >= n || j >= n) ? 0.0f : f[size_t(j) * size_t(n) + size_t(i)];
+}
+
+// One row of the uniform-flow step: dst[i] = w00·s0[i+ix] + w10·s0[i+ix+1] + w01·s1[i+ix] +
+// w11·s1[i+ix+1] for i in [lo, hi), where every index is inside its row.
+OB_VECTOR_KERNEL void uniformRowKernel(float* __restrict dst, const float* __restrict s0, const float* __restrict s1,
+                                       int lo, int hi, int ix, float w00, float w10, float w01, float w11) {
+    for (int i = lo; i < hi; ++i)
+        dst[i] = w00 * s0[i + ix] + w10 * s0[i + ix + 1] + w01 * s1[i + ix] + w11 * s1[i + ix + 1];
+}
+
+OB_VECTOR_KERNEL void scaleKernel(float* __restrict dst, const float* __restrict src, size_t count, float a) {
+    for (size_t i = 0; i < count; ++i) dst[i] = a * src[i];
+}
+
+} // namespace
+
+FoamMap::FoamMap(const FoamDef& def, float extent, glm::vec2 centre)
+    : m_def(def), m_n(def.resolution), m_cell(extent / float(def.resolution)),
+      m_f(size_t(def.resolution) * size_t(def.resolution), 0.0f), m_next(m_f.size(), 0.0f) {
+    m_originCell = glm::ivec2(int(std::lround(centre.x / m_cell)), int(std::lround(centre.y / m_cell))) - glm::ivec2(m_n / 2);
+}
+
+void FoamMap::setDef(const FoamDef& def) {
+    const int n = m_n;
+    m_def = def;
+    m_def.resolution = n;
+}
+
+glm::vec2 FoamMap::origin() const { return glm::vec2(m_originCell) * m_cell; }
+
+glm::vec2 FoamMap::toGrid(glm::vec2 world) const { return world / m_cell - glm::vec2(m_originCell); }
+
+void FoamMap::centerOn(glm::vec2 worldCentre) {
+    const glm::ivec2 target =
+        glm::ivec2(int(std::lround(worldCentre.x / m_cell)), int(std::lround(worldCentre.y / m_cell))) - glm::ivec2(m_n / 2);
+    const glm::ivec2 shift = target - m_originCell;
+    if (shift == glm::ivec2(0)) return;
+    // New cell (i, j) is old cell (i + dx, j + dz); the per-cell velocity is the caller's to refill.
+    for (int j = 0; j < m_n; ++j)
+        for (int i = 0; i < m_n; ++i) m_next[size_t(j) * size_t(m_n) + size_t(i)] = cellOr0(m_f.data(), m_n, i + shift.x, j + shift.y);
+    m_f.swap(m_next);
+    m_originCell = target;
+}
+
+float FoamMap::sample(float x, float z) const {
+    const glm::vec2 g = toGrid(glm::vec2(x, z));
+    const float fx = std::floor(g.x), fz = std::floor(g.y);
+    const int i = int(fx), j = int(fz);
+    if (i < -1 || j < -1 || i >= m_n || j >= m_n) return 0.0f;
+    const float tx = g.x - fx, tz = g.y - fz;
+    const float* f = m_f.data();
+    return (cellOr0(f, m_n, i, j) * (1 - tx) + cellOr0(f, m_n, i + 1, j) * tx) * (1 - tz) +
+           (cellOr0(f, m_n, i, j + 1) * (1 - tx) + cellOr0(f, m_n, i + 1, j + 1) * tx) * tz;
+}
+
+double FoamMap::mean() const {
+    double sum = 0.0;
+    for (float v : m_f) sum += v;
+    return sum / double(m_f.size());
+}
+
+void FoamMap::setUniformVelocity(glm::vec2 u) {
+    m_flow = (u == glm::vec2(0.0f)) ? Flow::Still : Flow::Uniform;
+    m_uniform = u;
+}
+
+std::span<float> FoamMap::velocityX() {
+    if (m_ux.empty()) m_ux.assign(m_f.size(), 0.0f), m_uz.assign(m_f.size(), 0.0f);
+    m_flow = Flow::Field;
+    return m_ux;
+}
+
+std::span<float> FoamMap::velocityZ() {
+    velocityX();
+    return m_uz;
+}
+
+void FoamMap::add(int i, int j, float amount) {
+    float& f = m_f[size_t(j) * size_t(m_n) + size_t(i)];
+    f = std::min(1.0f, f + amount);
+}
+
+void FoamMap::addWhitecaps(std::span<const float> jacobian, int n, float tile, float dt) {
+    if (m_def.whitecap_weight <= 0.0f || n <= 0) return;
+    const float toTile = float(n) / tile;  // tile samples per metre
+    const glm::vec2 o = origin();
+    for (int j = 0; j < m_n; ++j) {
+        for (int i = 0; i < m_n; ++i) {
+            // Bilinear in the periodic tile at the cell centre (rest-point coordinates).
+            const float gx = (o.x + float(i) * m_cell) * toTile, gz = (o.y + float(j) * m_cell) * toTile;
+            const float fx = std::floor(gx), fz = std::floor(gz);
+            const float tx = gx - fx, tz = gz - fz;
+            const int x0 = int(((long long)(fx) % n + n) % n), z0 = int(((long long)(fz) % n + n) % n);
+            const int x1 = (x0 + 1) % n, z1 = (z0 + 1) % n;
+            const float* r0 = &jacobian[size_t(z0) * size_t(n)];
+            const float* r1 = &jacobian[size_t(z1) * size_t(n)];
+            const float jac = (r0[x0] * (1 - tx) + r0[x1] * tx) * (1 - tz) + (r1[x0] * (1 - tx) + r1[x1] * tx) * tz;
+            const float excess = m_def.whitecap_jacobian - jac;
+            if (excess > 0.0f) add(i, j, m_def.whitecap_weight * excess * dt);
+        }
+    }
+}
+
+void FoamMap::addRipples(const interaction::RipplePatch& patch, float dt) {
+    if (m_def.ripple_weight <= 0.0f) return;
+    const interaction::RippleField& field = patch.field();
+    const int rows = field.rows(), cols = field.cols();
+    const std::span<const float> h = field.current();
+    const float inv2d = 1.0f / (2.0f * patch.def().cell_size);
+    const glm::vec2 o = origin();
+    for (int j = 0; j < m_n; ++j) {
+        for (int i = 0; i < m_n; ++i) {
+            const glm::vec2 g = patch.toGrid(o + glm::vec2(float(i), float(j)) * m_cell);
+            const long x = std::lround(g.x), z = std::lround(g.y);
+            if (x < 1 || z < 1 || x > cols - 2 || z > rows - 2) continue;
+            const size_t c = size_t(z) * size_t(cols) + size_t(x);
+            const float sx = (h[c + 1] - h[c - 1]) * inv2d, sz = (h[c + size_t(cols)] - h[c - size_t(cols)]) * inv2d;
+            const float excess = std::sqrt(sx * sx + sz * sz) - m_def.ripple_slope;
+            if (excess > 0.0f) add(i, j, m_def.ripple_weight * excess * dt);
+        }
+    }
+}
+
+void FoamMap::addLandings(std::span<const splash::Landing> landings) {
+    if (m_def.splash_weight <= 0.0f) return;
+    const float perArea = m_def.splash_weight * std::numbers::pi_v<float> * DROP_FOAM_RADIUS_FACTOR * DROP_FOAM_RADIUS_FACTOR /
+                          (m_cell * m_cell);
+    for (const splash::Landing& l : landings) {
+        const glm::vec2 g = toGrid(glm::vec2(l.position.x, l.position.z));
+        const long i = std::lround(g.x), j = std::lround(g.y);
+        if (i < 0 || j < 0 || i >= m_n || j >= m_n) continue;
+        add(int(i), int(j), perArea * l.radius * l.radius);
+    }
+}
+
+void FoamMap::addWake(const glm::vec3& centre, const glm::vec3& velocity, float radius, float dt) {
+    const glm::vec2 u(velocity.x, velocity.z);
+    const float speed = std::sqrt(u.x * u.x + u.y * u.y);
+    if (m_def.wake_weight <= 0.0f || speed <= 0.0f || radius <= 0.0f) return;
+    const float amount = m_def.wake_weight * speed / radius * dt;
+    const glm::vec2 c = toGrid(glm::vec2(centre.x, centre.z));
+    const float rCells = radius / m_cell;
+    const int i0 = std::max(0, int(std::floor(c.x - rCells))), i1 = std::min(m_n - 1, int(std::ceil(c.x + rCells)));
+    const int j0 = std::max(0, int(std::floor(c.y - rCells))), j1 = std::min(m_n - 1, int(std::ceil(c.y + rCells)));
+    for (int j = j0; j <= j1; ++j) {
+        for (int i = i0; i <= i1; ++i) {
+            const glm::vec2 d(float(i) - c.x, float(j) - c.y);  // cells
+            if (d.x * d.x + d.y * d.y > rCells * rCells) continue;
+            if (d.x * u.x + d.y * u.y > 0.0f) continue;  // ahead of the sphere's centre
+            add(i, j, amount);
+        }
+    }
+}
+
+void FoamMap::step(float dt) {
+    const float a = float(std::exp(-double(dt) / double(m_def.decay_s)));
+    const int n = m_n;
+    const float* src = m_f.data();
+    float* dst = m_next.data();
+
+    // --- still water: decay only
+    if (m_flow == Flow::Still) {
+        parallelFor(0, n, ROW_CHUNK, [&](int lo, int hi) {
+            scaleKernel(dst + size_t(lo) * size_t(n), src + size_t(lo) * size_t(n), size_t(hi - lo) * size_t(n), a);
+        });
+        m_f.swap(m_next);
+        return;
+    }
+
+    // --- uniform flow: every cell reads the same 2×2 stencil offset, weights folded with the decay
+    if (m_flow == Flow::Uniform) {
+        const glm::vec2 o = -m_uniform * dt / m_cell;  // source offset, cells
+        const float ofx = std::floor(o.x), ofz = std::floor(o.y);
+        const int ix = int(ofx), iz = int(ofz);
+        const float tx = o.x - ofx, tz = o.y - ofz;
+        const float w00 = a * (1 - tx) * (1 - tz), w10 = a * tx * (1 - tz), w01 = a * (1 - tx) * tz, w11 = a * tx * tz;
+        // Columns whose four sources are all inside a row: i + ix >= 0 and i + ix + 1 <= n − 1.
+        const int lo = std::clamp(-ix, 0, n), hi = std::clamp(n - 1 - ix, lo, n);
+        parallelFor(0, n, ROW_CHUNK, [&](int rowLo, int rowHi) {
+            for (int j = rowLo; j < rowHi; ++j) {
+                float* d = dst + size_t(j) * size_t(n);
+                const int j0 = j + iz, j1 = j0 + 1;
+                const bool in0 = j0 >= 0 && j0 < n, in1 = j1 >= 0 && j1 < n;
+                auto edge = [&](int i) {
+                    d[i] = w00 * cellOr0(src, n, i + ix, j0) + w10 * cellOr0(src, n, i + ix + 1, j0) +
+                           w01 * cellOr0(src, n, i + ix, j1) + w11 * cellOr0(src, n, i + ix + 1, j1);
+                };
+                if (!in0 || !in1) {
+                    for (int i = 0; i < n; ++i) edge(i);
+                    continue;
+                }
+                for (int i = 0; i < lo; ++i) edge(i);
+                uniformRowKernel(d, src + size_t(j0) * size_t(n), src + size_t(j1) * size_t(n), lo, hi, ix, w00, w10, w01, w11);
+                for (int i = hi; i < n; ++i) edge(i);
+            }
+        });
+        m_f.swap(m_next);
+        return;
+    }
+
+    // --- per-cell velocity: trace each cell centre back by u·dt, bilinear there
+    const float back = dt / m_cell;  // (m/s) → cells over dt
+    const float* ux = m_ux.data();
+    const float* uz = m_uz.data();
+    parallelFor(0, n, ROW_CHUNK, [&](int rowLo, int rowHi) {
+        for (int j = rowLo; j < rowHi; ++j) {
+            for (int i = 0; i < n; ++i) {
+                const size_t c = size_t(j) * size_t(n) + size_t(i);
+                const float gx = float(i) - ux[c] * back, gz = float(j) - uz[c] * back;
+                const float fx = std::floor(gx), fz = std::floor(gz);
+                const int x0 = int(fx), z0 = int(fz);
+                const float tx = gx - fx, tz = gz - fz;
+                float v;
+                if (x0 >= 0 && z0 >= 0 && x0 + 1 < n && z0 + 1 < n) {
+                    const float* r0 = src + size_t(z0) * size_t(n) + size_t(x0);
+                    const float* r1 = r0 + n;
+                    v = (r0[0] * (1 - tx) + r0[1] * tx) * (1 - tz) + (r1[0] * (1 - tx) + r1[1] * tx) * tz;
+                } else {
+                    v = (cellOr0(src, n, x0, z0) * (1 - tx) + cellOr0(src, n, x0 + 1, z0) * tx) * (1 - tz) +
+                        (cellOr0(src, n, x0, z0 + 1) * (1 - tx) + cellOr0(src, n, x0 + 1, z0 + 1) * tx) * tz;
+                }
+                dst[c] = a * v;
+            }
+        }
+    });
+    m_f.swap(m_next);
+}
+
+void FoamMap::hash(StateHasher& h) const {
+    h.u64(uint64_t(uint32_t(m_originCell.x)) | (uint64_t(uint32_t(m_originCell.y)) << 32));
+    h.f32(m_cell);
+    h.f32s(m_f.data(), m_f.size());
+}
+
+} // namespace ob::foam
