@@ -31,6 +31,29 @@ OB_VECTOR_KERNEL void uniformRowKernel(float* __restrict dst, const float* __res
         dst[i] = w00 * s0[i + ix] + w10 * s0[i + ix + 1] + w01 * s1[i + ix] + w11 * s1[i + ix + 1];
 }
 
+// Zero cells round the padded copy the per-cell flow reads.
+constexpr int PAD = 2;
+
+// One row j of the per-cell flow step: dst[i] = a · bilinear(padded, (i, j) − u·back), the
+// traced point clamped to [−1.5, n + 0.5] (inside the zero ring). int(g + PAD) − PAD is
+// floor(g) there, as g + PAD > 0.
+OB_VECTOR_KERNEL void fieldRowKernel(float* __restrict dst, const float* __restrict padded, const float* __restrict ux,
+                                     const float* __restrict uz, int n, int j, int stride, float back, float a) {
+    const float lo = -1.5f, hi = float(n) + 0.5f;
+    for (int i = 0; i < n; ++i) {
+        float gx = float(i) - ux[i] * back, gz = float(j) - uz[i] * back;
+        gx = gx < lo ? lo : gx;
+        gx = gx > hi ? hi : gx;
+        gz = gz < lo ? lo : gz;
+        gz = gz > hi ? hi : gz;
+        const int x0 = int(gx + float(PAD)) - PAD, z0 = int(gz + float(PAD)) - PAD;
+        const float tx = gx - float(x0), tz = gz - float(z0);
+        const int c = (z0 + PAD) * stride + (x0 + PAD);
+        const float v00 = padded[c], v10 = padded[c + 1], v01 = padded[c + stride], v11 = padded[c + stride + 1];
+        dst[i] = a * ((v00 * (1 - tx) + v10 * tx) * (1 - tz) + (v01 * (1 - tx) + v11 * tx) * tz);
+    }
+}
+
 OB_VECTOR_KERNEL void scaleKernel(float* __restrict dst, const float* __restrict src, size_t count, float a) {
     for (size_t i = 0; i < count; ++i) dst[i] = a * src[i];
 }
@@ -221,29 +244,24 @@ void FoamMap::step(float dt) {
         return;
     }
 
-    // --- per-cell velocity: trace each cell centre back by u·dt, bilinear there
+    // --- per-cell velocity: trace each cell centre back by u·dt, bilinear there. The source is
+    // copied into a map with a ring of PAD zero cells and the traced point clamped into that
+    // ring, so the kernel reads no branch: beyond the ring the value would be 0 as well.
+    const int stride = n + 2 * PAD;
+    m_padded.resize(size_t(stride) * size_t(stride));  // the ring is 0 from here on, rows are overwritten
+    parallelFor(0, n, ROW_CHUNK, [&](int rowLo, int rowHi) {
+        for (int j = rowLo; j < rowHi; ++j)
+            std::copy(src + size_t(j) * size_t(n), src + size_t(j + 1) * size_t(n),
+                      m_padded.data() + size_t(j + PAD) * size_t(stride) + PAD);
+    });
     const float back = dt / m_cell;  // (m/s) → cells over dt
     const float* ux = m_ux.data();
     const float* uz = m_uz.data();
+    const float* padded = m_padded.data();
     parallelFor(0, n, ROW_CHUNK, [&](int rowLo, int rowHi) {
         for (int j = rowLo; j < rowHi; ++j) {
-            for (int i = 0; i < n; ++i) {
-                const size_t c = size_t(j) * size_t(n) + size_t(i);
-                const float gx = float(i) - ux[c] * back, gz = float(j) - uz[c] * back;
-                const float fx = std::floor(gx), fz = std::floor(gz);
-                const int x0 = int(fx), z0 = int(fz);
-                const float tx = gx - fx, tz = gz - fz;
-                float v;
-                if (x0 >= 0 && z0 >= 0 && x0 + 1 < n && z0 + 1 < n) {
-                    const float* r0 = src + size_t(z0) * size_t(n) + size_t(x0);
-                    const float* r1 = r0 + n;
-                    v = (r0[0] * (1 - tx) + r0[1] * tx) * (1 - tz) + (r1[0] * (1 - tx) + r1[1] * tx) * tz;
-                } else {
-                    v = (cellOr0(src, n, x0, z0) * (1 - tx) + cellOr0(src, n, x0 + 1, z0) * tx) * (1 - tz) +
-                        (cellOr0(src, n, x0, z0 + 1) * (1 - tx) + cellOr0(src, n, x0 + 1, z0 + 1) * tx) * tz;
-                }
-                dst[c] = a * v;
-            }
+            const size_t row = size_t(j) * size_t(n);
+            fieldRowKernel(dst + row, padded, ux + row, uz + row, n, j, stride, back, a);
         }
     });
     m_f.swap(m_next);

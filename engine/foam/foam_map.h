@@ -105,6 +105,7 @@ private:
     Flow m_flow = Flow::Still;
     glm::vec2 m_uniform{0.0f};
     std::vector<float> m_ux, m_uz;  // Flow::Field, m/s
+    std::vector<float> m_padded;    // Flow::Field: the coverage inside a ring of zeros (see step)
 };
 
 } // namespace ob::foam
