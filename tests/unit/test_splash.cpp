@@ -84,7 +84,7 @@ TEST_CASE("an impact throws floor(8·sqrt(E/1 J)) drops, E = ½·m·v_n²: more 
     CHECK(splash::impactDropCount(moving, def) == lawCount(10.0, 3.0));
 }
 
-TEST_CASE("a falling ball throws no drop before contact, its crown at contact; a body resting on the water none",
+TEST_CASE("a falling ball throws no drop before contact, its crown at contact, and a body resting on the water none",
           "[splash]") {
     SplashDef def;
     water::FlatWater sea(0.0f);
@@ -297,7 +297,7 @@ TEST_CASE("bow spray: none at or below bow_speed, the stated rate above it, thro
     for (int d = 0; d < p.size(); ++d) CHECK(p.z()[size_t(d)] == Approx(radius));  // the bow: R ahead along +z
 }
 
-TEST_CASE("max_particles caps the live drops; the rest are counted as dropped", "[splash]") {
+TEST_CASE("max_particles caps the live drops and counts the rest as dropped", "[splash]") {
     SplashDef def;
     def.max_particles = 500;
     SplashParticles p(def, 2);
