@@ -129,6 +129,8 @@ void FoamMap::add(int i, int j, float amount) {
 void FoamMap::addWhitecaps(std::span<const float> jacobian, int n, float tile, float dt) {
     if (m_def.whitecap_weight <= 0.0f || n <= 0) return;
     const float toTile = float(n) / tile;  // tile samples per metre
+    const bool pow2 = (n & (n - 1)) == 0;
+    const long long mask = n - 1;
     const glm::vec2 o = origin();
     for (int j = 0; j < m_n; ++j) {
         for (int i = 0; i < m_n; ++i) {
@@ -136,8 +138,10 @@ void FoamMap::addWhitecaps(std::span<const float> jacobian, int n, float tile, f
             const float gx = (o.x + float(i) * m_cell) * toTile, gz = (o.y + float(j) * m_cell) * toTile;
             const float fx = std::floor(gx), fz = std::floor(gz);
             const float tx = gx - fx, tz = gz - fz;
-            const int x0 = int(((long long)(fx) % n + n) % n), z0 = int(((long long)(fz) % n + n) % n);
-            const int x1 = (x0 + 1) % n, z1 = (z0 + 1) % n;
+            // Wrap into the tile: a mask for the power-of-two maps of the ocean, else a modulo.
+            const long long ix = (long long)(fx), iz = (long long)(fz);
+            const int x0 = pow2 ? int(ix & mask) : int((ix % n + n) % n), z0 = pow2 ? int(iz & mask) : int((iz % n + n) % n);
+            const int x1 = x0 + 1 == n ? 0 : x0 + 1, z1 = z0 + 1 == n ? 0 : z0 + 1;
             const float* r0 = &jacobian[size_t(z0) * size_t(n)];
             const float* r1 = &jacobian[size_t(z1) * size_t(n)];
             const float jac = (r0[x0] * (1 - tx) + r0[x1] * tx) * (1 - tz) + (r1[x0] * (1 - tx) + r1[x1] * tx) * tz;
