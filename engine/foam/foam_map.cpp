@@ -126,28 +126,48 @@ void FoamMap::add(int i, int j, float amount) {
     f = std::min(1.0f, f + amount);
 }
 
+// Where a coordinate g (in samples of a periodic map of n) falls: the two samples around it
+// and the weight of the second.
+struct Wrapped {
+    int i0, i1;
+    float t;
+};
+static Wrapped wrap(float g, int n) {
+    const float f = std::floor(g);
+    long long i = (long long)(f) % n;
+    if (i < 0) i += n;
+    return Wrapped{int(i), int(i) + 1 == n ? 0 : int(i) + 1, g - f};
+}
+
+// One foam row of a source: f[i] = min(1, f[i] + max(0, s[i] − threshold)·rate), i in [0, n).
+OB_VECTOR_KERNEL static void addExcessKernel(float* __restrict f, const float* __restrict s, int n, float threshold,
+                                             float rate) {
+    for (int i = 0; i < n; ++i) {
+        float excess = s[i] - threshold;
+        excess = excess > 0.0f ? excess : 0.0f;
+        const float v = f[i] + excess * rate;
+        f[i] = v < 1.0f ? v : 1.0f;
+    }
+}
+
 void FoamMap::addWhitecaps(std::span<const float> jacobian, int n, float tile, float dt) {
     if (m_def.whitecap_weight <= 0.0f || n <= 0) return;
     const float toTile = float(n) / tile;  // tile samples per metre
-    const bool pow2 = (n & (n - 1)) == 0;
-    const long long mask = n - 1;
     const glm::vec2 o = origin();
+    // Bilinear in the periodic tile at each cell centre (rest-point coordinates): the columns'
+    // samples and weights once, then row by row. The source is max(0, J₀ − J) = max(0, (−J) − (−J₀)).
+    std::vector<Wrapped> columns(static_cast<size_t>(m_n));
+    for (int i = 0; i < m_n; ++i) columns[size_t(i)] = wrap((o.x + float(i) * m_cell) * toTile, n);
+    std::vector<float> negJ(static_cast<size_t>(m_n));
     for (int j = 0; j < m_n; ++j) {
+        const Wrapped r = wrap((o.y + float(j) * m_cell) * toTile, n);
+        const float* r0 = &jacobian[size_t(r.i0) * size_t(n)];
+        const float* r1 = &jacobian[size_t(r.i1) * size_t(n)];
         for (int i = 0; i < m_n; ++i) {
-            // Bilinear in the periodic tile at the cell centre (rest-point coordinates).
-            const float gx = (o.x + float(i) * m_cell) * toTile, gz = (o.y + float(j) * m_cell) * toTile;
-            const float fx = std::floor(gx), fz = std::floor(gz);
-            const float tx = gx - fx, tz = gz - fz;
-            // Wrap into the tile: a mask for the power-of-two maps of the ocean, else a modulo.
-            const long long ix = (long long)(fx), iz = (long long)(fz);
-            const int x0 = pow2 ? int(ix & mask) : int((ix % n + n) % n), z0 = pow2 ? int(iz & mask) : int((iz % n + n) % n);
-            const int x1 = x0 + 1 == n ? 0 : x0 + 1, z1 = z0 + 1 == n ? 0 : z0 + 1;
-            const float* r0 = &jacobian[size_t(z0) * size_t(n)];
-            const float* r1 = &jacobian[size_t(z1) * size_t(n)];
-            const float jac = (r0[x0] * (1 - tx) + r0[x1] * tx) * (1 - tz) + (r1[x0] * (1 - tx) + r1[x1] * tx) * tz;
-            const float excess = m_def.whitecap_jacobian - jac;
-            if (excess > 0.0f) add(i, j, m_def.whitecap_weight * excess * dt);
+            const Wrapped& c = columns[size_t(i)];
+            negJ[size_t(i)] = -((r0[c.i0] * (1 - c.t) + r0[c.i1] * c.t) * (1 - r.t) + (r1[c.i0] * (1 - c.t) + r1[c.i1] * c.t) * r.t);
         }
+        addExcessKernel(&m_f[size_t(j) * size_t(m_n)], negJ.data(), m_n, -m_def.whitecap_jacobian, m_def.whitecap_weight * dt);
     }
 }
 
@@ -158,16 +178,30 @@ void FoamMap::addRipples(const interaction::RipplePatch& patch, float dt) {
     const std::span<const float> h = field.current();
     const float inv2d = 1.0f / (2.0f * patch.def().cell_size);
     const glm::vec2 o = origin();
+    // The nearest ripple cell of each foam column and row; only interior ripple cells have a
+    // central difference, and they form one range of columns and one of rows.
+    std::vector<int> rx(static_cast<size_t>(m_n));
+    int iLo = m_n, iHi = 0;
+    for (int i = 0; i < m_n; ++i) {
+        const long x = std::lround(patch.toGrid(glm::vec2(o.x + float(i) * m_cell, o.y)).x);
+        rx[size_t(i)] = int(x);
+        if (x >= 1 && x <= cols - 2) iLo = std::min(iLo, i), iHi = std::max(iHi, i + 1);
+    }
+    if (iLo >= iHi) return;
+    std::vector<float> slope(static_cast<size_t>(m_n));
     for (int j = 0; j < m_n; ++j) {
-        for (int i = 0; i < m_n; ++i) {
-            const glm::vec2 g = patch.toGrid(o + glm::vec2(float(i), float(j)) * m_cell);
-            const long x = std::lround(g.x), z = std::lround(g.y);
-            if (x < 1 || z < 1 || x > cols - 2 || z > rows - 2) continue;
-            const size_t c = size_t(z) * size_t(cols) + size_t(x);
-            const float sx = (h[c + 1] - h[c - 1]) * inv2d, sz = (h[c + size_t(cols)] - h[c - size_t(cols)]) * inv2d;
-            const float excess = std::sqrt(sx * sx + sz * sz) - m_def.ripple_slope;
-            if (excess > 0.0f) add(i, j, m_def.ripple_weight * excess * dt);
+        const long z = std::lround(patch.toGrid(glm::vec2(o.x, o.y + float(j) * m_cell)).y);
+        if (z < 1 || z > rows - 2) continue;
+        const float* up = &h[size_t(z - 1) * size_t(cols)];
+        const float* mid = up + cols;
+        const float* down = mid + cols;
+        for (int i = iLo; i < iHi; ++i) {
+            const int x = rx[size_t(i)];
+            const float sx = (mid[x + 1] - mid[x - 1]) * inv2d, sz = (down[x] - up[x]) * inv2d;
+            slope[size_t(i)] = std::sqrt(sx * sx + sz * sz);
         }
+        addExcessKernel(&m_f[size_t(j) * size_t(m_n) + size_t(iLo)], &slope[size_t(iLo)], iHi - iLo, m_def.ripple_slope,
+                        m_def.ripple_weight * dt);
     }
 }
 
