@@ -177,17 +177,14 @@ void SplashParticles::step(float dt, const water::WaterQuery& water, float ceili
     for (int i = 0; i < n; ++i) {
         if (vy[i] < 0.0f && y[i] < ceiling) {
             m_candidates.push_back(i);
-            m_candidateXZ.push_back(x[i]);
-            m_candidateXZ.push_back(z[i]);
+            m_candidateXZ.emplace_back(x[i], z[i]);
         }
     }
 
     // --- landings: at or below the water; the crossing point found back along the velocity
     if (!m_candidates.empty()) {
-        static_assert(sizeof(glm::vec2) == 2 * sizeof(float));
-        std::span<const glm::vec2> points(reinterpret_cast<const glm::vec2*>(m_candidateXZ.data()), m_candidates.size());
         m_samples.resize(m_candidates.size());
-        water.sampleBatch(points, m_samples);
+        water.sampleBatch(m_candidateXZ, m_samples);
         for (size_t c2 = 0; c2 < m_candidates.size(); ++c2) {
             const int i = m_candidates[c2];
             const float h = m_samples[c2].height;

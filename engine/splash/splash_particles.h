@@ -37,6 +37,7 @@
 #include <cstdint>
 #include <span>
 #include <vector>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 namespace ob {
@@ -167,7 +168,7 @@ private:
     std::vector<float> m_x, m_y, m_z, m_vx, m_vy, m_vz, m_age, m_radius;
     std::vector<uint8_t> m_dead;       // per drop, set by step() and cleared by removeDead()
     std::vector<int> m_candidates;     // step(): drops whose water height is read
-    std::vector<float> m_candidateXZ;  // their (x, z) pairs
+    std::vector<glm::vec2> m_candidateXZ;  // their (x, z)
     std::vector<water::WaterSample> m_samples;  // the water under them
     std::vector<Landing> m_landings;
     Stats m_stats;
