@@ -2,7 +2,6 @@
 #include "splash_foam_system.h"
 
 #include "core/hash.h"
-#include "core/log.h"
 #include "ecs/components.h"
 #include "fish.h"
 #include "foam/foam_map.h"
@@ -34,7 +33,6 @@ struct SplashFoamState {
         uint64_t seen = 0;  ///< the last step its entity was met (others are removed: ids are reused)
     };
     std::unordered_map<uint32_t, Trackers> crossings;
-    bool warnedGpu = false;
 };
 
 // A sphere of water-like density's mass (fish: no Motion), kg.
@@ -150,12 +148,7 @@ void splashFoamSystem(ecs::World& world, const ecs::Tick& tick) {
     // --- flight and landings: rain back on the ripples and the foam
     if (drops) {
         drops->step(dt, water);
-        if (patch && !patch->onGpu()) {
-            splash::stampLandings(*patch, drops->landings(), drops->def().ripple_energy);
-        } else if (patch && !state->warnedGpu) {
-            logWarn("splash: the ripple patch runs on the GPU; landing drops do not stamp it");
-            state->warnedGpu = true;
-        }
+        if (patch) splash::stampLandings(*patch, drops->landings(), drops->def().ripple_energy);
         if (foam) foam->addLandings(drops->landings());
     }
 

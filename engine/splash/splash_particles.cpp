@@ -8,7 +8,6 @@
 #include "water/water_query.h"
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 #include <numbers>
 #include <glm/geometric.hpp>
@@ -245,7 +244,6 @@ void SplashParticles::hash(StateHasher& h) const {
 }
 
 double stampLandings(interaction::RipplePatch& patch, std::span<const Landing> landings, float energyFraction) {
-    assert(!patch.onGpu() && "stampLandings writes the CPU field; a GPU patch would overwrite it");
     interaction::RippleField& field = patch.field();
     const int rows = field.rows(), cols = field.cols();
     const double cell = patch.def().cell_size, area = cell * cell;
@@ -261,6 +259,7 @@ double stampLandings(interaction::RipplePatch& patch, std::span<const Landing> l
         cur[size_t(iz) * size_t(cols) + size_t(ix)] -= float(depth);
         total += energy;
     }
+    if (!landings.empty()) patch.fieldEdited();
     return total;
 }
 

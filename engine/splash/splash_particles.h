@@ -176,7 +176,7 @@ private:
 
 /// Stamps landings into the ripple layer (the ripple stamp law above, ε = energyFraction): each
 /// lowers Vh(t) of the interior cell nearest it; landings outside the patch are skipped.
-/// Returns the energy the law put in, Σ ε·½·m_d·s², J. The patch must be on the CPU.
+/// Returns the energy the law put in, Σ ε·½·m_d·s², J. A GPU patch takes them at its next step.
 double stampLandings(interaction::RipplePatch& patch, std::span<const Landing> landings, float energyFraction);
 
 } // namespace ob::splash
