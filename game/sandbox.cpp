@@ -14,6 +14,7 @@
 #include "ocean/ocean_fft_cpu.h"
 #include "script.h"
 #include "ship.h"
+#include "splash_foam_system.h"
 #include "ui_panels.h"
 #include "water/composite_water.h"
 #include "water_systems.h"
@@ -100,6 +101,7 @@ const SystemEntry SYSTEMS[] = {
     {ecs::Phase::Physics, "bodies", physicsSystem},
     {ecs::Phase::Interaction, "fish stamps", fishStampSystem},
     {ecs::Phase::Interaction, "ripples", interactionSystem},
+    {ecs::Phase::Interaction, "splashes and foam", splashFoamSystem},
     {ecs::Phase::Ocean, "ocean", oceanSystem},
     {ecs::Phase::Render, "camera", cameraSystem},
     {ecs::Phase::Render, "render", renderSystem},
@@ -113,6 +115,7 @@ Sandbox::Sandbox(const SceneDef& scene) : m_scene(scene), m_schedule(scene.sim) 
     spawnCamera(m_world, m_scene.camera);
     addOcean(m_world, m_scene.ocean, m_scene.gerstner);
     addRipples(m_world, m_scene.ripples, float(m_schedule.stepSeconds()));
+    addSplashFoam(m_world, m_scene.splash, m_scene.foam, m_scene.sim.seed);
     spawnObjects(m_world, m_scene.physics, m_scene.objects, m_scene.sim.seed);
     addScript(m_world, m_scene);
 }
@@ -203,6 +206,7 @@ uint64_t Sandbox::stateHash() {
     }
     auto& motions = m_world.pool<ecs::Motion>();
     for (size_t i = 0; i < motions.size(); ++i) h.f32s(&motions.components()[i].velocity.x, 3);
+    hashSplashFoam(m_world, h);
     if (auto* ocean = m_world.resource<OceanState>()) {
         h.f64(ocean->mapsTime);
         // The maps themselves: FFTW's plan and the worker split must not change a bit of them.

@@ -3,12 +3,14 @@
 #include "camera.h"
 #include "objects.h"
 #include "ecs/schedule.h"
+#include "foam/foam_def.h"
 #include "gfx/render_def.h"
 #include "interaction/ripple_def.h"
 #include "ocean/gerstner.h"
 #include "ocean/ocean_def.h"
 #include "platform/platform.h"
 #include "script.h"
+#include "splash/splash_def.h"
 
 #include <string>
 #include <vector>
@@ -37,6 +39,8 @@ struct SceneDef {
     ocean::GerstnerDef gerstner;  ///< [gerstner]
     interaction::RippleDef ripples; ///< [ripples]
     physics::PhysicsDef physics;  ///< [physics]
+    splash::SplashDef splash;     ///< [splash]
+    foam::FoamDef foam;           ///< [foam]
     std::vector<ObjectDef> objects; ///< [[objects]]
     std::vector<EventDef> events;   ///< [[events]]: the timeline
 };
@@ -51,6 +55,8 @@ template <class V> void describe(V& v, SceneDef& s) {
     v.section("gerstner", s.gerstner);
     v.section("ripples", s.ripples);
     v.section("physics", s.physics);
+    v.section("splash", s.splash);
+    v.section("foam", s.foam);
     v.list("objects", s.objects, "bodies, ships, cannons, fish schools");
     v.list("events", s.events, "timeline: actions at simulated times");
 }

@@ -30,6 +30,8 @@ void RipplePatch::step() {
         m_field.step(m_def.damping);
         return;
     }
+    if (m_edited) m_gpu->upload(m_field);
+    m_edited = false;
     m_gpu->stamp(m_pending);
     m_pending.clear();
     m_gpu->step(m_def.damping);

@@ -47,7 +47,11 @@ public:
     const RippleDef& def() const { return m_def; }
     /// Changes DF (eq. 2) from the next step on, [0, 1].
     void setDamping(float damping) { m_def.damping = damping; }
+    /// The CPU field, writable: on the GPU, call fieldEdited() after writing it.
     RippleField& field() { return m_field; }
+    /// The CPU field was written outside stampSphere (e.g. splash drops landing): on the GPU the
+    /// next step() uploads it first, so both sides hold the same state. No-op on the CPU.
+    void fieldEdited() { m_edited = m_gpu != nullptr; }
     const RippleField& field() const { return m_field; }
 
 private:
@@ -58,6 +62,7 @@ private:
     std::unique_ptr<RippleFieldGpu> m_gpu;
     std::vector<RippleStamp> m_pending;  // GPU: this step's stamps, in entity then sphere order
     std::vector<float> m_readback;
+    bool m_edited = false;  // GPU: the CPU field changed since the last read-back
 };
 
 } // namespace ob::interaction

@@ -239,3 +239,28 @@ TEST_CASE("scene errors in objects and events name the key path, events are chec
                      "[[objects]]\ntype = \"cannon\"\nname = \"gun\"\n")
               .empty());
 }
+
+TEST_CASE("[splash] and [foam] load with defaults, take every key, and reject unknown keys and bad values", "[config][splash][foam]") {
+    SceneDef d = game::parseScene("", "empty.toml");
+    CHECK(d.splash.enabled);
+    CHECK(d.foam.enabled);
+    SceneDef s = game::parseScene("[splash]\nenabled = false\nmax_particles = 5000\nemission_scale = 2.0\ndrag = 0.5\n"
+                                  "drop_size = 0.002\nmin_speed = 0.5\nmax_life = 4.0\nbow_speed = 2.5\nripple_energy = 0.1\n"
+                                  "[foam]\nenabled = false\nresolution = 512\ndecay_s = 3.0\nwhitecap_weight = 1.0\n"
+                                  "whitecap_jacobian = 0.3\nripple_weight = 2.0\nripple_slope = 0.4\nsplash_weight = 0.5\n"
+                                  "wake_weight = 0.6\n",
+                                  "full.toml", {"foam.decay_s=9"});
+    CHECK_FALSE(s.splash.enabled);
+    CHECK(s.splash.max_particles == 5000);
+    CHECK(s.splash.drag == 0.5f);
+    CHECK(s.splash.ripple_energy == 0.1f);
+    CHECK_FALSE(s.foam.enabled);
+    CHECK(s.foam.resolution == 512);
+    CHECK(s.foam.decay_s == 9.0f);
+    CHECK(s.foam.wake_weight == 0.6f);
+    CHECK(sceneError("[splash]\nspray = 1\n") == "bad.toml:2:1: splash.spray: unknown key");
+    CHECK(sceneError("[foam]\ndecay = 1\n") == "bad.toml:2:1: foam.decay: unknown key");
+    CHECK(sceneError("[foam]\nresolution = 300\n").find("foam.resolution") != std::string::npos);
+    CHECK(sceneError("[foam]\ndecay_s = 0\n").find("foam.decay_s") != std::string::npos);
+    CHECK(sceneError("[splash]\ndrag = -1\n").find("splash.drag") != std::string::npos);
+}

@@ -1,0 +1,33 @@
+// Persistent foam settings, section [foam] (docs/splash_foam.md; laws in foam_map.h).
+#pragma once
+#include "core/schema.h"
+
+namespace ob::foam {
+
+/// A foam coverage map over the ripple patch, advected with the surface and fed by whitecaps,
+/// steep ripples, splash drops and hulls, decaying exponentially.
+struct FoamDef {
+    bool enabled = true;            ///< false: no foam map at all
+    int resolution = 256;           ///< cells per side over the ripple patch's square; power of two in [16, 4096]
+    float decay_s = 6.0f;           ///< τ: with no sources coverage falls as exp(−t/τ), s, [0.01, 1e4]
+    float whitecap_weight = 2.0f;   ///< coverage per second per unit of Jacobian below whitecap_jacobian, 1/s, [0, 1000]
+    float whitecap_jacobian = 0.5f; ///< the ocean's Jacobian J below which whitecaps feed foam, [-10, 10]
+    float ripple_weight = 4.0f;     ///< coverage per second per unit of ripple slope above ripple_slope, 1/s, [0, 1000]
+    float ripple_slope = 0.5f;      ///< ripple slope |∇h| above which ripples break into foam, [0, 100]
+    float splash_weight = 1.0f;     ///< coverage of a landed drop's whitened disc (radius 10·r) per area, [0, 100]
+    float wake_weight = 0.8f;       ///< coverage a hull sphere leaves along its track (behind it), [0, 100]
+};
+
+template <class V> void describe(V& v, FoamDef& d) {
+    v.field("enabled", d.enabled, "persistent foam on or off");
+    v.field("resolution", d.resolution, powerOfTwo(16, 4096), "cells per side over the ripple patch");
+    v.field("decay_s", d.decay_s, range(0.01, 1e4), "decay time τ of exp(−t/τ) (s)");
+    v.field("whitecap_weight", d.whitecap_weight, range(0, 1000), "whitecap source per unit of Jacobian below the threshold (1/s)");
+    v.field("whitecap_jacobian", d.whitecap_jacobian, range(-10, 10), "Jacobian below which whitecaps make foam");
+    v.field("ripple_weight", d.ripple_weight, range(0, 1000), "steep-ripple source per unit of slope above the threshold (1/s)");
+    v.field("ripple_slope", d.ripple_slope, range(0, 100), "ripple slope above which ripples make foam");
+    v.field("splash_weight", d.splash_weight, range(0, 100), "foam of a landed drop, times its whitened area");
+    v.field("wake_weight", d.wake_weight, range(0, 100), "foam a hull leaves along its track");
+}
+
+} // namespace ob::foam

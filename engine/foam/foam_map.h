@@ -1,0 +1,111 @@
+// Persistent foam: a coverage map in world space over the ripple patch, advected with the
+// surface's horizontal velocity, fed by four sources, decaying exponentially. docs/splash_foam.md.
+//
+// Laws (coverage f ∈ [0, 1] per cell; N×N cells of side Δ = extent/N; cell (i, j) has its
+// centre at origin() + (i, j)·Δ, i along x, j along z; row-major, index j·N + i):
+//   transport  ∂f/∂t + u·∇f = −f/τ + S,  τ = [foam] decay_s, u the surface's horizontal velocity
+//   step(dt)   f ← e^(−dt/τ) · f(x − u(x)·dt): semi-Lagrangian, bilinear between cell centres,
+//              0 from outside the map; the decay is exact for any dt (no sources: f(t) = f(0)·e^(−t/τ))
+//   sources    each add S·dt (or a fixed amount) to a cell, clamped to 1; call them between steps:
+//     (a) whitecaps  S = whitecap_weight · max(0, J_0 − J), J the ocean's Jacobian at the cell
+//                    centre (bilinear in the periodic cascade tile, at rest points), J_0 = whitecap_jacobian
+//     (b) ripples    S = ripple_weight · max(0, |∇h| − s_0), |∇h| the ripple slope by central
+//                    differences at the ripple cell nearest the cell centre, s_0 = ripple_slope
+//     (c) drops      a landed drop of radius r adds splash_weight · π·(10·r)² / Δ² to its cell
+//     (d) wake       a hull sphere (centre c, radius R, horizontal speed U > 0) adds
+//                    S = wake_weight · U / R to every cell within R of c that lies behind it
+//                    ((p − c)·u ≤ 0): a point it passes at lateral offset y gains
+//                    wake_weight·sqrt(1 − (y/R)²) (before decay and the clamp), nothing ahead of it
+// The map scrolls in whole cells (centerOn), like the ripple patch, so foam stays put in the world.
+// Rows are split over the worker pool; each cell's value depends only on the previous map, so
+// the bits do not depend on the worker count.
+#pragma once
+#include "foam/foam_def.h"
+
+#include <span>
+#include <vector>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+namespace ob {
+class StateHasher;
+}
+namespace ob::interaction {
+class RipplePatch;
+}
+namespace ob::splash {
+struct Landing;
+}
+
+namespace ob::foam {
+
+/// How a landed drop's whitened disc relates to its radius (disc radius = this × r).
+constexpr float DROP_FOAM_RADIUS_FACTOR = 10.0f;
+
+/// The foam coverage map (see the laws above).
+class FoamMap {
+public:
+    /// A map of def.resolution² cells over a square of side `extent` metres (the ripple patch's
+    /// N·Δ) centred on the cell nearest `centre` (world x, z). Coverage starts at 0, the velocity at 0.
+    FoamMap(const FoamDef& def, float extent, glm::vec2 centre = glm::vec2(0.0f));
+
+    /// Moves the map so its centre is the cell nearest `worldCentre` (scrolls the data; new cells 0).
+    void centerOn(glm::vec2 worldCentre);
+    /// Grid coordinates of a world (x, z): cell centres at integers.
+    glm::vec2 toGrid(glm::vec2 world) const;
+    /// World (x, z) of cell (0, 0)'s centre.
+    glm::vec2 origin() const;
+    /// Δ, metres per cell.
+    float cellSize() const { return m_cell; }
+    /// N, cells per side.
+    int resolution() const { return m_n; }
+
+    /// Coverage at world (x, z), bilinear between cell centres, 0 outside the map: "is there foam here".
+    float sample(float x, float z) const;
+    /// Coverage of every cell, row-major (index j·N + i), [0, 1]; writable (tests, tools).
+    std::span<float> coverage() { return m_f; }
+    std::span<const float> coverage() const { return m_f; }
+    /// Mean coverage over the map.
+    double mean() const;
+
+    /// The same horizontal velocity u (m/s, world x and z) everywhere.
+    void setUniformVelocity(glm::vec2 u);
+    /// Per-cell velocity, m/s (row-major like coverage()); calling these switches the map to it.
+    std::span<float> velocityX();
+    std::span<float> velocityZ();
+
+    // --- sources (laws (a)–(d) above), each clamped to coverage 1
+    /// (a) Jacobian of an ocean cascade: n×n floats row-major [j][i] at X = (i, j)·tile/n (m).
+    void addWhitecaps(std::span<const float> jacobian, int n, float tile, float dt);
+    /// (b) steep ripples of the patch's Vh(t).
+    void addRipples(const interaction::RipplePatch& patch, float dt);
+    /// (c) landed splash drops.
+    void addLandings(std::span<const splash::Landing> landings);
+    /// (d) one hull sphere: centre (m), velocity (m/s; its horizontal part counts), radius (m).
+    void addWake(const glm::vec3& centre, const glm::vec3& velocity, float radius, float dt);
+
+    /// Advects by the velocity and decays over dt seconds.
+    void step(float dt);
+
+    const FoamDef& def() const { return m_def; }
+    /// Changes the weights and decay from the next call on (resolution stays).
+    void setDef(const FoamDef& def);
+    /// Feeds the coverage and the map's placement to h.
+    void hash(StateHasher& h) const;
+
+private:
+    enum class Flow { Still, Uniform, Field };
+    void add(int i, int j, float amount);
+
+    FoamDef m_def;
+    int m_n;
+    float m_cell;
+    glm::ivec2 m_originCell{0, 0};  // world cell index of cell (0, 0)
+    std::vector<float> m_f, m_next; // coverage; the step writes m_next, then swaps
+    Flow m_flow = Flow::Still;
+    glm::vec2 m_uniform{0.0f};
+    std::vector<float> m_ux, m_uz;  // Flow::Field, m/s
+    std::vector<float> m_padded;    // Flow::Field: the coverage inside a ring of zeros (see step)
+};
+
+} // namespace ob::foam

@@ -1,0 +1,266 @@
+// Splash particles: emission laws, the exact linear-drag flight, landings (laws in the header).
+#include "splash/splash_particles.h"
+
+#include "core/hash.h"
+#include "core/parallel.h"
+#include "core/simd.h"
+#include "interaction/ripple_patch.h"
+#include "water/water_query.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <glm/geometric.hpp>
+
+namespace ob::splash {
+
+namespace {
+
+constexpr float DEG = std::numbers::pi_v<float> / 180.0f;
+// Drops per parallelFor chunk: a chunk's flight is ~10 µs, enough to pay for a hand-off.
+constexpr int FLIGHT_CHUNK = 16384;
+
+// splitmix64 (Steele, Lea, Flood 2014): one 64-bit state, a full-period stream.
+uint64_t splitmix64(uint64_t& state) {
+    uint64_t z = (state += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+}
+
+// One step of the exact linear-drag flight for drops [begin, end): v ← a·v − g·b·ŷ,
+// x ← x + b·v − g·c·ŷ (old v), age += dt. Element-wise, so any split gives the same bits.
+OB_VECTOR_KERNEL void flyKernel(float* __restrict x, float* __restrict y, float* __restrict z, float* __restrict vx,
+                                float* __restrict vy, float* __restrict vz, float* __restrict age, int begin, int end,
+                                float a, float b, float gb, float gc, float dt) {
+    for (int i = begin; i < end; ++i) {
+        const float ux = vx[i], uy = vy[i], uz = vz[i];
+        x[i] += b * ux;
+        y[i] += b * uy - gc;
+        z[i] += b * uz;
+        vx[i] = a * ux;
+        vy[i] = a * uy - gb;
+        vz[i] = a * uz;
+        age[i] += dt;
+    }
+}
+
+} // namespace
+
+Crossing SurfaceCrossing::update(float centreY, float radius, float surfaceY) {
+    const bool below = centreY - radius <= surfaceY;
+    const bool known = m_known;
+    const bool wasBelow = m_below;
+    m_known = true;
+    m_below = below;
+    if (!known || below == wasBelow) return Crossing::None;
+    return below ? Crossing::Entry : Crossing::Exit;
+}
+
+float impactNormalSpeed(const Impact& impact) {
+    const glm::vec3 relative = impact.velocity - glm::vec3(0.0f, impact.surfaceVelocity, 0.0f);
+    return std::abs(glm::dot(relative, impact.surfaceNormal));
+}
+
+int impactDropCount(const Impact& impact, const SplashDef& def) {
+    const double vn = impactNormalSpeed(impact);
+    if (vn < def.min_speed || vn <= 0.0 || impact.mass <= 0.0f) return 0;
+    const double energy = 0.5 * double(impact.mass) * vn * vn;  // J
+    const double n = std::floor(double(def.emission_scale) * DROPS_PER_SQRT_JOULE * std::sqrt(energy));
+    return int(std::min(n, 1e9));
+}
+
+float crownHeight(const Impact& impact) {
+    // H = R·sqrt(Fr) with Fr = v_n²/(g·R), i.e. v_n·sqrt(R/g).
+    return impactNormalSpeed(impact) * std::sqrt(std::max(impact.radius, 0.0f) / GRAVITY);
+}
+
+float crownSpeed(const Impact& impact) { return std::sqrt(2.0f * GRAVITY * crownHeight(impact)); }
+
+SplashParticles::SplashParticles(const SplashDef& def, uint64_t seed) : m_def(def), m_rng(seed) {}
+
+float SplashParticles::uniform() { return float(splitmix64(m_rng) >> 40) * 0x1.0p-24f; }
+
+bool SplashParticles::push(const glm::vec3& p, const glm::vec3& v, float r) {
+    if (size() >= m_def.max_particles) return false;
+    m_x.push_back(p.x);
+    m_y.push_back(p.y);
+    m_z.push_back(p.z);
+    m_vx.push_back(v.x);
+    m_vy.push_back(v.y);
+    m_vz.push_back(v.z);
+    m_age.push_back(0.0f);
+    m_radius.push_back(r);
+    ++m_stats.emitted;
+    return true;
+}
+
+int SplashParticles::emitImpact(const Impact& impact) {
+    const int n = impactDropCount(impact, m_def);
+    if (n <= 0) return 0;
+    const float uc = crownSpeed(impact);
+    const bool exit = impact.kind == Crossing::Exit;
+    const float elevationLo = (exit ? 75.0f : 60.0f) * DEG, elevationSpan = (exit ? 14.0f : 20.0f) * DEG;
+    const glm::vec3 carry = TANGENT_CARRY * glm::vec3(impact.velocity.x, 0.0f, impact.velocity.z);
+    // Draws in a fixed order per drop (azimuth jitter, speed, elevation, radius): separate
+    // statements, since the order of a call's arguments is unspecified.
+    for (int k = 0; k < n; ++k) {
+        const float phi = 2.0f * std::numbers::pi_v<float> * (float(k) + uniform()) / float(n);
+        const float speed = uc * (0.5f + 0.5f * uniform());
+        const float elevation = elevationLo + elevationSpan * uniform();
+        const float r = m_def.drop_size * (0.5f + uniform());
+        const float c = std::cos(phi), s = std::sin(phi);
+        const float out = speed * std::cos(elevation), up = speed * std::sin(elevation);
+        const glm::vec3 p(impact.centre.x + impact.radius * c, impact.surfaceHeight, impact.centre.z + impact.radius * s);
+        if (!push(p, glm::vec3(out * c, up, out * s) + carry, r)) {
+            m_stats.dropped += uint64_t(n - k);
+            return k;
+        }
+    }
+    return n;
+}
+
+int SplashParticles::emitBowSpray(const glm::vec3& centre, const glm::vec3& velocity, float radius, float dt) {
+    const glm::vec3 horizontal(velocity.x, 0.0f, velocity.z);
+    const float u = glm::length(horizontal);
+    if (u <= m_def.bow_speed || dt <= 0.0f) return 0;
+    const float rate = m_def.emission_scale * BOW_DROPS_PER_SECOND * radius * radius * (u / m_def.bow_speed - 1.0f);
+    const int n = int(std::floor(rate * dt + uniform()));  // stochastic rounding: the mean is rate·dt
+    const glm::vec3 heading = horizontal / u;
+    const glm::vec3 side(-heading.z, 0.0f, heading.x);
+    const glm::vec3 front = centre + radius * heading;
+    for (int k = 0; k < n; ++k) {
+        const float sign = uniform() < 0.5f ? -1.0f : 1.0f;
+        const float elevation = (30.0f + 30.0f * uniform()) * DEG;
+        const float speed = 0.6f * u * (0.5f + 0.5f * uniform());
+        const float r = m_def.drop_size * (0.5f + uniform());
+        // Thrown half forward, mostly sideways (60° off the heading), plus half the hull's velocity.
+        const glm::vec3 across = 0.5f * heading + 0.8660254f * sign * side;
+        const glm::vec3 v = across * (speed * std::cos(elevation)) + glm::vec3(0.0f, speed * std::sin(elevation), 0.0f) +
+                            0.5f * horizontal;
+        if (!push(front, v, r)) {
+            m_stats.dropped += uint64_t(n - k);
+            return k;
+        }
+    }
+    return n;
+}
+
+void SplashParticles::step(float dt, const water::WaterQuery& water, float ceiling) {
+    m_landings.clear();
+    const int n = size();
+    if (n == 0) return;
+
+    // --- flight: the exact solution of dv/dt = −g·ŷ − k·v over dt (coefficients in double)
+    const double k = m_def.drag, t = dt, kt = k * t;
+    double a, b, c;
+    if (kt < 1e-4) {  // series: (1 − e^(−kt))/k and (t − b)/k lose every digit as k → 0
+        a = std::exp(-kt);
+        b = t * (1.0 - kt / 2.0 + kt * kt / 6.0);
+        c = t * t * (0.5 - kt / 6.0 + kt * kt / 24.0);
+    } else {
+        a = std::exp(-kt);
+        b = -std::expm1(-kt) / k;
+        c = (t - b) / k;
+    }
+    const float fa = float(a), fb = float(b), gb = float(GRAVITY * b), gc = float(GRAVITY * c);
+    float *x = m_x.data(), *y = m_y.data(), *z = m_z.data(), *vx = m_vx.data(), *vy = m_vy.data(), *vz = m_vz.data(),
+          *age = m_age.data();
+    parallelFor(0, n, FLIGHT_CHUNK,
+                [&](int lo, int hi) { flyKernel(x, y, z, vx, vy, vz, age, lo, hi, fa, fb, gb, gc, dt); });
+
+    // --- landing candidates: descending drops below the ceiling
+    m_dead.assign(size_t(n), 0);
+    m_candidates.clear();
+    m_candidateXZ.clear();
+    for (int i = 0; i < n; ++i) {
+        if (vy[i] < 0.0f && y[i] < ceiling) {
+            m_candidates.push_back(i);
+            m_candidateXZ.emplace_back(x[i], z[i]);
+        }
+    }
+
+    // --- landings: at or below the water; the crossing point found back along the velocity
+    if (!m_candidates.empty()) {
+        m_samples.resize(m_candidates.size());
+        water.sampleBatch(m_candidateXZ, m_samples);
+        for (size_t c2 = 0; c2 < m_candidates.size(); ++c2) {
+            const int i = m_candidates[c2];
+            const float h = m_samples[c2].height;
+            if (y[i] > h) continue;
+            const float back = std::max((h - y[i]) / vy[i], -dt);  // s ≤ 0: time since it crossed
+            Landing l;
+            l.position = glm::vec3(x[i] + vx[i] * back, h, z[i] + vz[i] * back);
+            l.velocity = glm::vec3(vx[i], vy[i], vz[i]);
+            l.radius = m_radius[size_t(i)];
+            l.mass = WATER_DENSITY * (4.0f / 3.0f) * std::numbers::pi_v<float> * l.radius * l.radius * l.radius;
+            m_landings.push_back(l);
+            m_dead[size_t(i)] = 1;
+        }
+        m_stats.landed += m_landings.size();
+    }
+
+    // --- expiry: still airborne after max_life
+    const float maxLife = m_def.max_life;
+    for (int i = 0; i < n; ++i) {
+        if (!m_dead[size_t(i)] && age[i] >= maxLife) {
+            m_dead[size_t(i)] = 2;
+            ++m_stats.expired;
+        }
+    }
+    removeDead();
+}
+
+void SplashParticles::removeDead() {
+    const size_t n = m_x.size();
+    size_t first = 0;
+    while (first < n && !m_dead[first]) ++first;
+    if (first == n) return;
+    // Stable compaction: drop order (and so the hash and the landings' order) is emission order.
+    std::vector<float>* arrays[] = {&m_x, &m_y, &m_z, &m_vx, &m_vy, &m_vz, &m_age, &m_radius};
+    for (std::vector<float>* arr : arrays) {
+        float* d = arr->data();
+        size_t w = first;
+        for (size_t i = first; i < n; ++i)
+            if (!m_dead[i]) d[w++] = d[i];
+        arr->resize(w);
+    }
+}
+
+void SplashParticles::clear() {
+    for (std::vector<float>* arr : {&m_x, &m_y, &m_z, &m_vx, &m_vy, &m_vz, &m_age, &m_radius}) arr->clear();
+    m_landings.clear();
+}
+
+void SplashParticles::hash(StateHasher& h) const {
+    h.u64(uint64_t(m_x.size()));
+    for (const std::vector<float>* arr : {&m_x, &m_y, &m_z, &m_vx, &m_vy, &m_vz, &m_age, &m_radius})
+        h.f32s(arr->data(), arr->size());
+    h.u64(m_rng);
+    h.u64(m_stats.emitted);
+    h.u64(m_stats.dropped);
+    h.u64(m_stats.landed);
+    h.u64(m_stats.expired);
+}
+
+double stampLandings(interaction::RipplePatch& patch, std::span<const Landing> landings, float energyFraction) {
+    interaction::RippleField& field = patch.field();
+    const int rows = field.rows(), cols = field.cols();
+    const double cell = patch.def().cell_size, area = cell * cell;
+    std::span<float> cur = field.current();
+    double total = 0.0;
+    for (const Landing& l : landings) {
+        const glm::vec2 g = patch.toGrid(glm::vec2(l.position.x, l.position.z));
+        const long ix = std::lround(g.x), iz = std::lround(g.y);
+        if (ix < 1 || iz < 1 || ix > cols - 2 || iz > rows - 2) continue;  // the outer ring stays 0
+        const double s2 = double(glm::dot(l.velocity, l.velocity));
+        const double energy = double(energyFraction) * 0.5 * double(l.mass) * s2;  // J
+        const double depth = std::sqrt(2.0 * energy / (double(WATER_DENSITY) * GRAVITY * area));  // m
+        cur[size_t(iz) * size_t(cols) + size_t(ix)] -= float(depth);
+        total += energy;
+    }
+    if (!landings.empty()) patch.fieldEdited();
+    return total;
+}
+
+} // namespace ob::splash

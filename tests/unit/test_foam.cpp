@@ -1,0 +1,228 @@
+// Persistent foam (engine/foam): exponential decay to 1%, advection of a blob by v·t, the wake
+// behind a moving hull and never ahead of it, the whitecap, ripple and drop sources by their
+// laws, the world-space query and scrolling, and determinism across worker counts.
+#include "core/hash.h"
+#include "core/parallel.h"
+#include "foam/foam_map.h"
+#include "interaction/ripple_patch.h"
+#include "splash/splash_particles.h"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <vector>
+
+using namespace ob;
+using foam::FoamDef;
+using foam::FoamMap;
+
+namespace {
+
+constexpr float DT = 1.0f / 60.0f;
+
+// Coverage-weighted centroid of the map in world metres.
+glm::dvec2 centroid(const FoamMap& map) {
+    double sum = 0.0, sx = 0.0, sz = 0.0;
+    const int n = map.resolution();
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const double f = map.coverage()[size_t(j) * size_t(n) + size_t(i)];
+            sum += f;
+            sx += f * i;
+            sz += f * j;
+        }
+    const glm::vec2 o = map.origin();
+    return glm::dvec2(o.x + sx / sum * map.cellSize(), o.y + sz / sum * map.cellSize());
+}
+
+// A Gaussian blob of peak 0.9 and σ = sigma metres at world (x, z).
+void blob(FoamMap& map, float x, float z, float sigma) {
+    const int n = map.resolution();
+    const glm::vec2 o = map.origin();
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const float dx = o.x + float(i) * map.cellSize() - x, dz = o.y + float(j) * map.cellSize() - z;
+            map.coverage()[size_t(j) * size_t(n) + size_t(i)] = 0.9f * std::exp(-(dx * dx + dz * dz) / (2 * sigma * sigma));
+        }
+}
+
+FoamDef smallDef(int resolution = 128) {
+    FoamDef d;
+    d.resolution = resolution;
+    return d;
+}
+
+} // namespace
+
+TEST_CASE("with no sources foam decays as exp(−t/decay_s) to 1% of its initial mean", "[foam]") {
+    for (float dt : {DT, 0.5f}) {
+        FoamDef def = smallDef(64);
+        def.decay_s = 4.0f;
+        FoamMap map(def, 16.0f);
+        std::mt19937 rng(3);
+        std::uniform_real_distribution<float> u(0.0f, 1.0f);
+        for (float& f : map.coverage()) f = u(rng);
+        const double initial = map.mean();
+        const double tEnd = def.decay_s * std::log(100.0);  // exp(−t/τ) = 1%
+        double t = 0.0;
+        double worst = 0.0;
+        while (t + dt <= tEnd + 1e-9) {
+            map.step(dt);
+            t += dt;
+            worst = std::max(worst, std::abs(map.mean() / initial / std::exp(-t / def.decay_s) - 1.0));
+        }
+        const double last = std::exp(-(tEnd - t) / def.decay_s);  // the part of a step left over
+        INFO("dt " << dt << ": worst relative error " << worst);
+        CHECK(worst < 1e-4);  // the float factor e^(−dt/τ) rounds by ~3e-8 a step
+        CHECK(map.mean() * last / initial == Approx(0.01).epsilon(1e-4));
+    }
+}
+
+TEST_CASE("a uniform flow carries a foam blob by v·t (within a cell), by the uniform and the per-cell path", "[foam]") {
+    const glm::vec2 v(1.3f, -0.7f);  // m/s
+    const float t = 3.0f;
+    for (bool perCell : {false, true}) {
+        FoamDef def = smallDef(128);
+        def.decay_s = 1e4f;
+        FoamMap map(def, 32.0f);  // Δ = 0.25 m
+        blob(map, -2.0f, 2.0f, 0.6f);
+        const glm::dvec2 before = centroid(map);
+        if (perCell) {
+            std::span<float> ux = map.velocityX(), uz = map.velocityZ();
+            std::fill(ux.begin(), ux.end(), v.x);
+            std::fill(uz.begin(), uz.end(), v.y);
+        } else {
+            map.setUniformVelocity(v);
+        }
+        const int steps = int(std::lround(t / DT));
+        for (int s = 0; s < steps; ++s) map.step(DT);
+        const glm::dvec2 moved = centroid(map) - before;
+        INFO((perCell ? "per-cell" : "uniform") << " path: moved (" << moved.x << ", " << moved.y << ") m, expected ("
+                                                 << v.x * t << ", " << v.y * t << ")");
+        CHECK(std::abs(moved.x - v.x * t) < map.cellSize());
+        CHECK(std::abs(moved.y - v.y * t) < map.cellSize());
+        // Its peak sits where the flow took it (within a cell; the bilinear step widens it).
+        const auto peak = std::max_element(map.coverage().begin(), map.coverage().end()) - map.coverage().begin();
+        const glm::vec2 at = map.origin() + glm::vec2(float(peak % 128), float(peak / 128)) * map.cellSize();
+        CHECK(std::abs(at.x - (-2.0f + v.x * t)) <= map.cellSize());
+        CHECK(std::abs(at.y - (2.0f + v.y * t)) <= map.cellSize());
+        CHECK(map.sample(-2.0f, 2.0f) < 0.01f);
+    }
+}
+
+TEST_CASE("wake foam appears behind a moving hull, along its track, and not in front of it", "[foam]") {
+    FoamDef def = smallDef(128);
+    def.decay_s = 1e4f;  // no decay: the deposit along the centre line is wake_weight
+    FoamMap map(def, 32.0f);
+    const float radius = 1.0f, speed = 4.0f;
+    glm::vec3 hull(-10.0f, 0.0f, 0.0f);
+    const glm::vec3 velocity(speed, 0.0f, 0.0f);
+    while (hull.x < 0.0f) {
+        map.addWake(hull, velocity, radius, DT);
+        map.step(DT);
+        hull.x += speed * DT;
+    }
+    // Behind, on the track: ~wake_weight (the clamp at 1 is above it); off the track: nothing.
+    for (float x = -8.5f; x <= -1.5f; x += 0.5f) {
+        INFO("x " << x);
+        CHECK(map.sample(x, 0.0f) == Approx(def.wake_weight).epsilon(0.1));
+        CHECK(map.sample(x, 0.5f) == Approx(def.wake_weight * std::sqrt(1.0 - 0.25)).epsilon(0.15));
+        CHECK(map.sample(x, 1.5f) == 0.0f);
+    }
+    // In front of the hull: not a trace.
+    for (float x = hull.x + 0.3f; x < 15.0f; x += 0.25f)
+        for (float z = -2.0f; z <= 2.0f; z += 0.25f) REQUIRE(map.sample(x, z) == 0.0f);
+    // A hull at rest leaves nothing.
+    FoamMap still(def, 32.0f);
+    for (int s = 0; s < 60; ++s) still.addWake(glm::vec3(0.0f), glm::vec3(0.0f), radius, DT);
+    CHECK(still.mean() == 0.0);
+}
+
+TEST_CASE("whitecaps, steep ripples and landed drops feed foam by their laws", "[foam]") {
+    FoamDef def = smallDef(64);
+    SECTION("whitecaps: whitecap_weight·(J_0 − J)·dt where J < J_0, nothing elsewhere") {
+        FoamMap map(def, 16.0f);  // Δ = 0.25 m, from −8 m to 7.75 m
+        // A 32 m tile of 64 samples: J = 0 where x mod 32 < 8 m... in world terms x ∈ [0, 8).
+        const int n = 64;
+        const float tile = 32.0f;
+        std::vector<float> jac(size_t(n) * n, 1.0f);
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i)
+                if (float(i) * tile / n < 8.0f) jac[size_t(j) * n + size_t(i)] = 0.0f;
+        map.addWhitecaps(jac, n, tile, 0.1f);
+        CHECK(map.sample(4.0f, 0.0f) == Approx(def.whitecap_weight * def.whitecap_jacobian * 0.1f));
+        CHECK(map.sample(-4.0f, 3.0f) == 0.0f);  // x ∈ [−8, 0) is x mod 32 ∈ [24, 32): J = 1
+    }
+    SECTION("ripples: ripple_weight·(|∇h| − s_0)·dt where the ripples are steep") {
+        interaction::RippleDef rd;
+        rd.resolution = 64;
+        rd.cell_size = 0.25f;
+        interaction::RipplePatch patch(rd);
+        // A ramp of slope 0.8 over x ∈ [2, 4] m of the patch, flat elsewhere.
+        std::span<float> h = patch.field().current();
+        for (int z = 1; z < 63; ++z)
+            for (int x = 1; x < 63; ++x) {
+                const float wx = patch.origin().x + float(x) * rd.cell_size;
+                h[size_t(z) * 64 + size_t(x)] = 0.8f * std::clamp(wx - 2.0f, 0.0f, 2.0f);
+            }
+        FoamMap map(def, 16.0f);
+        map.addRipples(patch, 0.1f);
+        CHECK(map.sample(3.0f, 0.0f) == Approx(def.ripple_weight * (0.8f - def.ripple_slope) * 0.1f).epsilon(1e-4));
+        CHECK(map.sample(-3.0f, 0.0f) == 0.0f);
+        CHECK(map.sample(6.0f, 0.0f) == 0.0f);
+    }
+    SECTION("drops: splash_weight·π·(10·r)²/Δ² in the cell each lands in") {
+        FoamMap map(def, 16.0f);
+        splash::Landing l;
+        l.position = glm::vec3(1.0f, 0.0f, -2.0f);  // a cell centre
+        l.radius = 0.004f;
+        map.addLandings(std::span(&l, 1));
+        const float expected = def.splash_weight * float(M_PI) * 0.04f * 0.04f / (0.25f * 0.25f);
+        CHECK(map.sample(1.0f, -2.0f) == Approx(expected));
+        for (int k = 0; k < 100; ++k) map.addLandings(std::span(&l, 1));
+        CHECK(map.sample(1.0f, -2.0f) == 1.0f);  // clamped at full coverage
+    }
+}
+
+TEST_CASE("the foam query is world-space: bilinear, 0 outside, unchanged by scrolling the map", "[foam]") {
+    FoamDef def = smallDef(64);
+    FoamMap map(def, 16.0f);
+    blob(map, 1.0f, 1.0f, 0.5f);
+    const float inside = map.sample(1.0f, 1.0f), nearby = map.sample(1.3f, 0.8f);
+    CHECK(inside > 0.85f);
+    CHECK(map.sample(100.0f, 0.0f) == 0.0f);
+    map.centerOn(glm::vec2(3.0f, -2.0f));  // 12 and −8 cells
+    CHECK(map.sample(1.0f, 1.0f) == inside);
+    CHECK(map.sample(1.3f, 0.8f) == nearby);
+    map.centerOn(glm::vec2(200.0f, 0.0f));  // the blob left the map
+    CHECK(map.mean() == 0.0);
+}
+
+TEST_CASE("same inputs give bit-identical foam for any worker count", "[foam][determinism]") {
+    auto run = [](int workers) {
+        setWorkerCount(workers);
+        FoamDef def = smallDef(256);
+        FoamMap map(def, 64.0f);
+        blob(map, 0.0f, 0.0f, 3.0f);
+        std::span<float> ux = map.velocityX(), uz = map.velocityZ();
+        for (size_t c = 0; c < ux.size(); ++c) {
+            ux[c] = 0.5f * std::sin(float(c % 256) * 0.05f);
+            uz[c] = 0.3f * std::cos(float(c / 256) * 0.07f);
+        }
+        for (int s = 0; s < 60; ++s) {
+            map.addWake(glm::vec3(float(s) * 0.1f, 0.0f, 0.0f), glm::vec3(6.0f, 0.0f, 0.0f), 1.0f, DT);
+            map.step(DT);
+        }
+        map.setUniformVelocity(glm::vec2(0.7f, 0.2f));
+        for (int s = 0; s < 60; ++s) map.step(DT);
+        setWorkerCount(0);
+        StateHasher h;
+        map.hash(h);
+        return h.value();
+    };
+    const uint64_t one = run(1);
+    CHECK(run(2) == one);
+    CHECK(run(3) == one);
+}
