@@ -79,6 +79,8 @@ static SceneDef sceneEditor(const SceneDef& scene, std::optional<SceneDef>& rest
     editor.section("gerstner", edited.gerstner);
     editor.section("ripples", edited.ripples);
     editor.section("physics", edited.physics);
+    editor.section("splash", edited.splash);
+    editor.section("foam", edited.foam);
     editor.list("objects", edited.objects, "");
     editor.list("events", edited.events, "");
     if (ImGui::Button("restart with these settings")) {
