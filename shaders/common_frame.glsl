@@ -6,7 +6,7 @@ layout(std140, binding = 0) uniform FrameUniforms {
     vec4 u_sunDirectionFresnel;  // xyz toward the sun, w 0 Schlick / 1 exact
     vec4 u_waterColorExposure;   // rgb deep water colour, w exposure
     vec4 u_viewport;             // xy target size (px), z 1 = output linear radiance, w 1 = eye under water
-    vec4 u_clipPlane;            // world plane: keeps dot(plane, (p, 1)) >= 0 (reflection/refraction passes)
+    vec4 u_surfaceClip;          // x side s, y overlap m (m), z 1 = mirror: objects keep s·(y − surface) + m >= 0 (s 0: all), mirrored about the surface
     vec4 u_depthParams;          // near, far (m), water clarity (m), sky cube mip count
     vec4 u_shading;              // DU/DV strength, normal distortion, glitter strength, glitter shininess
     vec4 u_switches;             // reflections, refractions, foam (1 on, 0 off)

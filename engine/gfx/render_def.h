@@ -22,6 +22,7 @@ struct RenderDef {
     float glitter_shininess = 600.0f;               ///< sun glitter exponent (Phong), [1, 10000]
     float exposure = 1.0f;                          ///< scene exposure multiplier before tone mapping, [0.01, 16]
     float resolution_scale = 1.0f;                  ///< internal render size / framebuffer size, [0.25, 1]; below 1 the frame is scaled up (bilinear)
+    std::string antialias = "auto";                 ///< edge smoothing: "off", "fxaa" (one post pass), "msaa4" (4 samples a pixel), "auto" (msaa4 on a GPU, fxaa on a software rasteriser)
     int grid_resolution = 0;                        ///< projected grid cells per side, [16, 2048]; 0 = auto (one per 3 px of internal height on a GPU, per 6 px on a software rasteriser, within [32, 512])
 };
 
@@ -40,6 +41,8 @@ template <class V> void describe(V& v, RenderDef& d) {
     v.field("glitter_shininess", d.glitter_shininess, range(1, 10000), "sun glitter exponent (Phong)");
     v.field("exposure", d.exposure, range(0.01, 16), "exposure multiplier before tone mapping");
     v.field("resolution_scale", d.resolution_scale, range(0.25, 1), "internal render size / framebuffer size (scaled up below 1)");
+    v.field("antialias", d.antialias, Choices{"auto", "off", "fxaa", "msaa4"},
+            "edge smoothing: off, fxaa (post pass), msaa4 (4 samples), auto (msaa4 on a GPU, fxaa in software)");
     v.field("grid_resolution", d.grid_resolution, range(0, 2048), "projected grid cells per side; 0 = auto (internal height / 3 on a GPU, / 6 in software)");
 }
 
