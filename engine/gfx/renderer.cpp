@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cstring>
 #include <iterator>
+#include <tuple>
 #include <glm/glm.hpp>
 #include <stb_image_write.h>
 #include <utility>
@@ -37,7 +38,7 @@ constexpr int DETAIL_MAP_SIZE = 256;
 // at the surface itself, each reaching this far (m) past it so the waterline leaves no seam
 // between the surface the water pass shades and the one the objects were cut at.
 constexpr float WATER_LEVEL = 0.0f;
-constexpr float REFLECTION_OVERLAP = 0.1f;
+constexpr float REFLECTION_OVERLAP = 0.25f;
 constexpr float REFRACTION_OVERLAP = 0.25f;
 const char* const PASS_NAMES[] = {"sky_bake", "reflection", "refraction", "opaque", "water", "sky", "present"};
 // Samples a pixel of the msaa4 targets; the FXAA pass reads its source on this unit.
@@ -73,12 +74,16 @@ Renderer::Renderer(const RenderDef& def)
                       createBuffer("frame uniforms: refraction", sizeof(FrameUniforms))},
       m_waterUniforms(createBuffer("water uniforms", sizeof(WaterUniforms))) {
     GLuint id;
-    glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &id);
-    glObjectLabel(GL_TEXTURE, id, -1, "flat water maps");
-    glTextureStorage3D(id, 1, GL_RGBA32F, 1, 1, 1);
-    const float flat[4] = {0.0f, 0.0f, 0.0f, 1.0f};
-    glTextureSubImage3D(id, 0, 0, 0, 0, 1, 1, 1, GL_RGBA, GL_FLOAT, flat);
-    m_flatMaps = Texture(id);
+    // No FFT layers: flat maps, J = 1 where each layout keeps it (displacement w, slopes z).
+    const float flatDisplacement[4] = {0.0f, 0.0f, 0.0f, 1.0f}, flatSlopes[4] = {0.0f, 0.0f, 1.0f, 0.0f};
+    for (auto [texture, label, texel] : {std::tuple{&m_flatDisplacement, "flat water displacement", flatDisplacement},
+                                         std::tuple{&m_flatSlopes, "flat water slopes", flatSlopes}}) {
+        glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &id);
+        glObjectLabel(GL_TEXTURE, id, -1, label);
+        glTextureStorage3D(id, 1, GL_RGBA32F, 1, 1, 1);
+        glTextureSubImage3D(id, 0, 0, 0, 0, 1, 1, 1, GL_RGBA, GL_FLOAT, texel);
+        *texture = Texture(id);
+    }
 
     glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);  // filter across cube faces: no seams in the sky
     glCreateTextures(GL_TEXTURE_CUBE_MAP, 1, &id);
@@ -398,8 +403,8 @@ void Renderer::uploadWaterUniforms(const CameraView& camera, const WaterView& wa
     }
     glNamedBufferSubData(m_waterUniforms.id(), 0, sizeof u, &u);
     glBindBufferBase(GL_UNIFORM_BUFFER, WATER_UBO_BINDING, m_waterUniforms.id());
-    glBindTextureUnit(DISPLACEMENT_UNIT, layers ? water.displacement->id() : m_flatMaps.id());
-    glBindTextureUnit(SLOPES_UNIT, layers ? water.slopes->id() : m_flatMaps.id());
+    glBindTextureUnit(DISPLACEMENT_UNIT, layers ? water.displacement->id() : m_flatDisplacement.id());
+    glBindTextureUnit(SLOPES_UNIT, layers ? water.slopes->id() : m_flatSlopes.id());
     glBindTextureUnit(RIPPLES_UNIT, u.rippleParams.w > 0.0f ? m_rippleTexture.id() : 0);
 }
 

@@ -141,7 +141,7 @@ private:
     Buffer m_gridVertices, m_gridIndices;
     int m_gridResolution = 0;
     GLsizei m_gridIndexCount = 0;
-    Texture m_flatMaps;       // 1×1 layer: no displacement, J = 1, zero slope
+    Texture m_flatDisplacement, m_flatSlopes;  // 1×1 layers: no displacement, zero slope, J = 1
     Texture m_rippleTexture;  // R32F heights of the ripple patch, re-uploaded every frame
     int m_rippleCells = 0;
     Texture m_skyCube;        // RGBA16F cube map of the sky's radiance
