@@ -40,7 +40,7 @@ constexpr int DETAIL_MAP_SIZE = 256;
 constexpr float WATER_LEVEL = 0.0f;
 constexpr float REFLECTION_OVERLAP = 0.25f;
 constexpr float REFRACTION_OVERLAP = 0.25f;
-const char* const PASS_NAMES[] = {"sky_bake", "reflection", "refraction", "opaque", "water", "sky", "present"};
+const char* const PASS_NAMES[] = {"sky_bake", "reflection", "refraction", "opaque", "water", "sky", "post"};
 // Samples a pixel of the msaa4 targets; the FXAA pass reads its source on this unit.
 constexpr int MSAA_SAMPLES = 4;
 constexpr GLuint FXAA_SOURCE_UNIT = 0;
@@ -224,7 +224,7 @@ void Renderer::render(const CameraView& camera, const WaterView& water, const st
     opaquePass(objects);
     waterPass(camera);
     skyPass();  // last: it shades only the pixels nothing else covered
-    if (!direct) presentPass(size);
+    if (!direct) postPass(size);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glBindVertexArray(0);
 }
@@ -355,9 +355,9 @@ void Renderer::skyPass() {
 
 // The internal frame to the framebuffer: the samples resolved (msaa4), then FXAA, which
 // also scales up, or a blit (bilinear when scaling up).
-void Renderer::presentPass(glm::ivec2 size) {
-    glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, PRESENT_PASS, -1, "present");
-    m_passTimers[PRESENT_PASS].begin();
+void Renderer::postPass(glm::ivec2 size) {
+    glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, POST_PASS, -1, "post");
+    m_passTimers[POST_PASS].begin();
     if (m_antialias == Antialias::Msaa4) resolveTarget(m_multisampled, m_internal, false);
     const glm::ivec2 internal = m_internal.size;
     if (m_antialias == Antialias::Fxaa) {
@@ -374,7 +374,7 @@ void Renderer::presentPass(glm::ivec2 size) {
         glBlitNamedFramebuffer(m_internal.framebuffer.id(), 0, 0, 0, internal.x, internal.y, 0, 0, size.x, size.y,
                                GL_COLOR_BUFFER_BIT, internal == size ? GL_NEAREST : GL_LINEAR);
     }
-    m_passTimers[PRESENT_PASS].end();
+    m_passTimers[POST_PASS].end();
     glPopDebugGroup();
 }
 

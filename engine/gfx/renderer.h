@@ -1,11 +1,11 @@
 // The renderer: a short list of passes (Renderer::render runs them in this order).
 //   sky bake   → the analytic daylight sky into a cube map, when the sun moves
-//   reflection → objects above the water seen from the mirrored camera (clip plane) → target
-//   refraction → objects below the water from the camera (clip plane) → colour + depth target
+//   reflection → objects above the water surface, mirrored about it (per vertex) → colour + depth target
+//   refraction → objects below the water surface from the camera → colour + depth target
 //   opaque     → objects from the camera into the framebuffer
 //   water      → the composite surface on a projected grid, shaded from the targets and sky
 //   sky        → the cube map (or underwater fog) where nothing else was drawn
-//   present    → the internal frame to the framebuffer: MSAA resolve, FXAA, upscale (when
+//   post       → the internal frame to the framebuffer: MSAA resolve, FXAA, upscale (when
 //                resolution_scale < 1); skipped when the frame was drawn into it directly
 #pragma once
 #include "gfx/gpu_timer.h"
@@ -112,7 +112,7 @@ public:
 
 private:
     enum View { MAIN_VIEW, REFLECTION_VIEW, REFRACTION_VIEW, VIEW_COUNT };
-    enum Pass { SKY_BAKE_PASS, REFLECTION_PASS, REFRACTION_PASS, OPAQUE_PASS, WATER_PASS, SKY_PASS, PRESENT_PASS, PASS_COUNT };
+    enum Pass { SKY_BAKE_PASS, REFLECTION_PASS, REFRACTION_PASS, OPAQUE_PASS, WATER_PASS, SKY_PASS, POST_PASS, PASS_COUNT };
 
     void skyBakePass();  // in: sun direction; out: m_skyCube (linear radiance, mipmapped)
     void reflectionPass(const std::vector<ObjectDraw>& objects);  // in: mirrored view, objects; out: m_reflection colour + depth
@@ -121,7 +121,7 @@ private:
     void prepareWater(const CameraView& camera, const WaterView& water, int internalHeight);  // out: grid, water uniforms, layer textures bound
     void waterPass(const CameraView& camera);  // in: water layers, targets, sky; out: framebuffer
     void skyPass();  // in: sky cube, depth; out: colour where nothing was drawn
-    void presentPass(glm::ivec2 size);  // in: m_multisampled or m_internal; out: framebuffer of `size`
+    void postPass(glm::ivec2 size);  // in: m_multisampled or m_internal; out: framebuffer of `size`
 
     void drawObjects(const std::vector<ObjectDraw>& objects, View view);
     const Mesh& meshFor(const ObjectDraw& object);
