@@ -15,11 +15,11 @@ vec3 surfaceDisplacement(vec2 rest, float t) {
     return offset;
 }
 
-// Surface height (m) above world (x, z) at time t: the rest point that the horizontal
-// displacement carries to (x, z) by fixed-point iteration (rest = world − D(rest); it
-// contracts while the waves do not fold), its height there, and the ripples at (x, z).
+// Surface height (m) above world (x, z) at time t: the height at the rest point that the
+// horizontal displacement carries to (x, z), found by one fixed-point step (rest = world −
+// D(world); the residual is D's change over |D|, a few cm for waves that do not fold: it
+// is per vertex, on a software rasteriser's one vertex thread), and the ripples at (x, z).
 float surfaceHeight(vec2 world, float t) {
-    vec2 rest = world;
-    for (int i = 0; i < 3; ++i) rest = world - surfaceDisplacement(rest, t).xz;
+    vec2 rest = world - surfaceDisplacement(world, t).xz;
     return surfaceDisplacement(rest, t).y + rippleHeight(world);
 }

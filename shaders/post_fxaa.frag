@@ -3,39 +3,40 @@
 // "quality" scheme: find the pixels on a luma edge, the edge's direction and its two ends
 // along it, and blend each pixel toward its neighbour across the edge by how far it sits
 // from the nearer end; a sub-pixel term softens single-pixel features. One pass at the
-// output size: when the frame was drawn smaller, the same lookups scale it up (bilinear).
+// output size: when the frame was drawn smaller, the same lookups scale it up (bilinear),
+// the edge found at the source pixel under the output one.
 in vec2 v_ndc;
-layout(binding = 0) uniform sampler2D u_source;  // the frame (display-encoded colour), linear filtered
+layout(binding = 0) uniform sampler2D u_source;  // rgb display-encoded colour, a its luma; linear filtered
 layout(location = 0) uniform vec2 u_texel;       // 1 / source size (uv per source pixel)
 out vec4 o_color;
 
 // Contrast below max(EDGE_MIN, EDGE_RELATIVE · brightest) is not an edge: most pixels stop there.
-const float EDGE_MIN = 0.0312;
-const float EDGE_RELATIVE = 0.125;
+const float EDGE_MIN = 0.0833;
+const float EDGE_RELATIVE = 0.166;
 // How much of the sub-pixel term applies (0 = none, 1 = soft).
 const float SUBPIXEL = 0.75;
 // Steps (in source pixels) of the walk along the edge; an end further away is taken as the last.
-const int WALK_STEPS = 8;
-const float WALK[WALK_STEPS] = float[](1.0, 1.0, 1.0, 1.5, 2.0, 2.0, 4.0, 8.0);
+const int WALK_STEPS = 5;
+const float WALK[WALK_STEPS] = float[](1.0, 1.5, 2.0, 4.0, 12.0);
 
-// Perceived brightness of a display-encoded colour (Rec. 601 weights).
-float luma(vec3 c) { return dot(c, vec3(0.299, 0.587, 0.114)); }
-float lumaAt(vec2 uv) { return luma(textureLod(u_source, uv, 0.0).rgb); }
+float lumaAt(vec2 uv) { return textureLod(u_source, uv, 0.0).a; }
 
 void main() {
     vec2 uv = v_ndc * 0.5 + 0.5;
-    vec4 centre = textureLod(u_source, uv, 0.0);
-    float m = luma(centre.rgb);
-    float n = lumaAt(uv + vec2(0.0, u_texel.y)), s = lumaAt(uv - vec2(0.0, u_texel.y));
-    float e = lumaAt(uv + vec2(u_texel.x, 0.0)), w = lumaAt(uv - vec2(u_texel.x, 0.0));
+    // The 3×3 lumas around the source pixel: two gathers of four (each a 2×2 block, in the
+    // order (−x +y), (+x +y), (+x −y), (−x −y) around the block's shared corner).
+    vec2 centre = (floor(uv / u_texel) + 0.5) * u_texel;
+    vec4 lower = textureGather(u_source, centre - 0.5 * u_texel, 3);  // w, m, s, sw
+    vec4 upper = textureGather(u_source, centre + 0.5 * u_texel, 3);  // n, ne, e, m
+    float m = lower.y, w = lower.x, s = lower.z, sw = lower.w, n = upper.x, ne = upper.y, e = upper.z;
     float brightest = max(max(max(n, s), max(e, w)), m);
     float range = brightest - min(min(min(n, s), min(e, w)), m);
     if (range < max(EDGE_MIN, EDGE_RELATIVE * brightest)) {
-        o_color = vec4(centre.rgb, 1.0);
+        o_color = vec4(textureLod(u_source, uv, 0.0).rgb, 1.0);
         return;
     }
-    float ne = lumaAt(uv + u_texel), sw = lumaAt(uv - u_texel);
-    float nw = lumaAt(uv + vec2(-u_texel.x, u_texel.y)), se = lumaAt(uv + vec2(u_texel.x, -u_texel.y));
+    float nw = textureLodOffset(u_source, centre, 0.0, ivec2(-1, 1)).a;
+    float se = textureLodOffset(u_source, centre, 0.0, ivec2(1, -1)).a;
 
     // --- direction: the luma's second difference across rows (a horizontal edge) against
     // across columns (a vertical edge), the centre row/column weighted twice.
@@ -58,7 +59,7 @@ void main() {
     // their mean) until the mean departs from the edge's by a quarter of the gradient.
     float edgeLuma = 0.5 * (m + other);
     float threshold = 0.25 * gradient;
-    vec2 start = uv + 0.5 * across;
+    vec2 start = centre + 0.5 * across;
     vec2 toA = start, toB = start;
     float deltaA = 0.0, deltaB = 0.0;
     bool endA = false, endB = false;
@@ -74,8 +75,8 @@ void main() {
             endB = abs(deltaB) >= threshold;
         }
     }
-    float distanceA = horizontal ? uv.x - toA.x : uv.y - toA.y;
-    float distanceB = horizontal ? toB.x - uv.x : toB.y - uv.y;
+    float distanceA = dot(centre - toA, along) / dot(along, along);
+    float distanceB = dot(toB - centre, along) / dot(along, along);
     bool nearerA = distanceA < distanceB;
     float nearest = min(distanceA, distanceB);
     // The edge ends on the centre's side of the step only when the luma there moves the

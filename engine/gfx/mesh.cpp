@@ -48,7 +48,7 @@ Mesh makeSphereMesh(int rings) {
 
 // Each face is a grid of BOX_FACE_CELLS² quads, not one: the reflection and refraction
 // passes cut and mirror objects at the wavy surface vertex by vertex.
-constexpr int BOX_FACE_CELLS = 8;
+constexpr int BOX_FACE_CELLS = 4;
 
 Mesh makeBoxMesh() {
     std::vector<glm::vec3> v;

@@ -155,7 +155,7 @@ void Renderer::updateFrameUniforms(const CameraView& camera, double time, glm::i
     u.viewProjection = viewProjection;
     u.inverseViewProjection = glm::inverse(viewProjection);
     u.cameraPositionTime = glm::vec4(camera.position, float(time));
-    u.viewport = glm::vec4(float(size.x), float(size.y), 0.0f, underwater);
+    u.viewport = glm::vec4(float(size.x), float(size.y), m_antialias == Antialias::Fxaa ? 2.0f : 0.0f, underwater);
     u.surfaceClip = glm::vec4(0.0f);
     glNamedBufferSubData(m_frameUniforms[MAIN_VIEW].id(), 0, sizeof u, &u);
 
