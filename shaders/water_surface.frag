@@ -18,11 +18,17 @@ layout(binding = 4) uniform sampler2D u_reflection;       // rgb linear radiance
 layout(binding = 5) uniform sampler2D u_refraction;       // rgb linear radiance
 layout(binding = 6) uniform sampler2D u_refractionDepth;  // window depth of what lies below
 layout(binding = 7) uniform sampler2D u_detail;           // rg DU/DV in [-1, 1], b foam pattern
+layout(binding = 8) uniform sampler2D u_reflectionDepth;  // window depth of the mirrored objects
 out vec4 o_color;
 
 const float DETAIL_TILE = 24.0;            // m per repeat of the detail map
 const vec2 DETAIL_DRIFT = vec2(0.031, 0.017);  // detail map scroll (repeats per s)
 const vec3 SUN_COLOR = vec3(1.0, 0.9, 0.7);
+// A tilted surface shifts an image by an angle, so the shift grows with the distance of the
+// reflected or refracted object behind the surface: none where it touches it (a hull at the
+// waterline), the full offset from this many metres behind. Without the ramp the offset tears
+// the contact line into a zig-zag of object and sky (reflection) or body colour (refraction).
+const float DISTORTION_RAMP_M = 2.0;
 
 // Eye distance of a window depth (perspective projection, near/far in u_depthParams).
 float eyeDepth(float windowZ) {
@@ -70,19 +76,31 @@ void main() {
     vec2 screen = gl_FragCoord.xy / u_viewport.xy;
     vec3 detail = texture(u_detail, v_world.xz / DETAIL_TILE + DETAIL_DRIFT * t).rgb;
     vec2 offset = u_shading.x * detail.xy + u_shading.y * n.xz;
+    float surfaceDepth = eyeDepth(gl_FragCoord.z);
 
     float cosV = max(dot(v, n), 0.0);
     vec3 r = reflect(-v, n);
     r.y = abs(r.y);
     vec3 reflection = textureLod(u_sky, r, 0.0).rgb;
     if (u_switches.x > 0.5) {
-        vec4 local = texture(u_reflection, clamp(screen + offset, 0.0, 1.0));
+        // The mirrored camera has the camera's projection: its depth less the surface's is
+        // the path from the surface to the mirrored object.
+        float behind = eyeDepth(texture(u_reflectionDepth, screen).r) - surfaceDepth;
+        vec2 uv = clamp(screen + offset * smoothstep(0.0, DISTORTION_RAMP_M, behind), 0.0, 1.0);
+        vec4 local = texture(u_reflection, uv);
         reflection = mix(reflection, local.rgb, local.a);
     }
     vec3 refraction = body;
     if (u_switches.y > 0.5) {
-        vec2 uv = clamp(screen + offset, 0.0, 1.0);
-        float depth = eyeDepth(texture(u_refractionDepth, uv).r) - eyeDepth(gl_FragCoord.z);
+        float behind = eyeDepth(texture(u_refractionDepth, screen).r) - surfaceDepth;
+        vec2 uv = clamp(screen + offset * smoothstep(0.0, DISTORTION_RAMP_M, behind), 0.0, 1.0);
+        float depth = eyeDepth(texture(u_refractionDepth, uv).r) - surfaceDepth;
+        if (depth < 0.0) {
+            // The offset lookup found an object in front of the surface (the part of a hull
+            // above the waterline, kept by the plane's overlap): what lies straight behind shows.
+            uv = screen;
+            depth = behind;
+        }
         refraction = mix(body, texture(u_refraction, uv).rgb, exp(-max(depth, 0.0) / u_depthParams.z));
     }
 

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <glm/glm.hpp>
+#include <utility>
 #include <vector>
 
 namespace ob::gfx {
@@ -45,22 +46,33 @@ Mesh makeSphereMesh(int rings) {
     return upload("sphere mesh", v, idx);
 }
 
+// Each face is a grid of BOX_FACE_CELLS² quads, not one: the reflection and refraction
+// passes cut and mirror objects at the wavy surface vertex by vertex.
+constexpr int BOX_FACE_CELLS = 4;
+
 Mesh makeBoxMesh() {
     std::vector<glm::vec3> v;
     std::vector<uint32_t> idx;
+    const int n = BOX_FACE_CELLS;
     for (int axis = 0; axis < 3; ++axis)
         for (float sign : {-1.0f, 1.0f}) {
-            glm::vec3 n(0.0f);
-            n[axis] = sign;
+            glm::vec3 normal(0.0f);
+            normal[axis] = sign;
             glm::vec3 u(0.0f), w(0.0f);
             u[(axis + 1) % 3] = 1.0f;
             w[(axis + 2) % 3] = 1.0f;
             if (sign < 0) std::swap(u, w);  // keep counter-clockwise seen from outside
-            uint32_t base = uint32_t(v.size() / 3);
-            for (glm::vec2 c : {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(1, 1), glm::vec2(-1, 1)}) {
-                v.insert(v.end(), {n + c.x * u + c.y * w, n, glm::vec3(1.0f)});
-            }
-            idx.insert(idx.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+            const uint32_t base = uint32_t(v.size() / 3);
+            for (int j = 0; j <= n; ++j)
+                for (int i = 0; i <= n; ++i) {
+                    const float a = 2.0f * float(i) / float(n) - 1.0f, b = 2.0f * float(j) / float(n) - 1.0f;
+                    v.insert(v.end(), {normal + a * u + b * w, normal, glm::vec3(1.0f)});
+                }
+            for (int j = 0; j < n; ++j)
+                for (int i = 0; i < n; ++i) {
+                    const uint32_t c = base + uint32_t(j * (n + 1) + i), d = c + uint32_t(n + 1);
+                    idx.insert(idx.end(), {c, c + 1, d + 1, c, d + 1, d});
+                }
         }
     return upload("box mesh", v, idx);
 }

@@ -23,6 +23,7 @@ struct RenderDef {
     float exposure = 1.0f;                          ///< scene exposure multiplier before tone mapping, [0.01, 16]
     float resolution_scale = 1.0f;                  ///< internal render size / framebuffer size, [0.25, 1]; below 1 the frame is scaled up (bilinear)
     float target_fps = 30.0f;                       ///< dynamic resolution: the internal scale follows the frame time to hold this rate (play; run only when set on the command line), [0, 1000]; 0 = off (resolution_scale as set)
+    std::string antialias = "auto";                 ///< edge smoothing: "off", "fxaa" (one post pass), "msaa4" (4 samples a pixel), "auto" (msaa4 on a GPU, fxaa on a software rasteriser)
     int grid_resolution = 0;                        ///< projected grid cells per side, [16, 2048]; 0 = auto (one per 3 px of internal height on a GPU, per 6 px on a software rasteriser, within [32, 512])
 };
 
@@ -42,6 +43,8 @@ template <class V> void describe(V& v, RenderDef& d) {
     v.field("exposure", d.exposure, range(0.01, 16), "exposure multiplier before tone mapping");
     v.field("resolution_scale", d.resolution_scale, range(0.25, 1), "internal render size / framebuffer size (scaled up below 1)");
     v.field("target_fps", d.target_fps, range(0, 1000), "dynamic resolution holds this frame rate (play); 0 = off");
+    v.field("antialias", d.antialias, Choices{"auto", "off", "fxaa", "msaa4"},
+            "edge smoothing: off, fxaa (post pass), msaa4 (4 samples), auto (msaa4 on a GPU, fxaa in software)");
     v.field("grid_resolution", d.grid_resolution, range(0, 2048), "projected grid cells per side; 0 = auto (internal height / 3 on a GPU, / 6 in software)");
 }
 

@@ -3,6 +3,7 @@
 
 #include "core/error.h"
 
+#include <cassert>
 #include <string>
 
 namespace ob::gfx {
@@ -19,11 +20,27 @@ Texture createTexture2D(const char* label, GLenum format, glm::ivec2 size, int l
     return Texture(id);
 }
 
-RenderTarget createRenderTarget(const char* label, glm::ivec2 size) {
+// A multisampled texture has no sampler state: it is only drawn into and resolved.
+static Texture createMultisampleTexture(const char* label, GLenum format, glm::ivec2 size, int samples) {
+    GLuint id;
+    glCreateTextures(GL_TEXTURE_2D_MULTISAMPLE, 1, &id);
+    glObjectLabel(GL_TEXTURE, id, -1, label);
+    glTextureStorage2DMultisample(id, samples, format, size.x, size.y, GL_TRUE);
+    return Texture(id);
+}
+
+RenderTarget createRenderTarget(const char* label, glm::ivec2 size, int samples, GLenum colorFormat) {
     RenderTarget t;
     t.size = size;
-    t.color = createTexture2D((std::string(label) + " colour").c_str(), GL_RGBA16F, size);
-    t.depth = createTexture2D((std::string(label) + " depth").c_str(), GL_DEPTH_COMPONENT32F, size);
+    t.samples = samples;
+    const std::string colorLabel = std::string(label) + " colour", depthLabel = std::string(label) + " depth";
+    if (samples > 1) {
+        t.color = createMultisampleTexture(colorLabel.c_str(), colorFormat, size, samples);
+        t.depth = createMultisampleTexture(depthLabel.c_str(), GL_DEPTH_COMPONENT32F, size, samples);
+    } else {
+        t.color = createTexture2D(colorLabel.c_str(), colorFormat, size);
+        t.depth = createTexture2D(depthLabel.c_str(), GL_DEPTH_COMPONENT32F, size);
+    }
     GLuint fbo;
     glCreateFramebuffers(1, &fbo);
     glObjectLabel(GL_FRAMEBUFFER, fbo, -1, label);
@@ -33,6 +50,13 @@ RenderTarget createRenderTarget(const char* label, glm::ivec2 size) {
     if (glCheckNamedFramebufferStatus(fbo, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
         throw RuntimeError(std::string("render target '") + label + "' is incomplete on this GL driver");
     return t;
+}
+
+void resolveTarget(const RenderTarget& from, const RenderTarget& to, bool depth) {
+    assert(from.size == to.size);
+    // Depth cannot be averaged: a blit of it is NEAREST, one sample per pixel.
+    glBlitNamedFramebuffer(from.framebuffer.id(), to.framebuffer.id(), 0, 0, from.size.x, from.size.y, 0, 0, to.size.x,
+                           to.size.y, GL_COLOR_BUFFER_BIT | (depth ? GL_DEPTH_BUFFER_BIT : 0), GL_NEAREST);
 }
 
 } // namespace ob::gfx

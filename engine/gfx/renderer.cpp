@@ -3,17 +3,22 @@
 
 #include "core/error.h"
 #include "core/file_write.h"
+#include "core/log.h"
 #include "assets/model.h"
 #include "gfx/detail_map.h"
 #include "gfx/shader.h"
 #include "ocean/projected_grid.h"
 
+#include <cassert>
 #include <cerrno>
 #include <cstdio>
 #include <algorithm>
 #include <cstring>
+#include <iterator>
+#include <tuple>
 #include <glm/glm.hpp>
 #include <stb_image_write.h>
+#include <utility>
 #include <vector>
 
 namespace ob::gfx {
@@ -22,18 +27,31 @@ constexpr GLuint FRAME_UBO_BINDING = 0;
 constexpr GLuint WATER_UBO_BINDING = 1;
 // Texture units of the water and sky passes (shaders/common_water.glsl, water_surface.frag).
 enum TextureUnit : GLuint { DISPLACEMENT_UNIT, SLOPES_UNIT, RIPPLES_UNIT, SKY_UNIT, REFLECTION_UNIT, REFRACTION_UNIT,
-                            REFRACTION_DEPTH_UNIT, DETAIL_UNIT };
+                            REFRACTION_DEPTH_UNIT, DETAIL_UNIT, REFLECTION_DEPTH_UNIT };
 // The grid reaches this far past the screen edges (NDC), so displaced waves leave no gap.
 constexpr float GRID_MARGIN = 0.15f;
 // Smallest |w| of a projected grid vertex (corners scaled to max w = 1): the horizon bound.
 constexpr float GRID_MIN_W = 2e-5f;
 constexpr int SKY_CUBE_SIZE = 128;
 constexpr int DETAIL_MAP_SIZE = 256;
-// Mean water level the reflection mirrors about and the clip planes cut at (m). The
-// refraction plane reaches a little above it so the waterline leaves no seam.
+// Mean water level (m): the mirrored eye's. The reflection and refraction passes cut objects
+// at the surface itself, each reaching this far (m) past it so the waterline leaves no seam
+// between the surface the water pass shades and the one the objects were cut at.
 constexpr float WATER_LEVEL = 0.0f;
+constexpr float REFLECTION_OVERLAP = 0.25f;
 constexpr float REFRACTION_OVERLAP = 0.25f;
-const char* const PASS_NAMES[] = {"sky_bake", "reflection", "refraction", "opaque", "water", "sky"};
+const char* const PASS_NAMES[] = {"sky_bake", "reflection", "refraction", "opaque", "water", "sky", "post"};
+// Samples a pixel of the msaa4 targets; the FXAA pass reads its source on this unit.
+constexpr int MSAA_SAMPLES = 4;
+constexpr GLuint FXAA_SOURCE_UNIT = 0;
+
+Antialias antialiasMode(const std::string& key, bool softwareRenderer) {
+    if (key == "off") return Antialias::Off;
+    if (key == "fxaa") return Antialias::Fxaa;
+    if (key == "msaa4") return Antialias::Msaa4;
+    assert(key == "auto");  // the scene's Choices let nothing else through
+    return softwareRenderer ? Antialias::Fxaa : Antialias::Msaa4;
+}
 
 static int mipLevels(int size) {
     int levels = 1;
@@ -47,6 +65,7 @@ Renderer::Renderer(const RenderDef& def)
       m_skyProgram(loadProgram("sky", {"common_fullscreen.vert", "sky_background.frag"})),
       m_waterProgram(loadProgram("water_surface", {"water_surface.vert", "water_surface.frag"})),
       m_objectProgram(loadProgram("object_mesh", {"object_mesh.vert", "object_mesh.frag"})),
+      m_fxaaProgram(loadProgram("fxaa", {"common_fullscreen.vert", "post_fxaa.frag"})),
       m_sphereMesh(makeSphereMesh(16)),
       m_boxMesh(makeBoxMesh()),
       m_emptyVao(createVertexArray("fullscreen triangle")),
@@ -55,12 +74,16 @@ Renderer::Renderer(const RenderDef& def)
                       createBuffer("frame uniforms: refraction", sizeof(FrameUniforms))},
       m_waterUniforms(createBuffer("water uniforms", sizeof(WaterUniforms))) {
     GLuint id;
-    glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &id);
-    glObjectLabel(GL_TEXTURE, id, -1, "flat water maps");
-    glTextureStorage3D(id, 1, GL_RGBA32F, 1, 1, 1);
-    const float flat[4] = {0.0f, 0.0f, 0.0f, 1.0f};
-    glTextureSubImage3D(id, 0, 0, 0, 0, 1, 1, 1, GL_RGBA, GL_FLOAT, flat);
-    m_flatMaps = Texture(id);
+    // No FFT layers: flat maps, J = 1 where each layout keeps it (displacement w, slopes z).
+    const float flatDisplacement[4] = {0.0f, 0.0f, 0.0f, 1.0f}, flatSlopes[4] = {0.0f, 0.0f, 1.0f, 0.0f};
+    for (auto [texture, label, texel] : {std::tuple{&m_flatDisplacement, "flat water displacement", flatDisplacement},
+                                         std::tuple{&m_flatSlopes, "flat water slopes", flatSlopes}}) {
+        glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &id);
+        glObjectLabel(GL_TEXTURE, id, -1, label);
+        glTextureStorage3D(id, 1, GL_RGBA32F, 1, 1, 1);
+        glTextureSubImage3D(id, 0, 0, 0, 0, 1, 1, 1, GL_RGBA, GL_FLOAT, texel);
+        *texture = Texture(id);
+    }
 
     glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);  // filter across cube faces: no seams in the sky
     glCreateTextures(GL_TEXTURE_CUBE_MAP, 1, &id);
@@ -81,6 +104,12 @@ Renderer::Renderer(const RenderDef& def)
     glGenerateTextureMipmap(m_detailMap.id());
 
     for (const char* name : PASS_NAMES) m_passTimers.emplace_back(name);
+    static_assert(std::size(PASS_NAMES) == PASS_COUNT);
+
+    GLint colorSamples = 0, depthSamples = 0;
+    glGetIntegerv(GL_MAX_COLOR_TEXTURE_SAMPLES, &colorSamples);
+    glGetIntegerv(GL_MAX_DEPTH_TEXTURE_SAMPLES, &depthSamples);
+    m_msaaSupported = std::min(colorSamples, depthSamples) >= MSAA_SAMPLES;
 }
 
 // A (res+1)² vertex grid of (u, v) ∈ [0, 1]², triangles as an index list.
@@ -109,8 +138,10 @@ void Renderer::buildGrid(int resolution) {
     glVertexArrayAttribBinding(m_gridVao.id(), 0, 0);
 }
 
-// The three views: the camera, the camera mirrored in the water plane (keeping what is
-// above it, seed 004 eq. 1–3), and the camera again keeping what is below.
+// The three views: the camera, the camera seeing the objects mirrored in the water surface
+// (keeping what is above it, seed 004 eq. 1–3), and the camera again keeping what is below.
+// The object shader cuts and mirrors at the composite surface under each vertex, so its
+// view-projection stays the camera's.
 void Renderer::updateFrameUniforms(const CameraView& camera, double time, glm::ivec2 size) {
     FrameUniforms u{};
     u.sunDirectionFresnel = glm::vec4(glm::normalize(m_def.sun_direction), m_def.fresnel == "exact" ? 1.0f : 0.0f);
@@ -124,44 +155,52 @@ void Renderer::updateFrameUniforms(const CameraView& camera, double time, glm::i
     u.viewProjection = viewProjection;
     u.inverseViewProjection = glm::inverse(viewProjection);
     u.cameraPositionTime = glm::vec4(camera.position, float(time));
-    u.viewport = glm::vec4(float(size.x), float(size.y), 0.0f, underwater);
-    u.clipPlane = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+    u.viewport = glm::vec4(float(size.x), float(size.y), m_antialias == Antialias::Fxaa ? 2.0f : 0.0f, underwater);
+    u.surfaceClip = glm::vec4(0.0f);
     glNamedBufferSubData(m_frameUniforms[MAIN_VIEW].id(), 0, sizeof u, &u);
 
-    // Mirror about y = WATER_LEVEL: M = T(h)·S(1, −1, 1)·T(−h).
-    glm::mat4 mirror(1.0f);
-    mirror[1][1] = -1.0f;
-    mirror[3][1] = 2.0f * WATER_LEVEL;
-    const glm::mat4 mirroredViewProjection = viewProjection * mirror;
-    u.viewProjection = mirroredViewProjection;
-    u.inverseViewProjection = glm::inverse(mirroredViewProjection);
+    // The mirrored eye (about the mean level) lights the mirrored objects.
     u.cameraPositionTime = glm::vec4(camera.position.x, 2.0f * WATER_LEVEL - camera.position.y, camera.position.z, float(time));
     u.viewport = glm::vec4(glm::vec2(m_reflection.size), 1.0f, underwater);
-    u.clipPlane = glm::vec4(0.0f, 1.0f, 0.0f, -WATER_LEVEL);
+    u.surfaceClip = glm::vec4(1.0f, REFLECTION_OVERLAP, 1.0f, 0.0f);
     glNamedBufferSubData(m_frameUniforms[REFLECTION_VIEW].id(), 0, sizeof u, &u);
 
-    u.viewProjection = viewProjection;
-    u.inverseViewProjection = glm::inverse(viewProjection);
     u.cameraPositionTime = glm::vec4(camera.position, float(time));
     u.viewport = glm::vec4(glm::vec2(m_refraction.size), 1.0f, underwater);
-    u.clipPlane = glm::vec4(0.0f, -1.0f, 0.0f, WATER_LEVEL + REFRACTION_OVERLAP);
+    u.surfaceClip = glm::vec4(-1.0f, REFRACTION_OVERLAP, 0.0f, 0.0f);
     glNamedBufferSubData(m_frameUniforms[REFRACTION_VIEW].id(), 0, sizeof u, &u);
 }
 
 static glm::ivec2 scaled(glm::ivec2 size, float scale) { return glm::max(glm::ivec2(glm::vec2(size) * scale + 0.5f), glm::ivec2(1)); }
 
+// Targets come and go with the settings: the multisampled ones exist only in msaa4, the
+// internal frame only when the frame is not drawn into the framebuffer directly.
 void Renderer::resizeTargets(glm::ivec2 internal) {
     const glm::ivec2 target = scaled(internal, m_def.rtt_scale);
     if (m_reflection.size != target) {
         m_reflection = createRenderTarget("reflection target", target);
         m_refraction = createRenderTarget("refraction target", target);
     }
-    if (m_def.resolution_scale < 1.0f && m_internal.size != internal) m_internal = createRenderTarget("internal frame", internal);
+    const bool msaa = m_antialias == Antialias::Msaa4;
+    if (!msaa) m_rttMultisampled = {}, m_multisampled = {};
+    if (msaa && m_rttMultisampled.size != target)
+        m_rttMultisampled = createRenderTarget("reflection/refraction samples", target, MSAA_SAMPLES);
+    if (msaa && m_multisampled.size != internal)
+        m_multisampled = createRenderTarget("internal frame samples", internal, MSAA_SAMPLES, GL_RGBA8);
+    const bool offscreen = m_def.resolution_scale < 1.0f || m_antialias != Antialias::Off;
+    if (!offscreen) m_internal = {};
+    if (offscreen && m_internal.size != internal) m_internal = createRenderTarget("internal frame", internal, 1, GL_RGBA8);
 }
 
 void Renderer::render(const CameraView& camera, const WaterView& water, const std::vector<ObjectDraw>& objects, double time,
                       glm::ivec2 size) {
     m_underwater = camera.position.y < camera.waterHeight;
+    m_antialias = antialiasMode(m_def.antialias, isSoftwareRenderer());
+    if (m_antialias == Antialias::Msaa4 && !m_msaaSupported) {
+        static bool warned = false;
+        if (!std::exchange(warned, true)) logWarn("render.antialias: this GL driver has no 4× multisampled float targets; using fxaa");
+        m_antialias = Antialias::Fxaa;
+    }
     const bool upscale = m_def.resolution_scale < 1.0f;
     const glm::ivec2 internal = upscale ? scaled(size, m_def.resolution_scale) : size;
     resizeTargets(internal);
@@ -169,21 +208,23 @@ void Renderer::render(const CameraView& camera, const WaterView& water, const st
 
     // --- passes
     if (glm::normalize(m_def.sun_direction) != m_bakedSun) skyBakePass();
+    prepareWater(camera, water, internal.y);
     const bool above = !m_underwater;
     if (m_def.reflections && above) reflectionPass(objects);
     if (m_def.refractions && above) refractionPass(objects);
-    glBindFramebuffer(GL_FRAMEBUFFER, upscale ? m_internal.framebuffer.id() : 0);
+    // The frame goes straight into the framebuffer only when nothing follows it.
+    const bool direct = !upscale && m_antialias == Antialias::Off;
+    const RenderTarget& frame = m_antialias == Antialias::Msaa4 ? m_multisampled : m_internal;
+    glBindFramebuffer(GL_FRAMEBUFFER, direct ? 0 : frame.framebuffer.id());
     glViewport(0, 0, internal.x, internal.y);
     glClearColor(0, 0, 0, 1);
     glClearDepth(1.0);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glBindBufferBase(GL_UNIFORM_BUFFER, FRAME_UBO_BINDING, m_frameUniforms[MAIN_VIEW].id());
     opaquePass(objects);
-    waterPass(camera, water, internal.y);
+    waterPass(camera);
     skyPass();  // last: it shades only the pixels nothing else covered
-    if (upscale)
-        glBlitNamedFramebuffer(m_internal.framebuffer.id(), 0, 0, 0, internal.x, internal.y, 0, 0, size.x, size.y,
-                               GL_COLOR_BUFFER_BIT, GL_LINEAR);
+    if (!direct) postPass(size);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glBindVertexArray(0);
 }
@@ -240,10 +281,12 @@ static void clearTarget(const RenderTarget& target) {
 void Renderer::reflectionPass(const std::vector<ObjectDraw>& objects) {
     glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, REFLECTION_PASS, -1, "reflection");
     m_passTimers[REFLECTION_PASS].begin();
-    clearTarget(m_reflection);  // alpha 0: no local reflection, the sky cube shows
+    const bool msaa = m_antialias == Antialias::Msaa4;
+    clearTarget(msaa ? m_rttMultisampled : m_reflection);  // alpha 0: no local reflection, the sky cube shows
     glFrontFace(GL_CW);  // the mirror flips the winding
     drawObjects(objects, REFLECTION_VIEW);
     glFrontFace(GL_CCW);
+    if (msaa) resolveTarget(m_rttMultisampled, m_reflection, true);  // alpha becomes fractional coverage at edges
     m_passTimers[REFLECTION_PASS].end();
     glPopDebugGroup();
 }
@@ -251,8 +294,10 @@ void Renderer::reflectionPass(const std::vector<ObjectDraw>& objects) {
 void Renderer::refractionPass(const std::vector<ObjectDraw>& objects) {
     glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, REFRACTION_PASS, -1, "refraction");
     m_passTimers[REFRACTION_PASS].begin();
-    clearTarget(m_refraction);  // depth 1: open water, the full body colour
+    const bool msaa = m_antialias == Antialias::Msaa4;
+    clearTarget(msaa ? m_rttMultisampled : m_refraction);  // depth 1: open water, the full body colour
     drawObjects(objects, REFRACTION_VIEW);
+    if (msaa) resolveTarget(m_rttMultisampled, m_refraction, true);
     m_passTimers[REFRACTION_PASS].end();
     glPopDebugGroup();
 }
@@ -308,6 +353,31 @@ void Renderer::skyPass() {
     glPopDebugGroup();
 }
 
+// The internal frame to the framebuffer: the samples resolved (msaa4), then FXAA, which
+// also scales up, or a blit (bilinear when scaling up).
+void Renderer::postPass(glm::ivec2 size) {
+    glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, POST_PASS, -1, "post");
+    m_passTimers[POST_PASS].begin();
+    if (m_antialias == Antialias::Msaa4) resolveTarget(m_multisampled, m_internal, false);
+    const glm::ivec2 internal = m_internal.size;
+    if (m_antialias == Antialias::Fxaa) {
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glViewport(0, 0, size.x, size.y);
+        glDisable(GL_DEPTH_TEST);
+        glBindTextureUnit(FXAA_SOURCE_UNIT, m_internal.color.id());
+        glProgramUniform2f(m_fxaaProgram.id(), 0, 1.0f / float(internal.x), 1.0f / float(internal.y));
+        glUseProgram(m_fxaaProgram.id());
+        glBindVertexArray(m_emptyVao.id());
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        glBindTextureUnit(FXAA_SOURCE_UNIT, 0);  // drawn into again next frame
+    } else {
+        glBlitNamedFramebuffer(m_internal.framebuffer.id(), 0, 0, 0, internal.x, internal.y, 0, 0, size.x, size.y,
+                               GL_COLOR_BUFFER_BIT, internal == size ? GL_NEAREST : GL_LINEAR);
+    }
+    m_passTimers[POST_PASS].end();
+    glPopDebugGroup();
+}
+
 void Renderer::uploadWaterUniforms(const CameraView& camera, const WaterView& water) {
     ocean::GridCorners grid = ocean::projectedGridCorners(camera.projection * camera.view, camera.position, GRID_MARGIN);
     WaterUniforms u{};
@@ -333,34 +403,39 @@ void Renderer::uploadWaterUniforms(const CameraView& camera, const WaterView& wa
     }
     glNamedBufferSubData(m_waterUniforms.id(), 0, sizeof u, &u);
     glBindBufferBase(GL_UNIFORM_BUFFER, WATER_UBO_BINDING, m_waterUniforms.id());
-    glBindTextureUnit(DISPLACEMENT_UNIT, layers ? water.displacement->id() : m_flatMaps.id());
-    glBindTextureUnit(SLOPES_UNIT, layers ? water.slopes->id() : m_flatMaps.id());
+    glBindTextureUnit(DISPLACEMENT_UNIT, layers ? water.displacement->id() : m_flatDisplacement.id());
+    glBindTextureUnit(SLOPES_UNIT, layers ? water.slopes->id() : m_flatSlopes.id());
     glBindTextureUnit(RIPPLES_UNIT, u.rippleParams.w > 0.0f ? m_rippleTexture.id() : 0);
 }
 
-void Renderer::waterPass(const CameraView& camera, const WaterView& water, int internalHeight) {
-    if (!ocean::projectedGridCorners(camera.projection * camera.view, camera.position, GRID_MARGIN).visible) return;
+// Before the object passes: they clip against (and mirror about) the surface these describe.
+void Renderer::prepareWater(const CameraView& camera, const WaterView& water, int internalHeight) {
     // Software rasterisers shade vertices on one thread: a coarser grid there.
     // Auto: a grid row per 3 px of internal height on a GPU, per 6 px on a software rasteriser
     // (which shades vertices on one thread), within [32, 512].
     const int autoCells = std::clamp(internalHeight / (isSoftwareRenderer() ? 6 : 3), 32, 512);
     int resolution = std::max(m_def.grid_resolution > 0 ? m_def.grid_resolution : autoCells, 16);
     if (m_gridResolution != resolution) buildGrid(resolution);
+    uploadWaterUniforms(camera, water);
+}
+
+void Renderer::waterPass(const CameraView& camera) {
+    if (!ocean::projectedGridCorners(camera.projection * camera.view, camera.position, GRID_MARGIN).visible) return;
     glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, WATER_PASS, -1, "water");
     m_passTimers[WATER_PASS].begin();
-    uploadWaterUniforms(camera, water);
     glBindTextureUnit(SKY_UNIT, m_skyCube.id());
     glBindTextureUnit(REFLECTION_UNIT, m_reflection.color.id());
     glBindTextureUnit(REFRACTION_UNIT, m_refraction.color.id());
     glBindTextureUnit(REFRACTION_DEPTH_UNIT, m_refraction.depth.id());
     glBindTextureUnit(DETAIL_UNIT, m_detailMap.id());
+    glBindTextureUnit(REFLECTION_DEPTH_UNIT, m_reflection.depth.id());
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glUseProgram(m_waterProgram.id());
     glBindVertexArray(m_gridVao.id());
     glDrawElements(GL_TRIANGLES, m_gridIndexCount, GL_UNSIGNED_INT, nullptr);
     // The targets are drawn into again next frame: never leave them bound for sampling.
-    for (GLuint unit : {REFLECTION_UNIT, REFRACTION_UNIT, REFRACTION_DEPTH_UNIT}) glBindTextureUnit(unit, 0);
+    for (GLuint unit : {REFLECTION_UNIT, REFRACTION_UNIT, REFRACTION_DEPTH_UNIT, REFLECTION_DEPTH_UNIT}) glBindTextureUnit(unit, 0);
     m_passTimers[WATER_PASS].end();
     glPopDebugGroup();
 }

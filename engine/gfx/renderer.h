@@ -1,11 +1,12 @@
 // The renderer: a short list of passes (Renderer::render runs them in this order).
 //   sky bake   → the analytic daylight sky into a cube map, when the sun moves
-//   reflection → objects above the water seen from the mirrored camera (clip plane) → target
-//   refraction → objects below the water from the camera (clip plane) → colour + depth target
+//   reflection → objects above the water surface, mirrored about it (per vertex) → colour + depth target
+//   refraction → objects below the water surface from the camera → colour + depth target
 //   opaque     → objects from the camera into the framebuffer
 //   water      → the composite surface on a projected grid, shaded from the targets and sky
 //   sky        → the cube map (or underwater fog) where nothing else was drawn
-//   upscale    → the internal image to the framebuffer, when resolution_scale < 1
+//   post       → the internal frame to the framebuffer: MSAA resolve, FXAA, upscale (when
+//                resolution_scale < 1); skipped when the frame was drawn into it directly
 #pragma once
 #include "gfx/gpu_timer.h"
 #include "gfx/handles.h"
@@ -20,6 +21,12 @@
 #include <vector>
 
 namespace ob::gfx {
+
+/// Edge smoothing of the frame (RenderDef::antialias once "auto" is decided).
+enum class Antialias : uint8_t { Off, Fxaa, Msaa4 };
+/// The mode a `RenderDef::antialias` key selects: "auto" is Msaa4 on a GPU and Fxaa on a
+/// software rasteriser (which pays for every sample on the CPU).
+Antialias antialiasMode(const std::string& key, bool softwareRenderer);
 
 /// What the camera sees from where: the render phase fills this from the camera entity.
 struct CameraView {
@@ -78,8 +85,8 @@ struct FrameUniforms {
     glm::vec4 cameraPositionTime;   ///< xyz eye (m), w simulated time (s)
     glm::vec4 sunDirectionFresnel;  ///< xyz toward the sun (unit), w 0 = Schlick, 1 = exact
     glm::vec4 waterColorExposure;   ///< rgb deep water colour, w exposure
-    glm::vec4 viewport;             ///< xy framebuffer size (px), z 1 = write linear radiance (targets), w 1 = eye under water
-    glm::vec4 clipPlane;            ///< world plane (a, b, c, d): keeps a·x + b·y + c·z + d ≥ 0
+    glm::vec4 viewport;             ///< xy framebuffer size (px), z output: 0 display colour, 1 linear radiance (targets), 2 display colour + luma in alpha (FXAA); w 1 = eye under water
+    glm::vec4 surfaceClip;          ///< side s (±1; 0 keeps all), overlap m (m), 1 = mirror, 0: objects keep s·(y − surface height) + m ≥ 0 and, mirrored, y → 2·surface − y
     glm::vec4 depthParams;          ///< near, far (m), water clarity (m), sky mip count
     glm::vec4 shading;              ///< DU/DV strength, normal distortion, glitter, glitter shininess
     glm::vec4 switches;             ///< reflections, refractions, foam (1 on, 0 off), 0
@@ -105,14 +112,16 @@ public:
 
 private:
     enum View { MAIN_VIEW, REFLECTION_VIEW, REFRACTION_VIEW, VIEW_COUNT };
-    enum Pass { SKY_BAKE_PASS, REFLECTION_PASS, REFRACTION_PASS, OPAQUE_PASS, WATER_PASS, SKY_PASS, PASS_COUNT };
+    enum Pass { SKY_BAKE_PASS, REFLECTION_PASS, REFRACTION_PASS, OPAQUE_PASS, WATER_PASS, SKY_PASS, POST_PASS, PASS_COUNT };
 
     void skyBakePass();  // in: sun direction; out: m_skyCube (linear radiance, mipmapped)
-    void reflectionPass(const std::vector<ObjectDraw>& objects);  // in: mirrored view, objects; out: m_reflection
+    void reflectionPass(const std::vector<ObjectDraw>& objects);  // in: mirrored view, objects; out: m_reflection colour + depth
     void refractionPass(const std::vector<ObjectDraw>& objects);  // in: camera view, objects; out: m_refraction colour + depth
     void opaquePass(const std::vector<ObjectDraw>& objects);      // in: camera view, objects; out: framebuffer colour, depth
-    void waterPass(const CameraView& camera, const WaterView& water, int internalHeight);  // in: water layers, targets, sky; out: framebuffer
+    void prepareWater(const CameraView& camera, const WaterView& water, int internalHeight);  // out: grid, water uniforms, layer textures bound
+    void waterPass(const CameraView& camera);  // in: water layers, targets, sky; out: framebuffer
     void skyPass();  // in: sky cube, depth; out: colour where nothing was drawn
+    void postPass(glm::ivec2 size);  // in: m_multisampled or m_internal; out: framebuffer of `size`
 
     void drawObjects(const std::vector<ObjectDraw>& objects, View view);
     const Mesh& meshFor(const ObjectDraw& object);
@@ -122,7 +131,7 @@ private:
     void buildGrid(int resolution);
 
     RenderDef m_def;
-    Program m_skyBakeProgram, m_skyProgram, m_waterProgram, m_objectProgram;
+    Program m_skyBakeProgram, m_skyProgram, m_waterProgram, m_objectProgram, m_fxaaProgram;
     Mesh m_sphereMesh, m_boxMesh;
     std::map<std::string, Mesh> m_models;  // glTF meshes by file, loaded on first draw
     VertexArray m_emptyVao;
@@ -132,7 +141,7 @@ private:
     Buffer m_gridVertices, m_gridIndices;
     int m_gridResolution = 0;
     GLsizei m_gridIndexCount = 0;
-    Texture m_flatMaps;       // 1×1 layer: no displacement, J = 1, zero slope
+    Texture m_flatDisplacement, m_flatSlopes;  // 1×1 layers: no displacement, zero slope, J = 1
     Texture m_rippleTexture;  // R32F heights of the ripple patch, re-uploaded every frame
     int m_rippleCells = 0;
     Texture m_skyCube;        // RGBA16F cube map of the sky's radiance
@@ -140,8 +149,12 @@ private:
     glm::vec3 m_bakedSun{0.0f};
     Texture m_detailMap;      // DU/DV (rg) and foam pattern (b), tileable, mipmapped
     RenderTarget m_reflection, m_refraction;
-    RenderTarget m_internal;  // the frame below full resolution (resolution_scale < 1)
+    RenderTarget m_internal;      // the frame (RGBA8, display-encoded) when it is not drawn into the framebuffer directly
+    RenderTarget m_multisampled;  // msaa4: the frame's 4 samples a pixel, resolved into m_internal
+    RenderTarget m_rttMultisampled;  // msaa4: reflection, then refraction, resolved into each
     bool m_underwater = false;
+    Antialias m_antialias = Antialias::Off;  // this frame's mode
+    bool m_msaaSupported = false;           // the driver multisamples float colour and depth textures 4×
     std::vector<GpuTimer> m_passTimers;
 };
 

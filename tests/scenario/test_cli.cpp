@@ -73,6 +73,15 @@ TEST_CASE("bad scene files exit 2 naming file, line and key", "[cli]") {
     r = runOceanbox("run config/scenes/default.toml --headless --frames 1 --set render.fresnel=3");
     CHECK(r.exitCode == 2);
     CHECK(r.output.find("--set render.fresnel=3: render.fresnel: expected a string, got an integer") != std::string::npos);
+
+    std::string aa = writeFile(tempPath("antialias.toml"), "[render]\nantialias = \"msaa8\"\n");
+    r = runOceanbox("run " + aa + " --headless --frames 1");
+    CHECK(r.exitCode == 2);
+    CHECK(r.output.find(aa + ":2:13: render.antialias: must be one of \"auto\", \"off\", \"fxaa\", \"msaa4\", got \"msaa8\"") !=
+          std::string::npos);
+    r = runOceanbox("run config/scenes/default.toml --headless --frames 1 --set render.antialias=smaa");
+    CHECK(r.exitCode == 2);
+    CHECK(r.output.find("--set render.antialias=smaa: render.antialias: must be one of") != std::string::npos);
 }
 
 TEST_CASE("an unwritable output path exits 2 before anything runs, and writes nothing", "[cli]") {
