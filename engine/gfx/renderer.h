@@ -12,6 +12,7 @@
 #include "gfx/mesh.h"
 #include "gfx/render_def.h"
 #include "gfx/render_target.h"
+#include "ocean/projected_grid.h"
 
 #include <array>
 #include <glm/mat4x4.hpp>
@@ -45,6 +46,9 @@ struct WaterView {
     int rippleCells = 0;                    ///< ripple patch cells per side (0: no ripple layer)
     glm::vec2 rippleOrigin{0.0f};           ///< world (x, z) of cell (0, 0)'s centre, m
     float rippleCellSize = 1.0f;            ///< m per cell
+    /// How far the FFT cascades together move a rest point (m; λ included): the projected
+    /// grid reaches this far past the view. Gerstner and ripple bounds the renderer derives.
+    ocean::DisplacementBounds fftBounds;
 };
 
 /// The built-in shapes an object can be drawn as.
@@ -118,7 +122,7 @@ private:
     const Mesh& meshFor(const ObjectDraw& object);
     void updateFrameUniforms(const CameraView& camera, double time, glm::ivec2 size);
     void resizeTargets(glm::ivec2 internal);
-    void uploadWaterUniforms(const CameraView& camera, const WaterView& water);
+    void uploadWaterUniforms(const CameraView& camera, const WaterView& water, const ocean::GridCorners& grid);
     void buildGrid(int resolution);
 
     RenderDef m_def;
