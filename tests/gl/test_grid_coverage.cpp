@@ -10,6 +10,10 @@
 #include "ocean/ocean_textures.h"
 #include "ocean/spectrum.h"
 #include "platform/platform.h"
+#include "camera.h"
+#include "core/clock.h"
+#include "sandbox.h"
+#include "scene.h"
 #include "water/composite_water.h"
 
 #include <catch2/catch.hpp>
@@ -177,21 +181,21 @@ Shot randomCamera(std::mt19937& rng, const Sea& sea) {
 // Pixels whose view ray points below the horizon by at least a pixel (all four outer corners of
 // the 3×3 block around the pixel look down: the horizon is a straight line on screen) that the
 // water did not cover (depth still at the far plane).
-int holesBelowHorizon(const gfx::CameraView& camera) {
-    std::vector<float> depth(size_t(SIZE.x) * SIZE.y);
+int holesBelowHorizon(const gfx::CameraView& camera, glm::ivec2 size = SIZE) {
+    std::vector<float> depth(size_t(size.x) * size_t(size.y));
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, SIZE.x, SIZE.y, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+    glReadPixels(0, 0, size.x, size.y, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
     const glm::dmat4 inv = glm::inverse(glm::dmat4(camera.projection * camera.view));
     const auto looksDown = [&](int px, int py) {
-        const glm::dvec2 ndc(2.0 * px / SIZE.x - 1.0, 2.0 * py / SIZE.y - 1.0);
+        const glm::dvec2 ndc(2.0 * px / size.x - 1.0, 2.0 * py / size.y - 1.0);
         const glm::dvec4 n = inv * glm::dvec4(ndc, -1.0, 1.0), f = inv * glm::dvec4(ndc, 1.0, 1.0);
         return f.y / f.w < n.y / n.w;
     };
     int holes = 0;
-    for (int y = 0; y < SIZE.y; ++y)
-        for (int x = 0; x < SIZE.x; ++x)
+    for (int y = 0; y < size.y; ++y)
+        for (int x = 0; x < size.x; ++x)
             if (looksDown(x - 1, y - 1) && looksDown(x + 2, y - 1) && looksDown(x - 1, y + 2) && looksDown(x + 2, y + 2) &&
-                depth[size_t(y * SIZE.x + x)] >= 1.0f)
+                depth[size_t(y * size.x + x)] >= 1.0f)
                 ++holes;
     return holes;
 }
@@ -250,4 +254,27 @@ TEST_CASE("the coverage check sees the hole when the grid ignores the FFT's disp
     sea.build();
     std::string first;
     CHECK(camerasWithHoles(renderer, sea, 200, 99u, false, first) > 0);
+}
+
+TEST_CASE("the showcase's frame 1680, where a wedge of sky once opened under the camera, is water below the horizon",
+          "[gl][grid][showcase]") {
+    // `oceanbox run config/scenes/default.toml --frames 1680` (one fixed step per frame): the
+    // followed ship rides a 4.5 m crest and the camera, 6.5 m above it, looked past the grid's
+    // near edge. Every frame's coverage is read, not only the last.
+    const glm::ivec2 size(160, 90);
+    auto platform = platform::createHeadlessPlatform(size);
+    game::Sandbox sandbox(game::loadScene(std::string(OCEANBOX_SOURCE_DIR) + "/config/scenes/default.toml"));
+    sandbox.attachPlatform(*platform, false);
+    FixedStepClock clock(1.0 / sandbox.scene().sim.step_hz);
+    int framesWithHoles = 0;
+    std::string first;
+    for (int f = 0; f < 1680; ++f) {
+        sandbox.frame(clock.now());
+        if (f % 8 != 7) continue;  // every 8th frame, and the last
+        const gfx::CameraView camera = game::cameraView(sandbox.world(), size);
+        if (const int holes = holesBelowHorizon(camera, size); holes > 0 && framesWithHoles++ == 0)
+            first = "frame " + std::to_string(f + 1) + ": " + std::to_string(holes) + " px open";
+    }
+    INFO(first);
+    CHECK(framesWithHoles == 0);
 }

@@ -2,6 +2,7 @@
 // camera's own screen-space grid; for displaced water its rest domain holds every rest point
 // whose displaced point can be seen (checked by casting pixel rays, not by the frustum
 // algebra the grid uses), for any roll, pitch and field of view; no cell folds or explodes.
+#include "ocean/ocean_fft_cpu.h"
 #include "ocean/projected_grid.h"
 
 #include <catch2/catch.hpp>
@@ -198,4 +199,28 @@ TEST_CASE("the grid has no NaN and no folded or exploding cells for heights 0.5-
                     // Bounded: the far edge stays within the far plane's reach (plus the waves).
                     for (const glm::vec2& p : pts) CHECK(glm::length(p - glm::vec2(eye.x, eye.z)) < 20000.0f * 3.0f);
                 }
+}
+
+TEST_CASE("the FFT's displacement bounds of a single mode are its crest, trough and orbit radius; cascades add", "[grid][fft]") {
+    // h̃0(K) = a (real), h̃0(−K) = 0, t = 0: h = 2a·cos(K·X) and D = 2a·sin(K·X)·K/k (eq. 1, 2,
+    // 7, unnormalised sums), so the crest and the trough are 2a and the orbit radius is 2a·c.
+    // Four cycles over 16 texels sample the crest, the trough and the largest |D| exactly.
+    ob::ocean::OceanDef def;
+    def.resolution = 16;
+    def.patch_size = 100.0f;
+    def.choppiness = 1.5f;
+    for (int cascades : {1, 2}) {
+        def.cascades = cascades;
+        OceanFftCpu ocean(def, 1);
+        for (int c = 0; c < cascades; ++c) {
+            ocean.spectrum(c).clear();
+            ocean.spectrum(c).setH0(c == 0 ? 4 : 0, c == 0 ? 0 : -4, {0.3f, 0.0f});
+        }
+        ocean.update(0.0);
+        const DisplacementBounds b = ocean.displacementBounds();
+        INFO(cascades << " cascade(s)");
+        CHECK(b.up == Approx(0.6 * cascades).epsilon(1e-5));
+        CHECK(b.down == Approx(0.6 * cascades).epsilon(1e-5));
+        CHECK(b.horizontal == Approx(1.5 * 0.6 * cascades).epsilon(1e-5));
+    }
 }
