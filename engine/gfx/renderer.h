@@ -66,8 +66,8 @@ struct ObjectDraw {
 struct WaterUniforms {
     glm::vec4 corner[4];
     glm::vec4 cascadeSize;
-    glm::vec4 waterParams;   ///< λ, gravity, Gerstner wave count, minimum |w|
-    glm::vec4 gridParams;    ///< grid resolution, max distance (m), cascades, FFT N
+    glm::vec4 waterParams;   ///< λ, gravity, Gerstner wave count, smallest grid w (a guard)
+    glm::vec4 gridParams;    ///< grid resolution, grid reach from the eye (m), cascades, FFT N
     glm::vec4 rippleParams;  ///< origin x, origin z (m), cell size (m), cells per side (0: none)
     glm::vec4 gerstner[32];
 };
