@@ -201,7 +201,7 @@ TEST_CASE("the grid has no NaN and no folded or exploding cells for heights 0.5-
                 }
 }
 
-TEST_CASE("the FFT's displacement bounds of a single mode are its crest, trough and orbit radius; cascades add", "[grid][fft]") {
+TEST_CASE("the FFT's displacement bounds of a single mode are its crest, trough and orbit radius, and cascades add", "[grid][fft]") {
     // h̃0(K) = a (real), h̃0(−K) = 0, t = 0: h = 2a·cos(K·X) and D = 2a·sin(K·X)·K/k (eq. 1, 2,
     // 7, unnormalised sums), so the crest and the trough are 2a and the orbit radius is 2a·c.
     // Four cycles over 16 texels sample the crest, the trough and the largest |D| exactly.
