@@ -124,6 +124,9 @@ void interactionSystem(ecs::World& world, const ecs::Tick&) {
     patch->step();
 }
 
+// Factor on the CPU maps' displacement extremes when the GPU renders another time.
+constexpr float FFT_BOUND_SLACK = 1.1f;
+
 gfx::WaterView prepareWaterView(ecs::World& world, double time) {
     gfx::WaterView view;
     if (auto* patch = world.resource<interaction::RipplePatch>()) {
@@ -149,6 +152,15 @@ gfx::WaterView prepareWaterView(ecs::World& world, double time) {
     for (int c = 0; c < ocean->def.cascades; ++c) view.cascadeSize[size_t(c)] = float(ocean::cascadePatchSize(ocean->def, c));
     view.lambda = -ocean->def.choppiness;
     view.gravity = ocean->def.gravity;
+    // How far the grid must reach: the extremes of the CPU maps (at the step's end). The GPU
+    // synthesises at the render time, up to a few steps from those maps; the extremes of the
+    // whole tile change by far less than a tenth in that time, so a tenth more covers it.
+    view.fftBounds = ocean->cpu->displacementBounds();
+    if (ocean->gpu && ocean->mapsTime != time) {
+        view.fftBounds.up *= FFT_BOUND_SLACK;
+        view.fftBounds.down *= FFT_BOUND_SLACK;
+        view.fftBounds.horizontal *= FFT_BOUND_SLACK;
+    }
     for (const ocean::GerstnerWave& w : ocean->waves) view.gerstner.emplace_back(w.kx, w.kz, w.amplitude, w.phase);
     return view;
 }

@@ -3,8 +3,8 @@
 layout(std140, binding = 1) uniform WaterUniforms {
     vec4 u_corner[4];          // projected grid corners, homogeneous (x, 0, z, w)
     vec4 u_cascadeSize;        // tile side of each cascade (m); unused cascades 0
-    vec4 u_waterParams;        // x λ (choppiness sign included), y gravity, z Gerstner wave count, w minimum |w|
-    vec4 u_gridParams;         // x grid resolution, y max distance (m), z cascade count, w FFT resolution N
+    vec4 u_waterParams;        // x λ (choppiness sign included), y gravity, z Gerstner wave count, w smallest w (a guard)
+    vec4 u_gridParams;         // x grid resolution, y grid reach from the eye (m), z cascade count, w FFT resolution N
     vec4 u_rippleParams;       // xy world origin of cell (0, 0) (m), z cell size (m), w cells per side (0: none)
     vec4 u_gerstner[32];       // (kx, kz, amplitude, phase) per wave
 };
@@ -34,7 +34,7 @@ vec2 rippleSlope(vec2 world) {
                 rippleHeight(world + vec2(0.0, h)) - rippleHeight(world - vec2(0.0, h))) / (2.0 * h);
 }
 
-// The projected grid point (u, v): homogeneous bilinear interpolation, |w| clamped (seed 000).
+// The projected grid point (u, v): homogeneous bilinear interpolation, w clamped (seed 000).
 vec2 gridPoint(vec2 uv) {
     vec4 p = mix(mix(u_corner[0], u_corner[1], uv.x), mix(u_corner[2], u_corner[3], uv.x), uv.y);
     return p.xz / max(p.w, u_waterParams.w);

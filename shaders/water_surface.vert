@@ -1,6 +1,7 @@
 #version 450 core
 // Water surface vertices: projected grid point → Gerstner displacement + every FFT cascade's
-// choppy displacement (seed 000 vertex shader) + the ripple height at the displaced point.
+// choppy displacement (seed 000 vertex shader) + the ripple height at the displaced point;
+// past the grid's reach, a wall to the horizon.
 #include "common_frame.glsl"
 #include "common_water.glsl"
 
@@ -14,7 +15,11 @@ void main() {
     vec2 eye = u_cameraPositionTime.xz;
     vec2 rel = rest - eye;
     float dist = length(rel);
-    if (dist > u_gridParams.y) rest = eye + rel * (u_gridParams.y / dist);
+    // Past the grid's reach (a fraction of the far clip distance) the grid is a wall up to the
+    // eye's level: a point level with the eye projects onto the horizon line, so the water
+    // always reaches the horizon, whatever lies between the reach and it.
+    bool horizonWall = dist > u_gridParams.y;
+    if (horizonWall) rest = eye + rel * (u_gridParams.y / dist);
     // Mip level: the spacing of neighbouring grid vertices against the FFT texel size.
     vec2 next = gridPoint(a_uv + vec2(0.0, 1.0) / u_gridParams.x);
     float spacing = length(next - rest);
@@ -30,6 +35,7 @@ void main() {
         pos += vec3(u_waterParams.x * d.x, d.y, u_waterParams.x * d.z);
     }
     pos.y += rippleHeight(pos.xz);
+    if (horizonWall) pos = vec3(rest.x, u_cameraPositionTime.y, rest.y);
     v_world = pos;
     v_rest = rest;
     gl_Position = u_viewProjection * vec4(pos, 1.0);

@@ -28,10 +28,9 @@ constexpr GLuint WATER_UBO_BINDING = 1;
 // Texture units of the water and sky passes (shaders/common_water.glsl, water_surface.frag).
 enum TextureUnit : GLuint { DISPLACEMENT_UNIT, SLOPES_UNIT, RIPPLES_UNIT, SKY_UNIT, REFLECTION_UNIT, REFRACTION_UNIT,
                             REFRACTION_DEPTH_UNIT, DETAIL_UNIT, REFLECTION_DEPTH_UNIT };
-// The grid reaches this far past the screen edges (NDC), so displaced waves leave no gap.
-constexpr float GRID_MARGIN = 0.15f;
-// Smallest |w| of a projected grid vertex (corners scaled to max w = 1): the horizon bound.
-constexpr float GRID_MIN_W = 2e-5f;
+// The projected grid reaches this fraction of the far clip distance; past it the grid is a
+// wall up to the eye's level, which the camera sees exactly on the horizon line.
+constexpr float GRID_REACH = 0.9f;
 constexpr int SKY_CUBE_SIZE = 128;
 constexpr int DETAIL_MAP_SIZE = 256;
 // Mean water level (m): the mirrored eye's. The reflection and refraction passes cut objects
@@ -378,8 +377,24 @@ void Renderer::postPass(glm::ivec2 size) {
     glPopDebugGroup();
 }
 
-void Renderer::uploadWaterUniforms(const CameraView& camera, const WaterView& water) {
-    ocean::GridCorners grid = ocean::projectedGridCorners(camera.projection * camera.view, camera.position, GRID_MARGIN);
+// How far the layers can move a rest point: the FFT cascades' extremes (from the view), the
+// Gerstner waves' Σ a (each moves a point by a along its K and by a·cos θ up), the ripple
+// patch's extremes (heights only). The projected grid reaches that far past the view.
+static ocean::DisplacementBounds displacementBounds(const WaterView& water) {
+    ocean::DisplacementBounds bounds;
+    if (water.cascades > 0 && water.displacement) bounds = water.fftBounds;
+    float amplitudes = 0.0f;
+    const size_t waves = std::min(water.gerstner.size(), size_t(MAX_GERSTNER_WAVES));
+    for (size_t m = 0; m < waves; ++m) amplitudes += std::abs(water.gerstner[m].z);
+    bounds += {amplitudes, amplitudes, amplitudes};
+    if (water.ripples && water.rippleCells > 0) {
+        const auto [lo, hi] = std::minmax_element(water.ripples, water.ripples + size_t(water.rippleCells) * size_t(water.rippleCells));
+        bounds += {std::max(*hi, 0.0f), std::max(-*lo, 0.0f), 0.0f};
+    }
+    return bounds;
+}
+
+void Renderer::uploadWaterUniforms(const CameraView& camera, const WaterView& water, const ocean::GridCorners& grid) {
     WaterUniforms u{};
     for (int i = 0; i < 4; ++i) u.corner[i] = grid.corner[size_t(i)];
     const bool layers = water.cascades > 0 && water.displacement && water.slopes;
@@ -387,8 +402,8 @@ void Renderer::uploadWaterUniforms(const CameraView& camera, const WaterView& wa
     for (int c = 0; c < 4; ++c) u.cascadeSize[c] = layers ? water.cascadeSize[size_t(c)] : 1.0f;
     const int waves = std::min(int(water.gerstner.size()), MAX_GERSTNER_WAVES);
     for (int m = 0; m < waves; ++m) u.gerstner[m] = water.gerstner[size_t(m)];
-    u.waterParams = glm::vec4(water.lambda, water.gravity, float(waves), GRID_MIN_W);
-    u.gridParams = glm::vec4(float(m_gridResolution), 0.9f * camera.farM, float(cascades), float(layers ? water.resolution : 1));
+    u.waterParams = glm::vec4(water.lambda, water.gravity, float(waves), 0.5f * grid.minW);  // the clamp only guards rounding
+    u.gridParams = glm::vec4(float(m_gridResolution), GRID_REACH * camera.farM, float(cascades), float(layers ? water.resolution : 1));
     if (water.ripples && water.rippleCells > 0) {
         if (m_rippleCells != water.rippleCells) {
             m_rippleTexture = createTexture2D("ripple heights", GL_R32F, glm::ivec2(water.rippleCells));
@@ -410,17 +425,18 @@ void Renderer::uploadWaterUniforms(const CameraView& camera, const WaterView& wa
 
 // Before the object passes: they clip against (and mirror about) the surface these describe.
 void Renderer::prepareWater(const CameraView& camera, const WaterView& water, int internalHeight) {
+    m_grid = ocean::projectedGridCorners(camera.projection * camera.view, camera.position, displacementBounds(water));
     // Software rasterisers shade vertices on one thread: a coarser grid there.
     // Auto: a grid row per 3 px of internal height on a GPU, per 6 px on a software rasteriser
     // (which shades vertices on one thread), within [32, 512].
     const int autoCells = std::clamp(internalHeight / (isSoftwareRenderer() ? 6 : 3), 32, 512);
     int resolution = std::max(m_def.grid_resolution > 0 ? m_def.grid_resolution : autoCells, 16);
     if (m_gridResolution != resolution) buildGrid(resolution);
-    uploadWaterUniforms(camera, water);
+    uploadWaterUniforms(camera, water, m_grid);
 }
 
-void Renderer::waterPass(const CameraView& camera) {
-    if (!ocean::projectedGridCorners(camera.projection * camera.view, camera.position, GRID_MARGIN).visible) return;
+void Renderer::waterPass(const CameraView&) {
+    if (!m_grid.visible) return;
     glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, WATER_PASS, -1, "water");
     m_passTimers[WATER_PASS].begin();
     glBindTextureUnit(SKY_UNIT, m_skyCube.id());

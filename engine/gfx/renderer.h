@@ -13,6 +13,7 @@
 #include "gfx/mesh.h"
 #include "gfx/render_def.h"
 #include "gfx/render_target.h"
+#include "ocean/projected_grid.h"
 
 #include <array>
 #include <glm/mat4x4.hpp>
@@ -52,6 +53,9 @@ struct WaterView {
     int rippleCells = 0;                    ///< ripple patch cells per side (0: no ripple layer)
     glm::vec2 rippleOrigin{0.0f};           ///< world (x, z) of cell (0, 0)'s centre, m
     float rippleCellSize = 1.0f;            ///< m per cell
+    /// How far the FFT cascades together move a rest point (m; λ included): the projected
+    /// grid reaches this far past the view. Gerstner and ripple bounds the renderer derives.
+    ocean::DisplacementBounds fftBounds;
 };
 
 /// The built-in shapes an object can be drawn as.
@@ -69,8 +73,8 @@ struct ObjectDraw {
 struct WaterUniforms {
     glm::vec4 corner[4];
     glm::vec4 cascadeSize;
-    glm::vec4 waterParams;   ///< λ, gravity, Gerstner wave count, minimum |w|
-    glm::vec4 gridParams;    ///< grid resolution, max distance (m), cascades, FFT N
+    glm::vec4 waterParams;   ///< λ, gravity, Gerstner wave count, smallest grid w (a guard)
+    glm::vec4 gridParams;    ///< grid resolution, grid reach from the eye (m), cascades, FFT N
     glm::vec4 rippleParams;  ///< origin x, origin z (m), cell size (m), cells per side (0: none)
     glm::vec4 gerstner[32];
 };
@@ -127,7 +131,8 @@ private:
     const Mesh& meshFor(const ObjectDraw& object);
     void updateFrameUniforms(const CameraView& camera, double time, glm::ivec2 size);
     void resizeTargets(glm::ivec2 internal);
-    void uploadWaterUniforms(const CameraView& camera, const WaterView& water);
+    void uploadWaterUniforms(const CameraView& camera, const WaterView& water, const ocean::GridCorners& grid);
+    ocean::GridCorners m_grid;  // this frame's projected grid (prepareWater)
     void buildGrid(int resolution);
 
     RenderDef m_def;

@@ -10,6 +10,7 @@
 #include <barrier>
 #include <cassert>
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <mutex>
@@ -196,6 +197,22 @@ CascadeSpectrum& OceanFftCpu::spectrum(int cascade) {
 const CascadeSpectrum& OceanFftCpu::spectrum(int cascade) const {
     assert(cascade >= 0 && cascade < cascadeCount());
     return m_cascades[cascade]->spectrum;
+}
+
+DisplacementBounds OceanFftCpu::displacementBounds() const {
+    DisplacementBounds bounds;
+    const size_t count = size_t(m_n) * size_t(m_n);
+    for (int c = 0; c < cascadeCount(); ++c) {
+        const float *h = channel(c, OceanChannel::Height), *dx = channel(c, OceanChannel::DispX), *dz = channel(c, OceanChannel::DispZ);
+        float hi = 0.0f, lo = 0.0f, d2 = 0.0f;
+        for (size_t i = 0; i < count; ++i) {
+            hi = std::max(hi, h[i]);
+            lo = std::min(lo, h[i]);
+            d2 = std::max(d2, dx[i] * dx[i] + dz[i] * dz[i]);
+        }
+        bounds += {hi, -lo, std::abs(m_lambda) * std::sqrt(d2)};
+    }
+    return bounds;
 }
 
 const float* OceanFftCpu::channel(int cascade, OceanChannel ch) const {

@@ -1,6 +1,7 @@
 // CPU spectral ocean: per cascade, h̃(K,t) and its derivative spectra inverse-transformed with
 // FFTW, two real fields per complex transform. SPEC §2.1 eq. 1–9; seed 000 §2.1, §3.3.
 #pragma once
+#include "ocean/displacement_bounds.h"
 #include "ocean/ocean_def.h"
 #include "ocean/spectrum.h"
 
@@ -72,6 +73,10 @@ public:
 
     /// Channel ch of cascade c after the last update(): N·N floats, row-major [j][i].
     const float* channel(int cascade, OceanChannel ch) const;
+    /// How far the maps of the last update() move a rest point, all cascades together: the
+    /// extremes of h over the texels, and the largest |λ·(Dx, Dz)|. Any texture filtering
+    /// (bilinear, mip averages) stays within them.
+    DisplacementBounds displacementBounds() const;
     /// Writes cascade c as [N][N][5] floats (h, Dx, Dz, ∂h/∂x, ∂h/∂z per point) into out.
     void fillDump(int cascade, float* out) const;
     /// Raw result of packed transform k ∈ [0, 4): N·N interleaved pairs, row-major [j][i]:

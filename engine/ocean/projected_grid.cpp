@@ -1,58 +1,103 @@
-// Projected grid corners: ray/plane intersections in homogeneous coordinates.
+// Projected grid corners: the region of the mean plane the displaced water can be seen from,
+// and the projector (apex, heading) whose grid covers it.
 #include "ocean/projected_grid.h"
 
 #include <algorithm>
 #include <cmath>
 #include <glm/glm.hpp>
+#include <vector>
 
 namespace ob::ocean {
 
-// Where the ray through NDC (x, y) meets y = 0, as a homogeneous point. With M the inverse
-// view-projection, the ray is M·(x, y, s, 1) over NDC depth s; its y is q.y + s·m.y with
-// q = M·(x, y, 0, 1) and m = M's z column, so the hit is q − (q.y / m.y)·m: LINEAR in
-// (x, y) with one scale for every pixel, which is what makes interpolating the corners in
-// homogeneous coordinates exact (the screen-to-plane map is a homography).
-static glm::vec4 planeHit(const glm::mat4& inverseViewProjection, float x, float y) {
-    glm::vec4 q = inverseViewProjection * glm::vec4(x, y, 0.0f, 1.0f);
-    const glm::vec4& m = inverseViewProjection[2];
-    return q - (q.y / m.y) * m;
-}
+// Safety margins on the bounds: float rounding in the shader, and the grid's straight edges
+// between vertices (metres, plus a fraction of each bound).
+constexpr double BOUND_SCALE = 1.02;
+constexpr double VERTICAL_MARGIN = 0.05;
+constexpr double HORIZONTAL_MARGIN = 0.1;
 
-GridCorners projectedGridCorners(const glm::mat4& viewProjection, const glm::vec3& eye, float margin) {
+GridCorners projectedGridCorners(const glm::mat4& viewProjection, const glm::vec3& eye, const DisplacementBounds& bounds) {
     GridCorners out;
-    const glm::mat4 inv = glm::inverse(viewProjection);
-    const bool above = eye.y >= 0.0f;
-    // The horizon is the image of the horizontal directions: the screen row where rays are level.
-    glm::vec4 nearCentre = inv * glm::vec4(0.0f, 0.0f, -1.0f, 1.0f);
-    glm::vec4 farCentre = inv * glm::vec4(0.0f, 0.0f, 1.0f, 1.0f);
-    glm::vec3 forward = glm::vec3(farCentre) / farCentre.w - glm::vec3(nearCentre) / nearCentre.w;
-    glm::vec3 level(forward.x, 0.0f, forward.z);
-    float horizonY;
-    glm::vec4 clip = viewProjection * glm::vec4(level, 0.0f);
-    if (glm::dot(level, level) > 1e-12f && clip.w > 0.0f) horizonY = clip.y / clip.w;
-    else horizonY = forward.y < 0.0f ? 1e9f : -1e9f;  // looking straight down or up
+    const glm::dmat4 inv = glm::inverse(glm::dmat4(viewProjection));
+    const auto unproject = [&](double x, double y, double z) {
+        glm::dvec4 p = inv * glm::dvec4(x, y, z, 1.0);
+        return glm::dvec3(p) / p.w;
+    };
+    const double top = double(bounds.up) * BOUND_SCALE + VERTICAL_MARGIN;
+    const double bottom = -(double(bounds.down) * BOUND_SCALE + VERTICAL_MARGIN);
+    const double reach = double(bounds.horizontal) * BOUND_SCALE + HORIZONTAL_MARGIN;
 
-    // Water rows of the screen, a hair short of the horizon (there w → 0). The edge nearest
-    // the camera reaches 4× further: crests there rise on screen and would open a gap.
-    const float lo = -1.0f - margin, hi = 1.0f + margin, gap = 1e-4f;
-    const float nearLo = -1.0f - 4.0f * margin, nearHi = 1.0f + 4.0f * margin;
-    float nearY, farY;
-    if (above) {
-        nearY = nearLo;
-        farY = std::min(hi, horizonY - gap);
-        if (farY <= nearY) return out;
-    } else {
-        nearY = nearHi;
-        farY = std::max(lo, horizonY + gap);
-        if (farY >= nearY) return out;
+    // --- the vertices of (frustum ∩ slab bottom ≤ y ≤ top): frustum corners inside the slab,
+    // and the points where the frustum's 12 edges cross the slab's two planes. Their vertical
+    // projection spans the plane region any visible displaced point lies over.
+    std::array<glm::dvec3, 8> corner;
+    for (int i = 0; i < 8; ++i) corner[size_t(i)] = unproject(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1);
+    std::vector<glm::dvec2> seen;
+    for (const glm::dvec3& c : corner)
+        if (c.y >= bottom && c.y <= top) seen.emplace_back(c.x, c.z);
+    for (int i = 0; i < 8; ++i)
+        for (int bit : {1, 2, 4}) {
+            if (i & bit) continue;
+            const glm::dvec3 &p = corner[size_t(i)], &q = corner[size_t(i | bit)];
+            for (double y : {bottom, top}) {
+                const double dp = p.y - y, dq = q.y - y;
+                if ((dp < 0.0) == (dq < 0.0)) continue;
+                const glm::dvec3 hit = glm::mix(p, q, dp / (dp - dq));
+                seen.emplace_back(hit.x, hit.z);
+            }
+        }
+    if (seen.empty()) return out;
+
+    // --- the projector's heading: the camera's, or its screen-up direction looking straight down or up.
+    const glm::dvec3 forward = glm::normalize(unproject(0, 0, 1) - unproject(0, 0, -1));
+    glm::dvec2 heading(forward.x, forward.z);
+    if (glm::length(heading) < 1e-3) {
+        const glm::dvec3 screenUp = unproject(0, 1, -1) - unproject(0, -1, -1);
+        heading = glm::dvec2(screenUp.x, screenUp.z);
     }
-    if (std::abs(inv[2].y) < 1e-12f) return out;  // NDC depth never changes height: degenerate camera
-    out.corner = {planeHit(inv, lo, nearY), planeHit(inv, hi, nearY), planeHit(inv, lo, farY), planeHit(inv, hi, farY)};
-    // One common scale (and sign) for all four, so w > 0 on the water side and max w = 1.
-    float maxW = std::max(std::abs(out.corner[0].w), std::abs(out.corner[1].w));
-    if (!(maxW > 0.0f)) return out;
-    float scale = (out.corner[0].w > 0.0f ? 1.0f : -1.0f) / maxW;
-    for (glm::vec4& c : out.corner) c *= scale;
+    heading = glm::length(heading) > 1e-12 ? glm::normalize(heading) : glm::dvec2(0.0, 1.0);
+    const glm::dvec2 side(-heading.y, heading.x);  // screen right, seen from above
+    const glm::dvec2 foot(eye.x, eye.z);
+
+    // Each seen point widened by the horizontal reach: an octagon around it that holds the
+    // disc of that radius. (a, b): along and across the heading from the eye's footprint.
+    std::vector<glm::dvec2> region;
+    region.reserve(seen.size() * 8);
+    const double octagon = reach / std::cos(M_PI / 8.0);
+    for (const glm::dvec2& p : seen)
+        for (int k = 0; k < 8; ++k) {
+            const double angle = (double(k) + 0.5) * M_PI / 4.0;
+            const glm::dvec2 d = p + octagon * glm::dvec2(std::cos(angle), std::sin(angle)) - foot;
+            region.emplace_back(glm::dot(d, heading), glm::dot(d, side));
+        }
+    double aMin = region[0].x, aMax = region[0].x;
+    for (const glm::dvec2& r : region) aMin = std::min(aMin, r.x), aMax = std::max(aMax, r.x);
+
+    // --- the apex, a0 behind the footprint: the camera's own (its height times the tangent of
+    // its pitch toward the plane, so rows follow screen rows), moved back until the nearest
+    // region point is `nearGap` in front of it (waves reaching behind the view, a low eye);
+    // looking straight down the camera's a0 → ∞, capped where the grid is affine to rounding.
+    const double height = std::abs(double(eye.y));
+    const double towardPlane = eye.y >= 0.0f ? -forward.y : forward.y;  // sine of the pitch toward the plane
+    double a0 = 0.0;
+    if (towardPlane > 0.0) a0 = height * towardPlane / std::max(std::sqrt(1.0 - towardPlane * towardPlane), 1e-6);
+    const double nearGap = std::max(0.5 * (height + top - bottom), 0.5);
+    a0 = std::max(std::min(a0, 16.0 * (aMax - aMin) + nearGap), nearGap - aMin);
+
+    // --- grid space: t = 1/(a + a0) (rows), s = b/(a + a0) (columns); a point is
+    // apex + (heading + s·side)/t, so in homogeneous form (apex·t + heading + s·side, t): linear in (s, t).
+    double sMin = 1e300, sMax = -1e300, tMin = 1e300, tMax = -1e300;
+    for (const glm::dvec2& r : region) {
+        const double t = 1.0 / (r.x + a0), s = r.y * t;
+        sMin = std::min(sMin, s), sMax = std::max(sMax, s);
+        tMin = std::min(tMin, t), tMax = std::max(tMax, t);
+    }
+    const glm::dvec2 apex = foot - a0 * heading;
+    const auto homogeneous = [&](double s, double t) {
+        const glm::dvec2 xz = (apex * t + heading + s * side) / tMax;  // scaled so w = 1 at the near edge
+        return glm::vec4(float(xz.x), 0.0f, float(xz.y), float(t / tMax));
+    };
+    out.corner = {homogeneous(sMin, tMax), homogeneous(sMax, tMax), homogeneous(sMin, tMin), homogeneous(sMax, tMin)};
+    out.minW = float(tMin / tMax);
     out.visible = true;
     return out;
 }
