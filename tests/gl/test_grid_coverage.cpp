@@ -2,7 +2,8 @@
 // view ray points below the horizon, for 2,000 random cameras (0.5–500 m above the local crest,
 // pitch −89° to +10°, roll ±35°, any heading, fov 30–100°) over the roughest seas validation
 // accepts (wind 60 m/s, choppiness 10, Gerstner steepness at its limits, a ripple patch under
-// the camera). Coverage is read from the depth buffer: the water writes depth, the sky does not.
+// the camera). Coverage is read from the default framebuffer's depth (antialiasing off, so the
+// passes draw there): the water writes depth, the sky does not.
 #include "gfx/gl.h"
 #include "gfx/renderer.h"
 #include "ocean/gerstner.h"
@@ -218,6 +219,7 @@ gfx::RenderDef coverageRenderDef() {
     gfx::RenderDef def;
     def.reflections = false;  // coverage does not depend on them; the frames are cheaper
     def.refractions = false;
+    def.antialias = "off";    // drawn straight into the default framebuffer, whose depth is read
     return def;
 }
 
@@ -263,7 +265,8 @@ TEST_CASE("the showcase's frame 1680, where a wedge of sky once opened under the
     // near edge. Every frame's coverage is read, not only the last.
     const glm::ivec2 size(160, 90);
     auto platform = platform::createHeadlessPlatform(size);
-    game::Sandbox sandbox(game::loadScene(std::string(OCEANBOX_SOURCE_DIR) + "/config/scenes/default.toml"));
+    // Antialiasing off: the frame is drawn straight into the default framebuffer, whose depth is read.
+    game::Sandbox sandbox(game::loadScene(std::string(OCEANBOX_SOURCE_DIR) + "/config/scenes/default.toml", {"render.antialias=off"}));
     sandbox.attachPlatform(*platform, false);
     FixedStepClock clock(1.0 / sandbox.scene().sim.step_hz);
     int framesWithHoles = 0;
