@@ -206,16 +206,15 @@ void EWaveField::addSource(float gx, float gz, float radiusCells, float accel, f
     const int x0 = std::max(0, int(std::ceil(gx - r))), x1 = std::min(m_cols - 1, int(std::floor(gx + r)));
     const int z0 = std::max(0, int(std::ceil(gz - r))), z1 = std::min(m_rows - 1, int(std::floor(gz + r)));
     const double amount = double(accel) * double(dt);
-    const double halfPiOverR = 0.5 * std::numbers::pi / r;
+    const double invR2 = 1.0 / (double(r) * double(r));
     for (int z = z0; z <= z1; ++z) {
         const double dz = double(z) - gz;
-        double* v = m_v + size_t(z) * size_t(m_cols);
+        const double dz2 = dz * dz * invR2;
+        double* __restrict v = m_v + size_t(z) * size_t(m_cols);
         for (int x = x0; x <= x1; ++x) {
             const double dx = double(x) - gx;
-            const double d = std::sqrt(dx * dx + dz * dz);
-            if (d >= r) continue;
-            const double c = std::cos(halfPiOverR * d);
-            v[x] += amount * c * c;
+            const double q = std::max(0.0, 1.0 - (dx * dx * invR2 + dz2));  // 1 − r²/R², 0 outside
+            v[x] += amount * q * q;
         }
     }
 }

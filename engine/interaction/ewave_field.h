@@ -60,10 +60,10 @@ public:
     /// Advances h and v by dt seconds (> 0). Allocates nothing once dt has been seen.
     void step(float dt);
 
-    /// Adds a smooth vertical acceleration source for dt seconds: v += dt·accel·w(r), with
-    /// w(r) = cos²(π/2·r/R) for r < R (a raised cosine, smooth at its edge so it makes no grid
-    /// noise) at the exact sub-cell centre (gx, gz) in cells; R = radiusCells (>= 1 used).
-    /// accel in m/s²; cells outside the field are skipped.
+    /// Adds a smooth vertical acceleration source for dt seconds: v += dt·accel·w(r), with the
+    /// biweight w(r) = (1 − r²/R²)² for r < R (smooth at its edge, so it makes no grid noise;
+    /// no square root or cosine per cell) at the exact sub-cell centre (gx, gz) in cells;
+    /// R = radiusCells (>= 1 used). accel in m/s²; cells outside the field are skipped.
     void addSource(float gx, float gz, float radiusCells, float accel, float dt);
 
     /// Moves the patch by (dx, dz) whole cells: the value at (x+dx, z+dz) moves to (x, z) in h
@@ -119,7 +119,7 @@ private:
 };
 
 /// A bounding sphere's stamp as an ewave source: a vertical acceleration `accel` (m/s²) on v
-/// over a raised cosine of radius `radiusCells` centred at grid (gx, gz), for one step.
+/// over a biweight bump of radius `radiusCells` centred at grid (gx, gz), for one step.
 struct EWaveSource {
     float gx = 0.0f, gz = 0.0f;  ///< exact centre, cells (column x, row z)
     float radiusCells = 0.0f;    ///< R, cells

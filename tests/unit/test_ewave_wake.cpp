@@ -27,8 +27,9 @@ struct Wake {
 // How the angle is measured: in the sphere's frame, for each distance d behind it, |h| is
 // first smoothed along the track by a running maximum over one transverse wavelength
 // λ = 2πU²/g (so the crests merge into an envelope); the envelope's edge on each side is the
-// outermost lateral offset y where it still reaches 25 % of that cross-section's largest
-// value, and y(d) (both sides averaged) is fitted by a straight line y = a + b·d over
+// outermost lateral offset y where it still reaches half of that cross-section's largest
+// value (the outer half-maximum of the cusp waves' peak, which beyond the caustic fall off as
+// an Airy tail), and y(d) (both sides averaged) is fitted by a straight line y = a + b·d over
 // 1.5λ <= d <= min(0.75·U·t, 130 m) (the wake formed after the start, inside the band-free
 // part of the field). The angle is atan(b): the intercept a absorbs the source's size.
 Wake runWake(double speed, double seconds) {
@@ -74,9 +75,9 @@ Wake runWake(double speed, double seconds) {
         if (!(peak > 0.0)) continue;
         int up = 0, down = 0;
         for (int z = rows - 1; z > zc; --z)
-            if (env[size_t(z)] >= 0.25 * peak) { up = z - zc; break; }
+            if (env[size_t(z)] >= 0.5 * peak) { up = z - zc; break; }
         for (int z = 0; z < zc; ++z)
-            if (env[size_t(z)] >= 0.25 * peak) { down = zc - z; break; }
+            if (env[size_t(z)] >= 0.5 * peak) { down = zc - z; break; }
         ds.push_back(d);
         ys.push_back(0.5 * (up + down) * cell);
     }
