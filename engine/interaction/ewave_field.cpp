@@ -248,13 +248,18 @@ void EWaveField::scroll(int dx, int dz) {
     syncHeight();
 }
 
-EWaveSource ewaveSource(const RippleStamp& stamp, float gx, float gz, float cellSize) {
+EWaveSource ewaveSource(const RippleStamp& stamp, float gx, float gz, float cellSize, float verticalVelocity) {
     EWaveSource s;
     s.gx = gx;
     s.gz = gz;
     s.radiusCells = stamp.radiusCells;
-    // heightScale = SD·SHR·Δ: g·D/R = g·heightScale·SR/(SR·Δ) = g·SD·SHR.
-    s.accel = float(EWaveField::GRAVITY) * (stamp.heightScale / cellSize) * std::max(0.0f, 1.0f + stamp.accelerationFactor);
+    // heightScale = SD·SHR·Δ, so g·D/R = g·heightScale·SR/(SR·Δ) = g·SD·SHR; the stagnation
+    // pressure ρ·v²/2 over the same patch adds v²/(2R), pushing the way SD points.
+    const float sd = stamp.heightScale < 0.0f ? -1.0f : 1.0f;
+    const float radius = std::max(stamp.radiusCells, 1.0f) * cellSize;
+    const float hydrostatic = float(EWaveField::GRAVITY) * (stamp.heightScale / cellSize);
+    const float dynamic = sd * verticalVelocity * verticalVelocity / (2.0f * radius);
+    s.accel = (hydrostatic + dynamic) * std::max(0.0f, 1.0f + stamp.accelerationFactor);
     return s;
 }
 

@@ -128,13 +128,17 @@ struct EWaveSource {
 
 /// How a Table 2 stamp (planStamp: the same decision, SD, SHR, AF, SR as kang2008) enters the
 /// ewave state. Eq. 5 would raise the water at the centre by D = SD·SHR·SR·Δ (PH = SR there);
-/// here the sphere is a moving surface pressure p = −ρ·g·D·w(r) over its footprint, and in
-/// deep water a pressure patch of radius R = SR·Δ drives v̂ by −|k|·p̂/ρ with |k| ≈ 1/R, so
-/// v gains the acceleration g·D/R·w(r) = g·SD·SHR·w(r) while the sphere stamps (a sphere at
-/// rest settles into a dip of about D; a moving one leaves a Kelvin wake). Eq. 7's AF scales
-/// it by (1 + AF) (clamped at 0): AF > 0 a stronger push, AF < 0 a weaker one. Eq. 5's base
-/// height is not used (a pressure acts on whatever the water does). (gx, gz): the sphere's
-/// exact grid position (not the snapped centre cell), so a moving source makes no grid noise.
-EWaveSource ewaveSource(const RippleStamp& stamp, float gx, float gz, float cellSize);
+/// here the sphere is a moving surface pressure over its footprint, p = −ρ·(g·D + SD·v²/2)·w(r):
+/// the hydrostatic pressure of that displacement plus the stagnation pressure of the sphere's
+/// vertical speed v (a ball entering or leaving the water at speed pushes far harder than
+/// one at rest; a sphere moving level has v = 0). In deep water a pressure patch of radius
+/// R = SR·Δ drives v̂ by −|k|·p̂/ρ with |k| ≈ 1/R, so while the sphere stamps the water's
+/// vertical velocity gains (g·SD·SHR + SD·v²/(2R))·w(r) per second: a sphere at rest settles
+/// into a dip of about D, a moving one leaves a Kelvin wake, a falling ball rings the water.
+/// Eq. 7's AF scales it by (1 + AF) (clamped at 0): AF > 0 a stronger push, AF < 0 a weaker
+/// one. Eq. 5's base height is not used (a pressure acts on whatever the water does).
+/// (gx, gz): the sphere's exact grid position (not the snapped centre cell), so a moving
+/// source makes no grid noise. verticalVelocity in m/s.
+EWaveSource ewaveSource(const RippleStamp& stamp, float gx, float gz, float cellSize, float verticalVelocity = 0.0f);
 
 } // namespace ob::interaction

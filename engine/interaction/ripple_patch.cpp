@@ -122,7 +122,7 @@ bool RipplePatch::stampSphere(const BoundingSphere& sphere, SphereContact& conta
         if (!planStamp(f.rows(), f.cols(), m_def.cell_size, sphere, contact, motion,
                        [&f](int x, int z) { return f.heightAt(x, z); }, stamp))
             return false;
-        m_sources.push_back(ewaveSource(stamp, g.x, g.y, m_def.cell_size));
+        m_sources.push_back(ewaveSource(stamp, g.x, g.y, m_def.cell_size, velocity.y));
         return true;
     }
     if (!m_gpu) return stepSphere(m_field, m_footprints, m_def.cell_size, sphere, contact, motion);

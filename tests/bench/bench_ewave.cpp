@@ -88,14 +88,14 @@ void BM_EWaveStamp(benchmark::State& state) {
     def.direction = SphereDirection::Down;
     std::mt19937 rng(7);
     std::uniform_int_distribution<int> pos(int(sr) + 1, n - int(sr) - 2);
-    std::vector<SphereMotion> motions(size_t(count));
+    std::vector<SphereMotion> motions(static_cast<size_t>(count));
     for (SphereMotion& m : motions) {
         m.gridX = float(pos(rng));
         m.gridZ = float(pos(rng));
         m.centreY = 0.0f;
         m.surfaceY = 0.0f;
     }
-    std::vector<SphereContact> contacts(size_t(count));
+    std::vector<SphereContact> contacts(static_cast<size_t>(count));
     for (auto _ : state) {
         for (size_t i = 0; i < motions.size(); ++i) {
             RippleStamp st;
