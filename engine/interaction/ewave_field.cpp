@@ -21,6 +21,11 @@ namespace {
 
 // Spectrum rows per parallel chunk: a chunk of fewer modes costs more to hand out than it saves.
 constexpr int MIN_MODES_PER_CHUNK = 16384;
+// The two transforms of a stage run on two workers from this many cells on; below it, waking
+// a worker costs more than half the transforms (the ocean measured the same for N < 256).
+constexpr size_t PARALLEL_MIN_CELLS = 256 * 256;
+// Cap of a source's stagnation-pressure term, in g (see ewaveSource).
+constexpr float MAX_DYNAMIC_G = 15.0f;
 
 double* allocReal(size_t n) {
     double* p = fftw_alloc_real(n);
@@ -131,8 +136,9 @@ void EWaveField::step(float dt) {
     if (dt != m_preparedDt) prepare(dt);
     double* const real[2] = {m_h, m_v};
     double* const spec[2] = {m_hSpec, m_vSpec};
+    const int pairChunk = m_cells >= PARALLEL_MIN_CELLS ? 1 : 2;  // 2: both on the calling thread
     // --- forward transforms, h and v each whole on one worker
-    parallelFor(0, 2, 1, [&](int b, int e) {
+    parallelFor(0, 2, pairChunk, [&](int b, int e) {
         for (int t = b; t < e; ++t) fftw_execute_dft_r2c(m_forward, real[t], reinterpret_cast<fftw_complex*>(spec[t]));
     });
     // --- every mode rotated by ωΔt and damped
@@ -152,7 +158,7 @@ void EWaveField::step(float dt) {
         }
     });
     // --- inverse transforms (normalised by the coefficients)
-    parallelFor(0, 2, 1, [&](int b, int e) {
+    parallelFor(0, 2, pairChunk, [&](int b, int e) {
         for (int t = b; t < e; ++t) fftw_execute_dft_c2r(m_backward, reinterpret_cast<fftw_complex*>(spec[t]), real[t]);
     });
     applyBoundary();
@@ -258,7 +264,11 @@ EWaveSource ewaveSource(const RippleStamp& stamp, float gx, float gz, float cell
     const float sd = stamp.heightScale < 0.0f ? -1.0f : 1.0f;
     const float radius = std::max(stamp.radiusCells, 1.0f) * cellSize;
     const float hydrostatic = float(EWaveField::GRAVITY) * (stamp.heightScale / cellSize);
-    const float dynamic = sd * verticalVelocity * verticalVelocity / (2.0f * radius);
+    // Capped at MAX_DYNAMIC_G·g: over a crossing of 2R/|v| the stagnation term gives the water
+    // an impulse of about |v|, which for a fast ball (16 m/s) is a jet, not a ring; linear
+    // waves cannot carry it (the default scene's cannonballs made 1.1 m spikes uncapped).
+    const float dynamic = sd * std::min(verticalVelocity * verticalVelocity / (2.0f * radius),
+                                        MAX_DYNAMIC_G * float(EWaveField::GRAVITY));
     s.accel = (hydrostatic + dynamic) * std::max(0.0f, 1.0f + stamp.accelerationFactor);
     return s;
 }

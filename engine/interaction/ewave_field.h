@@ -133,7 +133,8 @@ struct EWaveSource {
 /// vertical speed v (a ball entering or leaving the water at speed pushes far harder than
 /// one at rest; a sphere moving level has v = 0). In deep water a pressure patch of radius
 /// R = SR·Δ drives v̂ by −|k|·p̂/ρ with |k| ≈ 1/R, so while the sphere stamps the water's
-/// vertical velocity gains (g·SD·SHR + SD·v²/(2R))·w(r) per second: a sphere at rest settles
+/// vertical velocity gains (g·SD·SHR + SD·min(v²/(2R), 15·g))·w(r) per second (the cap keeps a
+/// fast ball's splash a ring, not a jet linear waves cannot carry): a sphere at rest settles
 /// into a dip of about D, a moving one leaves a Kelvin wake, a falling ball rings the water.
 /// Eq. 7's AF scales it by (1 + AF) (clamped at 0): AF > 0 a stronger push, AF < 0 a weaker
 /// one. Eq. 5's base height is not used (a pressure acts on whatever the water does).
