@@ -209,12 +209,19 @@ int runCli(int argc, char** argv) {
 
     // ripple: the bare solver on .npy fields (no scene)
     RippleArgs ripple;
-    CLI::App* rippleCmd = app.add_subcommand("ripple", "run the ripple convolution (seed 001 eq. 1-2, fixed boundary) on a .npy field");
-    rippleCmd->add_option("--in", ripple.in, "Vh(t): float32 .npy [N, M]")->required();
-    rippleCmd->add_option("--prev", ripple.prev, "Vh(t-1): same shape (default: --in)");
+    CLI::App* rippleCmd = app.add_subcommand("ripple", "run a bare ripple solver on a .npy field: kang2008 (seed 001 eq. 1-2, "
+                                                       "fixed boundary) or ewave (dispersive, exact per Fourier mode)");
+    rippleCmd->add_option("--model", ripple.model, "kang2008 (default) or ewave");
+    rippleCmd->add_option("--in", ripple.in, "kang2008 Vh(t), ewave h: float32 .npy [N, M]")->required();
+    rippleCmd->add_option("--prev", ripple.prev, "kang2008: Vh(t-1), same shape (default: --in)");
+    rippleCmd->add_option("--vel", ripple.vel, "ewave: the vertical velocity v (m/s), same shape (default: 0)");
     rippleCmd->add_option("--steps", ripple.steps, "steps K >= 0")->required();
-    rippleCmd->add_option("--damping", ripple.damping, "damping factor DF in [0, 1]")->required();
-    rippleCmd->add_option("--out", ripple.out, "Vh(t) after K steps (.npy)")->required();
+    rippleCmd->add_option("--damping", ripple.damping, "kang2008: damping factor DF in [0, 1]; ewave: decay time (s, 0 = none)")->required();
+    rippleCmd->add_option("--viscosity", ripple.viscosity, "ewave: effective viscosity (m2/s, default 0)");
+    rippleCmd->add_option("--dt", ripple.dt, "ewave: step (s, default 1/60)");
+    rippleCmd->add_option("--cell-size", ripple.cellSize, "ewave: metres per cell (default 0.25)");
+    rippleCmd->add_option("--boundary", ripple.boundary, "ewave: periodic (default), fixed or absorbing; kang2008: fixed");
+    rippleCmd->add_option("--out", ripple.out, "kang2008 Vh(t), ewave h after K steps (.npy)")->required();
     rippleCmd->callback([&] {
         action = [&] {
             checkWritable(ripple.out, "output");

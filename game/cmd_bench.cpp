@@ -224,6 +224,8 @@ void addBenchCommand(CLI::App& app, std::function<int()>& action, const std::str
     CLI::App* f = bench->add_subcommand("fields", "seed 001 Table 3: fps by scene and ripple field size, rendered and spheres only");
     f->add_option("--sizes", fields->sizes, "ripple field sizes (ripples.resolution), comma-separated")->delimiter(',');
     f->add_option("--scenes", fields->scenes, "scene names (config/scenes/NAME.toml) or paths, comma-separated")->delimiter(',');
+    f->add_option("--model", fields->model, "ripple model of every run: kang2008 (default, the paper's) or ewave")
+        ->check(CLI::IsMember({"kang2008", "ewave"}));
     f->add_flag("--no-render", fields->noRender, "only the spheres-only rows (interaction phase, nothing drawn)");
     f->add_option("--size", fields->size, "framebuffer WxH for the rendered rows (default 800x600, the paper's)");
     f->add_option("--frames", fields->frames, "measured frames per point (default 30)");

@@ -40,6 +40,7 @@ struct FieldsBenchArgs {
     BenchOutput output;
     std::vector<long> sizes{64, 128, 256, 512, 1024, 2048};
     std::vector<std::string> scenes{"cannon", "fish", "ship", "all"};
+    std::string model = "kang2008";  ///< ripples.model for every run: "kang2008" (seed 001's) or "ewave"
     bool noRender = false;     ///< only the spheres-only rows
     std::string size = "800x600";
     int frames = 30;

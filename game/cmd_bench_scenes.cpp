@@ -75,6 +75,7 @@ int benchFields(const FieldsBenchArgs& a) {
     table.setting("frames", std::to_string(a.frames) + " measured after " + std::to_string(a.warmup) +
                                 " warm-up; medians; one simulation step per frame");
     for (const std::string& s : a.sets) table.setting("set", s);
+    table.setting("model", "ripples.model = " + a.model);
 
     Progress progress("fields");
     std::map<std::string, ChartSeries> series;  // by "scene, render"
@@ -85,6 +86,7 @@ int benchFields(const FieldsBenchArgs& a) {
             ++point;
             std::vector<std::string> overrides = a.sets;
             overrides.push_back("ripples.resolution=" + std::to_string(size));
+            overrides.push_back("ripples.model=" + a.model);
             const SceneDef scene = loadScene(paths[k], overrides);
             const std::string what = a.scenes[k] + " " + std::to_string(size) + "²";
             const auto record = [&](const char* render, double ms) {

@@ -1,4 +1,5 @@
-// `oceanbox dump ripples`: run a scene headless for K steps, write the ripple patch's Vh(t).
+// `oceanbox dump ripples`: run a scene headless for K steps, write the ripple patch's height
+// (kang2008: Vh(t); ewave: h).
 #include "cmd_dump_ripples.h"
 
 #include "core/error.h"
@@ -20,11 +21,11 @@ int dumpRipples(const SceneDef& scene, int frames, const std::string& out) {
     const auto* patch = sandbox.world().resource<interaction::RipplePatch>();
     if (!patch) throw RuntimeError("dump ripples: the sandbox built no ripple patch");  // enabled scenes always do
 
-    // RippleField is row-major with row = z, column = x: already the [N, N] layout.
-    const interaction::RippleField& field = patch->field();
-    writeNpy(out, {size_t(field.rows()), size_t(field.cols())}, field.current().data());
-    logInfo("ripples: wrote %s [%d, %d] after %d step(s) (cell %g m, origin (%g, %g) m)", out.c_str(), field.rows(),
-            field.cols(), frames, double(patch->def().cell_size), double(patch->origin().x), double(patch->origin().y));
+    // Either model's height level is row-major with row = z, column = x: already the [N, N] layout.
+    writeNpy(out, {size_t(patch->rows()), size_t(patch->cols())}, patch->height().data());
+    logInfo("ripples: wrote %s [%d, %d] (%s) after %d step(s) (cell %g m, origin (%g, %g) m)", out.c_str(), patch->rows(),
+            patch->cols(), patch->def().model.c_str(), frames, double(patch->def().cell_size), double(patch->origin().x),
+            double(patch->origin().y));
     return EXIT_OK;
 }
 

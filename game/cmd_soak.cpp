@@ -170,17 +170,18 @@ SoakBounds soakBounds(Sandbox& sandbox) {
 void checkSoakInvariants(Sandbox& sandbox, const SoakBounds& bounds, SoakReport& report) {
     ecs::World& world = sandbox.world();
 
-    // --- ripple patch: both levels finite, Vh(t) bounded by the stamps' scale
+    // --- ripple patch: kang2008 both levels finite, ewave h finite (a non-finite v reaches h
+    // in the next step), and the height bounded by the stamps' scale
     if (const auto* patch = world.resource<interaction::RipplePatch>()) {
-        const interaction::RippleField& field = patch->field();
-        const std::pair<const char*, std::span<const float>> levels[] = {{"Vh(t)", field.current()},
-                                                                           {"Vh(t-1)", field.previous()}};
-        for (const auto& [name, level] : levels) {
+        const bool ewave = patch->isEWave();
+        const std::pair<const char*, std::span<const float>> levels[] = {{ewave ? "h" : "Vh(t)", patch->height()},
+                                                                           {"Vh(t-1)", patch->field().previous()}};
+        for (const auto& [name, level] : std::span(levels, ewave ? 1 : 2)) {
             Scan s = scan(level);
             if (!s.finite) {
                 size_t i = firstNonFinite(level);
-                fail(sandbox, std::string("ripple field ") + name + " cell (row " + std::to_string(i / size_t(field.cols())) +
-                                  ", column " + std::to_string(i % size_t(field.cols())) + ") = " + fmt(level[i]) +
+                fail(sandbox, std::string("ripple field ") + name + " cell (row " + std::to_string(i / size_t(patch->cols())) +
+                                  ", column " + std::to_string(i % size_t(patch->cols())) + ") = " + fmt(level[i]) +
                                   ": not a finite number");
             }
             if (s.maxAbs > bounds.ripple)

@@ -63,6 +63,10 @@ static SceneDef readScene(TomlDocument& doc, const std::string& source, const st
     if (errors.empty()) {
         for (const std::string& e : ocean::validate(scene.gerstner, &scene.ocean)) errors.push_back(source + ": " + e);
         for (const std::string& e : validateEvents(scene, source)) errors.push_back(e);
+        if (scene.ripples.model == "kang2008" && scene.ripples.boundary == "periodic")
+            errors.push_back(doc.where("ripples.boundary", source) +
+                             ": ripples.boundary: \"periodic\" needs ripples.model = \"ewave\" (kang2008 has \"fixed\" "
+                             "or \"absorbing\")");
         checkModels(scene, doc, source, sceneDir, errors);
     }
     if (!errors.empty()) {

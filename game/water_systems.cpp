@@ -37,9 +37,11 @@ void attachWaterGpu(ecs::World& world) {
         // Auto: the CPU up to 1024² even beside a GPU, where its step (0.1 ms at 256², 0.3 ms at
         // 1024²) costs less than the GPU's stamps, step and read-back stall (2.3 ms and 4.3 ms
         // on an H200 in the default scene).
+        // The ewave model runs on the CPU (FFTW) whatever the backend says.
         if (backend == "gpu" || (backend == "auto" && !gfx::isSoftwareRenderer() && patch->def().resolution >= 2048)) patch->useGpu();
-        logInfo("ripples: %s backend, %d² cells of %g m", patch->onGpu() ? "gpu (compute shaders)" : "cpu",
-                patch->def().resolution, double(patch->def().cell_size));
+        logInfo("ripples: %s, %s backend, %d² cells of %g m", patch->def().model.c_str(),
+                patch->onGpu() ? "gpu (compute shaders)" : (patch->isEWave() ? "cpu (FFTW)" : "cpu"), patch->def().resolution,
+                double(patch->def().cell_size));
     }
     OceanState* ocean = world.resource<OceanState>();
     if (!ocean) return;
@@ -90,7 +92,7 @@ void addRipples(ecs::World& world, const interaction::RippleDef& def, float step
     }
 }
 
-void interactionSystem(ecs::World& world, const ecs::Tick&) {
+void interactionSystem(ecs::World& world, const ecs::Tick& tick) {
     auto* patch = world.resource<interaction::RipplePatch>();
     const OceanState* ocean = world.resource<OceanState>();
     if (!patch || !ocean) return;
@@ -120,8 +122,8 @@ void interactionSystem(ecs::World& world, const ecs::Tick&) {
             patch->stampSphere(set.spheres[k], set.contacts[k], centre, velocity, mass, surface);
         }
     }
-    // --- convolution
-    patch->step();
+    // --- the solver's step: eq. 1–2 (kang2008) or the exact per-mode step over dt (ewave)
+    patch->step(float(tick.dt));
 }
 
 // Factor on the CPU maps' displacement extremes when the GPU renders another time.
@@ -130,7 +132,7 @@ constexpr float FFT_BOUND_SLACK = 1.1f;
 gfx::WaterView prepareWaterView(ecs::World& world, double time) {
     gfx::WaterView view;
     if (auto* patch = world.resource<interaction::RipplePatch>()) {
-        view.ripples = patch->field().current().data();
+        view.ripples = patch->height().data();
         view.rippleCells = patch->def().resolution;
         view.rippleOrigin = patch->origin();
         view.rippleCellSize = patch->def().cell_size;

@@ -55,7 +55,7 @@ void oceanSystem(ecs::World& world, const ecs::Tick& tick);
 /// adds it to the ocean's query; stepSeconds: the simulation step (s).
 void addRipples(ecs::World& world, const interaction::RippleDef& def, float stepSeconds);
 /// Interaction phase: every SphereSet stamps the ripple patch (entity, then sphere order;
-/// Table 2), then the convolution step (seed 001 eq. 1–7).
+/// Table 2), then the solver's step (seed 001 eq. 1–7, or the ewave step and its sources).
 void interactionSystem(ecs::World& world, const ecs::Tick& tick);
 /// Render phase helper: brings the textures to `time` and describes the water layers.
 gfx::WaterView prepareWaterView(ecs::World& world, double time);

@@ -173,9 +173,9 @@ void FoamMap::addWhitecaps(std::span<const float> jacobian, int n, float tile, f
 
 void FoamMap::addRipples(const interaction::RipplePatch& patch, float dt) {
     if (m_def.ripple_weight <= 0.0f) return;
-    const interaction::RippleField& field = patch.field();
-    const int rows = field.rows(), cols = field.cols();
-    const std::span<const float> h = field.current();
+    const int rows = patch.rows(), cols = patch.cols();
+    const std::span<const float> h = patch.height();  // either model's
+
     const float inv2d = 1.0f / (2.0f * patch.def().cell_size);
     const glm::vec2 o = origin();
     // The nearest ripple cell of each foam column and row; only interior ripple cells have a

@@ -10,10 +10,25 @@
 
 namespace ob::interaction {
 
+namespace {
+
+EWaveBoundary ewaveBoundary(const std::string& b) {
+    if (b == "absorbing") return EWaveBoundary::Absorbing;
+    if (b == "fixed") return EWaveBoundary::Fixed;
+    return EWaveBoundary::Periodic;
+}
+
+} // namespace
+
 RipplePatch::RipplePatch(const RippleDef& def)
     : m_def(def),
-      m_field(def.resolution, def.resolution, def.boundary == "absorbing" ? RippleBoundary::Absorbing : RippleBoundary::Fixed,
-              def.sponge_width) {
+      m_field(def.model == "ewave" ? 1 : def.resolution, def.model == "ewave" ? 1 : def.resolution,
+              def.boundary == "absorbing" ? RippleBoundary::Absorbing : RippleBoundary::Fixed, def.sponge_width) {
+    if (def.model == "ewave") {
+        m_ewave = std::make_unique<EWaveField>(def.resolution, def.resolution, def.cell_size, ewaveBoundary(def.boundary),
+                                               def.sponge_width);
+        m_ewave->setDamping(def.decay_time, def.viscosity);
+    }
     m_originCell = glm::ivec2(int(std::lround(def.center.x / def.cell_size)), int(std::lround(def.center.y / def.cell_size))) -
                    glm::ivec2(def.resolution / 2);
 }
@@ -21,11 +36,18 @@ RipplePatch::RipplePatch(const RippleDef& def)
 RipplePatch::~RipplePatch() = default;
 
 void RipplePatch::useGpu() {
+    if (m_ewave) return;
     m_gpu = std::make_unique<RippleFieldGpu>(m_field.rows(), m_field.cols(), m_field.boundary(), m_field.spongeWidth());
     m_gpu->upload(m_field);
 }
 
-void RipplePatch::step() {
+void RipplePatch::step(float dt) {
+    if (m_ewave) {
+        for (const EWaveSource& s : m_sources) m_ewave->addSource(s.gx, s.gz, s.radiusCells, s.accel, dt);
+        m_sources.clear();
+        m_ewave->step(dt);
+        return;
+    }
     if (!m_gpu) {
         m_field.step(m_def.damping);
         return;
@@ -46,6 +68,14 @@ void RipplePatch::centerOn(glm::vec2 worldCenter) {
                         glm::ivec2(m_def.resolution / 2);
     glm::ivec2 shift = target - m_originCell;
     if (shift == glm::ivec2(0)) return;
+    if (m_ewave) {
+        m_ewave->scroll(shift.x, shift.y);
+        // Queued sources are in grid coordinates of the old origin.
+        for (EWaveSource& s : m_sources) {
+            s.gx -= float(shift.x);
+            s.gz -= float(shift.y);
+        }
+    }
     m_field.scroll(shift.x, shift.y);
     if (m_gpu) m_gpu->scroll(shift.x, shift.y);
     m_originCell = target;
@@ -53,23 +83,25 @@ void RipplePatch::centerOn(glm::vec2 worldCenter) {
 
 glm::vec2 RipplePatch::toGrid(glm::vec2 world) const { return world / m_def.cell_size - glm::vec2(m_originCell); }
 
-// Bilinear sample of a row-major N×M level at grid position g (0 outside).
-static float bilinear(std::span<const float> level, int rows, int cols, glm::vec2 g) {
+// Bilinear sample of a row-major N×M level (float or double) at grid position g (0 outside).
+template <class T>
+static float bilinear(std::span<const T> level, int rows, int cols, glm::vec2 g) {
     float fx = std::floor(g.x), fz = std::floor(g.y);
     int x0 = int(fx), z0 = int(fz);
     if (x0 < 0 || z0 < 0 || x0 + 1 >= cols || z0 + 1 >= rows) return 0.0f;
     float tx = g.x - fx, tz = g.y - fz;
-    const float* r0 = &level[size_t(z0) * size_t(cols) + size_t(x0)];
-    const float* r1 = r0 + cols;
-    return (r0[0] * (1 - tx) + r0[1] * tx) * (1 - tz) + (r1[0] * (1 - tx) + r1[1] * tx) * tz;
+    const T* r0 = &level[size_t(z0) * size_t(cols) + size_t(x0)];
+    const T* r1 = r0 + cols;
+    return float((r0[0] * T(1 - tx) + r0[1] * T(tx)) * T(1 - tz) + (r1[0] * T(1 - tx) + r1[1] * T(tx)) * T(tz));
 }
 
 float RipplePatch::heightAt(glm::vec2 world) const {
-    return bilinear(m_field.current(), m_field.rows(), m_field.cols(), toGrid(world));
+    return bilinear(height(), rows(), cols(), toGrid(world));  // ewave: its float copy of h
 }
 
 float RipplePatch::velocityAt(glm::vec2 world, float dt) const {
     glm::vec2 g = toGrid(world);
+    if (m_ewave) return bilinear<double>(m_ewave->velocityState(), rows(), cols(), g);
     float now = bilinear(m_field.current(), m_field.rows(), m_field.cols(), g);
     float before = bilinear(m_field.previous(), m_field.rows(), m_field.cols(), g);
     return (now - before) / dt;
@@ -86,6 +118,15 @@ bool RipplePatch::stampSphere(const BoundingSphere& sphere, SphereContact& conta
     motion.speed = glm::length(velocity);
     motion.mass = mass;
     motion.surfaceY = surfaceY;
+    if (m_ewave) {
+        RippleStamp stamp;
+        const EWaveField& f = *m_ewave;
+        if (!planStamp(f.rows(), f.cols(), m_def.cell_size, sphere, contact, motion,
+                       [&f](int x, int z) { return f.heightAt(x, z); }, stamp))
+            return false;
+        m_sources.push_back(ewaveSource(stamp, g.x, g.y, m_def.cell_size, velocity.y));
+        return true;
+    }
     if (!m_gpu) return stepSphere(m_field, m_footprints, m_def.cell_size, sphere, contact, motion);
     RippleStamp stamp;
     if (!planSphereStamp(m_field.current(), m_field.rows(), m_field.cols(), m_def.cell_size, sphere, contact, motion, stamp))

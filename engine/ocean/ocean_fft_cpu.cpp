@@ -6,6 +6,7 @@
 #include "core/error.h"
 #include "core/log.h"
 #include "core/parallel.h"
+#include "ocean/fftw_wisdom.h"
 
 #include <barrier>
 #include <cassert>
@@ -35,90 +36,11 @@ constexpr int PARALLEL_MIN_N = 256;
 constexpr unsigned MAX_THREADS = 4;
 constexpr int BLOCK = 16;  // see spectrum.cpp: whole blocks vectorise at -O2
 
-// The FFTW planner (and plan destruction, wisdom I/O) is not thread-safe; fftwf_execute is.
-std::mutex& plannerMutex() {
-    static std::mutex mutex;
-    return mutex;
-}
-
-std::string wisdomPath() {
-    const char* xdg = std::getenv("XDG_CACHE_HOME");
-    if (xdg && *xdg) return std::string(xdg) + "/oceanbox/fftw_wisdom_f";
-    const char* home = std::getenv("HOME");
-    if (home && *home) return std::string(home) + "/.cache/oceanbox/fftw_wisdom_f";
-    return {};
-}
-
-// The wisdom file's inter-process lock (flock on path + ".lock"), held while a process
-// reads the wisdom, plans and writes it back: processes planning at once then agree on one
-// measured plan per size instead of each measuring its own (different plans round
-// differently: see plan()).
-class WisdomLock {
-public:
-    explicit WisdomLock(const std::string& path) {
-        if (path.empty()) return;
-        std::error_code ec;
-        std::filesystem::create_directories(std::filesystem::path(path).parent_path(), ec);
-        m_fd = ::open((path + ".lock").c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-        if (m_fd >= 0 && ::flock(m_fd, LOCK_EX) != 0) {
-            ::close(m_fd);
-            m_fd = -1;
-        }
-    }
-    ~WisdomLock() {
-        if (m_fd < 0) return;
-        ::flock(m_fd, LOCK_UN);
-        ::close(m_fd);
-    }
-    WisdomLock(const WisdomLock&) = delete;
-    WisdomLock& operator=(const WisdomLock&) = delete;
-    bool held() const { return m_fd >= 0; }
-
-private:
-    int m_fd = -1;
-};
-
-// Called with both locks held. Writes a temporary file and renames it, so a reader never
-// sees half a file. Returns false when the cache cannot be written.
-bool exportWisdom(const std::string& path) {
-    std::error_code ec;
-    const std::string tmp = path + ".tmp" + std::to_string(::getpid());
-    if (fftwf_export_wisdom_to_filename(tmp.c_str())) {
-        std::filesystem::rename(tmp, path, ec);
-        if (!ec) return true;
-    }
-    std::filesystem::remove(tmp, ec);
-    return false;
-}
-
-// The one N×N in-place backward plan. Different FFTW plans of the same transform round
-// differently (measured: FFTW_ESTIMATE, _MEASURE and _PATIENT plans of 256² disagree in the
-// last bits), and FFTW_MEASURE picks a plan by timing, so two processes that each measure
-// may get different bits. The plan therefore comes from the shared wisdom file whenever it
-// has one for N; the first process that needs N measures it and writes it there, under the
-// file lock, so every later run on the machine uses the same plan. Without a usable cache
-// the plan is FFTW_ESTIMATE's: chosen without timing, the same in every run, but slower.
+// The one N×N in-place backward plan, from the shared wisdom (see fftw_wisdom.h): different
+// FFTW plans of the same transform round differently (measured: FFTW_ESTIMATE, _MEASURE and
+// _PATIENT plans of 256² disagree in the last bits), so every run must use the same one.
 fftwf_plan plan(int n, fftwf_complex* buffer) {
-    std::lock_guard<std::mutex> lock(plannerMutex());
-    const std::string path = wisdomPath();
-    WisdomLock fileLock(path);
-    if (fileLock.held()) {
-        fftwf_import_wisdom_from_filename(path.c_str());  // a missing or stale file: measure below
-        fftwf_plan p = fftwf_plan_dft_2d(n, n, buffer, buffer, FFTW_BACKWARD, FFTW_MEASURE | FFTW_WISDOM_ONLY);
-        if (p) return p;
-        // FFTW_MEASURE overwrites the buffer, which holds nothing yet.
-        p = fftwf_plan_dft_2d(n, n, buffer, buffer, FFTW_BACKWARD, FFTW_MEASURE);
-        if (!p || exportWisdom(path)) return p;
-        fftwf_destroy_plan(p);
-    }
-    static bool warned = false;
-    if (!warned) {
-        warned = true;
-        logWarn("the FFTW wisdom cache %s cannot be written: using estimated FFT plans (the same in every run, but "
-                "slower); set XDG_CACHE_HOME to a writable folder for measured ones",
-                path.empty() ? "(no HOME or XDG_CACHE_HOME)" : path.c_str());
-    }
-    return fftwf_plan_dft_2d(n, n, buffer, buffer, FFTW_BACKWARD, FFTW_ESTIMATE);
+    return planWithWisdom([&](unsigned flags) { return fftwf_plan_dft_2d(n, n, buffer, buffer, FFTW_BACKWARD, flags); });
 }
 
 // Packed pairs → SoA channels, and J from the three displacement derivatives.
@@ -183,7 +105,7 @@ OceanFftCpu::OceanFftCpu(const OceanDef& def, int threads) {
 }
 
 OceanFftCpu::~OceanFftCpu() {
-    std::lock_guard<std::mutex> lock(plannerMutex());
+    std::lock_guard<std::mutex> lock(fftwPlannerMutex());
     if (m_plan) fftwf_destroy_plan(m_plan);
 }
 

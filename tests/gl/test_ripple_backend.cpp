@@ -15,7 +15,7 @@ TEST_CASE("a sphere dropped into the GPU ripple field rings out exactly as in th
     int errors = gfx::glErrorCount();
     auto run = [&](const char* backend) {
         game::SceneDef scene = game::parseScene(
-            "[ocean]\namplitude = 0.0\n[ripples]\nresolution = 64\ncell_size = 0.1\ndamping = 0.98\nbackend = \"" + std::string(backend) +
+            "[ocean]\namplitude = 0.0\n[ripples]\nmodel = \"kang2008\"\nresolution = 64\ncell_size = 0.1\ndamping = 0.98\nbackend = \"" + std::string(backend) +
                 "\"\n[[objects]]\ntype = \"sphere\"\nposition = [0.3, 1.0, -0.2]\nradius = 0.3\ndensity = 600.0\n",
             "drop.toml");
         game::Sandbox sandbox(scene);

@@ -72,7 +72,7 @@ TEST_CASE("the state hash is the same with 1, 2, 3 and 8 workers (ripple rows an
     // 1024), so every worker count here really splits it; the 256² ocean runs on 2 threads
     // once 2 workers are set. The bodies fall in within the 150 steps and ring the patch.
     WorkerCountGuard guard;
-    game::SceneDef scene = game::loadScene(game::defaultScenePath(), {"ripples.resolution=1024", "ripples.cell_size=0.05"});
+    game::SceneDef scene = game::loadScene(game::defaultScenePath(), {"ripples.model=kang2008", "ripples.resolution=1024", "ripples.cell_size=0.05"});
     std::vector<uint64_t> hashes;
     for (int workers : {1, 2, 3, 8}) {
         setWorkerCount(workers);

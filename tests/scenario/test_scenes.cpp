@@ -18,7 +18,7 @@ using namespace ob;
 namespace {
 
 // The scenes with a test below; the last test checks the folder holds no other.
-const std::set<std::string> SCENES{"default", "spectrum_only", "cannon", "fish", "ship", "all", "fish_swarm"};
+const std::set<std::string> SCENES{"default", "spectrum_only", "cannon", "fish", "ship", "all", "fish_swarm", "drop", "wake"};
 
 struct Run {
     int exitCode = -1;
@@ -64,6 +64,8 @@ TEST_CASE("scene fish.toml: 600 headless frames without error, the same state ha
 TEST_CASE("scene ship.toml: 600 headless frames without error, the same state hash twice", "[scenes]") { checkScene("ship"); }
 TEST_CASE("scene all.toml: 600 headless frames without error, the same state hash twice", "[scenes]") { checkScene("all"); }
 TEST_CASE("scene fish_swarm.toml: 600 headless frames without error, the same state hash twice", "[scenes]") { checkScene("fish_swarm"); }
+TEST_CASE("scene drop.toml: 600 headless frames without error, the same state hash twice", "[scenes]") { checkScene("drop"); }
+TEST_CASE("scene wake.toml: 600 headless frames without error, the same state hash twice", "[scenes]") { checkScene("wake"); }
 
 TEST_CASE("every scene in config/scenes has a determinism test", "[scenes]") {
     std::set<std::string> found;

@@ -23,6 +23,7 @@ amplitude = 0.0
 [gerstner]
 count = 0
 [ripples]
+model = "kang2008"
 resolution = 256
 cell_size = 0.1
 damping = 0.95

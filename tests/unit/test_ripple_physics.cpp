@@ -355,6 +355,7 @@ TEST_CASE("Table 2: a sphere resting on the water stamps every step, however the
 TEST_CASE("dump ripples writes the patch's Vh(t) after K steps as [N, N] float32, and refuses a scene without ripples",
           "[ripple][cli]") {
     ob::game::SceneDef scene;
+    scene.ripples.model = "kang2008";
     scene.ripples.resolution = 32;
     scene.ocean.resolution = 16;
     const std::string out = ob::test::tempPath("ripples.npy");

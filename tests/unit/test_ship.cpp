@@ -54,7 +54,7 @@ struct Wake {
 Wake sail(float speed, float seconds) {
     const std::string text =
         "[ocean]\namplitude = 0.0\n[gerstner]\ncount = 0\n"
-        "[ripples]\nresolution = 256\ncell_size = 0.2\ndamping = 0.96\n"
+        "[ripples]\nmodel = \"kang2008\"\nresolution = 256\ncell_size = 0.2\ndamping = 0.96\n"
         "[[objects]]\ntype = \"ship\"\nposition = [0, 0.1, -20]\ndensity = 450\nspeed = " + std::to_string(speed) +
         "\nvelocity = [0, 0, " + std::to_string(speed) + "]\n";
     game::Sandbox sandbox(game::parseScene(text, "wake.toml"));

@@ -1,0 +1,145 @@
+// Dispersive ripple field ("ewave"): Tessendorf's exponential solver of the iWave equation
+// (iWave 2004, eWave 2014; SPEC §2.5b). Height h and vertical velocity v per cell; each step
+// advances every Fourier mode of the periodic grid exactly by ω(k)² = g·k + (σ/ρ)·k³.
+// Row-major rows×cols floats, row = z, column = x; h in metres, v in m/s.
+#pragma once
+#include "interaction/sphere_stamp.h"
+
+#include <span>
+#include <vector>
+
+struct fftw_plan_s;
+
+namespace ob::interaction {
+
+/// What happens at the edge of an ewave patch.
+enum class EWaveBoundary {
+    Periodic,   ///< the transform's own torus: waves leave one side and come back on the other
+    Fixed,      ///< the outer ring of cells is held at h = v = 0 after each step (waves reflect)
+    Absorbing,  ///< a sponge band damps h and v in real space, so waves do not wrap around
+};
+
+/// The dispersive ripple field: state (h, v) stepped exactly per Fourier mode.
+///
+/// State and transforms in double precision: float FFTs change a mode's energy by about 1e-7
+/// a step (their rounded twiddle factors do not have modulus 1 exactly), 1e-3 over 10,000
+/// steps; double ones keep it to 1e-5 (SPEC §2.5b's energy test). height() is a float copy of
+/// h, made after each step, for the renderer, dumps and the WaterQuery.
+///
+/// Step (dt seconds): forward real-to-complex transforms of h and v (FFTW, each whole on one
+/// worker, so both cores work and the bits do not depend on the split), per mode
+///   ĥ' = d·(ĥ·cos ωΔt + v̂·sin(ωΔt)/ω),  v̂' = d·(−ĥ·ω·sin ωΔt + v̂·cos ωΔt)
+/// (k = 0: ĥ' = d·(ĥ + v̂·Δt), v̂' = d·v̂), the inverse transforms, then the boundary in real
+/// space.
+///
+/// Damping, in physical units and independent of the step size: d = exp(−Δt/τ − 2·ν·k²·Δt),
+/// τ the e-folding time of every wave's amplitude (s; 0 = none) and ν an effective viscosity
+/// (m²/s; 0 = none) that damps short waves more (energy of a mode falls as exp(−2t/τ − 4νk²t)).
+class EWaveField {
+public:
+    /// Gravity, m/s².
+    static constexpr double GRAVITY = 9.81;
+    /// Surface tension over density σ/ρ, m³/s².
+    static constexpr double SURFACE_TENSION = 7.4e-5;
+    /// Friction at the outer edge of the absorbing sponge, 1/s (see the .cpp).
+    static constexpr double SPONGE_MAX_RATE = 6.0;
+
+    /// rows (z) and cols (x) >= 2, cellSize in metres > 0; spongeWidth in cells (Absorbing),
+    /// clamped to half the smaller side. h and v start at 0; no damping until setDamping.
+    EWaveField(int rows, int cols, float cellSize, EWaveBoundary boundary = EWaveBoundary::Periodic,
+               int spongeWidth = 32);
+    ~EWaveField();
+    EWaveField(const EWaveField&) = delete;
+    EWaveField& operator=(const EWaveField&) = delete;
+
+    /// ω(k) = sqrt(g·k + (σ/ρ)·k³), rad/s, for a wavenumber k in rad/m.
+    static double omega(double k);
+
+    /// Sets the damping: decayTime τ in s (0 = none), viscosity ν in m²/s (0 = none).
+    void setDamping(float decayTime, float viscosity);
+    /// Advances h and v by dt seconds (> 0). Allocates nothing once dt has been seen.
+    void step(float dt);
+
+    /// Adds a smooth vertical acceleration source for dt seconds: v += dt·accel·w(r), with the
+    /// biweight w(r) = (1 − r²/R²)² for r < R (smooth at its edge, so it makes no grid noise;
+    /// no square root or cosine per cell) at the exact sub-cell centre (gx, gz) in cells;
+    /// R = radiusCells (>= 1 used). accel in m/s²; cells outside the field are skipped.
+    void addSource(float gx, float gz, float radiusCells, float accel, float dt);
+
+    /// Moves the patch by (dx, dz) whole cells: the value at (x+dx, z+dz) moves to (x, z) in h
+    /// and v, cells with no source become 0, so waves stay put in the world.
+    void scroll(int dx, int dz);
+    /// h = v = 0 everywhere.
+    void clear();
+
+    int rows() const { return m_rows; }
+    int cols() const { return m_cols; }
+    float cellSize() const { return m_cellSize; }
+    EWaveBoundary boundary() const { return m_boundary; }
+    int spongeWidth() const { return m_spongeWidth; }
+    float decayTime() const { return m_decayTime; }
+    float viscosity() const { return m_viscosity; }
+
+    /// The state h, rows·cols values row-major (index z·cols + x), metres. After writing it,
+    /// call syncHeight() (or step) before reading height().
+    std::span<double> heightState() { return {m_h, m_cells}; }
+    std::span<const double> heightState() const { return {m_h, m_cells}; }
+    /// The state v = ∂h/∂t, rows·cols values row-major, m/s.
+    std::span<double> velocityState() { return {m_v, m_cells}; }
+    std::span<const double> velocityState() const { return {m_v, m_cells}; }
+    /// h as floats, row-major, m: a copy made by step(), scroll(), clear() and syncHeight().
+    std::span<const float> height() const { return m_hFloat; }
+    /// Copies the state h into height().
+    void syncHeight();
+    /// h at column x, row z (both in range), m.
+    float heightAt(int x, int z) const { return float(m_h[size_t(z) * size_t(m_cols) + size_t(x)]); }
+    /// v at column x, row z (both in range), m/s.
+    float velocityAt(int x, int z) const { return float(m_v[size_t(z) * size_t(m_cols) + size_t(x)]); }
+
+private:
+    void prepare(float dt);
+    void applyBoundary();
+
+    int m_rows, m_cols, m_specCols;
+    size_t m_cells, m_modes;
+    float m_cellSize;
+    EWaveBoundary m_boundary;
+    int m_spongeWidth = 0;
+    float m_decayTime = 0.0f, m_viscosity = 0.0f;
+    float m_preparedDt = -1.0f;        // dt of the coefficients below (and the sponge factors)
+    double* m_h = nullptr;             // fftw_alloc'd real arrays, rows·cols
+    double* m_v = nullptr;
+    double* m_hSpec = nullptr;         // complex rows × (cols/2 + 1), interleaved (re, im)
+    double* m_vSpec = nullptr;
+    fftw_plan_s* m_forward = nullptr;   // r2c rows × cols, out of place (new-array execute)
+    fftw_plan_s* m_backward = nullptr;  // c2r, out of place (destroys its input)
+    std::vector<float> m_hFloat;        // height()
+    std::vector<double> m_coef;        // per mode: a = d·cos, b = d·sin/ω, c = −d·ω·sin, times 1/(rows·cols)
+    std::vector<float> m_sponge;       // per cell: the factor exp(−γΔt) (Absorbing), 1 away from the band
+};
+
+/// A bounding sphere's stamp as an ewave source: a vertical acceleration `accel` (m/s²) on v
+/// over a biweight bump of radius `radiusCells` centred at grid (gx, gz), for one step.
+struct EWaveSource {
+    float gx = 0.0f, gz = 0.0f;  ///< exact centre, cells (column x, row z)
+    float radiusCells = 0.0f;    ///< R, cells
+    float accel = 0.0f;          ///< m/s² at the centre, + lifts the water
+};
+
+/// How a Table 2 stamp (planStamp: the same decision, SD, SHR, AF, SR as kang2008) enters the
+/// ewave state. Eq. 5 would raise the water at the centre by D = SD·SHR·SR·Δ (PH = SR there);
+/// here the sphere is a moving surface pressure over its footprint, p = −ρ·(g·D + SD·v²/2)·w(r):
+/// the hydrostatic pressure of that displacement plus the stagnation pressure of the sphere's
+/// vertical speed v (a ball entering or leaving the water at speed pushes far harder than
+/// one at rest; a sphere moving level has v = 0). In deep water a pressure patch of radius
+/// R = SR·Δ drives v̂ by −|k|·p̂/ρ with |k| ≈ 1/R, so while the sphere stamps the water's
+/// vertical velocity gains (g·SD·SHR + SD·min(v²/(2R), 15·g))·w(r) per second (the cap keeps a
+/// fast ball's splash a ring, not a jet linear waves cannot carry): a sphere at rest settles
+/// into a dip of about D, a moving one leaves a Kelvin wake, a falling ball rings the water.
+/// Eq. 7's AF scales it by (1 + AF) (clamped at 0): AF > 0 a stronger push, AF < 0 a weaker
+/// one. Eq. 5's base height is not used (a pressure acts on whatever the water does).
+/// (gx, gz): the sphere's exact grid position (not the snapped centre cell), so a moving
+/// source makes no grid noise. verticalVelocity in m/s.
+EWaveSource ewaveSource(const RippleStamp& stamp, float gx, float gz, float cellSize, float verticalVelocity = 0.0f);
+
+} // namespace ob::interaction

@@ -1,0 +1,112 @@
+// Dispersive ripple field benchmarks (SPEC §2.5b): one ewave step per field size and worker
+// count, the same four double-precision FFTW transforms alone (the floor of a step), and
+// 100,000 bounding spheres of SR 20 stamping into ewave (planStamp + the biweight source) to
+// compare with BM_StepSphere's kang2008 stamps.
+#include "core/parallel.h"
+#include "interaction/ewave_field.h"
+#include "interaction/sphere_stamp.h"
+#include "ocean/fftw_wisdom.h"
+
+#include <benchmark/benchmark.h>
+#include <fftw3.h>
+
+#include <random>
+#include <vector>
+
+using namespace ob::interaction;
+
+namespace {
+
+// One step of an N×N absorbing field (0.25 m cells, 60 Hz, the default damping) holding noise.
+// Args: N, workers. Waves decay by 0.5 % a step at most: no refill needed for the run.
+void BM_EWaveStep(benchmark::State& state) {
+    const int n = int(state.range(0));
+    ob::setWorkerCount(int(state.range(1)));
+    EWaveField field(n, n, 0.25f, EWaveBoundary::Absorbing, 32);
+    field.setDamping(3.0f, 1e-3f);
+    std::mt19937 rng(1);
+    std::uniform_real_distribution<double> noise(-0.1, 0.1);
+    for (double& v : field.heightState()) v = noise(rng);
+    for (double& v : field.velocityState()) v = noise(rng);
+    field.step(1.0f / 60.0f);  // coefficients and sponge built outside the timing
+    for (auto _ : state) field.step(1.0f / 60.0f);
+    ob::setWorkerCount(0);
+}
+BENCHMARK(BM_EWaveStep)
+    ->ArgsProduct({{256, 512, 1024}, {1, 2}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+// The step's four transforms alone (r2c of h and v, c2r of both; double, out of place, the
+// shared wisdom's plans), split over the workers as the step splits them. Args: N, workers.
+void BM_EWaveFftwAlone(benchmark::State& state) {
+    const int n = int(state.range(0));
+    ob::setWorkerCount(int(state.range(1)));
+    const size_t cells = size_t(n) * size_t(n), modes = size_t(n) * size_t(n / 2 + 1);
+    double* real[2] = {fftw_alloc_real(cells), fftw_alloc_real(cells)};
+    fftw_complex* spec[2] = {fftw_alloc_complex(modes), fftw_alloc_complex(modes)};
+    fftw_plan fwd = ob::ocean::planWithWisdomDouble([&](unsigned f) { return fftw_plan_dft_r2c_2d(n, n, real[0], spec[0], f); });
+    fftw_plan bwd = ob::ocean::planWithWisdomDouble([&](unsigned f) { return fftw_plan_dft_c2r_2d(n, n, spec[0], real[0], f); });
+    std::mt19937 rng(1);
+    std::uniform_real_distribution<double> noise(-0.1, 0.1);
+    for (double* r : real)
+        for (size_t i = 0; i < cells; ++i) r[i] = noise(rng);
+    for (auto _ : state) {
+        ob::parallelFor(0, 2, 1, [&](int b, int e) {
+            for (int t = b; t < e; ++t) fftw_execute_dft_r2c(fwd, real[t], spec[t]);
+        });
+        ob::parallelFor(0, 2, 1, [&](int b, int e) {
+            for (int t = b; t < e; ++t) fftw_execute_dft_c2r(bwd, spec[t], real[t]);
+        });
+    }
+    {
+        std::lock_guard<std::mutex> lock(ob::ocean::fftwPlannerMutex());
+        fftw_destroy_plan(fwd);
+        fftw_destroy_plan(bwd);
+    }
+    for (int t = 0; t < 2; ++t) {
+        fftw_free(real[t]);
+        fftw_free(spec[t]);
+    }
+    ob::setWorkerCount(0);
+}
+BENCHMARK(BM_EWaveFftwAlone)
+    ->ArgsProduct({{256, 512, 1024}, {1, 2}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+// Spheres stamping a 128² ewave field (cell 0.25 m), every one in contact: Table 2 (planStamp)
+// and the source, as RipplePatch does, for BM_StepSphere's spheres. Args: count, SR (cells).
+void BM_EWaveStamp(benchmark::State& state) {
+    const int count = int(state.range(0));
+    const float sr = float(state.range(1));
+    const int n = 128;
+    const float cell = 0.25f;
+    EWaveField field(n, n, cell, EWaveBoundary::Fixed);
+    BoundingSphere def;
+    def.radius = sr * cell;
+    def.direction = SphereDirection::Down;
+    std::mt19937 rng(7);
+    std::uniform_int_distribution<int> pos(int(sr) + 1, n - int(sr) - 2);
+    std::vector<SphereMotion> motions(static_cast<size_t>(count));
+    for (SphereMotion& m : motions) {
+        m.gridX = float(pos(rng));
+        m.gridZ = float(pos(rng));
+        m.centreY = 0.0f;
+        m.surfaceY = 0.0f;
+    }
+    std::vector<SphereContact> contacts(static_cast<size_t>(count));
+    for (auto _ : state) {
+        for (size_t i = 0; i < motions.size(); ++i) {
+            RippleStamp st;
+            if (planStamp(n, n, cell, def, contacts[i], motions[i], [&](int x, int z) { return field.heightAt(x, z); }, st)) {
+                const EWaveSource s = ewaveSource(st, motions[i].gridX, motions[i].gridZ, cell);
+                field.addSource(s.gx, s.gz, s.radiusCells, s.accel, 1.0f / 60.0f);
+            }
+        }
+        benchmark::DoNotOptimize(field.velocityState().data());
+    }
+}
+BENCHMARK(BM_EWaveStamp)->Args({100000, 20})->Args({1000, 5})->Args({1000, 7})->Unit(benchmark::kMillisecond)->UseRealTime();
+
+} // namespace
