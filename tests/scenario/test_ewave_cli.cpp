@@ -66,7 +66,7 @@ TEST_CASE("ripple CLI, ewave: bad flags exit 2 naming the flag", "[scenario][rip
     }
 }
 
-TEST_CASE("dump ripples writes the ewave height; the drop and wake scenes hash the same twice", "[scenario][ewave]") {
+TEST_CASE("dump ripples writes the ewave height, the drop and wake scenes hash the same twice", "[scenario][ewave]") {
     const std::string out = ob::test::tempPath("ew_dump.npy");
     auto r = ob::test::runOceanbox("dump ripples config/scenes/drop.toml --frames 150 --out " + quoted(out));
     INFO(r.output);

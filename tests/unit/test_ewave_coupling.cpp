@@ -60,7 +60,7 @@ TEST_CASE("ewave coupling: a ship's wake rocks a floating box 15 m beside its tr
     CHECK(on.roll > 5.0 * off.roll + 0.2);
 }
 
-TEST_CASE("ewave coupling: a floating sphere's heave decays (no limit cycle); its damping ratio is reported", "[ewave][coupling]") {
+TEST_CASE("ewave coupling: a floating sphere's heave decays (no limit cycle), its damping ratio is reported", "[ewave][coupling]") {
     // A sphere of radius 0.5 m at half the density of water, released 0.2 m above its floating
     // height on calm water; its own ripples carry energy away (radiation damping).
     auto run = [](bool ripples) {
