@@ -67,6 +67,12 @@ void renderSystem(ecs::World& world, const ecs::Tick& tick) {
         camera.waterHeight = ocean->water->sample(camera.position.x, camera.position.z).height;
     std::vector<gfx::ObjectDraw> draws = objectDraws(world);
     appendFishDraws(world, draws);
+    if (const OceanState* ocean = world.resource<OceanState>(); ocean && ocean->water)
+        for (gfx::ObjectDraw& d : draws) {
+            const water::WaterSample s = ocean->water->sample(d.model[3].x, d.model[3].z);
+            d.waterHeight = s.height;
+            d.waterSlope = -glm::vec2(s.normal.x, s.normal.z) / s.normal.y;
+        }
     res->renderer->render(camera, prepareWaterView(world, tick.time), draws, tick.time, size);
     gfx::PassTimes passes = res->renderer->takePassTimes();
     double gpuMs = 0.0;

@@ -1,31 +1,3 @@
 #version 450 core
-// Objects: a mesh scaled, rotated and placed by its model matrix. The reflection and
-// refraction passes keep the side of the water surface they draw, cut where the surface
-// is (not at its mean level), and the reflection mirrors each vertex about the surface
-// under it, so an object's image meets it at its waterline however the water moves.
-#include "common_frame.glsl"
-#include "common_water.glsl"
-#include "common_surface_height.glsl"
-
-layout(location = 0) in vec3 a_position;
-layout(location = 1) in vec3 a_normal;
-layout(location = 2) in vec3 a_color;
-layout(location = 0) uniform mat4 u_model;
-out vec3 v_world;
-out vec3 v_normal;
-out vec3 v_color;
-
-void main() {
-    vec4 world = u_model * vec4(a_position, 1.0);
-    v_world = world.xyz;
-    v_normal = normalize(mat3(transpose(inverse(u_model))) * a_normal);
-    v_color = a_color;
-    vec3 p = world.xyz;
-    gl_ClipDistance[0] = 1.0;
-    if (u_surfaceClip.x != 0.0) {
-        float h = surfaceHeight(p.xz, u_cameraPositionTime.w);
-        gl_ClipDistance[0] = u_surfaceClip.x * (p.y - h) + u_surfaceClip.y;
-        if (u_surfaceClip.z > 0.5) p.y = 2.0 * h - p.y;
-    }
-    gl_Position = u_viewProjection * vec4(p, 1.0);
-}
+// Objects cut at the surface's tangent plane under them (object_mesh_common.glsl).
+#include "object_mesh_common.glsl"

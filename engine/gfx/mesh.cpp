@@ -3,6 +3,7 @@
 
 #include "assets/model.h"
 
+#include <algorithm>
 #include <cmath>
 #include <glm/glm.hpp>
 #include <utility>
@@ -16,6 +17,7 @@ static Mesh upload(const char* label, const std::vector<glm::vec3>& interleaved,
     m.vertices = createBuffer(label, GLsizeiptr(interleaved.size() * sizeof(glm::vec3)), interleaved.data());
     m.indices = createBuffer(label, GLsizeiptr(indices.size() * sizeof(uint32_t)), indices.data());
     m.indexCount = GLsizei(indices.size());
+    for (size_t i = 0; i < interleaved.size(); i += 3) m.radius = std::max(m.radius, glm::length(interleaved[i]));
     m.vao = createVertexArray(label);
     GLuint vao = m.vao.id();
     glVertexArrayVertexBuffer(vao, 0, m.vertices.id(), 0, 3 * sizeof(glm::vec3));

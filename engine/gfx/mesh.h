@@ -15,6 +15,7 @@ struct Mesh {
     VertexArray vao;
     Buffer vertices, indices;
     GLsizei indexCount = 0;
+    float radius = 0.0f;  ///< bounding radius about the mesh's origin (mesh units)
 };
 
 /// A sphere of radius 1 (latitude/longitude, `rings` × 2·`rings` quads).

@@ -39,6 +39,12 @@ constexpr int DETAIL_MAP_SIZE = 256;
 constexpr float WATER_LEVEL = 0.0f;
 constexpr float REFLECTION_OVERLAP = 0.25f;
 constexpr float REFRACTION_OVERLAP = 0.25f;
+// The water's steepest slope (dh/dx) that the reflection and refraction passes assume when
+// they decide that an object lies wholly on one side of the surface (steeper water breaks).
+constexpr float MAX_SURFACE_SLOPE = 1.0f;
+// Objects within this radius (m: fish, cannonballs) are cut at the surface's tangent plane
+// under their origin, larger ones (ships) at the surface evaluated vertex by vertex.
+constexpr float TANGENT_PLANE_RADIUS = 1.0f;
 const char* const PASS_NAMES[] = {"sky_bake", "reflection", "refraction", "opaque", "water", "sky", "post"};
 // Samples a pixel of the msaa4 targets; the FXAA pass reads its source on this unit.
 constexpr int MSAA_SAMPLES = 4;
@@ -64,6 +70,7 @@ Renderer::Renderer(const RenderDef& def)
       m_skyProgram(loadProgram("sky", {"common_fullscreen.vert", "sky_background.frag"})),
       m_waterProgram(loadProgram("water_surface", {"water_surface.vert", "water_surface.frag"})),
       m_objectProgram(loadProgram("object_mesh", {"object_mesh.vert", "object_mesh.frag"})),
+      m_objectWaterlineProgram(loadProgram("object_mesh_waterline", {"object_mesh_waterline.vert", "object_mesh.frag"})),
       m_fxaaProgram(loadProgram("fxaa", {"common_fullscreen.vert", "post_fxaa.frag"})),
       m_sphereMesh(makeSphereMesh(16)),
       m_boxMesh(makeBoxMesh()),
@@ -316,6 +323,21 @@ const Mesh& Renderer::meshFor(const ObjectDraw& object) {
     return it->second;
 }
 
+static float boundingRadius(const ObjectDraw& o, const Mesh& mesh) {
+    return mesh.radius * std::max({glm::length(glm::vec3(o.model[0])), glm::length(glm::vec3(o.model[1])), glm::length(glm::vec3(o.model[2]))});
+}
+
+// Where an object's bounding sphere lies against the water: the surface within its radius
+// R of the height under its origin h0 stays within h0 ± R·MAX_SURFACE_SLOPE.
+enum class Side { Above, Below, Across };
+static Side sideOfSurface(const ObjectDraw& o, const Mesh& mesh) {
+    const float reach = boundingRadius(o, mesh) * (1.0f + MAX_SURFACE_SLOPE);
+    const float y = o.model[3].y;
+    if (y - reach > o.waterHeight + REFLECTION_OVERLAP) return Side::Above;
+    if (y + reach < o.waterHeight - REFRACTION_OVERLAP) return Side::Below;
+    return Side::Across;
+}
+
 void Renderer::drawObjects(const std::vector<ObjectDraw>& objects, View view) {
     if (objects.empty()) return;
     glBindBufferBase(GL_UNIFORM_BUFFER, FRAME_UBO_BINDING, m_frameUniforms[view].id());
@@ -323,12 +345,21 @@ void Renderer::drawObjects(const std::vector<ObjectDraw>& objects, View view) {
     glDepthFunc(GL_LESS);
     glEnable(GL_CULL_FACE);
     if (view != MAIN_VIEW) glEnable(GL_CLIP_DISTANCE0);
-    glUseProgram(m_objectProgram.id());
     for (const ObjectDraw& o : objects) {
         const Mesh& mesh = meshFor(o);
+        // An object wholly on one side of the surface is skipped by the pass that keeps the
+        // other side. The surface per vertex (the cut's cost on a software rasteriser) is
+        // evaluated only for large objects across it; the others take its tangent plane.
+        const Side side = view == MAIN_VIEW ? Side::Across : sideOfSurface(o, mesh);
+        if ((view == REFLECTION_VIEW && side == Side::Below) || (view == REFRACTION_VIEW && side == Side::Above)) continue;
+        const bool perVertex = side == Side::Across && boundingRadius(o, mesh) > TANGENT_PLANE_RADIUS;
+        const GLuint program = perVertex ? m_objectWaterlineProgram.id() : m_objectProgram.id();
+        const glm::vec3 plane(o.waterHeight, o.waterSlope);
         const glm::vec3 tint = o.modelFile.empty() ? o.color : glm::vec3(1.0f);  // models carry their own colours
-        glProgramUniformMatrix4fv(m_objectProgram.id(), 0, 1, GL_FALSE, &o.model[0][0]);
-        glProgramUniform3fv(m_objectProgram.id(), 1, 1, &tint.x);
+        glUseProgram(program);
+        glProgramUniformMatrix4fv(program, 0, 1, GL_FALSE, &o.model[0][0]);
+        glProgramUniform3fv(program, 1, 1, &tint.x);
+        if (!perVertex) glProgramUniform3fv(program, 2, 1, &plane.x);
         glBindVertexArray(mesh.vao.id());
         glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
     }

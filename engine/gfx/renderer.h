@@ -67,6 +67,8 @@ struct ObjectDraw {
     glm::mat4 model{1.0f};          ///< unit mesh → world (scale, rotation, position)
     glm::vec3 color{0.8f};          ///< base colour (linear RGB)
     std::string modelFile;          ///< glTF file drawn instead of `mesh` ("" = built-in)
+    float waterHeight = 0.0f;       ///< the water surface's height under the object's origin (m)
+    glm::vec2 waterSlope{0.0f};     ///< and its slope there (dh/dx, dh/dz)
 };
 
 /// std140 mirror of `WaterUniforms` in shaders/common_water.glsl.
@@ -136,7 +138,7 @@ private:
     void buildGrid(int resolution);
 
     RenderDef m_def;
-    Program m_skyBakeProgram, m_skyProgram, m_waterProgram, m_objectProgram, m_fxaaProgram;
+    Program m_skyBakeProgram, m_skyProgram, m_waterProgram, m_objectProgram, m_objectWaterlineProgram, m_fxaaProgram;
     Mesh m_sphereMesh, m_boxMesh;
     std::map<std::string, Mesh> m_models;  // glTF meshes by file, loaded on first draw
     VertexArray m_emptyVao;

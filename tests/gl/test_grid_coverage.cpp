@@ -259,7 +259,7 @@ TEST_CASE("the coverage check sees the hole when the grid ignores the FFT's disp
 }
 
 TEST_CASE("the showcase's frame 1680, where a wedge of sky once opened under the camera, is water below the horizon",
-          "[gl][grid][showcase]") {
+          "[gl][grid][showcase][long]") {
     // `oceanbox run config/scenes/default.toml --frames 1680` (one fixed step per frame): the
     // followed ship rides a 4.5 m crest and the camera, 6.5 m above it, looked past the grid's
     // near edge. Every frame's coverage is read, not only the last.

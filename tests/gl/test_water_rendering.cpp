@@ -193,6 +193,45 @@ TEST_CASE("clip planes: above the water only in the reflection, below only in th
     CHECK(gfx::glErrorCount() == errorsBefore);
 }
 
+TEST_CASE("a small object across the surface is cut at the surface's tangent plane under it", "[gl][render]") {
+    // A sphere of 0.9 m (small: cut at the plane its ObjectDraw carries, not per vertex)
+    // centred on the surface, seen level from 6 m. Where the plane rises to +x, more of the
+    // sphere lies under it on that side: the refraction's part leans right, the reflection's
+    // part (above the plane, its mirror image) leans left; the reverse for the opposite slope.
+    const glm::ivec2 size(640, 360);
+    auto platform = platform::createHeadlessPlatform(size);
+    gfx::RenderDef def;
+    def.rtt_scale = 0.5f;
+    gfx::Renderer renderer(def);
+    gfx::CameraView camera;
+    camera.position = glm::vec3(0.0f, 0.0f, 6.0f);
+    camera.view = glm::lookAtRH(camera.position, glm::vec3(0.0f), glm::vec3(0, 1, 0));
+    camera.projection = glm::perspectiveRH_NO(glm::radians(60.0f), 640.0f / 360.0f, 0.1f, 2000.0f);
+    camera.nearM = 0.1f;
+    camera.farM = 2000.0f;
+    const glm::ivec2 targetSize = size / 2;
+    auto centroidShifts = [&](float slope) {
+        gfx::ObjectDraw sphere;
+        sphere.model = glm::scale(glm::mat4(1.0f), glm::vec3(0.9f));
+        sphere.waterSlope = glm::vec2(slope, 0.0f);
+        renderer.render(camera, gfx::WaterView{}, {sphere}, 0.0, size);
+        const float centre = 0.5f * float(targetSize.x);
+        return std::pair{coverage(readTexture(renderer.refractionTarget().color, targetSize), targetSize).centroid.x - centre,
+                         coverage(readTexture(renderer.reflectionTarget().color, targetSize), targetSize).centroid.x - centre};
+    };
+    const auto [level, levelMirror] = centroidShifts(0.0f);
+    const auto [rising, risingMirror] = centroidShifts(0.8f);
+    const auto [falling, fallingMirror] = centroidShifts(-0.8f);
+    INFO("refraction centroid − centre (px): level " << level << ", rising " << rising << ", falling " << falling);
+    INFO("reflection centroid − centre (px): level " << levelMirror << ", rising " << risingMirror << ", falling " << fallingMirror);
+    CHECK(std::abs(level) < 0.5f);
+    CHECK(std::abs(levelMirror) < 0.5f);
+    CHECK(rising > 2.0f);
+    CHECK(falling < -2.0f);
+    CHECK(risingMirror < -2.0f);
+    CHECK(fallingMirror > 2.0f);
+}
+
 TEST_CASE("a 320×180 frame: sky and sea differ, reflections change only the sea, a red ship reddens the water below it", "[gl][render]") {
     gfx::requestDebugOutput(true);
     const glm::ivec2 size(320, 180);

@@ -35,7 +35,7 @@ void checkLowerHalfIsWater(const test::Image& img, const std::string& what) {
 } // namespace
 
 TEST_CASE("every scene opened as play opens it headless: 300 frames without a GL error, water below the horizon",
-          "[scenes][play]") {
+          "[scenes][play][long]") {
     setenv("OCEANBOX_GL_DEBUG", "1", 1);  // GL errors fail the run (exit 1)
     for (const auto& entry : std::filesystem::directory_iterator(std::string(OCEANBOX_SOURCE_DIR) + "/config/scenes")) {
         if (entry.path().extension() != ".toml") continue;

@@ -57,15 +57,15 @@ void checkScene(const std::string& name) {
 
 } // namespace
 
-TEST_CASE("scene default.toml: 600 headless frames without error, the same state hash twice", "[scenes]") { checkScene("default"); }
-TEST_CASE("scene spectrum_only.toml: 600 headless frames without error, the same state hash twice", "[scenes]") { checkScene("spectrum_only"); }
-TEST_CASE("scene cannon.toml: 600 headless frames without error, the same state hash twice", "[scenes]") { checkScene("cannon"); }
-TEST_CASE("scene fish.toml: 600 headless frames without error, the same state hash twice", "[scenes]") { checkScene("fish"); }
-TEST_CASE("scene ship.toml: 600 headless frames without error, the same state hash twice", "[scenes]") { checkScene("ship"); }
-TEST_CASE("scene all.toml: 600 headless frames without error, the same state hash twice", "[scenes]") { checkScene("all"); }
-TEST_CASE("scene fish_swarm.toml: 600 headless frames without error, the same state hash twice", "[scenes]") { checkScene("fish_swarm"); }
-TEST_CASE("scene drop.toml: 600 headless frames without error, the same state hash twice", "[scenes]") { checkScene("drop"); }
-TEST_CASE("scene wake.toml: 600 headless frames without error, the same state hash twice", "[scenes]") { checkScene("wake"); }
+TEST_CASE("scene default.toml: 600 headless frames without error, the same state hash twice", "[scenes][long]") { checkScene("default"); }
+TEST_CASE("scene spectrum_only.toml: 600 headless frames without error, the same state hash twice", "[scenes][long]") { checkScene("spectrum_only"); }
+TEST_CASE("scene cannon.toml: 600 headless frames without error, the same state hash twice", "[scenes][long]") { checkScene("cannon"); }
+TEST_CASE("scene fish.toml: 600 headless frames without error, the same state hash twice", "[scenes][long]") { checkScene("fish"); }
+TEST_CASE("scene ship.toml: 600 headless frames without error, the same state hash twice", "[scenes][long]") { checkScene("ship"); }
+TEST_CASE("scene all.toml: 600 headless frames without error, the same state hash twice", "[scenes][long]") { checkScene("all"); }
+TEST_CASE("scene fish_swarm.toml: 600 headless frames without error, the same state hash twice", "[scenes][long]") { checkScene("fish_swarm"); }
+TEST_CASE("scene drop.toml: 600 headless frames without error, the same state hash twice", "[scenes][long]") { checkScene("drop"); }
+TEST_CASE("scene wake.toml: 600 headless frames without error, the same state hash twice", "[scenes][long]") { checkScene("wake"); }
 
 TEST_CASE("every scene in config/scenes has a determinism test", "[scenes]") {
     std::set<std::string> found;

@@ -99,7 +99,7 @@ Wake runWake(double speed, double seconds, int rows, int cols, double hz, double
 
 } // namespace
 
-TEST_CASE("ewave: a sphere at constant speed leaves a Kelvin wake of 19.47° for U = 2 and 4 m/s", "[ewave][wake]") {
+TEST_CASE("ewave: a sphere at constant speed leaves a Kelvin wake of 19.47° for U = 2 and 4 m/s", "[ewave][wake][long]") {
     const double kelvin = std::asin(1.0 / 3.0) * 180.0 / std::numbers::pi;
     for (double speed : {2.0, 4.0}) {
         // 128 m × 256 m: the wake's 1.5λ .. 130 m behind the sphere, ±46 m to the side.
