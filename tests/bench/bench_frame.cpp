@@ -4,8 +4,8 @@
 #include "core/log.h"
 #include "gfx/gl.h"
 #include "platform/platform.h"
-#include "sandbox.h"
-#include "scene.h"
+#include "world/sandbox.h"
+#include "world/scene.h"
 
 #include <benchmark/benchmark.h>
 

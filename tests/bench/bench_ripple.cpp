@@ -2,7 +2,7 @@
 // worker count, bounding-sphere stamping (Table 2, eq. 3–7) of many spheres in contact, one by
 // one and batched, and the Table 5 fish swarm.
 #include "core/parallel.h"
-#include "fish_swarm.h"
+#include "sim/fish_swarm.h"
 #include "interaction/ripple_field.h"
 #include "interaction/sphere_stamp.h"
 #include "interaction/stamp_batch.h"

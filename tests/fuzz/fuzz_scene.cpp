@@ -4,7 +4,7 @@
 // ob::InputError with a message; anything else (another exception, a crash, a sanitizer
 // report, a hang) is a finding.
 #include "core/error.h"
-#include "scene.h"
+#include "world/scene.h"
 
 #include <cstdint>
 #include <cstdio>

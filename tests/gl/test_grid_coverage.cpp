@@ -11,10 +11,10 @@
 #include "ocean/ocean_textures.h"
 #include "ocean/spectrum.h"
 #include "platform/platform.h"
-#include "camera.h"
+#include "world/camera.h"
 #include "core/clock.h"
-#include "sandbox.h"
-#include "scene.h"
+#include "world/sandbox.h"
+#include "world/scene.h"
 #include "water/composite_water.h"
 
 #include <catch2/catch.hpp>

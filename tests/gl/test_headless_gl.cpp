@@ -3,7 +3,7 @@
 #include "gfx/gl.h"
 #include "gfx/renderer.h"
 #include "platform/platform.h"
-#include "sandbox.h"
+#include "world/sandbox.h"
 #include "support/test_image.h"
 #include "support/test_support.h"
 

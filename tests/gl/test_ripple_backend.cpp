@@ -3,7 +3,7 @@
 #include "gfx/gl.h"
 #include "interaction/ripple_patch.h"
 #include "platform/platform.h"
-#include "sandbox.h"
+#include "world/sandbox.h"
 
 #include <catch2/catch.hpp>
 

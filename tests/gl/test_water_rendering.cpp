@@ -5,7 +5,7 @@
 #include "gfx/renderer.h"
 #include "gfx/shader.h"
 #include "platform/platform.h"
-#include "sandbox.h"
+#include "world/sandbox.h"
 #include "support/test_image.h"
 #include "support/test_support.h"
 

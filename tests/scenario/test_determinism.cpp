@@ -4,9 +4,9 @@
 #include "core/parallel.h"
 #include "interaction/ripple_patch.h"
 #include "ocean/ocean_fft_cpu.h"
-#include "sandbox.h"
+#include "world/sandbox.h"
 #include "support/test_support.h"
-#include "water_systems.h"
+#include "sim/water_systems.h"
 
 #include <algorithm>
 #include <catch2/catch.hpp>

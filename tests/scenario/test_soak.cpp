@@ -1,11 +1,11 @@
 // The soak: its invariants catch what they are meant to (a non-finite cell, a runaway
 // ripple, a sunk body), and a short soak of the default scene passes and reports its figures.
-#include "cmd_soak.h"
+#include "tools/cmd_soak.h"
 #include "core/error.h"
 #include "ecs/components.h"
 #include "interaction/ripple_patch.h"
-#include "objects.h"
-#include "sandbox.h"
+#include "sim/objects.h"
+#include "world/sandbox.h"
 #include "support/test_support.h"
 
 #include <catch2/catch.hpp>

@@ -1,9 +1,9 @@
 // Buoyancy: Archimedes on sphere caps (checked against the cap formula's limits and a
 // numerical integral) and floating equilibria of simulated bodies (draft = density ratio).
 #include "ecs/components.h"
-#include "objects.h"
+#include "sim/objects.h"
 #include "physics/buoyancy.h"
-#include "sandbox.h"
+#include "world/sandbox.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>

@@ -1,12 +1,12 @@
 // The camera the player steers: right drag orbits at a constant radius, the wheel zooms by
 // its stated factor, the fly camera stops above the crests unless the player holds Q against
 // the surface (then it dives), and a follow camera never goes below the water, on a rough sea.
-#include "camera.h"
-#include "controls.h"
+#include "world/camera.h"
+#include "world/controls.h"
 #include "ecs/components.h"
-#include "sandbox.h"
+#include "world/sandbox.h"
 #include "water/composite_water.h"
-#include "water_systems.h"
+#include "sim/water_systems.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>

@@ -1,12 +1,12 @@
 // Cannon and cannonballs (seed 001 §V-1): a ball fired into calm water rings the ripple
 // field; the ring is a circle around the impact, and its front runs at the speed eq. 1–2
 // give long waves: Vh(t+1) − 2Vh(t) + Vh(t−1) ≈ ¾∇²Vh, so c = √3/2 cells per step.
-#include "cannon.h"
+#include "behaviours/cannon.h"
 #include "ecs/components.h"
 #include "interaction/ripple_patch.h"
 #include "interaction/sphere_set.h"
-#include "objects.h"
-#include "sandbox.h"
+#include "sim/objects.h"
+#include "world/sandbox.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>

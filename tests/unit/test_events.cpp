@@ -1,13 +1,13 @@
 // The scene timeline ([[events]]): each action runs in the step nearest its time, in order,
 // and changes what it names.
-#include "camera.h"
-#include "cannon.h"
+#include "world/camera.h"
+#include "behaviours/cannon.h"
 #include "ecs/components.h"
 #include "interaction/ripple_patch.h"
-#include "objects.h"
-#include "sandbox.h"
-#include "script.h"
-#include "ship.h"
+#include "sim/objects.h"
+#include "world/sandbox.h"
+#include "world/script.h"
+#include "behaviours/ship.h"
 
 #include <catch2/catch.hpp>
 

@@ -2,8 +2,8 @@
 // floating box beside its track; a floating body's own ripples damp its heave instead of
 // driving it into a limit cycle. Figures are reported (WARN) beside the checks.
 #include "ecs/components.h"
-#include "objects.h"
-#include "sandbox.h"
+#include "sim/objects.h"
+#include "world/sandbox.h"
 
 #include <catch2/catch.hpp>
 

@@ -1,9 +1,9 @@
 // Jumping fish (seed 001 §V-2): a fish stamps the ripple field only while its sphere crosses
 // the surface (Table 2), pushing the water up on the way out (SD +1) and down on the way
 // back in (SD −1); between jumps it swims at depth and leaves the water alone.
-#include "fish.h"
+#include "behaviours/fish.h"
 #include "interaction/ripple_patch.h"
-#include "sandbox.h"
+#include "world/sandbox.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>

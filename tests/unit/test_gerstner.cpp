@@ -1,7 +1,7 @@
 // Gerstner waves (SPEC §2.2; seed 000 eq. 8, seed 002 §2): circular orbits, the trochoid's
 // sharp crest, dispersion, analytic normals against finite differences of a double-precision
 // reference written from the SPEC, validation of k·a, spectrum-derived waves, the dump.
-#include "cmd_dump_surface.h"
+#include "tools/cmd_dump_surface.h"
 #include "core/error.h"
 #include "core/npy.h"
 #include "core/toml_reader.h"

@@ -1,6 +1,6 @@
 // Spectral ocean, FFT side: the CPU maps against a direct DFT of eq. 1 in double, single-mode
 // waves against their closed forms (eq. 3, 6, 7), Parseval, the foam Jacobian, the dump.
-#include "cmd_dump_ocean.h"
+#include "tools/cmd_dump_ocean.h"
 #include "core/npy.h"
 #include "ocean/ocean_fft_cpu.h"
 #include "support/test_support.h"

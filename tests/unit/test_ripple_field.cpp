@@ -1,6 +1,6 @@
 // Ripple field, seed 001 eq. 1–2: the kernel by hand, a naive double reference, boundaries,
 // scrolling, the worker pool, and the `ripple` command on files.
-#include "cmd_ripple.h"
+#include "tools/cmd_ripple.h"
 #include "core/error.h"
 #include "core/npy.h"
 #include "core/parallel.h"

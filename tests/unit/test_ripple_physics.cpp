@@ -2,13 +2,13 @@
 // tests of test_ripple_field.cpp and test_sphere_stamp.cpp: isotropy and speed of a drop's
 // ring, energy over long runs, what AF does to a splash, how much the sponge reflects, and
 // when a moving sphere stamps; and `dump ripples`.
-#include "cmd_dump_ripples.h"
+#include "tools/cmd_dump_ripples.h"
 #include "core/error.h"
 #include "core/npy.h"
 #include "interaction/ripple_field.h"
 #include "interaction/ripple_patch.h"
 #include "interaction/sphere_stamp.h"
-#include "sandbox.h"
+#include "world/sandbox.h"
 #include "support/test_support.h"
 
 #include <catch2/catch.hpp>

@@ -2,7 +2,7 @@
 // every class of bad input, all errors of a file at once.
 #include "core/error.h"
 #include "core/toml_reader.h"
-#include "scene.h"
+#include "world/scene.h"
 #include "support/test_support.h"
 
 #include <catch2/catch.hpp>

@@ -1,7 +1,7 @@
 // Scene objects' model paths: resolved next to the scene first, then in the current folder,
 // then in the source tree; stored back absolute; a bad file is one error at its key.
 #include "core/error.h"
-#include "scene.h"
+#include "world/scene.h"
 #include "support/test_support.h"
 
 #include <catch2/catch.hpp>

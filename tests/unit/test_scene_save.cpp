@@ -1,7 +1,7 @@
 // Saving a scene (the UI's "save scene as"): the TOML written through describe() reads back
 // as the same scene, and holds only what differs from the defaults.
 #include "core/toml_writer.h"
-#include "scene.h"
+#include "world/scene.h"
 
 #include <catch2/catch.hpp>
 #include <filesystem>

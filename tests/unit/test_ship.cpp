@@ -3,10 +3,10 @@
 // times faster a longer wake.
 #include "ecs/components.h"
 #include "interaction/ripple_patch.h"
-#include "objects.h"
-#include "sandbox.h"
+#include "sim/objects.h"
+#include "world/sandbox.h"
 #include "platform/platform.h"
-#include "ship.h"
+#include "behaviours/ship.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>

@@ -2,10 +2,10 @@
 // scenes throw drops that land, foam appears behind the ship, none of it without the sections,
 // and the state hash covers it (same scene, same hash).
 #include "foam/foam_map.h"
-#include "sandbox.h"
-#include "scene.h"
+#include "world/sandbox.h"
+#include "world/scene.h"
 #include "splash/splash_particles.h"
-#include "splash_foam_system.h"
+#include "sim/splash_foam_system.h"
 
 #include <catch2/catch.hpp>
 

@@ -2,7 +2,7 @@
 // in row bands on any number of workers, leaves the field bit for bit as stampFootprint for
 // each stamp in order; reads between pushes see what the sequential stamps would have written.
 #include "core/parallel.h"
-#include "fish_swarm.h"
+#include "sim/fish_swarm.h"
 #include "interaction/ripple_field.h"
 #include "interaction/sphere_stamp.h"
 #include "interaction/stamp_batch.h"

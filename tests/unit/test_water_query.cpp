@@ -2,7 +2,7 @@
 // Gerstner-only sea (against a double reference of SPEC §2.2), an FFT-only sea (displaced grid
 // points X + λD(X) return h(X)), both together; vertical velocity against finite differences
 // in time; the ripple hook; batch = single; the `dump surface` file contract.
-#include "cmd_dump_surface.h"
+#include "tools/cmd_dump_surface.h"
 #include "core/error.h"
 #include "core/npy.h"
 #include "ocean/ocean_fft_cpu.h"

@@ -1,0 +1,129 @@
+// Cannon behaviour: aiming, firing (a Bullet sphere per shot), removing sunk balls.
+#include "behaviours/cannon.h"
+
+#include "ecs/components.h"
+#include "interaction/sphere_set.h"
+#include "world/controls.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/gtc/quaternion.hpp>
+
+namespace ob::game {
+
+namespace {
+
+constexpr float AIM_RATE_DEG_S = 30.0f;                // arrow keys turn the barrel this fast
+constexpr glm::vec3 BALL_COLOR{0.05f, 0.05f, 0.06f};   // iron
+constexpr glm::vec3 PILLAR_COLOR{0.35f, 0.33f, 0.30f}; // stone
+
+// The paper's cannonball sphere (seed 001 §V-1): SR 5 cells, SHR 1.0, AF 0; it falls in,
+// so it pushes the water down.
+interaction::BoundingSphere paperBallSphere(float cellSize) {
+    interaction::BoundingSphere s;
+    s.radius = 5.0f * cellSize;
+    s.direction = interaction::SphereDirection::Down;
+    s.heightRatio = 1.0f;
+    s.accelerationFactor = 0.0f;
+    return s;
+}
+
+glm::quat aimRotation(float yawDeg, float elevationDeg) {
+    return glm::angleAxis(glm::radians(yawDeg), glm::vec3(0, 1, 0)) *
+           glm::angleAxis(-glm::radians(elevationDeg), glm::vec3(1, 0, 0));  // +z tilts up
+}
+
+void fire(ecs::World& world, Cannon& cannon, glm::vec3 pivot) {
+    auto& physicsWorld = *world.resource<physics::PhysicsWorld>();
+    const glm::vec3 aim = cannonAim(cannon.yawDeg, cannon.elevationDeg);
+    const float r = cannon.ballRadius;
+    const float volume = 4.0f / 3.0f * float(M_PI) * r * r * r;
+    const float mass = cannon.ballDensity * volume;
+    physics::BodyState start;
+    start.position = pivot + aim * CANNON_BARREL;
+    start.linearVelocity = aim * cannon.muzzleSpeed;
+    physics::BodyId id = physicsWorld.addSphere(r, mass, start);
+    ecs::Entity ball = spawnBody(world, "cannonball", "", id, {Probe{glm::vec3(0.0f), r}}, volume, mass, start,
+                                 Renderable{gfx::MeshKind::Sphere, glm::vec3(r), BALL_COLOR, ""});
+    world.add<interaction::SphereSet>(ball, {{cannon.ballSphere}, {}});
+    world.add<Cannonball>(ball, {cannon.sinkDepth});
+    ++cannon.shots;
+}
+
+} // namespace
+
+glm::vec3 cannonAim(float yawDeg, float elevationDeg) {
+    const float yaw = glm::radians(yawDeg), elevation = glm::radians(elevationDeg);
+    return {std::sin(yaw) * std::cos(elevation), std::sin(elevation), std::cos(yaw) * std::cos(elevation)};
+}
+
+ecs::Entity spawnCannon(ecs::World& world, const ObjectDef& o) {
+    // The pillar it stands on: from below the waves up to the pivot (drawn only).
+    const float bottom = -6.0f, top = o.position.y - 0.4f;
+    if (top > bottom) {
+        ecs::Entity pillar = world.create();
+        world.add<ecs::Transform>(pillar, {glm::vec3(o.position.x, 0.5f * (bottom + top), o.position.z)});
+        world.add<Renderable>(pillar, {gfx::MeshKind::Box, glm::vec3(0.8f, 0.5f * (top - bottom), 0.8f), PILLAR_COLOR, ""});
+    }
+    ecs::Entity e = world.create();
+    world.add<ecs::Transform>(e, {o.position, aimRotation(o.yaw_deg, o.elevation_deg)});
+    // A model is in metres with its pivot at the origin; the built-in box is the barrel.
+    const glm::vec3 scale = o.model.empty() ? glm::vec3(0.22f, 0.22f, 0.5f * CANNON_BARREL) : glm::vec3(1.0f);
+    world.add<Renderable>(e, {gfx::MeshKind::Box, scale, o.color, o.model});
+    world.add<ObjectTag>(e, {"cannon", o.name});
+    Cannon cannon;
+    cannon.player = o.player;
+    cannon.yawDeg = o.yaw_deg;
+    cannon.elevationDeg = o.elevation_deg;
+    cannon.muzzleSpeed = o.muzzle_speed;
+    cannon.rate = o.rate;
+    cannon.ballRadius = o.ball_radius;
+    cannon.ballDensity = o.ball_density;
+    cannon.sinkDepth = o.sink_depth;
+    const float cell = rippleCellSize(world);
+    cannon.ballSphere = boundingSphereFor(o, paperBallSphere(cell), cell);
+    world.add<Cannon>(e, cannon);
+    return e;
+}
+
+void cannonSystem(ecs::World& world, const ecs::Tick& tick) {
+    // --- sunk balls leave the world
+    auto& balls = world.pool<Cannonball>();
+    std::vector<ecs::Entity> sunk;
+    for (size_t i = 0; i < balls.size(); ++i) {
+        const ecs::Transform* t = world.find<ecs::Transform>(balls.entities()[i]);
+        if (t && t->position.y < -balls.components()[i].sinkDepth) sunk.push_back(balls.entities()[i]);
+    }
+    for (ecs::Entity e : sunk) destroyBody(world, e);
+
+    // --- aim and fire
+    const auto* input = world.resource<StepInput>();
+    const float dt = float(tick.dt);
+    auto& cannons = world.pool<Cannon>();
+    for (size_t i = 0; i < cannons.size(); ++i) {
+        const ecs::Entity e = cannons.entities()[i];
+        if (cannons.components()[i].player && input) {
+            Cannon& c = cannons.components()[i];
+            using platform::Key;
+            c.yawDeg += AIM_RATE_DEG_S * dt * float(input->isDown(Key::Left) - input->isDown(Key::Right));
+            c.elevationDeg = std::clamp(c.elevationDeg + AIM_RATE_DEG_S * dt * float(input->isDown(Key::Up) - input->isDown(Key::Down)),
+                                        -10.0f, 89.0f);
+            c.fireRequested = c.fireRequested || input->wasPressed(Key::Space) || input->wasClicked(platform::MouseButton::Left);
+        }
+        Cannon& c = cannons.components()[i];
+        ecs::Transform& pivot = world.get<ecs::Transform>(e);
+        pivot.rotation = aimRotation(c.yawDeg, c.elevationDeg);
+        bool shoot = c.fireRequested;
+        c.fireRequested = false;
+        if (c.rate > 0.0f) {
+            c.cooldown -= tick.dt;
+            if (c.cooldown <= 0.0) {
+                shoot = true;
+                c.cooldown += 1.0 / double(c.rate);
+            }
+        }
+        if (shoot) fire(world, c, pivot.position);  // adds a ball: Transform references die here
+    }
+}
+
+} // namespace ob::game

@@ -1,0 +1,42 @@
+// Cannons and cannonballs (seed 001 §V-1): a cannon aims (yaw, elevation) and fires Bullet
+// spheres; each ball carries the paper's bounding sphere (SR 5 cells, SHR 1, AF 0), splashes,
+// sinks, and is removed below its cannon's sink depth.
+#pragma once
+#include "ecs/schedule.h"
+#include "interaction/sphere_stamp.h"
+#include "sim/objects.h"
+
+namespace ob::game {
+
+/// A cannon's behaviour state (its entity's Transform is the barrel's pivot and aim).
+struct Cannon {
+    bool player = false;          ///< aimed with the arrow keys, fired with Space or a left click
+    float yawDeg = 0.0f;          ///< aim azimuth, deg about +y, 0 faces +z
+    float elevationDeg = 30.0f;   ///< barrel above the horizon, deg
+    float muzzleSpeed = 25.0f;    ///< m/s
+    float rate = 0.0f;            ///< automatic shots per second (0: none)
+    float ballRadius = 0.25f;     ///< m
+    float ballDensity = 7800.0f;  ///< kg/m³
+    float sinkDepth = 15.0f;      ///< balls below −sinkDepth (m) are removed
+    interaction::BoundingSphere ballSphere;  ///< every ball's bounding sphere
+    double cooldown = 0.0;        ///< s until the next automatic shot
+    bool fireRequested = false;   ///< fire this step (events, keys)
+    int shots = 0;                ///< balls fired so far
+};
+
+/// Marks a cannonball entity (a Body with a SphereSet).
+struct Cannonball {
+    float sinkDepth = 15.0f;  ///< removed below −sinkDepth, m
+};
+
+/// Length of a cannon's barrel (m): balls leave from the pivot plus this along the aim.
+constexpr float CANNON_BARREL = 2.0f;
+
+/// Creates a cannon (and its pillar) from its [[objects]] entry (type "cannon").
+ecs::Entity spawnCannon(ecs::World& world, const ObjectDef& def);
+/// Unit aim direction for an azimuth and elevation (deg).
+glm::vec3 cannonAim(float yawDeg, float elevationDeg);
+/// Script phase: sunk balls are removed, cannons aim (player), then fire when asked or due.
+void cannonSystem(ecs::World& world, const ecs::Tick& tick);
+
+} // namespace ob::game

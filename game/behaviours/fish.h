@@ -1,0 +1,60 @@
+// Fish schools (seed 001 §V-2): kinematic fish that swim below the surface and jump on
+// ballistic arcs; one bounding sphere each, smaller than the body, SD +1 rising and −1
+// falling, SHR 1.4, AF −0.3. A school is one entity with its fish in flat arrays, so a
+// swarm of 100,000 costs a few arrays and only the fish near the surface query the water.
+#pragma once
+#include "ecs/schedule.h"
+#include "interaction/sphere_stamp.h"
+#include "sim/objects.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace ob::game {
+
+/// A school's settings and its fish (structure of arrays, index = fish).
+struct FishSchool {
+    // --- settings
+    bool region = false;          ///< false: on a circle of `radius`; true: inside a rectangle of `halfSize`
+    glm::vec2 centre{0.0f};       ///< world [x, z] of the circle or region centre, m
+    float radius = 10.0f;         ///< circle radius, m
+    glm::vec2 halfSize{10.0f};    ///< region half extents [x, z], m
+    float speed = 3.0f;           ///< swimming speed, m/s
+    float depth = 1.5f;           ///< swimming depth below the mean surface, m
+    float jumpHeight = 1.0f;      ///< apex above the mean surface, m
+    float jumpInterval = 3.0f;    ///< mean time between one fish's jumps, s
+    float length = 0.6f;          ///< body length, m
+    bool draw = true;             ///< drawn by the opaque pass
+    glm::vec3 color{0.6f};        ///< body colour
+    std::string model;            ///< glTF fish (1 m long, nose +z), scaled by length; "" = built-in ellipsoid
+    interaction::BoundingSphere sphere;  ///< every fish's bounding sphere
+    uint64_t rng = 1;             ///< state of the school's random sequence (jump timing)
+    // --- per fish
+    std::vector<glm::vec3> position;   ///< world centre, m
+    std::vector<glm::vec3> velocity;   ///< m/s
+    std::vector<float> lane;           ///< circle: radius of its lane, m; region: heading, rad
+    std::vector<float> angle;          ///< circle: angle on its lane, rad
+    std::vector<float> timer;          ///< swimming: s until the jump; jumping: s since it started
+    std::vector<uint8_t> jumping;      ///< 1 while on a ballistic arc
+    std::vector<interaction::SphereContact> contacts;  ///< Table 2 state per fish
+    std::vector<uint8_t> stamped;      ///< 1 if the fish stamped the ripple field this step
+    uint64_t jumps = 0;                ///< jumps started so far
+    uint64_t stamps = 0;               ///< stamps so far
+    size_t size() const { return position.size(); }
+};
+
+/// Fish drawn per school at most (the rest still swim and stamp).
+constexpr size_t MAX_DRAWN_FISH = 4096;
+
+/// Creates a school from its [[objects]] entry (type "fish_school"); `seed` feeds its jumps.
+ecs::Entity spawnFishSchool(ecs::World& world, const ObjectDef& def, uint64_t seed);
+/// Script phase: every fish swims or flies its arc one step.
+void fishSystem(ecs::World& world, const ecs::Tick& tick);
+/// Interaction phase, before the ripple step: the fish near the surface stamp the ripple
+/// patch by Table 2 (fish in school order).
+void fishStampSystem(ecs::World& world, const ecs::Tick& tick);
+/// Appends the fish to draw (facing their velocity) to the opaque pass's list.
+void appendFishDraws(ecs::World& world, std::vector<gfx::ObjectDraw>& draws);
+
+} // namespace ob::game

@@ -1,0 +1,167 @@
+// Ship behaviour and hull model. The probes carry the ship (Archimedes and vertical drag);
+// this file adds what a hull has and a lattice of spheres has not: low resistance along the
+// keel, high across it, and thrust and a rudder at the stern.
+#include "behaviours/ship.h"
+
+#include "ecs/components.h"
+#include "interaction/sphere_set.h"
+#include "world/controls.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/gtc/quaternion.hpp>
+
+namespace ob::game {
+
+namespace {
+
+constexpr float COAST_TIME = 4.0f;     // s: at top speed, resistance decelerates by speed / COAST_TIME
+constexpr float SPEED_TIME = 2.0f;     // s: the engine closes a speed error at this rate
+constexpr float SLIP_TIME = 0.4f;      // s: sideways slip decays at this rate (the keel)
+constexpr float YAW_TIME = 0.5f;       // s: the rudder closes a yaw-rate error at this rate
+constexpr float ROLL_TIME = 1.0f;      // s: bilge keels damp the roll rate at this rate (damping ratio ≈ 0.25
+                                       // at the hull's ≈ 3 s natural roll period, as bilge keels give)
+constexpr float MAX_TURN = 0.21f;      // rad/s at full rudder and full speed (≈ 3 hull lengths radius at 6 m/s)
+constexpr float ARRIVE_RADIUS = 5.0f;  // m: a waypoint this close counts as reached
+constexpr float HEADING_GAIN = 1.0f;   // 1/s: yaw rate asked per radian of heading error
+constexpr float THROTTLE_RATE = 0.5f;  // lever travel per second while W or S is held
+constexpr glm::ivec3 PROBES{5, 3, 9};  // probe lattice across, up, along the hull
+
+// Angle in (−π, π].
+float wrapAngle(float a) {
+    while (a > float(M_PI)) a -= 2.0f * float(M_PI);
+    while (a <= -float(M_PI)) a += 2.0f * float(M_PI);
+    return a;
+}
+
+// The paper's ship sphere (seed 001 §V-3): SR 7 cells, SHR 0.2, AF 0.3; it presses down.
+interaction::BoundingSphere paperShipSphere(float cellSize) {
+    interaction::BoundingSphere s;
+    s.radius = 7.0f * cellSize;
+    s.direction = interaction::SphereDirection::Down;
+    s.heightRatio = 0.2f;
+    s.accelerationFactor = 0.3f;
+    return s;
+}
+
+} // namespace
+
+ecs::Entity spawnShip(ecs::World& world, const ObjectDef& o) {
+    auto& physicsWorld = *world.resource<physics::PhysicsWorld>();
+    const float volume = SHIP_HULL.x * SHIP_HULL.y * SHIP_HULL.z;
+    const float mass = o.density * volume;
+    physics::BodyState start;
+    start.position = o.position;
+    start.rotation = glm::angleAxis(glm::radians(o.yaw_deg), glm::vec3(0, 1, 0));
+    start.linearVelocity = o.velocity;
+    physics::BodyId id = physicsWorld.addBox(SHIP_HULL * 0.5f, mass, start);
+    // A model is in metres (the hull box is its hull); the built-in unit box is scaled to the hull.
+    Renderable look{gfx::MeshKind::Box, o.model.empty() ? SHIP_HULL * 0.5f : glm::vec3(1.0f), o.color, o.model};
+    ecs::Entity e = spawnBody(world, "ship", o.name, id, latticeProbes(SHIP_HULL, PROBES), volume, mass, start, look);
+    world.get<Body>(e).horizontalDrag = 0.0f;  // the hull model below resists horizontal motion
+
+    // Six spheres on the keel line at the still-water line (draft = hull depth · density ratio),
+    // so they always cross the surface (seed 001: "always in contact").
+    const auto* water = world.resource<physics::PhysicsDef>();
+    const float draft = SHIP_HULL.y * std::min(o.density / (water ? water->water_density : 1025.0f), 1.0f);
+    interaction::BoundingSphere sphere = boundingSphereFor(o, paperShipSphere(rippleCellSize(world)), rippleCellSize(world));
+    interaction::SphereSet set;
+    for (int k = 0; k < SHIP_SPHERES; ++k) {
+        sphere.offset = glm::vec3(0.0f, draft - 0.5f * SHIP_HULL.y, (float(k) + 0.5f) * SHIP_HULL.z / SHIP_SPHERES - 0.5f * SHIP_HULL.z);
+        set.spheres.push_back(sphere);
+    }
+    world.add<interaction::SphereSet>(e, std::move(set));
+
+    Ship ship;
+    ship.player = o.player;
+    ship.speed = o.speed;
+    ship.waypoints = o.waypoints;
+    world.add<Ship>(e, std::move(ship));
+    return e;
+}
+
+void shipSystem(ecs::World& world, const ecs::Tick& tick) {
+    auto& ships = world.pool<Ship>();
+    const auto* input = world.resource<StepInput>();
+    const float dt = float(tick.dt);
+    for (size_t i = 0; i < ships.size(); ++i) {
+        Ship& ship = ships.components()[i];
+        const ecs::Entity e = ships.entities()[i];
+        const ecs::Transform& t = world.get<ecs::Transform>(e);
+        const ecs::Motion& motion = world.get<ecs::Motion>(e);
+        Body& body = world.get<Body>(e);
+
+        // Horizontal frame of the hull: bow and starboard (right) on the water plane.
+        glm::vec3 bow = t.rotation * glm::vec3(0, 0, 1);
+        bow.y = 0.0f;
+        if (glm::dot(bow, bow) < 1e-6f) continue;  // standing on its end: no steering
+        bow = glm::normalize(bow);
+        const glm::vec3 starboard = glm::cross(bow, glm::vec3(0, 1, 0));
+        const float heading = std::atan2(bow.x, bow.z);
+        const float forward = glm::dot(motion.velocity, bow);
+        const float sideways = glm::dot(motion.velocity, starboard);
+        const float top = std::max(ship.speed, 0.5f);
+
+        // --- pilot: throttle and rudder
+        float targetSpeed = ship.speed;
+        if (ship.player) {
+            if (input && !input->keysMoveCamera) {
+                using platform::Key;
+                const int lever = int(input->isDown(Key::W)) - int(input->isDown(Key::S));
+                ship.throttle += THROTTLE_RATE * dt * float(lever);
+                if (lever == 0 && std::abs(ship.throttle) < 0.03f) ship.throttle = 0.0f;  // the lever's notch at stop
+                ship.rudder = float(input->isDown(Key::D) - input->isDown(Key::A));
+            }
+            ship.throttle = std::clamp(ship.throttle, -0.5f, 1.0f);
+            targetSpeed = ship.throttle * ship.speed;
+        } else if (!ship.waypoints.empty()) {
+            glm::vec2 to = ship.waypoints[ship.nextWaypoint] - glm::vec2(t.position.x, t.position.z);
+            if (glm::dot(to, to) < ARRIVE_RADIUS * ARRIVE_RADIUS) {
+                ship.nextWaypoint = (ship.nextWaypoint + 1) % ship.waypoints.size();
+                to = ship.waypoints[ship.nextWaypoint] - glm::vec2(t.position.x, t.position.z);
+            }
+            const float error = wrapAngle(std::atan2(to.x, to.y) - heading);  // + : turn toward +yaw (port)
+            ship.rudder = std::clamp(-HEADING_GAIN * error / MAX_TURN, -1.0f, 1.0f);
+        } else {
+            ship.rudder = 0.0f;
+        }
+
+        // --- hull model, scaled by how much of the hull is in the water
+        const float wet = std::clamp(body.submergedFraction / 0.2f, 0.0f, 1.0f);
+        if (wet <= 0.0f) continue;
+        const float mass = motion.mass;
+        const glm::vec3 stern = t.position + t.rotation * glm::vec3(0.0f, -0.25f * SHIP_HULL.y, -0.5f * SHIP_HULL.z);
+        // Forward resistance m·u|u|/(top·COAST_TIME); the engine feeds that forward at the
+        // target speed and closes the error in SPEED_TIME.
+        const float resistance = mass * forward * std::abs(forward) / (top * COAST_TIME);
+        const float maxThrust = mass * top / COAST_TIME;
+        // The player's lever at zero idles the engine (the ship coasts); a scripted ship at
+        // speed 0 holds its place (the paper's ship at rest).
+        const bool idle = ship.player && ship.throttle == 0.0f;
+        const float thrust = idle ? 0.0f
+                                  : std::clamp(mass * targetSpeed * std::abs(targetSpeed) / (top * COAST_TIME) +
+                                                   mass * (targetSpeed - forward) / SPEED_TIME,
+                                               -0.5f * maxThrust, 1.5f * maxThrust);
+        body.forces.push_back({bow * (thrust * wet), stern});
+        body.forces.push_back({-bow * (resistance * wet), t.position});
+        // The keel: sideways slip decays in SLIP_TIME.
+        body.forces.push_back({-starboard * (mass * sideways / SLIP_TIME * wet), t.position});
+        // The rudder: a sideways force at the stern whose moment brings the yaw rate to the
+        // rudder's (which needs water flowing past it: it fades below half the top speed).
+        const float yawInertia = mass * (SHIP_HULL.z * SHIP_HULL.z + SHIP_HULL.x * SHIP_HULL.x) / 12.0f;
+        const float wantedYawRate = -ship.rudder * MAX_TURN * std::clamp(forward / (0.5f * top), -1.0f, 1.0f);
+        const float moment = yawInertia * (wantedYawRate - body.angularVelocity.y) / YAW_TIME;
+        // A force F·(bow × up) at the stern (arm L/2 behind the centre) turns about +y by F·L/2.
+        body.forces.push_back({glm::cross(bow, glm::vec3(0, 1, 0)) * (moment / (0.5f * SHIP_HULL.z) * wet), stern});
+        // Bilge keels: a couple about the hull's long axis against the roll rate (vertical
+        // forces ±F at the two sides, F·beam = moment).
+        const glm::vec3 keel = t.rotation * glm::vec3(0, 0, 1), side = t.rotation * glm::vec3(1, 0, 0), deck = t.rotation * glm::vec3(0, 1, 0);
+        const float rollInertia = mass * (SHIP_HULL.x * SHIP_HULL.x + SHIP_HULL.y * SHIP_HULL.y) / 12.0f;
+        const float rollMoment = -rollInertia * glm::dot(body.angularVelocity, keel) / ROLL_TIME * wet;
+        const glm::vec3 couple = deck * (rollMoment / SHIP_HULL.x);
+        body.forces.push_back({couple, t.position + side * (0.5f * SHIP_HULL.x)});
+        body.forces.push_back({-couple, t.position - side * (0.5f * SHIP_HULL.x)});
+    }
+}
+
+} // namespace ob::game

@@ -1,0 +1,36 @@
+// Ships: buoyant box hulls steered by thrust and a rudder at the stern, by the player
+// (W/S throttle, A/D rudder) or along waypoints; six bounding spheres along the keel line
+// make the wake (seed 001 §V-3: SR 7, SHR 0.2, AF 0.3).
+#pragma once
+#include "ecs/schedule.h"
+#include "sim/objects.h"
+
+#include <glm/vec3.hpp>
+#include <vector>
+
+namespace ob::game {
+
+/// The hull every ship has (m): beam x, depth y, length z; bow at local +z (the ship model
+/// made for it fits x∈[−1.5, 1.5], y∈[−0.75, 0.75], z∈[−5, 5]).
+constexpr glm::vec3 SHIP_HULL{3.0f, 1.5f, 10.0f};
+/// Bounding spheres along the hull (seed 001 fig. 15).
+constexpr int SHIP_SPHERES = 6;
+
+/// A ship's behaviour state.
+struct Ship {
+    bool player = false;               ///< steered from the input state
+    float speed = 5.0f;                ///< cruise (scripted) or top (player) speed, m/s
+    std::vector<glm::vec2> waypoints;  ///< [x, z] in visiting order, looping; empty: hold the heading
+    size_t nextWaypoint = 0;           ///< index of the waypoint steered to
+    float throttle = 0.0f;             ///< player's lever: target speed = throttle · speed, [−0.5, 1]
+    float rudder = 0.0f;               ///< [−1, 1], + turns to starboard (right)
+};
+
+/// Creates a ship from its [[objects]] entry (type "ship").
+ecs::Entity spawnShip(ecs::World& world, const ObjectDef& def);
+/// Script phase: the player's keys or the waypoint pilot set throttle and rudder; the hull
+/// model turns them into forces for the physics step (thrust and rudder force at the stern,
+/// forward and lateral hull resistance).
+void shipSystem(ecs::World& world, const ecs::Tick& tick);
+
+} // namespace ob::game

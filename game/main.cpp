@@ -1,4 +1,0 @@
-// oceanbox entry point.
-#include "cli.h"
-
-int main(int argc, char** argv) { return ob::game::runCli(argc, argv); }

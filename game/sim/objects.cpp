@@ -1,0 +1,222 @@
+// Floating bodies: spawning, water forces (Archimedes + drag per probe), Bullet stepping.
+#include "sim/objects.h"
+
+#include "behaviours/cannon.h"
+#include "behaviours/fish.h"
+#include "behaviours/ship.h"
+#include "ecs/components.h"
+#include "interaction/ripple_def.h"
+#include "interaction/ripple_patch.h"
+#include "interaction/sphere_set.h"
+#include "water/composite_water.h"
+#include "sim/water_systems.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace ob::game {
+
+std::vector<Probe> latticeProbes(glm::vec3 size, glm::ivec3 counts) {
+    const int n = counts.x * counts.y * counts.z;
+    const float volume = size.x * size.y * size.z;
+    const float r = std::cbrt(volume / (float(n) * 4.0f / 3.0f * float(M_PI)));
+    std::vector<Probe> probes;
+    probes.reserve(size_t(n));
+    const glm::vec3 cell = size / glm::vec3(counts);
+    for (int i = 0; i < counts.x; ++i)
+        for (int j = 0; j < counts.y; ++j)
+            for (int k = 0; k < counts.z; ++k)
+                probes.push_back({(glm::vec3(i, j, k) + 0.5f) * cell - 0.5f * size, r});
+    return probes;
+}
+
+// Probes with the solid's volume: a sphere is its own probe (exact Archimedes); a box is
+// a 3×3×3 lattice.
+static std::vector<Probe> probesFor(const ObjectDef& o) {
+    if (o.type == "sphere") return {Probe{glm::vec3(0.0f), o.radius}};
+    return latticeProbes(o.size, glm::ivec3(3));
+}
+
+float rippleCellSize(ecs::World& world) {
+    if (const auto* patch = world.resource<interaction::RipplePatch>()) return patch->def().cell_size;
+    return interaction::RippleDef{}.cell_size;
+}
+
+interaction::BoundingSphere boundingSphereFor(const ObjectDef& o, const interaction::BoundingSphere& paper, float cellSize) {
+    if (o.spheres != "custom") return paper;
+    interaction::BoundingSphere s = paper;
+    s.radius = o.sphere_cells * cellSize;
+    s.heightRatio = o.sphere_height_ratio;
+    s.accelerationFactor = o.sphere_af;
+    s.afFromMotion = false;
+    return s;
+}
+
+ecs::Entity spawnBody(ecs::World& world, const std::string& type, const std::string& name, physics::BodyId id,
+                      std::vector<Probe> probes, float volume, float mass, const physics::BodyState& start,
+                      const Renderable& look) {
+    ecs::Entity e = world.create();
+    world.add<ecs::Transform>(e, {start.position, start.rotation});
+    world.add<ecs::Motion>(e, {start.linearVelocity, mass});
+    Body body;
+    body.type = type;
+    body.id = id;
+    body.probes = std::move(probes);
+    body.volume = volume;
+    world.add<Body>(e, std::move(body));
+    world.add<Renderable>(e, look);
+    world.add<ObjectTag>(e, {type, name});
+    return e;
+}
+
+void destroyBody(ecs::World& world, ecs::Entity e) {
+    if (const Body* body = world.find<Body>(e))
+        if (auto* physicsWorld = world.resource<physics::PhysicsWorld>()) physicsWorld->remove(body->id);
+    world.destroy(e);
+}
+
+ecs::Entity findObject(ecs::World& world, const std::string& name) {
+    if (name.empty()) return ecs::Entity::None;
+    auto& tags = world.pool<ObjectTag>();
+    for (size_t i = 0; i < tags.size(); ++i)
+        if (tags.components()[i].name == name) return tags.entities()[i];
+    return ecs::Entity::None;
+}
+
+// A sphere or a box: a floating body whose bounding sphere is the body itself (the paper's
+// cannonball: SHR 1, AF 0, SD −1: it pushes the water down).
+static ecs::Entity spawnFloatingBody(ecs::World& world, const ObjectDef& o) {
+    auto& physicsWorld = *world.resource<physics::PhysicsWorld>();
+    const bool sphere = o.type == "sphere";
+    float volume = sphere ? 4.0f / 3.0f * float(M_PI) * o.radius * o.radius * o.radius : o.size.x * o.size.y * o.size.z;
+    float mass = o.density * volume;
+    physics::BodyState start;
+    start.position = o.position;
+    start.linearVelocity = o.velocity;
+    physics::BodyId id = sphere ? physicsWorld.addSphere(o.radius, mass, start) : physicsWorld.addBox(o.size * 0.5f, mass, start);
+    // Built-in meshes are unit shapes; a box's model is in metres, a sphere's of radius 1.
+    const glm::vec3 boxScale = o.model.empty() ? o.size * 0.5f : glm::vec3(1.0f);
+    Renderable look{sphere ? gfx::MeshKind::Sphere : gfx::MeshKind::Box, sphere ? glm::vec3(o.radius) : boxScale, o.color, o.model};
+    ecs::Entity e = spawnBody(world, o.type, o.name, id, probesFor(o), volume, mass, start, look);
+    interaction::BoundingSphere paper;
+    paper.radius = sphere ? o.radius : 0.5f * std::min({o.size.x, o.size.y, o.size.z});
+    paper.direction = interaction::SphereDirection::Down;  // a floating body pushes the water down
+    paper.heightRatio = 1.0f;
+    paper.accelerationFactor = 0.0f;
+    world.add<interaction::SphereSet>(e, {{boundingSphereFor(o, paper, rippleCellSize(world))}, {}});
+    return e;
+}
+
+ecs::Entity spawnObject(ecs::World& world, const ObjectDef& o, uint64_t seed) {
+    if (o.type == "ship") return spawnShip(world, o);
+    if (o.type == "cannon") return spawnCannon(world, o);
+    if (o.type == "fish_school") return spawnFishSchool(world, o, seed);
+    return spawnFloatingBody(world, o);
+}
+
+void spawnObjects(ecs::World& world, const physics::PhysicsDef& def, const std::vector<ObjectDef>& objects, uint64_t seed) {
+    world.setResource(std::make_unique<physics::PhysicsWorld>(def));
+    world.setResource(std::make_unique<physics::PhysicsDef>(def));
+    for (size_t i = 0; i < objects.size(); ++i) spawnObject(world, objects[i], seed * 1000003ull + i);
+}
+
+// The ripple level a body floats in: the patch averaged on a ring just outside the body's
+// own footprint. A body sees the waves of others arriving (a ship rocks in another's wake)
+// but not the crater it stamps itself, which would feed its buoyancy back into its stamps.
+static float rippleAround(const interaction::RipplePatch& patch, glm::vec2 xz, float radius) {
+    const float ring = radius + 2.0f * patch.def().cell_size;
+    float sum = 0.0f;
+    for (int k = 0; k < 8; ++k) {
+        float a = float(k) * float(M_PI) / 4.0f;
+        sum += patch.heightAt(xz + ring * glm::vec2(std::cos(a), std::sin(a)));
+    }
+    return sum / 8.0f;
+}
+
+void physicsSystem(ecs::World& world, const ecs::Tick& tick) {
+    auto* physicsWorld = world.resource<physics::PhysicsWorld>();
+    const auto* def = world.resource<physics::PhysicsDef>();
+    if (!physicsWorld) return;
+    const water::WaterQuery* water = nullptr;
+    if (OceanState* ocean = world.resource<OceanState>()) water = ocean->water.get();
+    const water::FlatWater flat(0.0f);
+    if (!water) water = &flat;
+    const float dt = float(tick.dt);
+    const auto* patch = world.resource<interaction::RipplePatch>();
+
+    // --- water forces, per probe
+    auto& bodies = world.pool<Body>();
+    for (size_t b = 0; b < bodies.size(); ++b) {
+        Body& body = bodies.components()[b];
+        const auto* spheres = world.find<interaction::SphereSet>(bodies.entities()[b]);
+        const float reach = spheres && !spheres->spheres.empty() ? spheres->spheres[0].radius : 0.0f;
+        physics::BodyState s = physicsWorld->state(body.id);
+        float submerged = 0.0f, total = 0.0f;
+        for (const Probe& probe : body.probes) {
+            physics::ProbeState p;
+            p.centre = s.position + s.rotation * probe.offset;
+            p.radius = probe.radius;
+            p.velocity = s.linearVelocity + glm::cross(s.angularVelocity, p.centre - s.position);
+            p.velocity.x *= body.horizontalDrag;  // the drag sees this much of the horizontal motion
+            p.velocity.z *= body.horizontalDrag;
+            water::WaterSample w = water->sample(p.centre.x, p.centre.z);
+            p.surfaceHeight = w.height;
+            p.surfaceNormal = w.normal;
+            p.surfaceVelocity = w.verticalVelocity;
+            if (patch) {
+                glm::vec2 xz(p.centre.x, p.centre.z);
+                p.surfaceHeight += rippleAround(*patch, xz, reach) - patch->heightAt(xz);
+                // Drag is against the ocean's motion only: between a stamp and the next
+                // step the ripple cells near a body always move, which is no real current.
+                p.surfaceVelocity -= patch->velocityAt(xz, dt);
+            }
+            physics::ProbeForce f = physics::probeForce(*def, p);
+            physicsWorld->applyForce(body.id, f.force, f.point);
+            float v = probe.radius * probe.radius * probe.radius;
+            submerged += f.submergedFraction * v;
+            total += v;
+        }
+        body.submergedFraction = total > 0.0f ? submerged / total : 0.0f;
+        for (const AppliedForce& f : body.forces) physicsWorld->applyForce(body.id, f.force, f.point);
+        body.forces.clear();
+        if (body.submergedFraction > 0.0f)
+            physicsWorld->dampAngular(body.id, std::pow(1.0f - def->angular_damping, dt * body.submergedFraction));
+    }
+
+    // --- rigid-body step
+    physicsWorld->step(dt);
+
+    // --- poses back to the entities
+    for (size_t i = 0; i < bodies.size(); ++i) {
+        ecs::Entity e = bodies.entities()[i];
+        physics::BodyState s = physicsWorld->state(bodies.components()[i].id);
+        ecs::Transform& t = world.get<ecs::Transform>(e);
+        t.position = s.position;
+        t.rotation = s.rotation;
+        world.get<ecs::Motion>(e).velocity = s.linearVelocity;
+        bodies.components()[i].angularVelocity = s.angularVelocity;
+    }
+}
+
+std::vector<gfx::ObjectDraw> objectDraws(ecs::World& world) {
+    std::vector<gfx::ObjectDraw> draws;
+    auto& renderables = world.pool<Renderable>();
+    for (size_t i = 0; i < renderables.size(); ++i) {
+        const Renderable& r = renderables.components()[i];
+        const ecs::Transform* t = world.find<ecs::Transform>(renderables.entities()[i]);
+        if (!t) continue;
+        glm::mat4 model = glm::translate(glm::mat4(1.0f), t->position) * glm::mat4_cast(t->rotation) * glm::scale(glm::mat4(1.0f), r.scale);
+        draws.push_back({r.mesh, model, r.color, r.model});
+    }
+    return draws;
+}
+
+glm::vec2 rollPitchDeg(const glm::quat& rotation) {
+    const glm::vec3 right = rotation * glm::vec3(1, 0, 0), up = rotation * glm::vec3(0, 1, 0), bow = rotation * glm::vec3(0, 0, 1);
+    float roll = std::atan2(right.y, up.y);
+    float pitch = std::asin(std::clamp(bow.y, -1.0f, 1.0f));
+    return glm::degrees(glm::vec2(roll, pitch));
+}
+
+} // namespace ob::game

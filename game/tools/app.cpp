@@ -1,0 +1,194 @@
+// The run loop: platform, sandbox, clock, progress line, screenshot and stats.
+#include "tools/app.h"
+
+#include "core/clock.h"
+#include "core/error.h"
+#include "core/file_write.h"
+#include "core/log.h"
+#include "core/toml_writer.h"
+#include "gfx/gl.h"
+#include "gfx/renderer.h"
+#include "ecs/components.h"
+#include "behaviours/cannon.h"
+#include "behaviours/fish.h"
+#include "world/input_script.h"
+#include "sim/objects.h"
+#include "world/sandbox.h"
+#include "world/script.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <unistd.h>
+
+namespace ob::game {
+
+// Whether two [camera] sections say the same (compared as the TOML they write).
+static bool sameCamera(const CameraDef& a, const CameraDef& b) {
+    SceneDef x, y;
+    x.camera = a;
+    y.camera = b;
+    return writeToml(x) == writeToml(y);
+}
+
+static nlohmann::json phaseStats(const std::vector<double>& samples) {
+    return {{"mean_ms", ecs::mean(samples)}, {"median_ms", ecs::median(samples)}};
+}
+
+static void writeStats(const std::string& path, Sandbox& sandbox, const std::string& scenePath,
+                       const platform::Platform& platform) {
+    const ecs::FrameTimer& timer = sandbox.schedule().timer();
+    nlohmann::json j;
+    j["scene"] = scenePath;
+    j["platform"] = platform.name();
+    j["renderer"] = gfx::glRendererName();
+    j["frames"] = sandbox.schedule().frames();
+    j["steps"] = sandbox.schedule().steps();
+    j["simulated_seconds"] = sandbox.schedule().simTime();
+    j["frame"] = phaseStats(timer.frameSamples());
+    double medianFrame = ecs::median(timer.frameSamples());
+    j["fps"] = medianFrame > 0 ? 1000.0 / medianFrame : 0.0;
+    for (int p = 0; p < ecs::PHASE_COUNT; ++p) {
+        auto phase = ecs::Phase(p);
+        j["phases"][ecs::phaseName(phase)] = phaseStats(timer.cpuSamples(phase));
+        if (!timer.gpuSamples(phase).empty()) j["gpu_phases"][ecs::phaseName(phase)] = phaseStats(timer.gpuSamples(phase));
+    }
+    for (const auto& [pass, samples] : timer.gpuPassSamples()) j["gpu_passes"][pass] = phaseStats(samples);
+    j["entities"] = {{"total", sandbox.world().entityCount()},
+                     {"cameras", sandbox.world().pool<CameraRig>().size()},
+                     {"bodies", sandbox.world().pool<Body>().size()}};
+    // Every body at the end: where it is, how it leans, how deep it floats.
+    j["bodies"] = nlohmann::json::array();
+    auto& bodies = sandbox.world().pool<Body>();
+    for (size_t i = 0; i < bodies.size(); ++i) {
+        const Body& b = bodies.components()[i];
+        const ecs::Entity e = bodies.entities()[i];
+        const ecs::Transform& t = sandbox.world().get<ecs::Transform>(e);
+        const ObjectTag* tag = sandbox.world().find<ObjectTag>(e);
+        const glm::vec2 rollPitch = rollPitchDeg(t.rotation);
+        j["bodies"].push_back({{"type", b.type},
+                               {"name", tag ? tag->name : ""},
+                               {"position", {t.position.x, t.position.y, t.position.z}},
+                               {"roll_deg", rollPitch.x},
+                               {"pitch_deg", rollPitch.y},
+                               {"submerged_fraction", b.submergedFraction}});
+    }
+    j["cannons"] = nlohmann::json::array();
+    auto& cannons = sandbox.world().pool<Cannon>();
+    for (size_t i = 0; i < cannons.size(); ++i) {
+        const ObjectTag* tag = sandbox.world().find<ObjectTag>(cannons.entities()[i]);
+        j["cannons"].push_back({{"name", tag ? tag->name : ""}, {"shots", cannons.components()[i].shots}});
+    }
+    j["fish_schools"] = nlohmann::json::array();
+    auto& schools = sandbox.world().pool<FishSchool>();
+    for (size_t i = 0; i < schools.size(); ++i) {
+        const FishSchool& s = schools.components()[i];
+        const ObjectTag* tag = sandbox.world().find<ObjectTag>(schools.entities()[i]);
+        size_t airborne = 0;
+        for (const glm::vec3& p : s.position) airborne += p.y > 0.0f ? 1 : 0;
+        j["fish_schools"].push_back({{"name", tag ? tag->name : ""}, {"fish", s.size()}, {"jumps", s.jumps},
+                                     {"stamps", s.stamps}, {"airborne", airborne}});
+    }
+    if (const auto* script = sandbox.world().resource<ScriptState>()) j["events_run"] = script->fired;
+    char hash[32];
+    std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(sandbox.stateHash()));
+    j["state_hash"] = hash;
+
+    writeTextFile(path, j.dump(2) + "\n", "stats");
+}
+
+int runScene(const SceneDef& scene, const std::string& scenePath, const RunOptions& options) {
+    if (!options.screenshot.empty()) checkWritable(options.screenshot, "screenshot");
+    if (!options.stats.empty()) checkWritable(options.stats, "stats");
+    for (const EventDef& e : scene.events)
+        if (e.action == "screenshot") checkWritable(e.file, "event screenshot");
+    // Scripted input goes through the same queue as the window's events.
+    std::vector<platform::InputEvent> scripted;
+    if (!options.input.empty()) scripted = scriptEvents(loadInputScript(options.input));
+
+    glm::ivec2 size = options.size.x > 0 ? options.size : glm::ivec2(scene.window.width, scene.window.height);
+    std::unique_ptr<platform::Platform> platform;
+    if (options.window && platform::displayAvailable()) {
+        platform::WindowDef window = scene.window;
+        window.width = size.x;
+        window.height = size.y;
+        platform = platform::createWindowPlatform(window, "oceanbox — " + scenePath);
+    } else {
+        if (options.window) logInfo("%s", options.fallbackNote.c_str());
+        platform = platform::createHeadlessPlatform(size);
+    }
+    logInfo("%s: %s", platform->name(), gfx::glRendererName());
+
+    // A fixed clock advances stepsPerFrame steps a frame (what a slow machine does in play);
+    // the catch-up limit must let it.
+    auto withSteps = [&](SceneDef s) {
+        s.sim.max_steps_per_frame = std::max(s.sim.max_steps_per_frame, options.stepsPerFrame);
+        return s;
+    };
+    auto makeSandbox = [&](const SceneDef& s) {
+        auto made = std::make_unique<Sandbox>(withSteps(s));
+        made->attachPlatform(*platform, !platform->headless());
+        made->setScriptedInput(scripted);
+        if (options.dynamicResolution) made->enableDynamicResolution();
+        if (!options.realTime) made->schedule().setFirstFrameSeconds(options.stepsPerFrame / double(s.sim.step_hz));
+        return made;
+    };
+    auto makeClock = [&](const SceneDef& s) -> std::unique_ptr<Clock> {
+        if (options.realTime) return std::make_unique<SteadyClock>();
+        return std::make_unique<FixedStepClock>(options.stepsPerFrame / double(s.sim.step_hz));
+    };
+    auto sandbox = makeSandbox(scene);
+    std::unique_ptr<Clock> clock = makeClock(scene);
+
+    // The run ends after `frames` frames, or once the simulation reaches `endTime`.
+    const bool bounded = options.frames > 0 || options.endTime > 0.0;
+    const bool progress = bounded && platform->headless() && isatty(STDERR_FILENO);
+    const long expected = options.frames > 0 ? options.frames
+                                             : long(std::ceil(options.endTime * scene.sim.step_hz / options.stepsPerFrame - 1e-6));
+    for (long f = 0; bounded || !sandbox->quitRequested(); ++f) {
+        sandbox->frame(clock->now());
+        if (sandbox->quitRequested()) break;
+        const bool last = (options.frames > 0 && f + 1 >= options.frames) ||
+                          (options.endTime > 0.0 && sandbox->schedule().simTime() >= options.endTime - 1e-9);
+        // Read back before present: the window's back buffer is undefined after a swap.
+        for (const std::string& file : sandbox->takeScreenshotRequests()) {
+            gfx::writeScreenshot(file, platform->framebufferSize());
+            logInfo("screenshot written to %s", file.c_str());
+        }
+        if (last && !options.screenshot.empty()) gfx::writeScreenshot(options.screenshot, platform->framebufferSize());
+        platform->present();
+        if (progress && (f % 10 == 0 || last))
+            std::fprintf(stderr, "\roceanbox: frame %ld/%ld (%3.0f%%)%s", f + 1, expected,
+                         100.0 * double(f + 1) / double(std::max(expected, 1L)), last ? "\n" : "");
+        if (last) break;
+        // The UI's "restart with these settings": a new world on the same window.
+        if (std::optional<SceneDef> edited = sandbox->takeRestartRequest()) {
+            logInfo("restarting the scene with the edited settings");
+            const std::optional<CameraPose> pose = sandbox->cameraPose();
+            const bool cameraEdited = !sameCamera(sandbox->scene().camera, edited->camera);
+            sandbox.reset();
+            sandbox = makeSandbox(*edited);
+            // The player keeps looking from where they were (in the edited mode, if they edited it).
+            if (pose) sandbox->setCameraPose(*pose, !cameraEdited);
+            clock = makeClock(*edited);
+        }
+    }
+    sandbox->schedule().finish();
+    if (!bounded && !options.screenshot.empty())
+        logWarn("--screenshot needs --frames N (or [sim] end_time); no screenshot written");
+
+    if (!options.stats.empty()) writeStats(options.stats, *sandbox, scenePath, *platform);
+    if (!options.screenshot.empty() && bounded) logInfo("screenshot written to %s", options.screenshot.c_str());
+    if (gfx::glErrorCount() > 0) {
+        logWarn("%d GL error(s) were reported during the run", gfx::glErrorCount());
+        return EXIT_FAILURE_RUNTIME;
+    }
+    return EXIT_OK;
+}
+
+} // namespace ob::game

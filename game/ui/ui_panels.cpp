@@ -1,0 +1,183 @@
+// Stats (per-phase ms and their graph), the player's ship and cannon, live settings (the
+// [render] keys), every other scene key on a copy applied by restarting, "save scene as".
+#include "ui/ui_panels.h"
+
+#include "world/camera.h"
+#include "behaviours/cannon.h"
+#include "world/controls.h"
+#include "world/sandbox.h"
+#include "core/error.h"
+#include "core/file_write.h"
+#include "core/toml_writer.h"
+#include "ecs/components.h"
+#include "gfx/ui_overlay.h"
+#include "behaviours/ship.h"
+
+#include <cfloat>
+#include <filesystem>
+#include <imgui.h>
+
+namespace ob::game {
+
+std::string saveScene(SceneDef scene, const std::string& path) {
+    // Model paths are absolute once loaded; the file names them relative to itself, so the
+    // scene and its models move together.
+    namespace fs = std::filesystem;
+    const fs::path folder = fs::absolute(fs::path(path)).parent_path();
+    for (ObjectDef& o : scene.objects)
+        if (!o.model.empty() && fs::path(o.model).is_absolute()) o.model = fs::path(o.model).lexically_relative(folder).string();
+    try {
+        writeFileWhole(path, "scene", [&](std::ostream& out) {
+            out << "# Saved from oceanbox: the keys that differ from the defaults.\n" << writeToml(scene);
+        });
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+std::string checkEditedScene(SceneDef& scene) {
+    try {
+        parseScene(writeToml(scene), "edited scene");
+        return "";
+    } catch (const InputError& e) {
+        return e.what();
+    }
+}
+
+// The last frames' CPU ms per phase and frame ms, as lines.
+static void timingGraph(const ecs::FrameTimer& timer) {
+    static constexpr size_t HISTORY = 240;
+    auto plot = [](const char* label, const std::vector<double>& samples) {
+        const size_t n = std::min(samples.size(), HISTORY);
+        if (n == 0) return;
+        float values[HISTORY];
+        for (size_t i = 0; i < n; ++i) values[i] = float(samples[samples.size() - n + i]);
+        ImGui::PlotLines(label, values, int(n), 0, nullptr, 0.0f, FLT_MAX, ImVec2(0, 36));
+    };
+    plot("frame ms", timer.frameSamples());
+    for (int p = 0; p < ecs::PHASE_COUNT; ++p) plot(ecs::phaseName(ecs::Phase(p)), timer.cpuSamples(ecs::Phase(p)));
+}
+
+// Every other section, edited on a copy; applied by rebuilding the world from it. Returns
+// the copy as the panel shows it (with the live [render] keys).
+static SceneDef sceneEditor(const SceneDef& scene, std::optional<SceneDef>& restart) {
+    static SceneDef edited;
+    static const SceneDef* source = nullptr;
+    static std::string problem;
+    if (source != &scene) {
+        edited = scene;
+        source = &scene;
+        problem.clear();
+    }
+    edited.render = scene.render;  // the live [render] keys carry over
+    if (!ImGui::CollapsingHeader("scene (applied on restart)")) return edited;
+    gfx::UiEditor editor;
+    editor.section("sim", edited.sim);
+    editor.section("camera", edited.camera);
+    editor.section("ocean", edited.ocean);
+    editor.section("gerstner", edited.gerstner);
+    editor.section("ripples", edited.ripples);
+    editor.section("physics", edited.physics);
+    editor.section("splash", edited.splash);
+    editor.section("foam", edited.foam);
+    editor.list("objects", edited.objects, "");
+    editor.list("events", edited.events, "");
+    if (ImGui::Button("restart with these settings")) {
+        problem = checkEditedScene(edited);
+        if (problem.empty()) restart = edited;
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("revert")) {
+        edited = scene;
+        problem.clear();
+    }
+    if (!problem.empty()) ImGui::TextWrapped("%s", problem.c_str());
+    return edited;
+}
+
+std::vector<std::string> keyHelp(ecs::World& world) {
+    const bool flying = cameraFlies(world);
+    bool ship = false, cannon = false;
+    for (const Ship& s : world.pool<Ship>().components()) ship = ship || s.player;
+    for (const Cannon& c : world.pool<Cannon>().components()) cannon = cannon || c.player;
+    std::vector<std::string> lines;
+    if (flying) lines.push_back("W/S/A/D move  Q/E down/up  Shift fast  hold Q at the surface: dive");
+    else if (ship) lines.push_back("W/S throttle  A/D rudder");
+    if (cannon) lines.push_back("arrows aim  Space or left click: fire");
+    lines.push_back(std::string("right drag ") + (flying ? "look" : "orbit") + "  wheel " + (flying ? "forward" : "zoom") +
+                    "  C camera mode (now " + cameraMode(world) + ")");
+    lines.push_back("F fish  P pause  N step (paused)  F12 screenshot  H hide this  Esc quit");
+    return lines;
+}
+
+static void playerPanel(ecs::World& world) {
+    if (const auto* sim = world.resource<ecs::SimControl>(); sim && sim->paused)
+        ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "paused: P resumes, N steps");
+    auto& ships = world.pool<Ship>();
+    for (size_t i = 0; i < ships.size(); ++i) {
+        const Ship& ship = ships.components()[i];
+        if (!ship.player) continue;
+        const glm::vec3 v = world.get<ecs::Motion>(ships.entities()[i]).velocity;
+        ImGui::Text("ship: throttle %+.0f%%  rudder %+.0f  speed %.1f m/s", 100.0 * ship.throttle, double(ship.rudder),
+                    double(std::hypot(v.x, v.z)));
+    }
+    auto& cannons = world.pool<Cannon>();
+    for (size_t i = 0; i < cannons.size(); ++i) {
+        const Cannon& c = cannons.components()[i];
+        if (c.player) ImGui::Text("cannon: yaw %.0f  elevation %.0f  shots %d", double(c.yawDeg), double(c.elevationDeg), c.shots);
+    }
+    for (const std::string& line : keyHelp(world)) ImGui::TextDisabled("%s", line.c_str());
+}
+
+void drawPanels(ecs::World& world, SceneDef& scene, const ecs::FrameTimer& timer, std::optional<SceneDef>& restart) {
+    if (const auto* controls = world.resource<WindowControls>(); controls && !controls->showOverlay) return;
+    ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
+    ImGui::Begin("oceanbox");
+    const auto& frames = timer.frameSamples();
+    double frameMs = frames.empty() ? 0.0 : frames.back();
+    ImGui::Text("frame %.2f ms (%.0f fps)", frameMs, frameMs > 0 ? 1000.0 / frameMs : 0.0);
+    if (const auto* dynamic = world.resource<DynamicScale>(); dynamic && dynamic->control && scene.render.target_fps > 0.0f)
+        ImGui::Text("resolution scale %.2f (dynamic, holding %.0f fps)", double(dynamic->control->scale()),
+                    double(scene.render.target_fps));
+    else
+        ImGui::Text("resolution scale %.2f", double(scene.render.resolution_scale));
+    if (ImGui::BeginTable("phases", 3)) {
+        ImGui::TableSetupColumn("phase");
+        ImGui::TableSetupColumn("cpu ms");
+        ImGui::TableSetupColumn("gpu ms");
+        ImGui::TableHeadersRow();
+        for (int p = 0; p < ecs::PHASE_COUNT; ++p) {
+            auto phase = ecs::Phase(p);
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(ecs::phaseName(phase));
+            ImGui::TableNextColumn();
+            ImGui::Text("%.3f", timer.lastCpu(phase));
+            ImGui::TableNextColumn();
+            const auto& gpu = timer.gpuSamples(phase);
+            if (gpu.empty()) ImGui::TextUnformatted("-");
+            else ImGui::Text("%.3f", gpu.back());
+        }
+        ImGui::EndTable();
+    }
+    if (ImGui::CollapsingHeader("timing graph")) timingGraph(timer);
+    playerPanel(world);
+    gfx::UiEditor editor;
+    editor.section("render", scene.render);
+    const SceneDef shown = sceneEditor(scene, restart);
+
+    // --- save scene as
+    static char path[256] = "saved_scene.toml";
+    static std::string status;
+    ImGui::InputText("##path", path, sizeof path);
+    ImGui::SameLine();
+    if (ImGui::Button("save scene as")) {
+        std::string error = saveScene(shown, path);
+        status = error.empty() ? std::string("saved ") + path : error;
+    }
+    if (!status.empty()) ImGui::TextUnformatted(status.c_str());
+    ImGui::End();
+}
+
+} // namespace ob::game

@@ -1,0 +1,221 @@
+// Camera behaviour: fixed, orbit about the target, free fly from the input state, or follow a
+// ship from behind (smoothed, so the eye does not copy the hull's roll and pitch).
+#include "world/camera.h"
+
+#include "core/log.h"
+#include "ecs/components.h"
+#include "sim/objects.h"
+#include "platform/input.h"
+#include "behaviours/ship.h"
+#include "water/composite_water.h"
+#include "sim/water_systems.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace ob::game {
+
+static glm::vec3 forwardOf(float yaw, float pitch) {
+    return {std::sin(yaw) * std::cos(pitch), std::sin(pitch), std::cos(yaw) * std::cos(pitch)};
+}
+
+static void lookAt(CameraRig& rig, glm::vec3 from, glm::vec3 to) {
+    glm::vec3 d = to - from;
+    if (glm::dot(d, d) < 1e-12f) return;
+    d = glm::normalize(d);
+    rig.yaw = std::atan2(d.x, d.z);
+    rig.pitch = std::asin(glm::clamp(d.y, -1.0f, 1.0f));
+}
+
+void placeCamera(CameraRig& rig, ecs::Transform& transform, glm::vec3 eye, glm::vec3 target) {
+    transform.position = eye;
+    rig.focus = target;
+    lookAt(rig, eye, target);
+    transform.rotation = glm::quatLookAtRH(forwardOf(rig.yaw, rig.pitch), glm::vec3(0, 1, 0));
+}
+
+ecs::Entity followedObject(ecs::World& world, const std::string& name) {
+    if (!name.empty()) return findObject(world, name);
+    auto& ships = world.pool<Ship>();
+    for (size_t i = 0; i < ships.size(); ++i)
+        if (ships.components()[i].player) return ships.entities()[i];
+    return ships.size() > 0 ? ships.entities()[0] : ecs::Entity::None;
+}
+
+ecs::Entity spawnCamera(ecs::World& world, const CameraDef& def) {
+    ecs::Entity e = world.create();
+    CameraRig rig{def};
+    rig.startMode = def.mode;
+    rig.focus = def.target;
+    rig.underwater = def.position.y < 0.0f;  // a scene that starts below the water means it
+    lookAt(rig, def.position, def.target);
+    world.add<ecs::Transform>(e, {def.position});
+    world.add<CameraRig>(e, rig);
+    return e;
+}
+
+namespace {
+
+constexpr float DRAG_RAD_PER_PX = 0.005f;  // right drag: orbit (follow, orbit, fixed)
+constexpr float LOOK_RAD_PER_PX = 0.003f;  // right drag: look (fly)
+constexpr float ZOOM_PER_STEP = 0.9f;      // wheel: the arm's length times this per step in
+constexpr float FLY_WHEEL_M = 2.0f;        // wheel: fly forward this far per step
+constexpr float MIN_ELEVATION = glm::radians(-10.0f), MAX_ELEVATION = glm::radians(89.0f);
+
+float waterHeight(ecs::World& world, glm::vec3 p) {
+    const OceanState* ocean = world.resource<OceanState>();
+    return ocean && ocean->water ? ocean->water->sample(p.x, p.z).height : 0.0f;
+}
+
+// The arm from the point looked at to the eye, turned by `yaw` about the vertical, raised
+// by `lift` (elevation kept in [MIN_ELEVATION, MAX_ELEVATION]) and scaled by `zoom`.
+glm::vec3 steerArm(glm::vec3 arm, float yaw, float lift, float zoom) {
+    const float c = std::cos(yaw), s = std::sin(yaw);
+    arm = glm::vec3(c * arm.x + s * arm.z, arm.y, -s * arm.x + c * arm.z);
+    if (lift == 0.0f && zoom == 1.0f) return arm;
+    const float horizontal = std::hypot(arm.x, arm.z);
+    const float length = glm::length(arm) * zoom;
+    const float elevation = glm::clamp(std::atan2(arm.y, horizontal) + lift, MIN_ELEVATION, MAX_ELEVATION);
+    const glm::vec2 dir = horizontal > 1e-6f ? glm::vec2(arm.x, arm.z) / horizontal : glm::vec2(0.0f, -1.0f);
+    return {dir.x * length * std::cos(elevation), length * std::sin(elevation), dir.y * length * std::cos(elevation)};
+}
+
+// Fly mode: W/S/A/D/Q/E (Shift ×4), right drag looks, the wheel moves forward; 0.5 m above
+// the crests unless the player holds Q against the surface (then it dives; rising through
+// the surface comes back up).
+void fly(ecs::World& world, CameraRig& rig, ecs::Transform& t, const platform::InputState& input, float dt) {
+    using platform::Key;
+    if (input.isDown(platform::MouseButton::Right)) {
+        rig.yaw -= input.mouseDelta.x * LOOK_RAD_PER_PX;
+        rig.pitch = glm::clamp(rig.pitch - input.mouseDelta.y * LOOK_RAD_PER_PX, -1.55f, 1.55f);
+    }
+    const glm::vec3 fwd = forwardOf(rig.yaw, rig.pitch);
+    const glm::vec3 right = glm::normalize(glm::cross(fwd, glm::vec3(0, 1, 0)));
+    glm::vec3 move(0.0f);
+    move += fwd * float(input.isDown(Key::W) - input.isDown(Key::S));
+    move += right * float(input.isDown(Key::D) - input.isDown(Key::A));
+    move.y += float(input.isDown(Key::E) - input.isDown(Key::Q));
+    const float speed = rig.def.fly_speed_m_s * (input.isDown(Key::Shift) ? 4.0f : 1.0f);
+    t.position += move * speed * dt + fwd * (input.scroll * FLY_WHEEL_M);
+
+    const float water = waterHeight(world, t.position);
+    if (!rig.underwater) {
+        const bool pressing = t.position.y < water + FLY_CLEARANCE_M && input.isDown(Key::Q);
+        rig.diveHold = pressing ? rig.diveHold + dt : 0.0f;
+        t.position.y = std::max(t.position.y, water + FLY_CLEARANCE_M);
+        if (rig.diveHold >= DIVE_HOLD_S) {
+            rig.underwater = true;
+            rig.diveHold = 0.0f;
+            t.position.y = water - 1.0f;
+        }
+    } else if (t.position.y > water - 0.3f) {
+        rig.underwater = false;  // rose through the surface
+        t.position.y = std::max(t.position.y, water + FLY_CLEARANCE_M);
+    }
+    rig.focus = t.position + forwardOf(rig.yaw, rig.pitch) * 20.0f;
+}
+
+} // namespace
+
+void cameraSystem(ecs::World& world, const ecs::Tick& tick) {
+    auto& rigs = world.pool<CameraRig>();
+    const platform::InputState none;
+    const platform::InputState* input = world.resource<platform::InputState>();
+    if (!input) input = &none;
+    const float dt = float(tick.dt);  // the frame's clock time: the player steers while paused too
+    const glm::vec2 drag = input->isDown(platform::MouseButton::Right) ? input->mouseDelta : glm::vec2(0.0f);
+    const float zoom = std::pow(ZOOM_PER_STEP, input->scroll);
+    for (size_t i = 0; i < rigs.size(); ++i) {
+        CameraRig& rig = rigs.components()[i];
+        ecs::Transform& t = world.get<ecs::Transform>(rigs.entities()[i]);
+        const float simDt = float(tick.time - rig.lastSimTime);  // automatic motion stops with the simulation
+        rig.lastSimTime = tick.time;
+        if (rig.def.mode == "fixed" || rig.def.mode == "orbit") {
+            // Rotate the eye about the vertical axis through the target (orbit: at its speed),
+            // and by the player's drag and wheel.
+            const float angle = (rig.def.mode == "orbit" ? glm::radians(rig.def.orbit_speed_deg_s) * simDt : 0.0f) -
+                                drag.x * DRAG_RAD_PER_PX;
+            t.position = rig.def.target + steerArm(t.position - rig.def.target, angle, drag.y * DRAG_RAD_PER_PX, zoom);
+            if (!rig.underwater) t.position.y = std::max(t.position.y, waterHeight(world, t.position) + CAMERA_CLEARANCE_M);
+            lookAt(rig, t.position, rig.def.target);
+            rig.focus = rig.def.target;
+        } else if (rig.def.mode == "follow") {
+            ecs::Entity target = followedObject(world, rig.def.follow);
+            const ecs::Transform* object = target == ecs::Entity::None ? nullptr : world.find<ecs::Transform>(target);
+            if (object) {
+                glm::vec3 bow = object->rotation * glm::vec3(0, 0, 1);
+                bow.y = 0.0f;
+                bow = glm::dot(bow, bow) > 1e-6f ? glm::normalize(bow) : glm::vec3(0, 0, 1);
+                const float elevation = std::atan2(rig.def.follow_height_m, rig.def.follow_distance_m);
+                rig.followYaw -= drag.x * DRAG_RAD_PER_PX;
+                rig.followLift = glm::clamp(rig.followLift + drag.y * DRAG_RAD_PER_PX, MIN_ELEVATION - elevation,
+                                            MAX_ELEVATION - elevation);
+                rig.followZoom = glm::clamp(rig.followZoom * zoom, 0.1f, 20.0f);
+                const glm::vec3 arm = steerArm(-bow * rig.def.follow_distance_m + glm::vec3(0, rig.def.follow_height_m, 0),
+                                               rig.followYaw, rig.followLift, rig.followZoom);
+                glm::vec3 eye = object->position + arm;
+                eye.y = std::max(eye.y, waterHeight(world, eye) + CAMERA_CLEARANCE_M);
+                // Ease toward the spot behind the object (0.6 s; 0.08 s while the player
+                // steers); jump there at first.
+                const bool steering = drag != glm::vec2(0.0f) || input->scroll != 0.0f;
+                const float blend = rig.placed ? 1.0f - std::exp(-dt / (steering ? 0.08f : 0.6f)) : 1.0f;
+                t.position += (eye - t.position) * blend;
+                // The eased eye may lag into a crest: never below the water.
+                t.position.y = std::max(t.position.y, waterHeight(world, t.position) + CAMERA_CLEARANCE_M);
+                rig.focus += (object->position + bow * 6.0f - rig.focus) * blend;
+                rig.placed = true;
+                lookAt(rig, t.position, rig.focus);
+            }
+        } else if (rig.def.mode == "fly") {
+            fly(world, rig, t, *input, dt);
+        }
+        t.rotation = glm::quatLookAtRH(forwardOf(rig.yaw, rig.pitch), glm::vec3(0, 1, 0));
+    }
+}
+
+void cycleCameraMode(ecs::World& world) {
+    auto& rigs = world.pool<CameraRig>();
+    if (rigs.size() == 0) return;
+    CameraRig& rig = rigs.components()[0];
+    std::vector<std::string> modes;
+    if (followedObject(world, rig.def.follow) != ecs::Entity::None) modes.push_back("follow");
+    modes.insert(modes.end(), {"orbit", "fly"});
+    if (rig.startMode == "fixed") modes.push_back("fixed");
+    size_t at = 0;
+    while (at < modes.size() && modes[at] != rig.def.mode) ++at;
+    const std::string next = modes[(at + 1) % modes.size()];
+    // The new mode starts where the camera is: orbit and fixed about the point looked at.
+    if (next == "orbit" || next == "fixed") {
+        rig.def.target = rig.focus;
+        if (next == "orbit" && rig.def.orbit_speed_deg_s == 0.0f) rig.def.orbit_speed_deg_s = 4.0f;
+    }
+    rig.underwater = rig.underwater && next == "fly";
+    rig.def.mode = next;
+    logInfo("camera: %s (C: next mode)", next.c_str());
+}
+
+std::string cameraMode(ecs::World& world) {
+    auto& rigs = world.pool<CameraRig>();
+    return rigs.size() > 0 ? rigs.components()[0].def.mode : "";
+}
+
+bool cameraFlies(ecs::World& world) { return cameraMode(world) == "fly"; }
+
+gfx::CameraView cameraView(ecs::World& world, glm::ivec2 size) {
+    auto& rigs = world.pool<CameraRig>();
+    gfx::CameraView view;
+    if (rigs.size() == 0) return view;
+    const CameraRig& rig = rigs.components()[0];
+    const ecs::Transform& t = world.get<ecs::Transform>(rigs.entities()[0]);
+    view.position = t.position;
+    view.view = glm::lookAtRH(t.position, t.position + forwardOf(rig.yaw, rig.pitch), glm::vec3(0, 1, 0));
+    float aspect = float(size.x) / float(std::max(size.y, 1));
+    view.projection = glm::perspectiveRH_NO(glm::radians(rig.def.fov_deg), aspect, rig.def.near_m, rig.def.far_m);
+    view.nearM = rig.def.near_m;
+    view.farM = rig.def.far_m;
+    return view;
+}
+
+} // namespace ob::game

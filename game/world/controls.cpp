@@ -1,0 +1,89 @@
+// The player's controls: the input queue's two consumers and the keys of the frame.
+#include "world/controls.h"
+
+#include "world/camera.h"
+#include "core/log.h"
+#include "sim/objects.h"
+#include "world/script.h"
+
+#include <cstdio>
+#include <filesystem>
+
+namespace ob::game {
+
+void addControls(ecs::World& world) {
+    world.setResource(std::make_unique<platform::InputQueue>());
+    world.setResource(std::make_unique<platform::InputState>());
+    world.setResource(std::make_unique<StepInput>());
+    world.setResource(std::make_unique<WindowControls>());
+    world.setResource(std::make_unique<ecs::SimControl>());
+}
+
+void frameInputSystem(ecs::World& world, const ecs::Tick& tick) {
+    auto* queue = world.resource<platform::InputQueue>();
+    auto* input = world.resource<platform::InputState>();
+    if (!queue || !input) return;
+    if (auto* script = world.resource<ScriptedInput>())
+        for (; script->next < script->events.size() && script->events[script->next].time <= tick.clock; ++script->next)
+            queue->push(script->events[script->next]);
+    input->beginConsume();
+    queue->drainFrame(tick.clock, *input);
+}
+
+void controlsSystem(ecs::World& world, const ecs::Tick&) {
+    const auto* input = world.resource<platform::InputState>();
+    auto* controls = world.resource<WindowControls>();
+    auto* sim = world.resource<ecs::SimControl>();
+    if (!input || !controls || !sim) return;
+    using platform::Key;
+    for (int i = 0; i < input->pressCount(Key::P); ++i) {
+        sim->paused = !sim->paused;
+        logInfo("%s", sim->paused ? "paused (P resumes, N steps)" : "running");
+    }
+    if (sim->paused) sim->stepRequests += input->pressCount(Key::N);
+    if (input->wasPressed(Key::H)) controls->showOverlay = !controls->showOverlay;
+    for (int i = 0; i < input->pressCount(Key::C); ++i) cycleCameraMode(world);
+    for (int i = 0; i < input->pressCount(Key::F12); ++i) {
+        // The first free name in the current folder; the frame is written after it is drawn.
+        std::string name;
+        do {
+            char buf[64];
+            std::snprintf(buf, sizeof buf, "oceanbox_shot_%03d.png", ++controls->screenshotCount);
+            name = buf;
+        } while (std::filesystem::exists(name));
+        if (auto* script = world.resource<ScriptState>()) script->screenshots.push_back(name);
+    }
+}
+
+void stepInputSystem(ecs::World& world, const ecs::Tick& tick) {
+    auto* queue = world.resource<platform::InputQueue>();
+    auto* input = world.resource<StepInput>();
+    if (!queue || !input) return;
+    input->beginConsume();
+    queue->drainStep(tick.clock, *input);
+    input->keysMoveCamera = cameraFlies(world);
+    if (auto* controls = world.resource<WindowControls>()) controls->spawnFish += input->pressCount(platform::Key::F);
+}
+
+void spawnRequestsSystem(ecs::World& world, const ecs::Tick& tick) {
+    auto* controls = world.resource<WindowControls>();
+    if (!controls || controls->spawnFish == 0) return;
+    glm::vec3 focus(0.0f);
+    auto& rigs = world.pool<CameraRig>();
+    if (rigs.size() > 0) focus = rigs.components()[0].focus;
+    for (; controls->spawnFish > 0; --controls->spawnFish) {
+        ObjectDef fish;
+        fish.type = "fish_school";
+        fish.position = focus;
+        fish.radius = 6.0f;
+        fish.count = 12;
+        fish.speed = 3.0f;
+        fish.jump_interval = 2.0f;
+        fish.length = 0.7f;
+        fish.color = glm::vec3(0.55f, 0.6f, 0.65f);
+        spawnObject(world, fish, tick.step * 31ull + uint64_t(controls->spawnFish));
+        logInfo("fish school spawned at (%.0f, %.0f)", double(focus.x), double(focus.z));
+    }
+}
+
+} // namespace ob::game

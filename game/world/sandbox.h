@@ -1,0 +1,95 @@
+// The sandbox: one scene's world, its phase table and, when attached, the platform,
+// renderer and UI that draw it.
+#pragma once
+#include "ecs/schedule.h"
+#include "ecs/world.h"
+#include "gfx/dynamic_resolution.h"
+#include "world/camera.h"
+#include "platform/input.h"
+#include "world/scene.h"
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace ob::gfx {
+class Renderer;
+class UiOverlay;
+}
+
+namespace ob::game {
+
+/// What the input and render systems reach through the world (absent: pure simulation).
+struct FrameResources {
+    platform::Platform* platform = nullptr;
+    gfx::Renderer* renderer = nullptr;
+    gfx::UiOverlay* ui = nullptr;          ///< window mode only
+    ecs::FrameTimer* timer = nullptr;
+    SceneDef* scene = nullptr;             ///< live-edited by the UI
+    std::optional<SceneDef>* restart = nullptr;  ///< set by the UI: rebuild the world from this scene
+};
+
+/// Dynamic resolution, when on (a resource): the controller, made at the first frame and
+/// again when [render] target_fps changes.
+struct DynamicScale {
+    std::optional<gfx::DynamicResolution> control;
+};
+
+/// Where the camera is and how the player has steered it (kept across a restart).
+struct CameraPose {
+    CameraRig rig;
+    ecs::Transform transform;
+};
+
+class Sandbox {
+public:
+    /// Builds the world from the scene (entities, resources) and the phase table.
+    explicit Sandbox(const SceneDef& scene);
+    ~Sandbox();
+    /// Adds rendering (and the UI overlay when `withUi`) on the current GL context.
+    void attachPlatform(platform::Platform& platform, bool withUi);
+    /// One frame at clock time `now` (s): input, the steps due, render.
+    void frame(double now) { m_schedule.runFrame(m_world, now); }
+    /// One simulation step without input or render.
+    void step() { m_schedule.runStep(m_world); }
+    /// Hash of the simulation state (bit-exact: equal hashes mean equal states): the step,
+    /// every transform and velocity, both ripple levels and every ocean map.
+    uint64_t stateHash();
+    /// Every timing the sandbox measures, as (name, median ms per frame) over the frames
+    /// after the first `skipFrames`: "frame" (wall, frame start to frame start), then each
+    /// phase's CPU time ("input", "script", ...), then each GPU-timed span ("gpu.render", ...).
+    /// Empty before the first finished frame.
+    std::vector<std::pair<std::string, double>> timings(size_t skipFrames = 0) const;
+    bool quitRequested();
+    /// The scene the UI asked to restart with (validated), once.
+    std::optional<SceneDef> takeRestartRequest() { return std::exchange(m_restart, std::nullopt); }
+    /// The internal scale follows the frame time to hold [render] target_fps (play; a `run`
+    /// only when asked, so its frames stay reproducible).
+    void enableDynamicResolution();
+    /// Input events (clock time order) fed to the input queue as the clock reaches them.
+    void setScriptedInput(std::vector<platform::InputEvent> events);
+    /// The camera's pose (none without a camera).
+    std::optional<CameraPose> cameraPose();
+    /// Puts the camera where `pose` says; `keepMode`: its mode and settings too (else this
+    /// scene's [camera] keeps them).
+    void setCameraPose(const CameraPose& pose, bool keepMode);
+    /// PNG files the timeline asked for since the last call (write them after the frame).
+    std::vector<std::string> takeScreenshotRequests();
+
+    ecs::World& world() { return m_world; }
+    ecs::Schedule& schedule() { return m_schedule; }
+    const SceneDef& scene() const { return m_scene; }
+
+private:
+    SceneDef m_scene;
+    ecs::World m_world;
+    ecs::Schedule m_schedule;
+    std::unique_ptr<gfx::Renderer> m_renderer;
+    std::unique_ptr<gfx::UiOverlay> m_ui;
+    std::optional<SceneDef> m_restart;
+};
+
+} // namespace ob::game

@@ -1,0 +1,101 @@
+// Scene loading: TOML document + overrides → SceneDef, all errors at once.
+#include "world/scene.h"
+
+#include "assets/model.h"
+#include "core/error.h"
+#include "core/toml_reader.h"
+
+#include <filesystem>
+
+namespace ob::game {
+
+// An object's model file: an absolute path as it is; a relative one next to the scene file
+// (`sceneDir`, "" for a scene from text), then in the current folder, then in the source
+// tree; returned absolute, so it names the same file from any working folder. "" when none
+// exists.
+static std::string resolveModel(const std::string& model, const std::string& sceneDir) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    if (fs::path(model).is_absolute()) return fs::exists(model, ec) ? model : "";
+    std::vector<fs::path> candidates;
+    if (!sceneDir.empty()) candidates.push_back(fs::path(sceneDir) / model);
+    candidates.push_back(fs::path(model));
+    candidates.push_back(fs::path(OCEANBOX_SOURCE_DIR) / model);
+    for (const fs::path& c : candidates)
+        if (fs::exists(c, ec)) return fs::absolute(c, ec).lexically_normal().string();
+    return "";
+}
+
+// Resolves every object's model path in place and loads the file once to check it (the
+// renderer loads its own copy); each problem becomes one error naming objects[i].model.
+static void checkModels(SceneDef& scene, const TomlDocument& doc, const std::string& source, const std::string& sceneDir,
+                        std::vector<std::string>& errors) {
+    for (size_t i = 0; i < scene.objects.size(); ++i) {
+        std::string& model = scene.objects[i].model;
+        if (model.empty()) continue;
+        const std::string key = "objects[" + std::to_string(i) + "].model";
+        const std::string at = doc.where(key, source) + ": " + key + ": ";
+        const std::string path = resolveModel(model, sceneDir);
+        if (path.empty()) {
+            errors.push_back(at + "glTF file '" + model + "' not found" +
+                             (std::filesystem::path(model).is_absolute()
+                                  ? std::string()
+                                  : " (looked next to the scene, in the current folder and in the source tree)"));
+            continue;
+        }
+        try {
+            assets::loadGltfModel(path);
+            model = path;
+        } catch (const InputError& e) {
+            errors.push_back(at + e.what());
+        }
+    }
+}
+
+static SceneDef readScene(TomlDocument& doc, const std::string& source, const std::string& sceneDir,
+                          std::vector<std::string>& errors, const std::vector<std::string>& overrides) {
+    for (const std::string& o : overrides) doc.applyOverride(o, errors);
+    SceneDef scene;
+    TomlReader reader(doc, errors);
+    describe(reader, scene);
+    reader.finish();
+    // Checks across keys and files, once every key is read and in range.
+    if (errors.empty()) {
+        for (const std::string& e : ocean::validate(scene.gerstner, &scene.ocean)) errors.push_back(source + ": " + e);
+        for (const std::string& e : validateEvents(scene, source)) errors.push_back(e);
+        if (scene.ripples.model == "kang2008" && scene.ripples.boundary == "periodic")
+            errors.push_back(doc.where("ripples.boundary", source) +
+                             ": ripples.boundary: \"periodic\" needs ripples.model = \"ewave\" (kang2008 has \"fixed\" "
+                             "or \"absorbing\")");
+        checkModels(scene, doc, source, sceneDir, errors);
+    }
+    if (!errors.empty()) {
+        std::string message;
+        for (const std::string& e : errors) message += (message.empty() ? "" : "\n") + e;
+        throw InputError(message);
+    }
+    return scene;
+}
+
+SceneDef loadScene(const std::string& path, const std::vector<std::string>& overrides) {
+    std::vector<std::string> errors;
+    TomlDocument doc = TomlDocument::fromFile(path, errors);
+    const std::string sceneDir = std::filesystem::path(path).parent_path().string();
+    if (!errors.empty()) return readScene(doc, path, sceneDir, errors, {});  // throws: an unreadable file has no keys to check
+    return readScene(doc, path, sceneDir.empty() ? "." : sceneDir, errors, overrides);
+}
+
+SceneDef parseScene(const std::string& text, const std::string& sourceName, const std::vector<std::string>& overrides) {
+    std::vector<std::string> errors;
+    TomlDocument doc = TomlDocument::fromString(text, sourceName, errors);
+    if (!errors.empty()) return readScene(doc, sourceName, "", errors, {});
+    return readScene(doc, sourceName, "", errors, overrides);
+}
+
+std::string defaultScenePath() {
+    const char* relative = "config/scenes/default.toml";
+    if (std::filesystem::exists(relative)) return relative;
+    return std::string(OCEANBOX_SOURCE_DIR) + "/" + relative;
+}
+
+} // namespace ob::game

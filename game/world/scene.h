@@ -1,0 +1,78 @@
+// A scene: every Def of the sandbox, read from a TOML file in config/scenes/.
+#pragma once
+#include "world/camera.h"
+#include "sim/objects.h"
+#include "ecs/schedule.h"
+#include "foam/foam_def.h"
+#include "gfx/render_def.h"
+#include "interaction/ripple_def.h"
+#include "ocean/gerstner.h"
+#include "ocean/ocean_def.h"
+#include "platform/platform.h"
+#include "world/script.h"
+#include "splash/splash_def.h"
+
+#include <string>
+#include <vector>
+
+namespace ob::game {
+
+/// What a scene is for, section [scene].
+struct SceneInfoDef {
+    std::string purpose = "play";  ///< "play" (a sight to play) or "benchmark" (a measurement; `play` says so)
+    std::string note;              ///< one line `play` prints when it opens the scene ("" = none)
+};
+
+template <class V> void describe(V& v, SceneInfoDef& d) {
+    v.field("purpose", d.purpose, Choices{"play", "benchmark"}, "a scene to play, or a benchmark (play says so)");
+    v.field("note", d.note, Choices{}, "one line play prints when it opens the scene");
+}
+
+/// Everything a scene file can say; every section and key is optional.
+struct SceneDef {
+    SceneInfoDef info;            ///< [scene]
+    ecs::SimDef sim;              ///< [sim]
+    platform::WindowDef window;   ///< [window]
+    CameraDef camera;             ///< [camera]
+    gfx::RenderDef render;        ///< [render]
+    ocean::OceanDef ocean;        ///< [ocean]
+    ocean::GerstnerDef gerstner;  ///< [gerstner]
+    interaction::RippleDef ripples; ///< [ripples]
+    physics::PhysicsDef physics;  ///< [physics]
+    splash::SplashDef splash;     ///< [splash]
+    foam::FoamDef foam;           ///< [foam]
+    std::vector<ObjectDef> objects; ///< [[objects]]
+    std::vector<EventDef> events;   ///< [[events]]: the timeline
+};
+
+template <class V> void describe(V& v, SceneDef& s) {
+    v.section("scene", s.info);
+    v.section("sim", s.sim);
+    v.section("window", s.window);
+    v.section("camera", s.camera);
+    v.section("render", s.render);
+    v.section("ocean", s.ocean);
+    v.section("gerstner", s.gerstner);
+    v.section("ripples", s.ripples);
+    v.section("physics", s.physics);
+    v.section("splash", s.splash);
+    v.section("foam", s.foam);
+    v.list("objects", s.objects, "bodies, ships, cannons, fish schools");
+    v.list("events", s.events, "timeline: actions at simulated times");
+}
+
+/// Loads a scene file and applies `--set key.path=value` overrides (in order). Each
+/// objects[i].model is resolved (absolute as is; relative: next to the scene file, then the
+/// current folder, then the source tree), stored back as an absolute path, and loaded once
+/// to check it. Throws ob::InputError listing every problem (file:line:column: key: message).
+SceneDef loadScene(const std::string& path, const std::vector<std::string>& overrides = {});
+
+/// As loadScene, from text (`sourceName` names it in messages; relative model paths start
+/// at the current folder).
+SceneDef parseScene(const std::string& text, const std::string& sourceName, const std::vector<std::string>& overrides = {});
+
+/// The scene `play` opens with no argument: config/scenes/default.toml (from the current
+/// folder if it has one, else from the source tree).
+std::string defaultScenePath();
+
+} // namespace ob::game

@@ -1,0 +1,63 @@
+// The scene's timeline ([[events]]): actions at simulated times, run first in the script
+// phase, so a scene plays the same headless and in a window.
+#pragma once
+#include "core/schema.h"
+#include "ecs/schedule.h"
+#include "sim/objects.h"
+
+#include <string>
+#include <vector>
+
+namespace ob::game {
+
+struct SceneDef;
+
+/// One [[events]] entry: `action` at `at` seconds; the other keys are read by the actions
+/// that name them.
+struct EventDef {
+    float at = 0.0f;                    ///< simulated time, s, [0, 1e6]; runs in the step that starts nearest to it
+    std::string action = "fire";        ///< fire | spawn | set_speed | set | camera | screenshot
+    std::string target;                 ///< fire: cannon ("" = every cannon); set_speed: ship or fish school ("" = every scripted
+                                        ///< ship); camera: object to follow
+    std::string key;                    ///< set: a live scene key (render.*, camera.*, ripples.damping, physics drag/density keys)
+    float value = 0.0f;                 ///< set_speed: m/s; set: the key's new value (switches: 0 or 1)
+    std::string mode = "orbit";         ///< camera: "fixed", "orbit", "fly" or "follow"
+    glm::vec3 position{0.0f, 6.0f, -40.0f};  ///< camera: eye, world m (fixed, orbit, fly)
+    glm::vec3 look_at{0.0f};            ///< camera: point looked at, world m (fixed, orbit, fly)
+    std::string file = "event.png";     ///< screenshot: PNG written after the frame that follows (window or headless)
+    ObjectDef object;                   ///< spawn: the object, as an [[objects]] entry
+};
+
+template <class V> void describe(V& v, EventDef& d) {
+    v.field("at", d.at, range(0, 1e6), "simulated time of the action (s)");
+    v.field("action", d.action, Choices{"fire", "spawn", "set_speed", "set", "camera", "screenshot"}, "what happens");
+    v.field("target", d.target, Choices{}, "object name: the cannon fired, ship or school sped, object followed");
+    v.field("key", d.key, Choices{}, "set: live scene key, e.g. render.exposure or ripples.damping");
+    v.field("value", d.value, any(), "set_speed: m/s; set: the new value");
+    v.field("mode", d.mode, Choices{"fixed", "orbit", "fly", "follow"}, "camera: mode");
+    v.field("position", d.position, any(), "camera: eye (world m)");
+    v.field("look_at", d.look_at, any(), "camera: point looked at (world m)");
+    v.field("file", d.file, Choices{}, "screenshot: PNG path");
+    v.section("object", d.object);
+}
+
+/// The timeline's state (a resource of the world).
+struct ScriptState {
+    SceneDef* scene = nullptr;             ///< the live scene: `set` edits it
+    std::vector<EventDef> events;          ///< stable-sorted by time
+    size_t next = 0;                       ///< first event not yet run
+    uint64_t seed = 1;                     ///< feeds spawned objects
+    std::vector<std::string> screenshots;  ///< PNGs asked for since the last frame was drawn
+    int fired = 0;                         ///< events run so far
+};
+
+/// Checks what the reader cannot: `set` keys are live numeric keys with values in range,
+/// targets name objects of the scene (or spawned by it). One message per problem, prefixed
+/// with `source`.
+std::vector<std::string> validateEvents(SceneDef& scene, const std::string& source);
+/// Creates the timeline resource for the (live) scene.
+void addScript(ecs::World& world, SceneDef& scene);
+/// Script phase, first: runs every event due in this step, in order.
+void scriptSystem(ecs::World& world, const ecs::Tick& tick);
+
+} // namespace ob::game
