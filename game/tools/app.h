@@ -18,7 +18,7 @@ struct RunOptions {
     std::string screenshot;      ///< PNG of the last frame ("" = none)
     std::string stats;           ///< JSON summary ("" = none)
     std::string fallbackNote;    ///< what to say when falling back to headless
-    std::string input;           ///< scripted input file (TOML, game/input_script.h; "" = none)
+    std::string input;           ///< scripted input file (TOML, game/world/input_script.h; "" = none)
     int stepsPerFrame = 1;       ///< fixed clock only: simulation steps each rendered frame advances
     bool dynamicResolution = false;  ///< the internal scale holds [render] target_fps
 };
