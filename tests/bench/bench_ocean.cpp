@@ -117,4 +117,29 @@ BENCHMARK(BM_OceanGpuUpdate)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
+// The CPU backend's way to the renderer: OceanTextures::upload of the latest maps, then (mips
+// = 1) the textures' mipmaps, as every frame does, glFinish included. Args: N, mips.
+void BM_OceanTexturesUpload(benchmark::State& state) {
+    ob::setLogQuiet(true);
+    const auto platform = ob::platform::createHeadlessPlatform({16, 16});
+    OceanDef def;
+    def.resolution = int(state.range(0));
+    OceanFftCpu cpu(def);
+    OceanTextures textures(def.resolution, 1);
+    cpu.update(0.0);
+    textures.upload(cpu);  // warm-up: the driver allocates the storage at the first upload
+    glFinish();
+    for (auto _ : state) {
+        textures.upload(cpu);
+        if (state.range(1)) textures.generateMipmaps();
+        glFinish();
+    }
+    state.SetLabel(ob::gfx::glRendererName());
+}
+BENCHMARK(BM_OceanTexturesUpload)
+    ->ArgNames({"N", "mips"})
+    ->ArgsProduct({{64, 128, 256, 512}, {0, 1}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
 } // namespace

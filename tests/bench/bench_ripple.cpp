@@ -1,7 +1,11 @@
 // Ripple layer benchmarks (SPEC §2.5, seed 001): the eq. 1–2 step per field size, boundary and
 // worker count, bounding-sphere stamping (Table 2, eq. 3–7) of many spheres in contact, one by
 // one and batched, and the Table 5 fish swarm.
+#include "core/log.h"
 #include "core/parallel.h"
+#include "gfx/gl.h"
+#include "interaction/ripple_gpu.h"
+#include "platform/platform.h"
 #include "sim/fish_swarm.h"
 #include "interaction/ripple_field.h"
 #include "interaction/sphere_stamp.h"
@@ -57,6 +61,37 @@ void BM_RippleStep(benchmark::State& state) {
 BENCHMARK(BM_RippleStep)
     ->ArgNames({"N", "absorbing", "workers"})
     ->ArgsProduct({{128, 256, 512, 1024, 2048}, {0, 1}, {1, 2}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+// The GPU twin of the step on OSMesa (llvmpipe here: the dispatches run on the CPU's cores),
+// glFinish included. Args: N; what (0 = step, 1 = step and read Vh(t) back, 2 = 50 stamps).
+void BM_RippleGpu(benchmark::State& state) {
+    ob::setLogQuiet(true);
+    const auto platform = ob::platform::createHeadlessPlatform({16, 16});
+    const int n = int(state.range(0));
+    RippleFieldGpu gpu(n, n, RippleBoundary::Fixed);
+    std::mt19937 rng(61);
+    std::uniform_real_distribution<float> noise(-0.1f, 0.1f);
+    std::vector<float> h(size_t(n) * size_t(n));
+    for (float& v : h) v = noise(rng);
+    gpu.upload(h, h);
+    std::vector<RippleStamp> stamps;
+    for (int k = 0; k < 50; ++k) stamps.push_back({(37 * k) % n, (53 * k) % n, 5.0f, 0.0f, -0.1f, 0.0f});
+    std::vector<float> heights;
+    const auto body = [&] {
+        if (state.range(1) == 2) gpu.stamp(stamps);
+        else gpu.step(DAMPING);
+        if (state.range(1) == 1) gpu.readCurrent(heights);
+        glFinish();
+    };
+    body();  // warm-up: the driver compiles each shader at its first dispatch
+    for (auto _ : state) body();
+    state.SetLabel(ob::gfx::glRendererName());
+}
+BENCHMARK(BM_RippleGpu)
+    ->ArgNames({"N", "what"})
+    ->ArgsProduct({{128, 512, 1024}, {0, 1, 2}})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 

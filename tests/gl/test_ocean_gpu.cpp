@@ -1,6 +1,6 @@
 // GPU spectral ocean (OceanFftGpu → OceanTextures) against FFTW (OceanFftCpu with the same
 // def and seed), against a direct DFT of eq. 1 in double, and against the closed form of a
-// single wave (eq. 2, 3, 6, 7); the CPU upload path; timings under a hidden tag.
+// single wave (eq. 2, 3, 6, 7); the CPU upload path (timings: tests/bench/bench_ocean.cpp).
 #include "gfx/gl.h"
 #include "ocean/ocean_fft_cpu.h"
 #include "ocean/ocean_fft_gpu.h"
@@ -302,40 +302,4 @@ TEST_CASE("the GPU backend rejects a resolution its shared-memory FFT cannot hol
     OceanDef def;
     def.resolution = 4096;
     CHECK_THROWS_WITH(OceanFftGpu(def), Catch::Contains("ocean.resolution"));
-}
-
-// Not a test: ms per update() on this context (llvmpipe here) against OceanFftCpu::update.
-// Run with: build/bin/tests_gl "[.ocean_gpu_bench]" -s
-TEST_CASE("ocean GPU backend timings", "[.ocean_gpu_bench]") {
-    auto context = glContext();
-    using Clock = std::chrono::steady_clock;
-    const auto ms = [](Clock::duration d) { return std::chrono::duration<double, std::milli>(d).count(); };
-    std::printf("renderer: %s\n", gfx::glRendererName());
-    std::printf("%6s %12s %12s %12s %12s %12s\n", "N", "gpu update", "gpu +mips", "cpu update", "cpu upload", "cpu 1 thr");
-    for (int n : {64, 128, 256, 512}) {
-        OceanDef def;
-        def.resolution = n;
-        OceanFftGpu gpu(def);
-        OceanTextures textures(n, 1);
-        OceanFftCpu cpu(def);
-        OceanFftCpu cpu1(def, 1);
-        const int reps = n <= 128 ? 40 : (n <= 256 ? 20 : 8);
-        const auto timeIt = [&](auto&& step) {
-            step(0);  // warm up (shader compilation by the driver, page faults)
-            glFinish();
-            const auto start = Clock::now();
-            for (int r = 1; r <= reps; ++r) step(r);
-            glFinish();
-            return ms(Clock::now() - start) / reps;
-        };
-        const double gpuMs = timeIt([&](int r) { gpu.update(r / 60.0, textures); });
-        const double gpuMipsMs = timeIt([&](int r) {
-            gpu.update(r / 60.0, textures);
-            textures.generateMipmaps();
-        });
-        const double cpuMs = timeIt([&](int r) { cpu.update(r / 60.0); });
-        const double uploadMs = timeIt([&](int) { textures.upload(cpu); });
-        const double cpu1Ms = timeIt([&](int r) { cpu1.update(r / 60.0); });
-        std::printf("%6d %12.3f %12.3f %12.3f %12.3f %12.3f\n", n, gpuMs, gpuMipsMs, cpuMs, uploadMs, cpu1Ms);
-    }
 }

@@ -1,6 +1,6 @@
 // GPU ripple field (RippleFieldGpu, shaders/ripple_*.comp) against its CPU twin: eq. 1–2 steps
 // with both boundaries, eq. 5 + 7 stamps with and without overlap, scrolling, Table 2 planning
-// on the CPU, readback; timings under a hidden tag (SPEC §2.5, seed 001).
+// on the CPU, readback (SPEC §2.5, seed 001; timings: tests/bench/bench_ripple.cpp).
 #include "gfx/gl.h"
 #include "interaction/ripple_field.h"
 #include "interaction/ripple_gpu.h"
@@ -326,43 +326,4 @@ TEST_CASE("GPU asynchronous readback (beginReadback, finishReadback) returns the
     CHECK(out == direct);
     CHECK_FALSE(gpu.finishReadback(out));
     CHECK(gfx::glErrorCount() == errorsBefore);
-}
-
-// Run with: build/bin/tests_gl "[.ripple_gpu_bench]" -s
-TEST_CASE("ripple GPU step timings against the CPU", "[.ripple_gpu_bench]") {
-    auto context = glContext();
-    using Clock = std::chrono::steady_clock;
-    const auto ms = [](Clock::duration d) { return std::chrono::duration<double, std::milli>(d).count(); };
-    std::printf("renderer: %s\n", gfx::glRendererName());
-    std::printf("%6s %14s %14s %14s %14s %14s\n", "N", "gpu step", "gpu step+read", "gpu 50 stamps", "cpu step", "cpu absorbing");
-    for (int n : {128, 512, 1024}) {
-        RippleFieldGpu gpu(n, n, RippleBoundary::Fixed);
-        RippleField cpu(n, n, RippleBoundary::Fixed);
-        RippleField cpuSponge(n, n, RippleBoundary::Absorbing, 16);
-        const std::vector<float> h = randomField(size_t(n) * size_t(n), 61);
-        gpu.upload(h, h);
-        load(cpu, h, h);
-        load(cpuSponge, h, h);
-        std::vector<RippleStamp> stamps;
-        for (int k = 0; k < 50; ++k) stamps.push_back({(37 * k) % n, (53 * k) % n, 5.0f, 0.0f, -0.1f, 0.0f});
-        std::vector<float> heights;
-        const int reps = n <= 128 ? 200 : (n <= 512 ? 40 : 15);
-        const auto timeIt = [&](auto&& body) {
-            body();  // warm up (shader compilation by the driver, page faults)
-            glFinish();
-            const auto start = Clock::now();
-            for (int r = 0; r < reps; ++r) body();
-            glFinish();
-            return ms(Clock::now() - start) / reps;
-        };
-        const double gpuMs = timeIt([&] { gpu.step(0.99f); });
-        const double gpuReadMs = timeIt([&] {
-            gpu.step(0.99f);
-            gpu.readCurrent(heights);
-        });
-        const double stampMs = timeIt([&] { gpu.stamp(stamps); });
-        const double cpuMs = timeIt([&] { cpu.step(0.99f); });
-        const double cpuSpongeMs = timeIt([&] { cpuSponge.step(0.99f); });
-        std::printf("%6d %14.3f %14.3f %14.3f %14.3f %14.3f\n", n, gpuMs, gpuReadMs, stampMs, cpuMs, cpuSpongeMs);
-    }
 }
