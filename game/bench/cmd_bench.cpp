@@ -1,5 +1,6 @@
 // `oceanbox bench`: the subcommands' flags, and the spheres bench (seed 001 Table 5).
 #include "bench/cmd_bench.h"
+#include "cli/commands.h"
 
 #include "core/file_write.h"
 #include "bench/bench_report.h"
@@ -186,7 +187,7 @@ int benchSpheres(const SpheresBenchArgs& a) {
     return EXIT_OK;
 }
 
-void addBenchCommand(CLI::App& app, std::function<int()>& action, const std::string& commandLine) {
+void addBenchCommand(CLI::App& app, CommandAction& action, const std::string& commandLine) {
     CLI::App* bench = app.add_subcommand("bench", "benchmarks that reproduce the papers' tables (spheres, fields, ocean, frame)");
     bench->require_subcommand(0, 1);
     bench->callback([&action, bench] {

@@ -76,10 +76,6 @@ int benchFields(const FieldsBenchArgs& args);
 int benchOcean(const OceanBenchArgs& args);
 int benchFrame(const FrameBenchArgs& args);
 
-/// Adds `bench` with its four subcommands to app; the chosen one sets `action`. commandLine:
-/// the whole command as typed.
-void addBenchCommand(CLI::App& app, std::function<int()>& action, const std::string& commandLine);
-
 /// Parses "WxH" (16..8192 each); throws ob::InputError naming the flag.
 std::pair<int, int> parseSize(const std::string& flag, const std::string& text);
 
