@@ -1,9 +1,6 @@
-// Floating bodies: spawning, water forces (Archimedes + drag per probe), Bullet stepping.
+// Floating bodies: spheres and boxes, water forces (Archimedes + drag per probe), Bullet stepping.
 #include "sim/objects.h"
 
-#include "behaviours/cannon.h"
-#include "behaviours/fish.h"
-#include "behaviours/ship.h"
 #include "ecs/components.h"
 #include "interaction/ripple_def.h"
 #include "interaction/ripple_patch.h"
@@ -86,7 +83,7 @@ ecs::Entity findObject(ecs::World& world, const std::string& name) {
 
 // A sphere or a box: a floating body whose bounding sphere is the body itself (the paper's
 // cannonball: SHR 1, AF 0, SD −1: it pushes the water down).
-static ecs::Entity spawnFloatingBody(ecs::World& world, const ObjectDef& o) {
+ecs::Entity spawnFloatingBody(ecs::World& world, const ObjectDef& o, uint64_t /*seed*/) {
     auto& physicsWorld = *world.resource<physics::PhysicsWorld>();
     const bool sphere = o.type == "sphere";
     float volume = sphere ? 4.0f / 3.0f * float(M_PI) * o.radius * o.radius * o.radius : o.size.x * o.size.y * o.size.z;
@@ -106,19 +103,6 @@ static ecs::Entity spawnFloatingBody(ecs::World& world, const ObjectDef& o) {
     paper.accelerationFactor = 0.0f;
     world.add<interaction::SphereSet>(e, {{boundingSphereFor(o, paper, rippleCellSize(world))}, {}});
     return e;
-}
-
-ecs::Entity spawnObject(ecs::World& world, const ObjectDef& o, uint64_t seed) {
-    if (o.type == "ship") return spawnShip(world, o);
-    if (o.type == "cannon") return spawnCannon(world, o);
-    if (o.type == "fish_school") return spawnFishSchool(world, o, seed);
-    return spawnFloatingBody(world, o);
-}
-
-void spawnObjects(ecs::World& world, const physics::PhysicsDef& def, const std::vector<ObjectDef>& objects, uint64_t seed) {
-    world.setResource(std::make_unique<physics::PhysicsWorld>(def));
-    world.setResource(std::make_unique<physics::PhysicsDef>(def));
-    for (size_t i = 0; i < objects.size(); ++i) spawnObject(world, objects[i], seed * 1000003ull + i);
 }
 
 // The ripple level a body floats in: the patch averaged on a ring just outside the body's

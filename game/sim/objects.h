@@ -134,11 +134,9 @@ float rippleCellSize(ecs::World& world);
 /// radius in metres from SR cells.
 interaction::BoundingSphere boundingSphereFor(const ObjectDef& def, const interaction::BoundingSphere& paper, float cellSize);
 
-/// Creates the physics resource and every object of the scene (spawnObject, in order).
-void spawnObjects(ecs::World& world, const physics::PhysicsDef& def, const std::vector<ObjectDef>& objects, uint64_t seed);
-/// Creates one object (any type) in a world that has the physics resource; `seed` feeds its
-/// random choices (fish). Returns the object's entity.
-ecs::Entity spawnObject(ecs::World& world, const ObjectDef& def, uint64_t seed);
+/// Creates a sphere or a box (def.type) in a world that has the physics resource: a floating
+/// body whose bounding sphere is the body itself. Spawning any type: sim/spawning.h.
+ecs::Entity spawnFloatingBody(ecs::World& world, const ObjectDef& def, uint64_t seed);
 /// Creates a floating Bullet body entity (Transform, Motion, Body, Renderable, ObjectTag);
 /// the caller adds its SphereSet. `probes` in the body frame; mass in kg.
 ecs::Entity spawnBody(ecs::World& world, const std::string& type, const std::string& name, physics::BodyId id,

@@ -46,7 +46,8 @@ ecs::Entity followedObject(ecs::World& world, const std::string& name) {
 
 ecs::Entity spawnCamera(ecs::World& world, const CameraDef& def) {
     ecs::Entity e = world.create();
-    CameraRig rig{def};
+    CameraRig rig;
+    rig.def = def;
     rig.startMode = def.mode;
     rig.focus = def.target;
     rig.underwater = def.position.y < 0.0f;  // a scene that starts below the water means it

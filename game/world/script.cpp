@@ -2,6 +2,8 @@
 // screenshot) run in the script phase.
 #include "world/script.h"
 
+#include "sim/spawning.h"
+
 #include "world/camera.h"
 #include "behaviours/cannon.h"
 #include "core/log.h"

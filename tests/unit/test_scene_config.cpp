@@ -86,6 +86,20 @@ TEST_CASE("an unknown key names file, line, column and key path", "[config]") {
     CHECK(e == "bad.toml:3:1: render.fresnell: unknown key");
 }
 
+TEST_CASE("a key an object's type does not read is an error naming the type, in [[objects]] and spawn events", "[config]") {
+    // A cannon has no density (its balls have ball_density), a ship no radius: each was once
+    // read into the shared ObjectDef and silently ignored.
+    std::string e = sceneError("[[objects]]\ntype = \"cannon\"\ndensity = 900.0\n\n[[objects]]\ntype = \"ship\"\nradius = 2.0\n");
+    CHECK(e.find("bad.toml:3:11: objects[0].density: a cannon has no 'density'") != std::string::npos);
+    CHECK(e.find("bad.toml:7:10: objects[1].radius: a ship has no 'radius'") != std::string::npos);
+    CHECK(e.find("ball_density") != std::string::npos);  // says what a cannon reads
+    e = sceneError("[[events]]\nat = 1.0\naction = \"spawn\"\n[events.object]\ntype = \"box\"\ncount = 3\n");
+    CHECK(e.find("bad.toml:6:9: events[0].object.count: a box has no 'count'") != std::string::npos);
+    // Every key a type reads is accepted, the bounding sphere's keys by every type.
+    CHECK(sceneError("[[objects]]\ntype = \"fish_school\"\ncount = 3\nspheres = \"custom\"\nsphere_cells = 4.0\n") == "");
+    CHECK(sceneError("[[objects]]\ntype = \"box\"\nsize = [1.0, 2.0, 1.0]\nvelocity = [0.0, 0.0, 1.0]\ndensity = 300.0\n") == "");
+}
+
 TEST_CASE("an unknown section is an error", "[config]") {
     CHECK(sceneError("[oceans]\nx = 1\n") == "bad.toml:1:2: oceans: unknown section");
 }
