@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <chrono>
 #include <numeric>
+#include <stdexcept>
+#include <string>
 
 namespace ob::ecs {
 
@@ -40,17 +42,24 @@ double median(std::vector<double> samples) {
 
 using Ms = std::chrono::duration<double, std::milli>;
 
-void Schedule::runPhase(World& world, Phase phase, const Tick& tick) {
+void Schedule::add(const SystemEntry& entry) {
+    const bool stepsBefore = std::any_of(m_systems.begin(), m_systems.end(), [](const SystemEntry& e) { return e.rate == Rate::Step; });
+    const bool afterSteps = !m_systems.empty() && m_systems.back().rate == Rate::Frame && stepsBefore;
+    if ((!m_systems.empty() && entry.phase < m_systems.back().phase) || (entry.rate == Rate::Step && afterSteps))
+        throw std::logic_error(std::string("phase table: '") + entry.name + "' is out of order");
+    m_systems.push_back(entry);
+}
+
+void Schedule::run(World& world, const SystemEntry& entry, const Tick& tick) {
     auto t0 = std::chrono::steady_clock::now();
-    for (const Entry& e : m_systems)
-        if (e.phase == phase) e.fn(world, tick);
-    m_timer.addCpu(phase, Ms(std::chrono::steady_clock::now() - t0).count());
+    entry.fn(world, tick);
+    m_timer.addCpu(entry.phase, Ms(std::chrono::steady_clock::now() - t0).count());
 }
 
 void Schedule::runStep(World& world, double clock) {
-    const Tick tick{simTime(), stepSeconds(), m_step, clock};
-    // --- simulation phases, in table order
-    for (Phase p : {Phase::Script, Phase::Physics, Phase::Interaction, Phase::Ocean}) runPhase(world, p, tick);
+    const Tick tick{simTime(), stepSeconds(), m_step, clock, simTime() + stepSeconds()};
+    for (const SystemEntry& e : m_systems)
+        if (e.rate == Rate::Step) run(world, e, tick);
     ++m_step;
 }
 
@@ -66,8 +75,10 @@ void Schedule::runFrame(World& world, double now) {
     const double before = now - frameDt;
     m_lastNow = now;
 
-    // --- input: once per frame
-    runPhase(world, Phase::Input, Tick{simTime(), frameDt, m_step, now});
+    // --- the per-frame rows before the steps (input)
+    const auto firstStep = std::find_if(m_systems.begin(), m_systems.end(), [](const SystemEntry& e) { return e.rate == Rate::Step; });
+    const Tick frameTick{simTime(), frameDt, m_step, now, simTime()};
+    for (auto e = m_systems.begin(); e != firstStep; ++e) run(world, *e, frameTick);
 
     // --- simulation: the fixed steps due by now, at most max_steps_per_frame (the rest is
     // dropped). Step j of n reaches the clock at before + (j+1)/n of the frame, so the
@@ -87,8 +98,10 @@ void Schedule::runFrame(World& world, double now) {
         if (due == m_def.max_steps_per_frame && m_accumulator > h) m_accumulator = 0;
     }
 
-    // --- render: once per frame, at the latest simulated state
-    runPhase(world, Phase::Render, Tick{simTime(), frameDt, m_step, now});
+    // --- the per-frame rows after the steps (render), at the latest simulated state
+    const Tick renderTick{simTime(), frameDt, m_step, now, simTime()};
+    for (auto e = firstStep; e != m_systems.end(); ++e)
+        if (e->rate == Rate::Frame) run(world, *e, renderTick);
     ++m_frames;
 }
 

@@ -45,17 +45,31 @@ struct SimControl {
     int stepRequests = 0;  ///< steps to run while paused (consumed by the schedule)
 };
 
-/// What a system sees of time. For per-frame phases dt is the frame's clock time.
+/// What a system sees of time. For per-frame systems dt is the frame's clock time.
 struct Tick {
-    double time = 0;     ///< simulated seconds at the start of this step (frame phases: now)
-    double dt = 0;       ///< step length (s); frame phases: the clock time since the last frame
-    uint64_t step = 0;   ///< index of this simulation step (frame phases: the next one)
+    double time = 0;     ///< simulated seconds at the start of this step (per frame: now)
+    double dt = 0;       ///< step length (s); per frame: the clock time since the last frame
+    uint64_t step = 0;   ///< index of this simulation step (per frame: the next one)
     double clock = 0;    ///< the run's clock time this step or frame reaches: input stamped
                          ///< before it belongs to it (platform::InputQueue)
+    double end = 0;      ///< simulated seconds at the end of this step (per frame: = time)
 };
 
 /// A system: a free function over the world.
 using SystemFn = void (*)(World&, const Tick&);
+
+/// How often a system runs: once per frame, or once per fixed simulation step.
+enum class Rate : uint8_t { Frame, Step };
+
+/// One row of the phase table. A frame runs the per-frame rows before the first per-step
+/// row, then the steps due (every per-step row, in order, each step), then the per-frame
+/// rows after them; the phase names the row's timing bucket and must not decrease.
+struct SystemEntry {
+    Phase phase;
+    Rate rate;
+    const char* name;
+    SystemFn fn;
+};
 
 /// Per-phase CPU (and GPU where measured) milliseconds, one sample per frame. A series
 /// keeps its latest samples only, between MAX_SAMPLES and 2·MAX_SAMPLES of them once that
@@ -100,8 +114,10 @@ double median(std::vector<double> samples);
 class Schedule {
 public:
     explicit Schedule(const SimDef& def) : m_def(def) {}
-    /// Appends a system to a phase; systems of a phase run in the order added.
-    void add(Phase phase, const char* name, SystemFn fn) { m_systems.push_back({phase, name, fn}); }
+    /// Appends a row to the phase table (see SystemEntry); throws std::logic_error if the
+    /// table would break its order (a phase before the last one's, a per-frame row between
+    /// per-step rows).
+    void add(const SystemEntry& entry);
     /// Runs one frame at clock time `now` (s): input, the simulation steps due, render.
     void runFrame(World& world, double now);
     /// Closes the open frame's timing (runFrame does it for the previous frame; call it
@@ -121,16 +137,11 @@ public:
     double stepSeconds() const { return 1.0 / m_def.step_hz; }
 
 private:
-    struct Entry {
-        Phase phase;
-        const char* name;
-        SystemFn fn;
-    };
-    void runPhase(World& world, Phase phase, const Tick& tick);
+    void run(World& world, const SystemEntry& entry, const Tick& tick);
     void runStep(World& world, double clock);
 
     SimDef m_def;
-    std::vector<Entry> m_systems;
+    std::vector<SystemEntry> m_systems;
     FrameTimer m_timer;
     uint64_t m_step = 0;
     uint64_t m_frames = 0;

@@ -64,7 +64,7 @@ void oceanSystem(ecs::World& world, const ecs::Tick& tick) {
     OceanState* ocean = world.resource<OceanState>();
     if (!ocean) return;
     // The state after this step is the state at its end time.
-    ocean->mapsTime = tick.time + tick.dt;
+    ocean->mapsTime = tick.end;
     if (ocean->prefetch.valid()) ocean->prefetch.get();
     if (ocean->cpuNext && ocean->prefetchTime == ocean->mapsTime) {
         std::swap(ocean->cpu, ocean->cpuNext);

@@ -89,35 +89,32 @@ void renderSystem(ecs::World& world, const ecs::Tick& tick) {
     }
 }
 
-// The frame's phase table: every system, in execution order within its phase.
-struct SystemEntry {
-    ecs::Phase phase;
-    const char* name;
-    ecs::SystemFn fn;
-};
-const SystemEntry SYSTEMS[] = {
-    {ecs::Phase::Input, "platform input", platformInputSystem},
-    {ecs::Phase::Input, "frame input", frameInputSystem},
-    {ecs::Phase::Input, "controls", controlsSystem},
-    {ecs::Phase::Script, "step input", stepInputSystem},
-    {ecs::Phase::Script, "events", scriptSystem},
-    {ecs::Phase::Script, "spawn requests", spawnRequestsSystem},
-    {ecs::Phase::Script, "ships", shipSystem},
-    {ecs::Phase::Script, "cannons", cannonSystem},
-    {ecs::Phase::Script, "fish", fishSystem},
-    {ecs::Phase::Physics, "bodies", physicsSystem},
-    {ecs::Phase::Interaction, "fish stamps", fishStampSystem},
-    {ecs::Phase::Interaction, "ripples", interactionSystem},
-    {ecs::Phase::Interaction, "splashes and foam", splashFoamSystem},
-    {ecs::Phase::Ocean, "ocean", oceanSystem},
-    {ecs::Phase::Render, "camera", cameraSystem},
-    {ecs::Phase::Render, "render", renderSystem},
+// The frame's phase table: every system in execution order, its phase and its rate.
+using ecs::Phase;
+using ecs::Rate;
+const ecs::SystemEntry SYSTEMS[] = {
+    {Phase::Input, Rate::Frame, "platform input", platformInputSystem},
+    {Phase::Input, Rate::Frame, "frame input", frameInputSystem},
+    {Phase::Input, Rate::Frame, "controls", controlsSystem},
+    {Phase::Script, Rate::Step, "step input", stepInputSystem},
+    {Phase::Script, Rate::Step, "events", scriptSystem},
+    {Phase::Script, Rate::Step, "spawn requests", spawnRequestsSystem},
+    {Phase::Script, Rate::Step, "ships", shipSystem},
+    {Phase::Script, Rate::Step, "cannons", cannonSystem},
+    {Phase::Script, Rate::Step, "fish", fishSystem},
+    {Phase::Physics, Rate::Step, "bodies", physicsSystem},
+    {Phase::Interaction, Rate::Step, "fish stamps", fishStampSystem},
+    {Phase::Interaction, Rate::Step, "ripples", interactionSystem},
+    {Phase::Interaction, Rate::Step, "splashes and foam", splashFoamSystem},
+    {Phase::Ocean, Rate::Step, "ocean", oceanSystem},
+    {Phase::Render, Rate::Frame, "camera", cameraSystem},
+    {Phase::Render, Rate::Frame, "render", renderSystem},
 };
 
 } // namespace
 
 Sandbox::Sandbox(const SceneDef& scene) : m_scene(scene), m_schedule(scene.sim) {
-    for (const SystemEntry& s : SYSTEMS) m_schedule.add(s.phase, s.name, s.fn);
+    for (const ecs::SystemEntry& s : SYSTEMS) m_schedule.add(s);
     addControls(m_world);
     spawnCamera(m_world, m_scene.camera);
     addOcean(m_world, m_scene.ocean, m_scene.gerstner);

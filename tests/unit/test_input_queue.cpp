@@ -5,6 +5,9 @@
 #include "platform/input.h"
 
 #include <catch2/catch.hpp>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 using namespace ob;
 using platform::InputEvent;
@@ -98,7 +101,7 @@ TEST_CASE("the schedule spreads a frame's clock over its steps: step j of n ends
         ecs::Schedule schedule(def);
         ecs::World world;
         world.setResource(std::make_unique<StepClocks>());
-        schedule.add(ecs::Phase::Script, "clock", recordClock);
+        schedule.add({ecs::Phase::Script, ecs::Rate::Step, "clock", recordClock});
         schedule.setFirstFrameSeconds(k / 60.0);
         for (int f = 0; f < 24 / k; ++f) schedule.runFrame(world, (f + 1) * (k / 60.0));
         const auto& clocks = world.resource<StepClocks>()->clocks;
@@ -106,4 +109,34 @@ TEST_CASE("the schedule spreads a frame's clock over its steps: step j of n ends
         REQUIRE(clocks.size() == 24);
         for (size_t j = 0; j < clocks.size(); ++j) CHECK(clocks[j] == Approx((double(j) + 1.0) / 60.0).margin(1e-9));
     }
+}
+
+namespace {
+struct RunOrder {
+    std::vector<std::string> rows;
+};
+template <char Name> void recordRow(ecs::World& world, const ecs::Tick& tick) {
+    world.resource<RunOrder>()->rows.push_back(std::string(1, Name) + (tick.end > tick.time ? "+" : "="));
+}
+} // namespace
+
+TEST_CASE("the phase table's rates: per-frame rows around the steps, every per-step row each step, rows kept in order",
+          "[input]") {
+    ecs::SimDef def;
+    def.max_steps_per_frame = 8;
+    ecs::Schedule schedule(def);
+    ecs::World world;
+    world.setResource(std::make_unique<RunOrder>());
+    schedule.add({ecs::Phase::Input, ecs::Rate::Frame, "a", recordRow<'a'>});
+    schedule.add({ecs::Phase::Script, ecs::Rate::Step, "b", recordRow<'b'>});
+    schedule.add({ecs::Phase::Ocean, ecs::Rate::Step, "c", recordRow<'c'>});
+    schedule.add({ecs::Phase::Render, ecs::Rate::Frame, "d", recordRow<'d'>});
+    schedule.setFirstFrameSeconds(2.0 / 60.0);
+    schedule.runFrame(world, 2.0 / 60.0);  // two steps due
+    // A step's tick ends one step after it starts; a frame's does not advance.
+    CHECK(world.resource<RunOrder>()->rows == std::vector<std::string>{"a=", "b+", "c+", "b+", "c+", "d="});
+    // A phase before the last row's, or a per-step row after the per-frame rows that follow
+    // the steps, is refused.
+    CHECK_THROWS_AS(schedule.add({ecs::Phase::Physics, ecs::Rate::Frame, "e", recordRow<'e'>}), std::logic_error);
+    CHECK_THROWS_AS(schedule.add({ecs::Phase::Render, ecs::Rate::Step, "f", recordRow<'f'>}), std::logic_error);
 }
