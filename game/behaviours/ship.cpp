@@ -5,7 +5,7 @@
 
 #include "ecs/components.h"
 #include "interaction/sphere_set.h"
-#include "world/controls.h"
+#include "behaviours/step_input.h"
 
 #include <algorithm>
 #include <cmath>

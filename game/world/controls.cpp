@@ -4,7 +4,7 @@
 #include "world/camera.h"
 #include "core/log.h"
 #include "sim/objects.h"
-#include "sim/spawning.h"
+#include "behaviours/spawning.h"
 #include "world/script.h"
 
 #include <cstdio>

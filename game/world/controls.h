@@ -1,6 +1,7 @@
 // The player's controls: the frame's keys (pause P, step N, screenshot F12, camera mode C,
 // overlay H, quit Esc) and the simulation's input (held keys and presses, per fixed step).
 #pragma once
+#include "behaviours/step_input.h"
 #include "ecs/schedule.h"
 #include "platform/input.h"
 
@@ -8,11 +9,6 @@
 
 namespace ob::game {
 
-/// What the fixed steps see of the input (a resource): events drained up to each step's
-/// clock time, so a press is seen by exactly one step whatever the frame rate.
-struct StepInput : platform::InputState {
-    bool keysMoveCamera = false;  ///< the camera flies: W/S/A/D/Q/E are the camera's, not the ship's
-};
 
 /// Scripted input events not yet queued (a resource; `run --input`).
 struct ScriptedInput {

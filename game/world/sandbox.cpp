@@ -11,7 +11,7 @@
 #include "gfx/ui_overlay.h"
 #include "behaviours/fish.h"
 #include "sim/objects.h"
-#include "sim/spawning.h"
+#include "behaviours/spawning.h"
 #include "ocean/ocean_fft_cpu.h"
 #include "world/script.h"
 #include "behaviours/ship.h"

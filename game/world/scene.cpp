@@ -4,7 +4,7 @@
 #include "assets/model.h"
 #include "core/error.h"
 #include "core/toml_reader.h"
-#include "sim/spawning.h"
+#include "behaviours/spawning.h"
 
 #include <filesystem>
 
@@ -59,7 +59,7 @@ struct KeyLister {
     template <class T, class... Rest> void field(const char* key, T&, Rest&&...) { keys.push_back(key); }
 };
 
-// Every key an object table holds must be one its type reads (sim/spawning.cpp): a cannon's
+// Every key an object table holds must be one its type reads (behaviours/spawning.cpp): a cannon's
 // `density` or a ship's `radius` would otherwise be accepted and silently ignored.
 static void checkObjectKeys(const ObjectDef& o, const std::string& at, const TomlDocument& doc, const std::string& source,
                             std::vector<std::string>& errors) {

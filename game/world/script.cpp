@@ -2,7 +2,7 @@
 // screenshot) run in the script phase.
 #include "world/script.h"
 
-#include "sim/spawning.h"
+#include "behaviours/spawning.h"
 
 #include "world/camera.h"
 #include "behaviours/cannon.h"

@@ -1,4 +1,4 @@
-// Spawning by table: each [[objects]] type, how it enters the world and the keys of
+// Spawning by table (the behaviours and sim/objects' floating bodies): each [[objects]] type, how it enters the world and the keys of
 // ObjectDef it reads. A key its type does not read is a scene error naming the type.
 #pragma once
 #include "ecs/world.h"

@@ -1,5 +1,5 @@
 // The object types' table: the floating bodies of sim/objects.cpp and the behaviours.
-#include "sim/spawning.h"
+#include "behaviours/spawning.h"
 
 #include "behaviours/cannon.h"
 #include "behaviours/fish.h"
