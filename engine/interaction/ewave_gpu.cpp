@@ -133,8 +133,10 @@ void EWaveGpu::step(float dt) {
         glProgramUniform1i(m_step.id(), MODE_LOCATION, m_boundary == EWaveBoundary::Fixed ? MODE_RING : MODE_SPONGE);
         glUseProgram(m_step.id());
         glDispatchCompute(m_groups, m_groups, 1);
-        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
     }
+    // Readers of the state: the next step's dispatches, download (glGetNamedBufferSubData) and
+    // upload (glNamedBufferSubData, which must not overtake this step's reads).
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
     glUseProgram(0);
     std::swap(m_fields[0], m_fields[1]);
 }
