@@ -90,7 +90,7 @@ void RipplePatch::centerOn(glm::vec2 worldCenter) {
             s.gx -= float(shift.x);
             s.gz -= float(shift.y);
         }
-        m_edited = m_ewaveGpu != nullptr;  // the GPU twin takes the scrolled state next step
+        if (m_ewaveGpu) m_edited = true;  // the GPU twin takes the scrolled state next step
     }
     m_field.scroll(shift.x, shift.y);
     if (m_gpu) m_gpu->scroll(shift.x, shift.y);

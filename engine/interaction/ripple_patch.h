@@ -71,7 +71,8 @@ public:
     /// state. No-op on the CPU.
     void fieldEdited() { m_edited = onGpu(); }
     const RippleField& field() const { return m_field; }
-    /// The ewave field; null under kang2008.
+    /// The ewave field; null under kang2008. Writable: on the GPU, call fieldEdited() after
+    /// writing its state.
     EWaveField* ewave() { return m_ewave.get(); }
     const EWaveField* ewave() const { return m_ewave.get(); }
     /// The current height level of either model, rows·cols row-major (z·cols + x), m: what the

@@ -5,6 +5,7 @@
 #include "gfx/gl.h"
 #include "interaction/ewave_field.h"
 #include "interaction/ewave_gpu.h"
+#include "interaction/ripple_def.h"
 #include "interaction/ripple_patch.h"
 #include "platform/platform.h"
 #include "sandbox.h"
@@ -193,6 +194,47 @@ TEST_CASE("GPU ewave: a single Fourier mode cos(K.X) on a periodic field evolves
                     worst / amplitude);
         CHECK(worst <= 3e-4 * amplitude);
     }
+    CHECK(gfx::glErrorCount() == errorsBefore);
+}
+
+TEST_CASE("RipplePatch on the ewave GPU twin: written state (fieldEdited) and scrolling (centerOn) reach the GPU as on the CPU",
+          "[ewave_gpu]") {
+    auto context = glContext();
+    const int errorsBefore = gfx::glErrorCount();
+    RippleDef def;
+    def.model = "ewave";
+    def.resolution = 64;
+    def.cell_size = 0.25f;
+    def.boundary = "absorbing";
+    def.sponge_width = 8;
+    RipplePatch cpu(def), gpu(def);
+    REQUIRE(gpu.useGpu());
+    REQUIRE(gpu.onGpu());
+    REQUIRE_FALSE(cpu.onGpu());
+    const float dt = 1.0f / 60.0f;
+    for (int k = 0; k < 40; ++k) {
+        if (k == 5) {
+            // A smooth bump written straight into h, as splash landings do.
+            for (RipplePatch* p : {&cpu, &gpu}) {
+                auto h = p->ewave()->heightState();
+                for (int z = 0; z < 64; ++z)
+                    for (int x = 0; x < 64; ++x)
+                        h[size_t(z * 64 + x)] += 0.1 * std::exp(-((x - 30) * (x - 30) + (z - 25) * (z - 25)) / 20.0);
+                p->ewave()->syncHeight();
+                p->fieldEdited();
+            }
+        }
+        if (k == 20 || k == 30)
+            for (RipplePatch* p : {&cpu, &gpu}) p->centerOn(glm::vec2(0.25f * float(k / 10), -0.5f * float(k / 10)));  // whole cells
+        cpu.step(dt);
+        gpu.step(dt);
+    }
+    REQUIRE(gpu.origin() == cpu.origin());
+    const double error = relativeError(gpu.ewave()->heightState(), cpu.ewave()->heightState());
+    INFO("max |gpu - cpu| / max |cpu| " << error);
+    CHECK(error <= 1e-5 * std::log2(64.0));
+    // The height copy the renderer and queries read is the GPU's h.
+    CHECK(gpu.height()[size_t(25 * 64 + 30)] == float(gpu.ewave()->heightState()[size_t(25 * 64 + 30)]));
     CHECK(gfx::glErrorCount() == errorsBefore);
 }
 
