@@ -81,53 +81,56 @@ void EWaveField::setDamping(float decayTime, float viscosity) {
     m_preparedDt = -1.0f;
 }
 
+EWaveField::ModeStep EWaveField::modeStep(double k, float dt, float decayTime, float viscosity, double scale) {
+    const double dtd = dt;
+    const double rate = decayTime > 0.0f ? 1.0 / double(decayTime) : 0.0;
+    const double d = std::exp(-(rate + 2.0 * double(viscosity) * k * k) * dtd) * scale;
+    if (k == 0.0) return {d, d * dtd, 0.0};
+    const double w = omega(k);
+    const double cs = std::cos(w * dtd), sn = std::sin(w * dtd);
+    return {d * cs, d * sn / w, -d * w * sn};
+}
+
+// Sponge: friction γ = SPONGE_MAX_RATE·(1 − s_row·s_col) with RippleField's sin² profile s
+// (0 at the outer ring, 1 from the band's inner edge, zero slope there, so the band starts
+// without a step in the medium); each step multiplies h and v by exp(−γΔt). A wave that
+// crosses the band twice (out, and back in through the periodic wrap) keeps little: 32
+// cells of 0.25 m damp a 2 m wave (group speed 0.9 m/s) by e^-50 or so.
+std::vector<float> EWaveField::spongeFactors(int rows, int cols, int spongeWidth, float dt) {
+    const double dtd = dt;
+    std::vector<float> sponge(size_t(rows) * size_t(cols), 1.0f);
+    for (int z = 0; z < rows; ++z) {
+        const float sz = RippleField::spongeFactor(std::min(z, rows - 1 - z), spongeWidth);
+        for (int x = 0; x < cols; ++x) {
+            const float sx = RippleField::spongeFactor(std::min(x, cols - 1 - x), spongeWidth);
+            const double gamma = SPONGE_MAX_RATE * (1.0 - double(sz) * double(sx));
+            sponge[size_t(z) * size_t(cols) + size_t(x)] = float(std::exp(-gamma * dtd));
+        }
+    }
+    return sponge;
+}
+
 // Per mode (row j, column i of the r2c spectrum) the rotation by ωΔt times the damping and
 // FFTW's 1/(rows·cols) (a power of two for power-of-two sides: exact). The sponge factors
 // depend on Δt too: both are rebuilt when Δt or the damping changes.
 void EWaveField::prepare(float dt) {
-    const double dtd = dt;
     const double norm = 1.0 / (double(m_rows) * double(m_cols));
     const double twoPi = 2.0 * std::numbers::pi;
     const double lx = double(m_cols) * m_cellSize, lz = double(m_rows) * m_cellSize;
-    const double rate = m_decayTime > 0.0f ? 1.0 / double(m_decayTime) : 0.0;
     for (int j = 0; j < m_rows; ++j) {
         const int jj = j <= m_rows / 2 ? j : j - m_rows;
         const double kz = twoPi * jj / lz;
         for (int i = 0; i < m_specCols; ++i) {
             const double kx = twoPi * i / lx;
-            const double k = std::sqrt(kx * kx + kz * kz);
-            const double d = std::exp(-(rate + 2.0 * double(m_viscosity) * k * k) * dtd) * norm;
+            const ModeStep s = modeStep(std::sqrt(kx * kx + kz * kz), dt, m_decayTime, m_viscosity, norm);
             double* c = &m_coef[3 * (size_t(j) * size_t(m_specCols) + size_t(i))];
-            if (k == 0.0) {
-                c[0] = d;
-                c[1] = d * dtd;
-                c[2] = 0.0;
-            } else {
-                const double w = omega(k);
-                const double cs = std::cos(w * dtd), sn = std::sin(w * dtd);
-                c[0] = d * cs;
-                c[1] = d * sn / w;
-                c[2] = -d * w * sn;
-            }
+            c[0] = s.a;
+            c[1] = s.b;
+            c[2] = s.c;
         }
     }
-    // Sponge: friction γ = SPONGE_MAX_RATE·(1 − s_row·s_col) with RippleField's sin² profile s
-    // (0 at the outer ring, 1 from the band's inner edge, zero slope there, so the band starts
-    // without a step in the medium); each step multiplies h and v by exp(−γΔt). A wave that
-    // crosses the band twice (out, and back in through the periodic wrap) keeps little: 32
-    // cells of 0.25 m damp a 2 m wave (group speed 0.9 m/s) by e^-50 or so.
     m_sponge.clear();
-    if (m_boundary == EWaveBoundary::Absorbing) {
-        m_sponge.assign(m_cells, 1.0);
-        for (int z = 0; z < m_rows; ++z) {
-            const float sz = RippleField::spongeFactor(std::min(z, m_rows - 1 - z), m_spongeWidth);
-            for (int x = 0; x < m_cols; ++x) {
-                const float sx = RippleField::spongeFactor(std::min(x, m_cols - 1 - x), m_spongeWidth);
-                const double gamma = SPONGE_MAX_RATE * (1.0 - double(sz) * double(sx));
-                m_sponge[size_t(z) * size_t(m_cols) + size_t(x)] = std::exp(-gamma * dtd);
-            }
-        }
-    }
+    if (m_boundary == EWaveBoundary::Absorbing) m_sponge = spongeFactors(m_rows, m_cols, m_spongeWidth, dt);
     m_preparedDt = dt;
 }
 

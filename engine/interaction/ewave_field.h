@@ -54,6 +54,17 @@ public:
 
     /// ω(k) = sqrt(g·k + (σ/ρ)·k³), rad/s, for a wavenumber k in rad/m.
     static double omega(double k);
+    /// One mode's step: ĥ' = a·ĥ + b·v̂, v̂' = c·ĥ + a·v̂ with a = d·cos ωΔt, b = d·sin(ωΔt)/ω,
+    /// c = −d·ω·sin ωΔt (k = 0: a = d, b = d·Δt, c = 0), d the damping times `scale`.
+    struct ModeStep {
+        double a, b, c;
+    };
+    /// ModeStep of wavenumber k (rad/m) over dt seconds with decay time τ (s; 0 = none) and
+    /// viscosity ν (m²/s), times `scale` (the transforms' 1/(rows·cols)). The GPU twin uses it too.
+    static ModeStep modeStep(double k, float dt, float decayTime, float viscosity, double scale);
+    /// The absorbing sponge's per-cell factors exp(−γΔt), row-major rows·cols (1 away from the
+    /// band of `spongeWidth` cells), for a step of dt seconds.
+    static std::vector<float> spongeFactors(int rows, int cols, int spongeWidth, float dt);
 
     /// Sets the damping: decayTime τ in s (0 = none), viscosity ν in m²/s (0 = none).
     void setDamping(float decayTime, float viscosity);

@@ -24,7 +24,8 @@ struct RippleDef {
     bool enabled = true;                 ///< false: no ripple layer at all
     std::string model = "ewave";         ///< "kang2008": seed 001 eq. 1–2 (the paper's scenes); "ewave": dispersive
                                          ///< water waves, every mode at its own speed (SPEC §2.5b)
-    std::string backend = "auto";        ///< "cpu", "gpu" (compute shaders), "auto": gpu on a hardware GPU from 2048² cells, else cpu
+    std::string backend = "auto";        ///< "cpu", "gpu" (compute shaders; either model, ewave up to 2048²), "auto": gpu on a
+                                         ///< hardware GPU from 2048² cells, else cpu
     int resolution = 256;                ///< N, cells per side; power of two in [16, 4096]
     float cell_size = 0.25f;             ///< Δ, metres per cell, [0.01, 100]
     float damping = 0.95f;               ///< kang2008: DF of eq. 2, [0, 1]: 0 kills a wave next step, 1 never damps
@@ -44,7 +45,7 @@ template <class V> void describe(V& v, RippleDef& d) {
     v.field("enabled", d.enabled, "ripple layer on or off");
     v.field("model", d.model, Choices{"kang2008", "ewave"},
             "kang2008: seed 001 eq. 1-2 (the paper); ewave: dispersive water waves (exact per Fourier mode)");
-    v.field("backend", d.backend, Choices{"auto", "cpu", "gpu"}, "where the convolution and stamps run");
+    v.field("backend", d.backend, Choices{"auto", "cpu", "gpu"}, "where the ripple step runs (either model; ewave on the GPU up to 2048 cells per side)");
     v.field("resolution", d.resolution, powerOfTwo(16, 4096), "cells per side (N)");
     v.field("cell_size", d.cell_size, range(0.01, 100), "metres per cell");
     v.field("damping", d.damping, range(0, 1), "kang2008: damping factor DF (eq. 2)");

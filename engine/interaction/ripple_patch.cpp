@@ -1,6 +1,7 @@
 // Ripple patch placement, world sampling and per-sphere stamping.
 #include "interaction/ripple_patch.h"
 
+#include "interaction/ewave_gpu.h"
 #include "interaction/ripple_gpu.h"
 
 #include <algorithm>
@@ -35,17 +36,31 @@ RipplePatch::RipplePatch(const RippleDef& def)
 
 RipplePatch::~RipplePatch() = default;
 
-void RipplePatch::useGpu() {
-    if (m_ewave) return;
+bool RipplePatch::useGpu() {
+    if (m_ewave) {
+        if (!EWaveGpu::supports(m_ewave->rows(), m_ewave->cols())) return false;
+        m_ewaveGpu = std::make_unique<EWaveGpu>(*m_ewave);
+        return true;
+    }
     m_gpu = std::make_unique<RippleFieldGpu>(m_field.rows(), m_field.cols(), m_field.boundary(), m_field.spongeWidth());
     m_gpu->upload(m_field);
+    return true;
 }
 
 void RipplePatch::step(float dt) {
     if (m_ewave) {
         for (const EWaveSource& s : m_sources) m_ewave->addSource(s.gx, s.gz, s.radiusCells, s.accel, dt);
+        if (!m_ewaveGpu) {
+            m_sources.clear();
+            m_ewave->step(dt);
+            return;
+        }
+        if (m_edited || !m_sources.empty()) m_ewaveGpu->upload(*m_ewave);
+        m_edited = false;
         m_sources.clear();
-        m_ewave->step(dt);
+        m_ewaveGpu->step(dt);
+        m_ewaveGpu->download(m_ewave->heightState(), m_ewave->velocityState());
+        m_ewave->syncHeight();
         return;
     }
     if (!m_gpu) {
@@ -75,6 +90,7 @@ void RipplePatch::centerOn(glm::vec2 worldCenter) {
             s.gx -= float(shift.x);
             s.gz -= float(shift.y);
         }
+        if (m_ewaveGpu) m_edited = true;  // the GPU twin takes the scrolled state next step
     }
     m_field.scroll(shift.x, shift.y);
     if (m_gpu) m_gpu->scroll(shift.x, shift.y);

@@ -13,6 +13,7 @@
 
 namespace ob::interaction {
 
+class EWaveGpu;
 class RippleFieldGpu;
 struct RippleStamp;
 
@@ -21,18 +22,22 @@ struct RippleStamp;
 /// the step run in compute shaders, and Vh(t), Vh(t−1) are read back after each step into the
 /// CPU field, which stays what queries, hashing and rendering read.
 /// ewave: an EWaveField (CPU, FFTW); Table 2 decides as for kang2008 (planStamp) and each stamp
-/// becomes a pressure source on the vertical velocity (stampEWave). Queries, hashing and
-/// rendering read its height h and velocity v.
+/// becomes a pressure source on the vertical velocity (ewaveSource). Queries, hashing and
+/// rendering read its height h and velocity v. Once useGpu() is called, the GPU twin (EWaveGpu)
+/// steps it: the sources are added to the CPU field, which is uploaded whenever it changed
+/// (sources, scrolling, fieldEdited), and h, v are read back after each step into the CPU
+/// field, which stays what queries, hashing and rendering read.
 class RipplePatch {
 public:
     explicit RipplePatch(const RippleDef& def);
     ~RipplePatch();
-    /// kang2008: moves the field to the GPU twin (needs a current GL 4.3+ context); ewave: no-op
-    /// (the ewave field runs on the CPU).
-    void useGpu();
+    /// Moves the field to its GPU twin (needs a current GL 4.3+ context): kang2008
+    /// RippleFieldGpu, ewave EWaveGpu. Returns false, and stays on the CPU, where the twin
+    /// cannot run it (ewave: N above EWaveGpu::MAX_RESOLUTION).
+    bool useGpu();
     /// True for the dispersive model (def().model == "ewave").
     bool isEWave() const { return m_ewave != nullptr; }
-    bool onGpu() const { return m_gpu != nullptr; }
+    bool onGpu() const { return m_gpu != nullptr || m_ewaveGpu != nullptr; }
 
     /// Moves the patch so its centre is the cell nearest `worldCenter` (scrolls the field).
     void centerOn(glm::vec2 worldCenter);
@@ -51,7 +56,8 @@ public:
                      const glm::vec3& velocity, float mass, float surfaceY);
     /// One step of dt seconds: kang2008 the convolution of eq. 1–2 with the patch's DF (on the
     /// GPU: this step's stamps first, then the step, then the read-back; dt unused); ewave the
-    /// exact per-mode step over dt.
+    /// exact per-mode step over dt (on the GPU: sources added and uploaded, the step, the
+    /// read-back of h and v).
     void step(float dt);
 
     const RippleDef& def() const { return m_def; }
@@ -60,11 +66,13 @@ public:
     /// kang2008's field (a 1×1 placeholder under ewave), writable: on the GPU, call
     /// fieldEdited() after writing it.
     RippleField& field() { return m_field; }
-    /// The CPU field was written outside stampSphere (e.g. splash drops landing): on the GPU the
-    /// next step() uploads it first, so both sides hold the same state. No-op on the CPU.
-    void fieldEdited() { m_edited = m_gpu != nullptr; }
+    /// The CPU field (either model's) was written outside stampSphere (e.g. splash drops
+    /// landing): on the GPU the next step() uploads it first, so both sides hold the same
+    /// state. No-op on the CPU.
+    void fieldEdited() { m_edited = onGpu(); }
     const RippleField& field() const { return m_field; }
-    /// The ewave field; null under kang2008.
+    /// The ewave field; null under kang2008. Writable: on the GPU, call fieldEdited() after
+    /// writing its state.
     EWaveField* ewave() { return m_ewave.get(); }
     const EWaveField* ewave() const { return m_ewave.get(); }
     /// The current height level of either model, rows·cols row-major (z·cols + x), m: what the
@@ -83,6 +91,7 @@ private:
     FootprintCache m_footprints;
     glm::ivec2 m_originCell{0, 0};  // world cell index of the field's cell (0, 0)
     std::unique_ptr<RippleFieldGpu> m_gpu;
+    std::unique_ptr<EWaveGpu> m_ewaveGpu;
     std::vector<RippleStamp> m_pending;  // GPU: this step's stamps, in entity then sphere order
     std::vector<float> m_readback;
     bool m_edited = false;  // GPU: the CPU field changed since the last read-back

@@ -264,7 +264,7 @@ double stampLandings(interaction::RipplePatch& patch, std::span<const Landing> l
     }
     if (landings.empty()) return total;
     if (ewave) ewave->syncHeight();
-    else patch.fieldEdited();
+    patch.fieldEdited();
     return total;
 }
 

@@ -6,6 +6,7 @@
 #include "core/log.h"
 #include "ecs/components.h"
 #include "gfx/gl.h"
+#include "interaction/ewave_gpu.h"
 #include "interaction/ripple_patch.h"
 #include "interaction/sphere_set.h"
 #include "ocean/gerstner.h"
@@ -37,10 +38,14 @@ void attachWaterGpu(ecs::World& world) {
         // Auto: the CPU up to 1024² even beside a GPU, where its step (0.1 ms at 256², 0.3 ms at
         // 1024²) costs less than the GPU's stamps, step and read-back stall (2.3 ms and 4.3 ms
         // on an H200 in the default scene).
-        // The ewave model runs on the CPU (FFTW) whatever the backend says.
-        if (backend == "gpu" || (backend == "auto" && !gfx::isSoftwareRenderer() && patch->def().resolution >= 2048)) patch->useGpu();
+        // The same switch for both models: kang2008 RippleFieldGpu, ewave EWaveGpu.
+        const bool gpu = backend == "gpu" || (backend == "auto" && !gfx::isSoftwareRenderer() && patch->def().resolution >= 2048);
+        if (gpu && !patch->useGpu())
+            logWarn("ripples: the ewave GPU field runs up to %d² cells; %d² runs on the CPU (FFTW)",
+                    interaction::EWaveGpu::MAX_RESOLUTION, patch->def().resolution);
         logInfo("ripples: %s, %s backend, %d² cells of %g m", patch->def().model.c_str(),
-                patch->onGpu() ? "gpu (compute shaders)" : (patch->isEWave() ? "cpu (FFTW)" : "cpu"), patch->def().resolution,
+                patch->onGpu() ? (patch->isEWave() ? "gpu (compute shaders, float FFT)" : "gpu (compute shaders)")
+                                : (patch->isEWave() ? "cpu (FFTW)" : "cpu"), patch->def().resolution,
                 double(patch->def().cell_size));
     }
     OceanState* ocean = world.resource<OceanState>();

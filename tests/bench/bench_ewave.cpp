@@ -2,7 +2,11 @@
 // count, the same four double-precision FFTW transforms alone (the floor of a step), and
 // 100,000 bounding spheres of SR 20 stamping into ewave (planStamp + the biweight source) to
 // compare with BM_StepSphere's kang2008 stamps.
+#include "core/log.h"
 #include "core/parallel.h"
+#include "gfx/gl.h"
+#include "interaction/ewave_gpu.h"
+#include "platform/platform.h"
 #include "interaction/ewave_field.h"
 #include "interaction/sphere_stamp.h"
 #include "ocean/fftw_wisdom.h"
@@ -34,6 +38,36 @@ void BM_EWaveStep(benchmark::State& state) {
 }
 BENCHMARK(BM_EWaveStep)
     ->ArgsProduct({{256, 512, 1024}, {1, 2}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+// The GPU twin's step on OSMesa (llvmpipe here: the dispatches run on the CPU's cores), the
+// same field as BM_EWaveStep, glFinish included. Args: N, read (1: h and v read back into the
+// CPU field after the step, as the sandbox does).
+void BM_EWaveGpuStep(benchmark::State& state) {
+    ob::setLogQuiet(true);
+    const auto platform = ob::platform::createHeadlessPlatform({16, 16});
+    const int n = int(state.range(0));
+    EWaveField field(n, n, 0.25f, EWaveBoundary::Absorbing, 32);
+    field.setDamping(3.0f, 1e-3f);
+    std::mt19937 rng(1);
+    std::uniform_real_distribution<double> noise(-0.1, 0.1);
+    for (double& v : field.heightState()) v = noise(rng);
+    for (double& v : field.velocityState()) v = noise(rng);
+    EWaveGpu gpu(field);
+    gpu.upload(field);
+    const auto body = [&] {
+        gpu.step(1.0f / 60.0f);
+        if (state.range(1)) gpu.download(field.heightState(), field.velocityState());
+        glFinish();
+    };
+    body();  // warm-up: the driver compiles each shader at its first dispatch
+    for (auto _ : state) body();
+    state.SetLabel(ob::gfx::glRendererName());
+}
+BENCHMARK(BM_EWaveGpuStep)
+    ->ArgNames({"N", "read"})
+    ->ArgsProduct({{256, 512, 1024}, {0, 1}})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 

@@ -1,0 +1,166 @@
+// Dispersive ripple field on the GPU: e^{+} line FFTs (shaders/ocean_fft.comp), the exact
+// per-mode rotation and the real-space boundary (shaders/ewave_step.comp). SPEC §2.5b.
+#include "interaction/ewave_gpu.h"
+
+#include "gfx/shader.h"
+
+#include <cassert>
+#include <cmath>
+#include <numbers>
+#include <utility>
+
+namespace ob::interaction {
+
+namespace {
+
+// Shader interface (bindings and uniform locations declared in shaders/ewave_step.comp and
+// shaders/ocean_fft.comp).
+constexpr GLuint SPECTRUM_BINDING = 0;
+constexpr GLuint FIELD_BINDING = 1;
+constexpr GLuint ROTATION_BINDING = 2;
+constexpr GLuint FFT_LINES_BINDING = 3;     // ocean_fft.comp: the N² complex plane
+constexpr GLuint FFT_TWIDDLES_BINDING = 4;  // ocean_fft.comp
+constexpr GLuint SPONGE_BINDING = 5;
+constexpr GLint N_LOCATION = 0;
+constexpr GLint MODE_LOCATION = 1;          // ewave_step.comp
+constexpr GLint FFT_LOG2N_LOCATION = 1;     // ocean_fft.comp
+constexpr GLint FFT_COLUMNS_LOCATION = 2;   // ocean_fft.comp
+constexpr GLint MODE_ROTATE = 0, MODE_RING = 1, MODE_SPONGE = 2;
+constexpr GLuint TILE = 16;                 // local size of ewave_step.comp, per axis
+
+struct Rotation {
+    float a, b, c, pad;
+};
+static_assert(sizeof(Rotation) == 16, "std430 vec4");
+
+GLsizeiptr bytes(size_t count, size_t size) { return GLsizeiptr(count * size); }
+
+} // namespace
+
+bool EWaveGpu::available() { return GLAD_GL_VERSION_4_3 != 0; }
+
+bool EWaveGpu::supports(int rows, int cols) {
+    return rows == cols && rows >= 4 && rows <= MAX_RESOLUTION && (rows & (rows - 1)) == 0;
+}
+
+EWaveGpu::EWaveGpu(const EWaveField& like)
+    : m_n(like.rows()), m_cellSize(like.cellSize()), m_boundary(like.boundary()), m_spongeWidth(like.spongeWidth()) {
+    assert(supports(like.rows(), like.cols()));
+    while ((1 << m_log2n) < m_n) ++m_log2n;
+    const size_t n = size_t(m_n), cells = n * n, quarter = n / 2 + 1;
+    m_fft = gfx::loadProgram("ewave FFT lines", {"ocean_fft.comp"});
+    m_step = gfx::loadProgram("ewave mode rotation / boundary", {"ewave_step.comp"});
+    m_fields[0] = gfx::createBuffer("ewave state w = h - i v (or spectrum)", bytes(cells, 2 * sizeof(float)));
+    m_fields[1] = gfx::createBuffer("ewave state w = h - i v (or spectrum)", bytes(cells, 2 * sizeof(float)));
+    m_rotation = gfx::createBuffer("ewave mode rotation (a, b, c)", bytes(quarter * quarter, sizeof(Rotation)));
+    m_sponge = gfx::createBuffer("ewave sponge factors", bytes(m_boundary == EWaveBoundary::Absorbing ? cells : 1, sizeof(float)));
+    // The ocean's twiddles: exp(+2πi·k/N) rounded from double.
+    std::vector<float> twiddles(n);
+    for (size_t k = 0; k < n / 2; ++k) {
+        const double angle = 2.0 * std::numbers::pi * double(k) / double(n);
+        twiddles[2 * k] = float(std::cos(angle));
+        twiddles[2 * k + 1] = float(std::sin(angle));
+    }
+    m_twiddles = gfx::createBuffer("ewave FFT twiddles", bytes(n, sizeof(float)), twiddles.data());
+    glProgramUniform1i(m_fft.id(), N_LOCATION, m_n);
+    glProgramUniform1i(m_fft.id(), FFT_LOG2N_LOCATION, m_log2n);
+    glProgramUniform1i(m_step.id(), N_LOCATION, m_n);
+    m_groups = (GLuint(m_n) + TILE - 1) / TILE;
+    setDamping(like.decayTime(), like.viscosity());
+    upload(like);
+}
+
+void EWaveGpu::setDamping(float decayTime, float viscosity) {
+    assert(decayTime >= 0.0f && viscosity >= 0.0f);
+    if (decayTime == m_decayTime && viscosity == m_viscosity) return;
+    m_decayTime = decayTime;
+    m_viscosity = viscosity;
+    m_preparedDt = -1.0f;
+}
+
+// The CPU's coefficients (EWaveField::modeStep in double, 1/N² folded in) per |K|, rounded to
+// float; the sponge factors are the CPU's own floats.
+void EWaveGpu::prepare(float dt) {
+    const int half = m_n / 2, quarter = half + 1;
+    const double norm = 1.0 / (double(m_n) * double(m_n));
+    const double dk = 2.0 * std::numbers::pi / (double(m_n) * m_cellSize);
+    std::vector<Rotation> rotation(size_t(quarter) * size_t(quarter));
+    for (int j = 0; j < quarter; ++j) {
+        const double kz = dk * j;
+        for (int i = 0; i < quarter; ++i) {
+            const double kx = dk * i;
+            const EWaveField::ModeStep s = EWaveField::modeStep(std::sqrt(kx * kx + kz * kz), dt, m_decayTime, m_viscosity, norm);
+            rotation[size_t(j) * size_t(quarter) + size_t(i)] = {float(s.a), float(s.b), float(s.c), 0.0f};
+        }
+    }
+    glNamedBufferSubData(m_rotation.id(), 0, bytes(rotation.size(), sizeof(Rotation)), rotation.data());
+    if (m_boundary == EWaveBoundary::Absorbing) {
+        const std::vector<float> sponge = EWaveField::spongeFactors(m_n, m_n, m_spongeWidth, dt);
+        glNamedBufferSubData(m_sponge.id(), 0, bytes(sponge.size(), sizeof(float)), sponge.data());
+    }
+    m_preparedDt = dt;
+}
+
+void EWaveGpu::transform(const gfx::Buffer& field) {
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, FFT_LINES_BINDING, field.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, FFT_TWIDDLES_BINDING, m_twiddles.id());
+    glUseProgram(m_fft.id());
+    for (int columns = 0; columns < 2; ++columns) {
+        glProgramUniform1i(m_fft.id(), FFT_COLUMNS_LOCATION, columns);
+        glDispatchCompute(GLuint(m_n), 1, 1);  // one line per work group; plane 0
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    }
+}
+
+void EWaveGpu::step(float dt) {
+    assert(dt > 0.0f);
+    if (dt != m_preparedDt) prepare(dt);
+    // --- forward: S = conj Z, in place
+    transform(m_fields[0]);
+    // --- every mode rotated and damped: Y = conj Z'(−K) into the other buffer
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SPECTRUM_BINDING, m_fields[0].id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, FIELD_BINDING, m_fields[1].id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, ROTATION_BINDING, m_rotation.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SPONGE_BINDING, m_sponge.id());
+    glProgramUniform1i(m_step.id(), MODE_LOCATION, MODE_ROTATE);
+    glUseProgram(m_step.id());
+    glDispatchCompute(m_groups, m_groups, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    // --- back: w' = h' − i·v', in place
+    transform(m_fields[1]);
+    // --- the boundary in real space
+    if (m_boundary != EWaveBoundary::Periodic) {
+        glProgramUniform1i(m_step.id(), MODE_LOCATION, m_boundary == EWaveBoundary::Fixed ? MODE_RING : MODE_SPONGE);
+        glUseProgram(m_step.id());
+        glDispatchCompute(m_groups, m_groups, 1);
+    }
+    // Readers of the state: the next step's dispatches, download (glGetNamedBufferSubData) and
+    // upload (glNamedBufferSubData, which must not overtake this step's reads).
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    glUseProgram(0);
+    std::swap(m_fields[0], m_fields[1]);
+}
+
+void EWaveGpu::upload(std::span<const double> h, std::span<const double> v) {
+    const size_t cells = size_t(m_n) * size_t(m_n);
+    assert(h.size() == cells && v.size() == cells);
+    m_staging.resize(2 * cells);
+    for (size_t i = 0; i < cells; ++i) {
+        m_staging[2 * i] = float(h[i]);
+        m_staging[2 * i + 1] = -float(v[i]);
+    }
+    glNamedBufferSubData(m_fields[0].id(), 0, bytes(m_staging.size(), sizeof(float)), m_staging.data());
+}
+
+void EWaveGpu::download(std::span<double> h, std::span<double> v) const {
+    const size_t cells = size_t(m_n) * size_t(m_n);
+    assert(h.size() == cells && v.size() == cells);
+    m_staging.resize(2 * cells);
+    glGetNamedBufferSubData(m_fields[0].id(), 0, bytes(m_staging.size(), sizeof(float)), m_staging.data());
+    for (size_t i = 0; i < cells; ++i) {
+        h[i] = m_staging[2 * i];
+        v[i] = -double(m_staging[2 * i + 1]);
+    }
+}
+
+} // namespace ob::interaction

@@ -1,0 +1,46 @@
+#version 450 core
+// Dispersive ripple step, the per-mode and real-space passes (SPEC §2.5b; Tessendorf, eWave 2014):
+// the GPU twin of EWaveField::step around ocean_fft.comp's transforms. One invocation per cell
+// or mode of the N×N grid. The state is kept conjugated, w = h − i·v, so that ocean_fft.comp's
+// e^{+} transform is the forward one: S = FFT⁺(w) = conj(Z), Z = FFT⁻(h + i·v) (see EWaveGpu).
+layout(local_size_x = 16, local_size_y = 16) in;
+
+// Row-major N×N complex floats, index row·N + column.
+layout(std430, binding = 0) readonly buffer Spectrum { vec2 b_spectrum[]; };  // mode 0: S
+layout(std430, binding = 1) buffer Field { vec2 b_field[]; };                 // mode 0: Y out; 1, 2: w in place
+// Per |row index|, |column index| in [0, N/2]: (a, b, c, 0) = d·(cos ωΔt, sin(ωΔt)/ω, −ω·sin ωΔt)/N².
+layout(std430, binding = 2) readonly buffer Rotation { vec4 b_rotation[]; };
+layout(std430, binding = 5) readonly buffer Sponge { float b_sponge[]; };     // mode 2: exp(−γΔt) per cell
+
+layout(location = 0) uniform int u_n;     // N, power of two
+layout(location = 1) uniform int u_mode;  // 0: rotate every mode; 1: fixed ring to 0; 2: sponge
+
+vec2 timesI(vec2 a) { return vec2(-a.y, a.x); }
+
+void main() {
+    ivec2 p = ivec2(gl_GlobalInvocationID.xy);  // (column, row)
+    int n = u_n;
+    if (p.x >= n || p.y >= n) return;
+    int i = p.y * n + p.x;
+    if (u_mode == 1) {
+        if (p.x == 0 || p.y == 0 || p.x == n - 1 || p.y == n - 1) b_field[i] = vec2(0.0);
+        return;
+    }
+    if (u_mode == 2) {
+        b_field[i] *= b_sponge[i];
+        return;
+    }
+    // Mode K = (p.x, p.y) and its mirror −K. With P = S(−K) = conj Z(−K) and Q = conj S(K) = Z(K):
+    // conj H(−K) = (P + Q)/2, conj V(−K) = i·(P − Q)/2, and the output Y(K) = conj Z'(−K) with
+    // Z' = a·Z + b·V + i·c·H (H' = a·H + b·V, V' = c·H + a·V) is
+    //   Y = a·P + i·(b·(P − Q) − c·(P + Q))/2,
+    // so the inverse e^{+} transform of Y is conj(h' + i·v') = w' (a, b, c hold 1/N²).
+    int mask = n - 1;
+    ivec2 m = (ivec2(n) - p) & ivec2(mask);
+    vec2 P = b_spectrum[m.y * n + m.x];
+    vec2 s = b_spectrum[i];
+    vec2 Q = vec2(s.x, -s.y);
+    ivec2 q = min(p, ivec2(n) - p);  // |signed index|, [0, N/2]
+    vec4 r = b_rotation[q.y * (n / 2 + 1) + q.x];
+    b_field[i] = r.x * P + timesI(0.5 * (r.y * (P - Q) - r.z * (P + Q)));
+}
