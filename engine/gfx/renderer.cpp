@@ -7,7 +7,7 @@
 #include "assets/model.h"
 #include "gfx/detail_map.h"
 #include "gfx/shader.h"
-#include "ocean/projected_grid.h"
+#include "gfx/projected_grid.h"
 
 #include <cassert>
 #include <cerrno>
@@ -425,7 +425,7 @@ static ocean::DisplacementBounds displacementBounds(const WaterView& water) {
     return bounds;
 }
 
-void Renderer::uploadWaterUniforms(const CameraView& camera, const WaterView& water, const ocean::GridCorners& grid) {
+void Renderer::uploadWaterUniforms(const CameraView& camera, const WaterView& water, const GridCorners& grid) {
     WaterUniforms u{};
     for (int i = 0; i < 4; ++i) u.corner[i] = grid.corner[size_t(i)];
     const bool layers = water.cascades > 0 && water.displacement && water.slopes;
@@ -456,7 +456,7 @@ void Renderer::uploadWaterUniforms(const CameraView& camera, const WaterView& wa
 
 // Before the object passes: they clip against (and mirror about) the surface these describe.
 void Renderer::prepareWater(const CameraView& camera, const WaterView& water, int internalHeight) {
-    m_grid = ocean::projectedGridCorners(camera.projection * camera.view, camera.position, displacementBounds(water));
+    m_grid = projectedGridCorners(camera.projection * camera.view, camera.position, displacementBounds(water));
     // Software rasterisers shade vertices on one thread: a coarser grid there.
     // Auto: a grid row per 3 px of internal height on a GPU, per 6 px on a software rasteriser
     // (which shades vertices on one thread), within [32, 512].

@@ -13,7 +13,7 @@
 #include "gfx/mesh.h"
 #include "gfx/render_def.h"
 #include "gfx/render_target.h"
-#include "ocean/projected_grid.h"
+#include "gfx/projected_grid.h"
 
 #include <array>
 #include <glm/mat4x4.hpp>
@@ -133,8 +133,8 @@ private:
     const Mesh& meshFor(const ObjectDraw& object);
     void updateFrameUniforms(const CameraView& camera, double time, glm::ivec2 size);
     void resizeTargets(glm::ivec2 internal);
-    void uploadWaterUniforms(const CameraView& camera, const WaterView& water, const ocean::GridCorners& grid);
-    ocean::GridCorners m_grid;  // this frame's projected grid (prepareWater)
+    void uploadWaterUniforms(const CameraView& camera, const WaterView& water, const GridCorners& grid);
+    GridCorners m_grid;  // this frame's projected grid (prepareWater)
     void buildGrid(int resolution);
 
     RenderDef m_def;

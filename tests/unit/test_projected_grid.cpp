@@ -3,14 +3,16 @@
 // whose displaced point can be seen (checked by casting pixel rays, not by the frustum
 // algebra the grid uses), for any roll, pitch and field of view; no cell folds or explodes.
 #include "ocean/ocean_fft_cpu.h"
-#include "ocean/projected_grid.h"
+#include "gfx/projected_grid.h"
 
 #include <catch2/catch.hpp>
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <random>
 
-using namespace ob::ocean;
+using namespace ob::gfx;
+using ob::ocean::DisplacementBounds;
+using ob::ocean::OceanFftCpu;
 
 namespace {
 

@@ -1,13 +1,13 @@
 // Projected grid corners: the region of the mean plane the displaced water can be seen from,
 // and the projector (apex, heading) whose grid covers it.
-#include "ocean/projected_grid.h"
+#include "gfx/projected_grid.h"
 
 #include <algorithm>
 #include <cmath>
 #include <glm/glm.hpp>
 #include <vector>
 
-namespace ob::ocean {
+namespace ob::gfx {
 
 // Safety margins on the bounds: float rounding in the shader, and the grid's straight edges
 // between vertices (metres, plus a fraction of each bound).
@@ -15,7 +15,7 @@ constexpr double BOUND_SCALE = 1.02;
 constexpr double VERTICAL_MARGIN = 0.05;
 constexpr double HORIZONTAL_MARGIN = 0.1;
 
-GridCorners projectedGridCorners(const glm::mat4& viewProjection, const glm::vec3& eye, const DisplacementBounds& bounds) {
+GridCorners projectedGridCorners(const glm::mat4& viewProjection, const glm::vec3& eye, const ocean::DisplacementBounds& bounds) {
     GridCorners out;
     const glm::dmat4 inv = glm::inverse(glm::dmat4(viewProjection));
     const auto unproject = [&](double x, double y, double z) {
@@ -109,4 +109,4 @@ glm::vec2 projectedGridPoint(const GridCorners& corners, glm::vec2 uv, float min
     return glm::vec2(p.x, p.z) / w;
 }
 
-} // namespace ob::ocean
+} // namespace ob::gfx

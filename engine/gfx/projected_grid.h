@@ -11,7 +11,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
-namespace ob::ocean {
+namespace ob::gfx {
 
 /// The four corners of the grid on the plane y = 0, homogeneous (x, 0, z, w), w > 0, scaled
 /// together so the largest w is 1. Order: (u, v) = (0,0), (1,0), (0,1), (1,1); v = 0 is the
@@ -30,11 +30,11 @@ struct GridCorners {
 /// camera's heading: rows are lines across the heading spaced evenly in 1/(distance from an
 /// apex behind the eye), columns are rays from that apex (the camera's own perspective when
 /// the projector can be the camera; the apex moves back when waves reach behind the view).
-GridCorners projectedGridCorners(const glm::mat4& viewProjection, const glm::vec3& eye, const DisplacementBounds& bounds);
+GridCorners projectedGridCorners(const glm::mat4& viewProjection, const glm::vec3& eye, const ocean::DisplacementBounds& bounds);
 
 /// World (x, z) of grid point (u, v) ∈ [0, 1]²: bilinear interpolation of the homogeneous
 /// corners, then the division by w with w clamped from below by `minW` (seed 000: the
 /// division never overflows). Mirrors the vertex shader (shaders/common_water.glsl).
 glm::vec2 projectedGridPoint(const GridCorners& corners, glm::vec2 uv, float minW);
 
-} // namespace ob::ocean
+} // namespace ob::gfx
