@@ -80,87 +80,102 @@ ecs::Entity spawnShip(ecs::World& world, const ObjectDef& o) {
     return e;
 }
 
+namespace {
+
+// A hull's horizontal frame on the water plane and its motion in it.
+struct HullFrame {
+    glm::vec3 bow, starboard;  // unit, horizontal
+    float heading;             // rad about +y, 0 along +z
+    float forward, sideways;   // m/s along bow and starboard
+};
+
+// The pilot: the player's lever and rudder, or the heading to the next waypoint. Returns the
+// speed the engine aims for (m/s).
+float pilot(Ship& ship, const glm::vec3& position, float heading, const StepInput* input, float dt) {
+    if (ship.player) {
+        if (input && !input->keysMoveCamera) {
+            using platform::Key;
+            const int lever = int(input->isDown(Key::W)) - int(input->isDown(Key::S));
+            ship.throttle += THROTTLE_RATE * dt * float(lever);
+            if (lever == 0 && std::abs(ship.throttle) < 0.03f) ship.throttle = 0.0f;  // the lever's notch at stop
+            ship.rudder = float(input->isDown(Key::D) - input->isDown(Key::A));
+        }
+        ship.throttle = std::clamp(ship.throttle, -0.5f, 1.0f);
+        return ship.throttle * ship.speed;
+    }
+    if (!ship.waypoints.empty()) {
+        glm::vec2 to = ship.waypoints[ship.nextWaypoint] - glm::vec2(position.x, position.z);
+        if (glm::dot(to, to) < ARRIVE_RADIUS * ARRIVE_RADIUS) {
+            ship.nextWaypoint = (ship.nextWaypoint + 1) % ship.waypoints.size();
+            to = ship.waypoints[ship.nextWaypoint] - glm::vec2(position.x, position.z);
+        }
+        const float error = wrapAngle(std::atan2(to.x, to.y) - heading);  // + : turn toward +yaw (port)
+        ship.rudder = std::clamp(-HEADING_GAIN * error / MAX_TURN, -1.0f, 1.0f);
+    } else {
+        ship.rudder = 0.0f;
+    }
+    return ship.speed;
+}
+
+// The hull model: engine, resistance, keel, rudder and bilge keels, as forces on the body,
+// scaled by how much of the hull is in the water.
+void hullForces(const Ship& ship, const ecs::Transform& t, const ecs::Motion& motion, Body& body, const HullFrame& f,
+                float targetSpeed) {
+    const float wet = std::clamp(body.submergedFraction / 0.2f, 0.0f, 1.0f);
+    if (wet <= 0.0f) return;
+    const float top = std::max(ship.speed, 0.5f);
+    const float mass = motion.mass;
+    const glm::vec3 stern = t.position + t.rotation * glm::vec3(0.0f, -0.25f * SHIP_HULL.y, -0.5f * SHIP_HULL.z);
+    // Forward resistance m·u|u|/(top·COAST_TIME); the engine feeds that forward at the
+    // target speed and closes the error in SPEED_TIME.
+    const float resistance = mass * f.forward * std::abs(f.forward) / (top * COAST_TIME);
+    const float maxThrust = mass * top / COAST_TIME;
+    // The player's lever at zero idles the engine (the ship coasts); a scripted ship at
+    // speed 0 holds its place (the paper's ship at rest).
+    const bool idle = ship.player && ship.throttle == 0.0f;
+    const float thrust = idle ? 0.0f
+                              : std::clamp(mass * targetSpeed * std::abs(targetSpeed) / (top * COAST_TIME) +
+                                               mass * (targetSpeed - f.forward) / SPEED_TIME,
+                                           -0.5f * maxThrust, 1.5f * maxThrust);
+    body.forces.push_back({f.bow * (thrust * wet), stern});
+    body.forces.push_back({-f.bow * (resistance * wet), t.position});
+    // The keel: sideways slip decays in SLIP_TIME.
+    body.forces.push_back({-f.starboard * (mass * f.sideways / SLIP_TIME * wet), t.position});
+    // The rudder: a sideways force at the stern whose moment brings the yaw rate to the
+    // rudder's (which needs water flowing past it: it fades below half the top speed).
+    const float yawInertia = mass * (SHIP_HULL.z * SHIP_HULL.z + SHIP_HULL.x * SHIP_HULL.x) / 12.0f;
+    const float wantedYawRate = -ship.rudder * MAX_TURN * std::clamp(f.forward / (0.5f * top), -1.0f, 1.0f);
+    const float moment = yawInertia * (wantedYawRate - body.angularVelocity.y) / YAW_TIME;
+    // A force F·(bow × up) at the stern (arm L/2 behind the centre) turns about +y by F·L/2.
+    body.forces.push_back({glm::cross(f.bow, glm::vec3(0, 1, 0)) * (moment / (0.5f * SHIP_HULL.z) * wet), stern});
+    // Bilge keels: a couple about the hull's long axis against the roll rate (vertical
+    // forces ±F at the two sides, F·beam = moment).
+    const glm::vec3 keel = t.rotation * glm::vec3(0, 0, 1), side = t.rotation * glm::vec3(1, 0, 0), deck = t.rotation * glm::vec3(0, 1, 0);
+    const float rollInertia = mass * (SHIP_HULL.x * SHIP_HULL.x + SHIP_HULL.y * SHIP_HULL.y) / 12.0f;
+    const float rollMoment = -rollInertia * glm::dot(body.angularVelocity, keel) / ROLL_TIME * wet;
+    const glm::vec3 couple = deck * (rollMoment / SHIP_HULL.x);
+    body.forces.push_back({couple, t.position + side * (0.5f * SHIP_HULL.x)});
+    body.forces.push_back({-couple, t.position - side * (0.5f * SHIP_HULL.x)});
+}
+
+} // namespace
+
 void shipSystem(ecs::World& world, const ecs::Tick& tick) {
     auto& ships = world.pool<Ship>();
     const auto* input = world.resource<StepInput>();
-    const float dt = float(tick.dt);
     for (size_t i = 0; i < ships.size(); ++i) {
         Ship& ship = ships.components()[i];
         const ecs::Entity e = ships.entities()[i];
         const ecs::Transform& t = world.get<ecs::Transform>(e);
         const ecs::Motion& motion = world.get<ecs::Motion>(e);
-        Body& body = world.get<Body>(e);
-
-        // Horizontal frame of the hull: bow and starboard (right) on the water plane.
         glm::vec3 bow = t.rotation * glm::vec3(0, 0, 1);
         bow.y = 0.0f;
         if (glm::dot(bow, bow) < 1e-6f) continue;  // standing on its end: no steering
         bow = glm::normalize(bow);
         const glm::vec3 starboard = glm::cross(bow, glm::vec3(0, 1, 0));
-        const float heading = std::atan2(bow.x, bow.z);
-        const float forward = glm::dot(motion.velocity, bow);
-        const float sideways = glm::dot(motion.velocity, starboard);
-        const float top = std::max(ship.speed, 0.5f);
-
-        // --- pilot: throttle and rudder
-        float targetSpeed = ship.speed;
-        if (ship.player) {
-            if (input && !input->keysMoveCamera) {
-                using platform::Key;
-                const int lever = int(input->isDown(Key::W)) - int(input->isDown(Key::S));
-                ship.throttle += THROTTLE_RATE * dt * float(lever);
-                if (lever == 0 && std::abs(ship.throttle) < 0.03f) ship.throttle = 0.0f;  // the lever's notch at stop
-                ship.rudder = float(input->isDown(Key::D) - input->isDown(Key::A));
-            }
-            ship.throttle = std::clamp(ship.throttle, -0.5f, 1.0f);
-            targetSpeed = ship.throttle * ship.speed;
-        } else if (!ship.waypoints.empty()) {
-            glm::vec2 to = ship.waypoints[ship.nextWaypoint] - glm::vec2(t.position.x, t.position.z);
-            if (glm::dot(to, to) < ARRIVE_RADIUS * ARRIVE_RADIUS) {
-                ship.nextWaypoint = (ship.nextWaypoint + 1) % ship.waypoints.size();
-                to = ship.waypoints[ship.nextWaypoint] - glm::vec2(t.position.x, t.position.z);
-            }
-            const float error = wrapAngle(std::atan2(to.x, to.y) - heading);  // + : turn toward +yaw (port)
-            ship.rudder = std::clamp(-HEADING_GAIN * error / MAX_TURN, -1.0f, 1.0f);
-        } else {
-            ship.rudder = 0.0f;
-        }
-
-        // --- hull model, scaled by how much of the hull is in the water
-        const float wet = std::clamp(body.submergedFraction / 0.2f, 0.0f, 1.0f);
-        if (wet <= 0.0f) continue;
-        const float mass = motion.mass;
-        const glm::vec3 stern = t.position + t.rotation * glm::vec3(0.0f, -0.25f * SHIP_HULL.y, -0.5f * SHIP_HULL.z);
-        // Forward resistance m·u|u|/(top·COAST_TIME); the engine feeds that forward at the
-        // target speed and closes the error in SPEED_TIME.
-        const float resistance = mass * forward * std::abs(forward) / (top * COAST_TIME);
-        const float maxThrust = mass * top / COAST_TIME;
-        // The player's lever at zero idles the engine (the ship coasts); a scripted ship at
-        // speed 0 holds its place (the paper's ship at rest).
-        const bool idle = ship.player && ship.throttle == 0.0f;
-        const float thrust = idle ? 0.0f
-                                  : std::clamp(mass * targetSpeed * std::abs(targetSpeed) / (top * COAST_TIME) +
-                                                   mass * (targetSpeed - forward) / SPEED_TIME,
-                                               -0.5f * maxThrust, 1.5f * maxThrust);
-        body.forces.push_back({bow * (thrust * wet), stern});
-        body.forces.push_back({-bow * (resistance * wet), t.position});
-        // The keel: sideways slip decays in SLIP_TIME.
-        body.forces.push_back({-starboard * (mass * sideways / SLIP_TIME * wet), t.position});
-        // The rudder: a sideways force at the stern whose moment brings the yaw rate to the
-        // rudder's (which needs water flowing past it: it fades below half the top speed).
-        const float yawInertia = mass * (SHIP_HULL.z * SHIP_HULL.z + SHIP_HULL.x * SHIP_HULL.x) / 12.0f;
-        const float wantedYawRate = -ship.rudder * MAX_TURN * std::clamp(forward / (0.5f * top), -1.0f, 1.0f);
-        const float moment = yawInertia * (wantedYawRate - body.angularVelocity.y) / YAW_TIME;
-        // A force F·(bow × up) at the stern (arm L/2 behind the centre) turns about +y by F·L/2.
-        body.forces.push_back({glm::cross(bow, glm::vec3(0, 1, 0)) * (moment / (0.5f * SHIP_HULL.z) * wet), stern});
-        // Bilge keels: a couple about the hull's long axis against the roll rate (vertical
-        // forces ±F at the two sides, F·beam = moment).
-        const glm::vec3 keel = t.rotation * glm::vec3(0, 0, 1), side = t.rotation * glm::vec3(1, 0, 0), deck = t.rotation * glm::vec3(0, 1, 0);
-        const float rollInertia = mass * (SHIP_HULL.x * SHIP_HULL.x + SHIP_HULL.y * SHIP_HULL.y) / 12.0f;
-        const float rollMoment = -rollInertia * glm::dot(body.angularVelocity, keel) / ROLL_TIME * wet;
-        const glm::vec3 couple = deck * (rollMoment / SHIP_HULL.x);
-        body.forces.push_back({couple, t.position + side * (0.5f * SHIP_HULL.x)});
-        body.forces.push_back({-couple, t.position - side * (0.5f * SHIP_HULL.x)});
+        const HullFrame frame{bow, starboard, std::atan2(bow.x, bow.z), glm::dot(motion.velocity, bow), glm::dot(motion.velocity, starboard)};
+        const float targetSpeed = pilot(ship, t.position, frame.heading, input, float(tick.dt));
+        hullForces(ship, t, motion, world.get<Body>(e), frame, targetSpeed);
     }
 }
 
