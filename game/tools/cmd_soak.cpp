@@ -254,6 +254,52 @@ void checkSoakInvariants(Sandbox& sandbox, const SoakBounds& bounds, SoakReport&
     }
 }
 
+// The soak's summary on stdout, and as JSON in options.stats when asked.
+static void reportSoak(Sandbox& sandbox, const std::string& scenePath, const SoakOptions& options, const SoakBounds& bounds,
+                       const SoakReport& report, double growth, double allowed) {
+    std::string cascades;
+    for (size_t c = 0; c < report.maxCascadeHeight.size(); ++c)
+        cascades += (c ? ", " : "") + fmt(report.maxCascadeHeight[c]) + " (bound " + fmt(bounds.cascadeHeight[c]) + ")";
+    std::printf("soak: %s: %llu steps, %.0f s simulated in %.1f s (%.0f steps/s)\n", scenePath.c_str(),
+                static_cast<unsigned long long>(report.steps), report.simulatedSeconds, report.wallSeconds,
+                double(report.steps) / std::max(report.wallSeconds, 1e-9));
+    std::printf("soak: max |h| per cascade %s m; sea Hs %.3g m; max |ripple| %.3g m (%.3g in the warm-up; bound %.3g); max |surface| under "
+                "bodies %.3g m (bound %.3g); lowest floating body centre %s\n",
+                cascades.c_str(), double(bounds.seaHs), double(report.maxRipple), double(report.warmupRipple), double(bounds.ripple),
+                double(report.maxSurface), double(bounds.surface),
+                std::isfinite(report.minFloatingDepth) ? (fmt(report.minFloatingDepth) + " m from the surface").c_str() : "(none)");
+    std::printf("soak: RSS start %.1f MiB, after warm-up %.1f MiB, end %.1f MiB, max %.1f MiB (growth %.2f MiB, "
+                "allowed %.1f%s)\n",
+                report.rssStartMiB, report.rssWarmMiB, report.rssEndMiB, report.rssMaxMiB, growth, allowed,
+                RSS_MEANINGFUL ? "" : "; not checked in a sanitizer build");
+    std::fflush(stdout);
+
+    if (!options.stats.empty()) {
+        nlohmann::json j;
+        j["scene"] = scenePath;
+        j["steps"] = report.steps;
+        j["simulated_seconds"] = report.simulatedSeconds;
+        j["wall_seconds"] = report.wallSeconds;
+        j["steps_per_second"] = double(report.steps) / std::max(report.wallSeconds, 1e-9);
+        j["check_every"] = options.checkEvery;
+        j["max_cascade_height_m"] = report.maxCascadeHeight;
+        j["cascade_height_bound_m"] = bounds.cascadeHeight;
+        j["sea_hs_m"] = bounds.seaHs;
+        j["max_ripple_m"] = report.maxRipple;
+        j["warmup_ripple_m"] = report.warmupRipple;
+        j["ripple_bound_m"] = bounds.ripple;
+        j["max_surface_m"] = report.maxSurface;
+        j["surface_bound_m"] = bounds.surface;
+        if (std::isfinite(report.minFloatingDepth)) j["min_floating_depth_m"] = report.minFloatingDepth;
+        j["rss_mib"] = {{"start", report.rssStartMiB}, {"warm", report.rssWarmMiB}, {"end", report.rssEndMiB},
+                        {"max", report.rssMaxMiB}, {"growth", growth}, {"allowed", allowed}};
+        char hash[32];
+        std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(sandbox.stateHash()));
+        j["state_hash"] = hash;
+        writeTextFile(options.stats, j.dump(2) + "\n", "stats");
+    }
+}
+
 int soakCommand(const SceneDef& scene, const std::string& scenePath, const SoakOptions& options) {
     if (!(options.seconds > 0.0)) throw InputError("soak: --seconds must be > 0");
     if (options.checkEvery < 1) throw InputError("soak: --check-every must be >= 1");
@@ -325,48 +371,7 @@ int soakCommand(const SceneDef& scene, const std::string& scenePath, const SoakO
     const double growth = report.rssEndMiB - report.rssWarmMiB;
     const double allowed = std::max(RSS_GROWTH_MIB, RSS_GROWTH_FRACTION * report.rssWarmMiB);
 
-    // --- summary: stdout, and the JSON file when asked
-    std::string cascades;
-    for (size_t c = 0; c < report.maxCascadeHeight.size(); ++c)
-        cascades += (c ? ", " : "") + fmt(report.maxCascadeHeight[c]) + " (bound " + fmt(bounds.cascadeHeight[c]) + ")";
-    std::printf("soak: %s: %llu steps, %.0f s simulated in %.1f s (%.0f steps/s)\n", scenePath.c_str(),
-                static_cast<unsigned long long>(report.steps), report.simulatedSeconds, report.wallSeconds,
-                double(report.steps) / std::max(report.wallSeconds, 1e-9));
-    std::printf("soak: max |h| per cascade %s m; sea Hs %.3g m; max |ripple| %.3g m (%.3g in the warm-up; bound %.3g); max |surface| under "
-                "bodies %.3g m (bound %.3g); lowest floating body centre %s\n",
-                cascades.c_str(), double(bounds.seaHs), double(report.maxRipple), double(report.warmupRipple), double(bounds.ripple),
-                double(report.maxSurface), double(bounds.surface),
-                std::isfinite(report.minFloatingDepth) ? (fmt(report.minFloatingDepth) + " m from the surface").c_str() : "(none)");
-    std::printf("soak: RSS start %.1f MiB, after warm-up %.1f MiB, end %.1f MiB, max %.1f MiB (growth %.2f MiB, "
-                "allowed %.1f%s)\n",
-                report.rssStartMiB, report.rssWarmMiB, report.rssEndMiB, report.rssMaxMiB, growth, allowed,
-                RSS_MEANINGFUL ? "" : "; not checked in a sanitizer build");
-    std::fflush(stdout);
-
-    if (!options.stats.empty()) {
-        nlohmann::json j;
-        j["scene"] = scenePath;
-        j["steps"] = report.steps;
-        j["simulated_seconds"] = report.simulatedSeconds;
-        j["wall_seconds"] = report.wallSeconds;
-        j["steps_per_second"] = double(report.steps) / std::max(report.wallSeconds, 1e-9);
-        j["check_every"] = options.checkEvery;
-        j["max_cascade_height_m"] = report.maxCascadeHeight;
-        j["cascade_height_bound_m"] = bounds.cascadeHeight;
-        j["sea_hs_m"] = bounds.seaHs;
-        j["max_ripple_m"] = report.maxRipple;
-        j["warmup_ripple_m"] = report.warmupRipple;
-        j["ripple_bound_m"] = bounds.ripple;
-        j["max_surface_m"] = report.maxSurface;
-        j["surface_bound_m"] = bounds.surface;
-        if (std::isfinite(report.minFloatingDepth)) j["min_floating_depth_m"] = report.minFloatingDepth;
-        j["rss_mib"] = {{"start", report.rssStartMiB}, {"warm", report.rssWarmMiB}, {"end", report.rssEndMiB},
-                        {"max", report.rssMaxMiB}, {"growth", growth}, {"allowed", allowed}};
-        char hash[32];
-        std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(sandbox.stateHash()));
-        j["state_hash"] = hash;
-        writeTextFile(options.stats, j.dump(2) + "\n", "stats");
-    }
+    reportSoak(sandbox, scenePath, options, bounds, report, growth, allowed);
     if (RSS_MEANINGFUL && growth > allowed)
         fail(sandbox, "memory grew by " + fmt(growth) + " MiB after the warm-up (" + fmt(report.rssWarmMiB) + " -> " +
                           fmt(report.rssEndMiB) + " MiB), more than " + fmt(allowed) + " MiB");
