@@ -13,6 +13,7 @@
 #include <catch2/catch.hpp>
 #include <cstring>
 #include <glm/glm.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 #include <algorithm>
 #include <optional>
 
@@ -110,6 +111,22 @@ CannonRun runCannon(const std::vector<std::string>& overrides, const std::vector
     return run;
 }
 
+// Alpha-weighted centroid (px, bottom-up) and total alpha of a target's colour texture.
+std::pair<glm::vec2, float> alphaCentroid(const gfx::Texture& texture, glm::ivec2 size) {
+    std::vector<glm::vec4> texels(size_t(size.x) * size_t(size.y));
+    glFinish();
+    glGetTextureImage(texture.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(texels.size() * sizeof(glm::vec4)), texels.data());
+    glm::vec2 centroid(0.0f);
+    float total = 0.0f;
+    for (int y = 0; y < size.y; ++y)
+        for (int x = 0; x < size.x; ++x) {
+            const float a = texels[size_t(y * size.x + x)].w;
+            centroid += a * glm::vec2(float(x) + 0.5f, float(y) + 0.5f);
+            total += a;
+        }
+    return {total > 0.0f ? centroid / total : centroid, total};
+}
+
 const Image& imageAt(const CannonRun& run, int k) {
     for (const auto& [frames, img] : run.after)
         if (frames == k) return img;
@@ -172,4 +189,77 @@ TEST_CASE("foam at a cannonball's hit: 1 s after it the water there is brighter 
     CHECK(at1 > none1 + 0.15f);
     CHECK(at5 > none5 + 0.03f);
     CHECK(at5 - none5 < 0.7f * (at1 - none1));
+}
+
+TEST_CASE("splash drops above flat water: drawn in the frame where they are, mirrored in the reflection target, none below the "
+          "surface; far drops keep a 1.5 px sprite",
+          "[gl][render][splash]") {
+    gfx::requestDebugOutput(true);
+    auto platform = platform::createHeadlessPlatform(SIZE);
+    const int errorsBefore = gfx::glErrorCount();
+    gfx::RenderDef def;
+    def.rtt_scale = 0.5f;
+    def.antialias = "off";
+    gfx::Renderer renderer(def);
+    gfx::CameraView camera;
+    camera.position = glm::vec3(0.0f, 6.0f, 0.0f);
+    camera.view = glm::lookAtRH(camera.position, glm::vec3(0.0f, 0.0f, -30.0f), glm::vec3(0, 1, 0));
+    camera.projection = glm::perspectiveRH_NO(glm::radians(60.0f), float(SIZE.x) / float(SIZE.y), 0.1f, 2000.0f);
+    camera.nearM = 0.1f;
+    camera.farM = 2000.0f;
+    const glm::ivec2 target = SIZE / 2;
+    const auto pixelOf = [&](glm::vec3 p, glm::ivec2 size) {
+        const glm::vec4 clip = camera.projection * camera.view * glm::vec4(p, 1.0f);
+        return (glm::vec2(clip) / clip.w * 0.5f + 0.5f) * glm::vec2(size);
+    };
+    // A ball of 400 drops (r = 1 cm, sprites of 6 cm) 3 m above the water, 30 m ahead.
+    const glm::vec3 centre(2.0f, 3.0f, -30.0f);
+    std::vector<gfx::SplashDrop> drops;
+    for (int i = 0; i < 400; ++i) {
+        const glm::vec3 u(float(i % 7) / 6.0f - 0.5f, float((i / 7) % 7) / 6.0f - 0.5f, float(i / 49) / 8.0f - 0.5f);
+        drops.emplace_back(centre + 0.8f * u, 0.01f);
+    }
+    renderer.render(camera, gfx::WaterView{}, {}, 0.0, SIZE, drops);
+    const Image with = readFrame();
+    const auto [reflection, reflected] = alphaCentroid(renderer.reflectionTarget().color, target);
+    const auto [refraction, refracted] = alphaCentroid(renderer.refractionTarget().color, target);
+    renderer.render(camera, gfx::WaterView{}, {}, 0.0, SIZE, {});
+    const Image without = readFrame();
+
+    const glm::vec2 mirrored = pixelOf(glm::vec3(centre.x, -centre.y, centre.z), target);
+    INFO("reflection: alpha " << reflected << " at " << reflection.x << ", " << reflection.y << "; expected at " << mirrored.x << ", "
+                              << mirrored.y);
+    CHECK(reflected > 5.0f);
+    CHECK(glm::distance(reflection, mirrored) < 1.5f);
+    CHECK(refracted == 0.0f);  // above the water: nothing in the refraction target
+
+    // In the frame, the changed pixels gather round the drops' own pixel, brighter.
+    const glm::vec2 at = pixelOf(centre, SIZE);
+    glm::vec2 sum(0.0f);
+    int changed = 0;
+    for (int y = 0; y < SIZE.y; ++y)
+        for (int x = 0; x < SIZE.x; ++x)
+            if (luma(with, x, y) > luma(without, x, y) + 0.05f && y < SIZE.y / 2 + 10) {
+                sum += glm::vec2(float(x) + 0.5f, float(SIZE.y - y) - 0.5f);
+                ++changed;
+            }
+    REQUIRE(changed > 10);
+    INFO("frame: " << changed << " brighter pixels round " << sum.x / float(changed) << ", " << sum.y / float(changed) << "; the drops at "
+                   << at.x << ", " << at.y);
+    CHECK(glm::distance(sum / float(changed), at) < 2.0f);
+
+    // One drop 13 m away: its 2.4 cm sprite is 0.29 px in radius, so it is drawn 0.75 px in
+    // radius at (0.29/0.75)² = 15% of its opacity: it changes its pixels a little, never to white.
+    const glm::vec3 far(0.0f, 1.0f, -12.0f);  // seen against the water
+    renderer.render(camera, gfx::WaterView{}, {}, 0.0, SIZE, std::vector<gfx::SplashDrop>{gfx::SplashDrop(far, 0.004f)});
+    const Image one = readFrame();
+    const glm::vec2 p = pixelOf(far, SIZE);
+    float most = 0.0f;
+    for (int y = int(SIZE.y - p.y) - 2; y <= int(SIZE.y - p.y) + 2; ++y)
+        for (int x = int(p.x) - 2; x <= int(p.x) + 2; ++x) most = std::max(most, std::abs(luma(one, x, y) - luma(without, x, y)));
+    INFO("largest change near the far drop " << most);
+    CHECK(most > 0.02f);
+    CHECK(most < 0.25f);
+    CHECK(one.maxDifference(without, 0, int(SIZE.y - p.y) - 3) == 0);  // nothing above it
+    CHECK(gfx::glErrorCount() == errorsBefore);
 }
