@@ -22,11 +22,14 @@ float rippleHeight(vec2 world) {
     return textureLod(u_ripples, uv, 0.0).r;
 }
 
-// Persistent foam coverage at world (x, z) (bilinear between cell centres; 0 outside the map).
+// Persistent foam coverage at world (x, z) (bilinear between cell centres; 0 outside the map),
+// faded out over the outer tenth of the map so that a map following a ship leaves no straight edge.
 float foamCoverage(vec2 world) {
     if (u_foamParams.w <= 0.0) return 0.0;
-    vec2 uv = ((world - u_foamParams.xy) / u_foamParams.z + 0.5) / u_foamParams.w;
-    return textureLod(u_foamMap, uv, 0.0).r;
+    vec2 cell = (world - u_foamParams.xy) / u_foamParams.z;
+    vec2 fromEdge = min(cell + 0.5, u_foamParams.w - 0.5 - cell);
+    float fade = smoothstep(0.0, 0.1 * u_foamParams.w, min(fromEdge.x, fromEdge.y));
+    return fade * textureLod(u_foamMap, (cell + 0.5) / u_foamParams.w, 0.0).r;
 }
 
 // True inside the ripple patch (plus one cell).

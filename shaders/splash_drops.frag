@@ -6,10 +6,9 @@
 #include "common_sky.glsl"
 #include "common_fresnel.glsl"
 
-in vec2 v_corner;
 in vec3 v_centre;
 in float v_opacity;
-layout(location = 0) uniform vec3 u_right;
+layout(location = 0) uniform vec3 u_right;  // the camera's right and up (world, unit): the sprite's plane
 layout(location = 1) uniform vec3 u_up;
 out vec4 o_color;
 
@@ -17,12 +16,13 @@ const vec3 SUN_COLOR = vec3(1.0, 0.92, 0.8);
 const float OPACITY = 0.85;  // of one sprite's centre
 
 void main() {
-    float d2 = dot(v_corner, v_corner);
+    vec2 corner = vec2(2.0 * gl_PointCoord.x - 1.0, 1.0 - 2.0 * gl_PointCoord.y);  // [-1, 1]², y up
+    float d2 = dot(corner, corner);
     if (d2 >= 1.0) discard;
     vec3 toEye = u_cameraPositionTime.xyz - v_centre;
     float dist = length(toEye);
     vec3 v = toEye / dist;
-    vec3 n = normalize(u_right * v_corner.x + u_up * v_corner.y + v * sqrt(1.0 - d2));
+    vec3 n = normalize(u_right * corner.x + u_up * corner.y + v * sqrt(1.0 - d2));
     vec3 sun = u_sunDirectionFresnel.xyz;
     vec3 ambient = 0.6 * skyRadiance(vec3(0.0, 1.0, 0.0), sun) + 0.2 * skyRadiance(vec3(n.x, abs(n.y), n.z), sun);
     vec3 scattered = 0.9 * (ambient + SUN_COLOR * 1.3 * (0.55 + 0.45 * dot(n, sun)));

@@ -1,4 +1,6 @@
-// Splash drops as camera-facing sprites, one instance a drop (a_drop: world centre, radius).
+// Splash drops as point sprites, one vertex a drop (a_drop: world centre, radius): one vertex
+// shader run a drop (a software rasteriser runs vertex shaders on one thread). A point is
+// clipped by its centre, and the driver caps its size (GL_POINT_SIZE_RANGE, 255 px on llvmpipe).
 // Each simulated drop stands for a cluster of spray: its sprite radius is the drop's times
 // u_sprite.x. A sprite smaller than u_sprite.z px in radius is drawn at that radius with its
 // opacity cut by the area ratio, so far drops fade instead of flickering between pixels.
@@ -11,19 +13,15 @@
 #endif
 
 layout(location = 0) in vec4 a_drop;
-layout(location = 0) uniform vec3 u_right;   // the camera's right and up (world, unit): the sprite's plane
-layout(location = 1) uniform vec3 u_up;
 layout(location = 2) uniform vec3 u_sprite;  // x sprite radius / drop radius, y projection[1][1], z smallest sprite radius (px)
-out vec2 v_corner;    // [-1, 1]² across the sprite
 out vec3 v_centre;    // the (mirrored) drop centre, world m
 out float v_opacity;  // the area ratio of a sprite enlarged to the smallest size, else 1
 
 void main() {
-    vec2 corner = vec2(float(gl_VertexID & 1), float(gl_VertexID >> 1)) * 2.0 - 1.0;  // a 4-vertex strip
     vec3 c = a_drop.xyz;
     float r = a_drop.w * u_sprite.x;
     gl_Position = vec4(0.0, 0.0, 2.0, 1.0);  // outside the clip volume: nothing drawn
-    v_corner = corner;
+    gl_PointSize = 1.0;
     v_centre = c;
     v_opacity = 0.0;
 #ifdef MIRROR
@@ -37,6 +35,6 @@ void main() {
     float grow = max(u_sprite.z / max(radiusPx, 1e-6), 1.0);
     v_opacity = 1.0 / (grow * grow);
     v_centre = c;
-    vec3 p = c + (u_right * corner.x + u_up * corner.y) * (r * grow);
-    gl_Position = u_viewProjection * vec4(p, 1.0);
+    gl_PointSize = 2.0 * radiusPx * grow;
+    gl_Position = clip;
 }

@@ -27,6 +27,7 @@ const vec2 DETAIL_DRIFT = vec2(0.031, 0.017);  // detail map scroll (repeats per
 const vec3 SUN_COLOR = vec3(1.0, 0.9, 0.7);
 const float FOAM_TILE = 5.0;               // m per repeat of the persistent foam's bubble pattern
 const float FOAM_EDGE = 0.08;              // softness of the pattern's threshold
+const float FOAM_WARP = 3.0;               // foam map cells the lookup is pushed by the DU/DV field, at most
 // A tilted surface shifts an image by an angle, so the shift grows with the distance of the
 // reflected or refracted object behind the surface: none where it touches it (a hull at the
 // waterline), the full offset from this many metres behind. Without the ramp the offset tears
@@ -118,14 +119,18 @@ void main() {
         float splash = smoothstep(0.12, 0.45, length(ripple));
         float foam = clamp(max(whitecap, splash) * (0.35 + 0.9 * detail.b), 0.0, 1.0);
         // Persistent foam: the bubble pattern where it exceeds 1 − coverage, so decaying foam
-        // breaks up into its brightest streaks and bubbles before it vanishes.
-        float coverage = foamCoverage(v_world.xz);
-        if (coverage > 0.0) {
+        // breaks up into its brightest streaks and bubbles before it vanishes; dense foam keeps
+        // the pattern's texture in its brightness. The map is read at a point pushed up to
+        // FOAM_WARP cells by the DU/DV field, so its edges fray instead of following the cells.
+        if (u_foamParams.w > 0.0) {
             vec2 fuv = v_world.xz / FOAM_TILE;
-            float pattern = 0.6 * texture(u_detail, fuv).b + 0.4 * texture(u_detail, fuv * 2.7 + 0.37).b;
-            float threshold = 1.0 - min(coverage, 1.0) * 1.15;
-            float lace = smoothstep(threshold - FOAM_EDGE, threshold + FOAM_EDGE, pattern + 0.25 * coverage);
-            foam = max(foam, lace * (0.55 + 0.45 * min(coverage * 2.0, 1.0)));
+            vec4 fine = texture(u_detail, fuv);
+            float coverage = foamCoverage(v_world.xz + fine.xy * FOAM_WARP * u_foamParams.z);
+            float ridges = 0.6 * fine.b + 0.4 * texture(u_detail, fuv * 2.7 + 0.37).b;
+            float pattern = pow(ridges, 0.4);  // the sharpened ridges spread over [0, 1]
+            float threshold = 1.0 - min(coverage, 1.0);
+            float lace = smoothstep(threshold - FOAM_EDGE, threshold + FOAM_EDGE, pattern);
+            foam = max(foam, coverage > 0.0 ? lace * (0.55 + 0.45 * pattern) : 0.0);
         }
         color = mix(color, vec3(0.9, 0.95, 1.0) * (0.4 + 0.6 * max(sun.y, 0.0)), foam * 0.85);
     }

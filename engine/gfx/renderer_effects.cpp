@@ -22,7 +22,6 @@ void Renderer::uploadSplashDrops(std::span<const SplashDrop> drops, const Camera
         m_splashProgram = loadProgram("splash_drops", {"splash_drops.vert", "splash_drops.frag"});
         m_splashMirrorProgram = loadProgram("splash_drops_mirror", {"splash_drops_mirror.vert", "splash_drops.frag"});
         m_splashVao = createVertexArray("splash drops");
-        glVertexArrayBindingDivisor(m_splashVao.id(), 0, 1);  // one drop an instance
         glEnableVertexArrayAttrib(m_splashVao.id(), 0);
         glVertexArrayAttribFormat(m_splashVao.id(), 0, 4, GL_FLOAT, GL_FALSE, 0);
         glVertexArrayAttribBinding(m_splashVao.id(), 0, 0);
@@ -33,7 +32,8 @@ void Renderer::uploadSplashDrops(std::span<const SplashDrop> drops, const Camera
         glVertexArrayVertexBuffer(m_splashVao.id(), 0, m_splashBuffer.id(), 0, sizeof(SplashDrop));
     }
     glNamedBufferSubData(m_splashBuffer.id(), 0, GLsizeiptr(drops.size_bytes()), drops.data());
-    // The sprites face the camera in both views: the reflection mirrors the drops, not the eye.
+    // The sprites' sphere normals use the camera's axes in both views: the reflection mirrors
+    // the drops, not the eye.
     const glm::vec3 right(camera.view[0][0], camera.view[1][0], camera.view[2][0]);
     const glm::vec3 up(camera.view[0][1], camera.view[1][1], camera.view[2][1]);
     const glm::vec3 sprite(m_def.splash_sprite_scale, camera.projection[1][1], MIN_SPRITE_RADIUS_PX);
@@ -59,7 +59,9 @@ void Renderer::drawSplashDrops(View view) {
     if (view == MAIN_VIEW) glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
     glUseProgram(view == REFLECTION_VIEW ? m_splashMirrorProgram.id() : m_splashProgram.id());
     glBindVertexArray(m_splashVao.id());
-    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, m_splashCount);
+    glEnable(GL_PROGRAM_POINT_SIZE);
+    glDrawArrays(GL_POINTS, 0, m_splashCount);
+    glDisable(GL_PROGRAM_POINT_SIZE);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glDisable(GL_BLEND);
     glDepthMask(GL_TRUE);
