@@ -15,7 +15,6 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <algorithm>
-#include <chrono>
 #include <optional>
 
 using namespace ob;
@@ -263,59 +262,4 @@ TEST_CASE("splash drops above flat water: drawn in the frame where they are, mir
     CHECK(most < 0.25f);
     CHECK(one.maxDifference(without, 0, int(SIZE.y - p.y) - 3) == 0);  // nothing above it
     CHECK(gfx::glErrorCount() == errorsBefore);
-}
-
-TEST_CASE("splash and foam drawing timings", "[.splash_bench]") {
-    // Not a test: the cost of the splash pass and of the foam map's upload and shading on this
-    // GL (docs/splash_foam.md §6). A crown of N drops 25 m ahead (r = 4 mm, sprites ~0.6 px:
-    // most drawn at the 1.5 px minimum), a 320×180 frame (with and without the reflection pass,
-    // which mirrors the drops) and a 640×360 frame over flat water. Run it on a quiet machine.
-    for (const auto& [size, reflections] : {std::pair{glm::ivec2(320, 180), true}, std::pair{glm::ivec2(320, 180), false},
-                                            std::pair{glm::ivec2(640, 360), true}}) {
-        auto platform = platform::createHeadlessPlatform(size);
-        gfx::RenderDef def;
-        def.reflections = reflections;
-        gfx::Renderer renderer(def);
-        gfx::CameraView camera;
-        camera.position = glm::vec3(0.0f, 6.0f, 0.0f);
-        camera.view = glm::lookAtRH(camera.position, glm::vec3(0.0f, 0.0f, -25.0f), glm::vec3(0, 1, 0));
-        camera.projection = glm::perspectiveRH_NO(glm::radians(60.0f), float(size.x) / float(size.y), 0.1f, 2000.0f);
-        std::vector<float> foam(256 * 256, 0.0f);
-        for (int j = 96; j < 160; ++j)
-            for (int i = 96; i < 160; ++i) foam[size_t(j * 256 + i)] = 0.6f;
-        for (const int count : {0, 1000, 10000, 100000}) {
-            std::vector<gfx::SplashDrop> drops;
-            for (int i = 0; i < count; ++i) {
-                const float a = 6.2831853f * float(i) / float(std::max(count, 1)), t = float((i * 7919) % 1000) / 1000.0f;
-                drops.emplace_back(glm::vec3((1.0f + t) * std::cos(a), 2.0f * t, -25.0f + (1.0f + t) * std::sin(a)), 0.004f);
-            }
-            for (const bool withFoam : {false, true}) {
-                gfx::WaterView water;
-                if (withFoam) {
-                    water.foam = foam.data();
-                    water.foamCells = 256;
-                    water.foamOrigin = glm::vec2(-6.4f, -31.4f);
-                    water.foamCellSize = 0.05f;
-                }
-                const int frames = 30;
-                double splashMs = 0.0, waterMs = 0.0;
-                int timed = 0;
-                renderer.render(camera, water, {}, 0.0, size, drops);
-                glFinish();
-                const auto start = std::chrono::steady_clock::now();
-                for (int f = 0; f < frames; ++f) {
-                    renderer.render(camera, water, {}, 0.0, size, drops);
-                    glFinish();
-                    for (const auto& [pass, ms] : renderer.takePassTimes()) {
-                        if (std::string(pass) == "splash") splashMs += ms, ++timed;
-                        if (std::string(pass) == "water") waterMs += ms;
-                    }
-                }
-                const double wall = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() / frames;
-                WARN(size.x << "x" << size.y << (reflections ? "" : " (reflections off)") << ", " << count << " drops, foam map " << (withFoam ? "on" : "off") << ": frame " << wall
-                             << " ms, splash pass " << (timed ? splashMs / timed : 0.0) << " ms, water pass " << (timed ? waterMs / timed : 0.0)
-                             << " ms (GPU timers)");
-            }
-        }
-    }
 }
