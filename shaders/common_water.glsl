@@ -6,18 +6,30 @@ layout(std140, binding = 1) uniform WaterUniforms {
     vec4 u_waterParams;        // x λ (choppiness sign included), y gravity, z Gerstner wave count, w smallest w (a guard)
     vec4 u_gridParams;         // x grid resolution, y grid reach from the eye (m), z cascade count, w FFT resolution N
     vec4 u_rippleParams;       // xy world origin of cell (0, 0) (m), z cell size (m), w cells per side (0: none)
+    vec4 u_foamParams;         // foam map: xy world origin of cell (0, 0) (m), z cell size (m), w cells per side (0: none)
     vec4 u_gerstner[32];       // (kx, kz, amplitude, phase) per wave
 };
 
 layout(binding = 0) uniform sampler2DArray u_displacement;  // layer c: (Dx, h, Dz, J)
 layout(binding = 1) uniform sampler2DArray u_slopes;        // layer c: (dh/dx, dh/dz, J, 0)
 layout(binding = 2) uniform sampler2D u_ripples;            // ripple heights Vh(t) (m), 0 outside
+layout(binding = 9) uniform sampler2D u_foamMap;            // persistent foam coverage [0, 1], 0 outside
 
 // Ripple height at world (x, z) (bilinear between cell centres; 0 outside the patch).
 float rippleHeight(vec2 world) {
     if (u_rippleParams.w <= 0.0) return 0.0;
     vec2 uv = ((world - u_rippleParams.xy) / u_rippleParams.z + 0.5) / u_rippleParams.w;
     return textureLod(u_ripples, uv, 0.0).r;
+}
+
+// Persistent foam coverage at world (x, z) (bilinear between cell centres; 0 outside the map),
+// faded out over the outer tenth of the map so that a map following a ship leaves no straight edge.
+float foamCoverage(vec2 world) {
+    if (u_foamParams.w <= 0.0) return 0.0;
+    vec2 cell = (world - u_foamParams.xy) / u_foamParams.z;
+    vec2 fromEdge = min(cell + 0.5, u_foamParams.w - 0.5 - cell);
+    float fade = smoothstep(0.0, 0.1 * u_foamParams.w, min(fromEdge.x, fromEdge.y));
+    return fade * textureLod(u_foamMap, (cell + 0.5) / u_foamParams.w, 0.0).r;
 }
 
 // True inside the ripple patch (plus one cell).

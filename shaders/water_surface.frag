@@ -4,7 +4,8 @@
 // coverage; refraction = what lies below, faded to the water colour by its depth (seed 004
 // eq. 7); both looked up at the pixel offset by the normal (seed 000) and a DU/DV map
 // scrolled in time (seed 004 eq. 4–5); mixed by Fresnel (n = 1.33); plus sun glitter
-// (seed 000) and foam where the FFT Jacobian folds or the ripples are steep.
+// (seed 000) and foam where the FFT Jacobian folds or the ripples are steep, and where the
+// persistent foam map holds coverage (its bubble pattern thins as the coverage decays).
 #include "common_frame.glsl"
 #include "common_sky.glsl"
 #include "common_fresnel.glsl"
@@ -24,6 +25,9 @@ out vec4 o_color;
 const float DETAIL_TILE = 24.0;            // m per repeat of the detail map
 const vec2 DETAIL_DRIFT = vec2(0.031, 0.017);  // detail map scroll (repeats per s)
 const vec3 SUN_COLOR = vec3(1.0, 0.9, 0.7);
+const float FOAM_TILE = 5.0;               // m per repeat of the persistent foam's bubble pattern
+const float FOAM_EDGE = 0.08;              // softness of the pattern's threshold
+const float FOAM_WARP = 3.0;               // foam map cells the lookup is pushed by the DU/DV field, at most
 // A tilted surface shifts an image by an angle, so the shift grows with the distance of the
 // reflected or refracted object behind the surface: none where it touches it (a hull at the
 // waterline), the full offset from this many metres behind. Without the ramp the offset tears
@@ -87,8 +91,10 @@ void main() {
         // the path from the surface to the mirrored object.
         float behind = eyeDepth(texture(u_reflectionDepth, screen).r) - surfaceDepth;
         vec2 uv = clamp(screen + offset * smoothstep(0.0, DISTORTION_RAMP_M, behind), 0.0, 1.0);
+        // Premultiplied by coverage (objects' partial samples resolved over transparent black,
+        // splash sprites blended): the sky shows through by 1 − coverage.
         vec4 local = texture(u_reflection, uv);
-        reflection = mix(reflection, local.rgb, local.a);
+        reflection = reflection * (1.0 - local.a) + local.rgb;
     }
     vec3 refraction = body;
     if (u_switches.y > 0.5) {
@@ -112,6 +118,20 @@ void main() {
         float whitecap = smoothstep(0.6, 0.1, jacobian);
         float splash = smoothstep(0.12, 0.45, length(ripple));
         float foam = clamp(max(whitecap, splash) * (0.35 + 0.9 * detail.b), 0.0, 1.0);
+        // Persistent foam: the bubble pattern where it exceeds 1 − coverage, so decaying foam
+        // breaks up into its brightest streaks and bubbles before it vanishes; dense foam keeps
+        // the pattern's texture in its brightness. The map is read at a point pushed up to
+        // FOAM_WARP cells by the DU/DV field, so its edges fray instead of following the cells.
+        if (u_foamParams.w > 0.0) {
+            vec2 fuv = v_world.xz / FOAM_TILE;
+            vec4 fine = texture(u_detail, fuv);
+            float coverage = foamCoverage(v_world.xz + fine.xy * FOAM_WARP * u_foamParams.z);
+            float ridges = 0.6 * fine.b + 0.4 * texture(u_detail, fuv * 2.7 + 0.37).b;
+            float pattern = pow(ridges, 0.4);  // the sharpened ridges spread over [0, 1]
+            float threshold = 1.0 - min(coverage, 1.0);
+            float lace = smoothstep(threshold - FOAM_EDGE, threshold + FOAM_EDGE, pattern);
+            foam = max(foam, coverage > 0.0 ? lace * (0.55 + 0.45 * pattern) : 0.0);
+        }
         color = mix(color, vec3(0.9, 0.95, 1.0) * (0.4 + 0.6 * max(sun.y, 0.0)), foam * 0.85);
     }
     vec3 haze = textureLod(u_sky, normalize(vec3(-v.x, 0.0, -v.z)), 0.0).rgb;

@@ -17,7 +17,9 @@ struct RenderDef {
     float dudv_strength = 0.02f;                    ///< DU/DV distortion of the reflection/refraction lookups (fraction of the screen), [0, 0.2]
     float normal_distortion = 0.05f;                ///< offset of those lookups by the surface normal's slope (seed 000), [0, 0.5]
     float water_clarity = 4.0f;                     ///< depth (m) over which refracted light fades to the water colour by 1/e, [0.05, 1000]
-    bool foam = true;                               ///< whitecaps where the FFT Jacobian folds and splash rings where ripples are steep
+    bool foam = true;                               ///< whitecaps where the FFT Jacobian folds, splash rings where ripples are steep, and the persistent foam map
+    bool splash_drops = true;                       ///< splash drops drawn as lit sprites (main view and reflection)
+    float splash_sprite_scale = 6.0f;               ///< sprite radius / drop radius: a simulated drop stands for a cluster of spray, [1, 100]
     float glitter = 6.0f;                           ///< sun glitter strength (× sun colour), [0, 100]
     float glitter_shininess = 600.0f;               ///< sun glitter exponent (Phong), [1, 10000]
     float exposure = 1.0f;                          ///< scene exposure multiplier before tone mapping, [0.01, 16]
@@ -37,7 +39,9 @@ template <class V> void describe(V& v, RenderDef& d) {
     v.field("dudv_strength", d.dudv_strength, range(0, 0.2), "DU/DV distortion of reflection/refraction (screen fraction)");
     v.field("normal_distortion", d.normal_distortion, range(0, 0.5), "lookup offset by the surface slope (screen fraction)");
     v.field("water_clarity", d.water_clarity, range(0.05, 1000), "depth (m) over which refracted light fades to the water colour");
-    v.field("foam", d.foam, "whitecaps (FFT Jacobian) and splash rings (steep ripples)");
+    v.field("foam", d.foam, "whitecaps (FFT Jacobian), splash rings (steep ripples) and the persistent foam map");
+    v.field("splash_drops", d.splash_drops, "draw the splash drops as lit sprites");
+    v.field("splash_sprite_scale", d.splash_sprite_scale, range(1, 100), "sprite radius / drop radius (a drop stands for a cluster of spray)");
     v.field("glitter", d.glitter, range(0, 100), "sun glitter strength");
     v.field("glitter_shininess", d.glitter_shininess, range(1, 10000), "sun glitter exponent (Phong)");
     v.field("exposure", d.exposure, range(0.01, 16), "exposure multiplier before tone mapping");

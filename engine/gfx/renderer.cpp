@@ -27,7 +27,7 @@ constexpr GLuint FRAME_UBO_BINDING = 0;
 constexpr GLuint WATER_UBO_BINDING = 1;
 // Texture units of the water and sky passes (shaders/common_water.glsl, water_surface.frag).
 enum TextureUnit : GLuint { DISPLACEMENT_UNIT, SLOPES_UNIT, RIPPLES_UNIT, SKY_UNIT, REFLECTION_UNIT, REFRACTION_UNIT,
-                            REFRACTION_DEPTH_UNIT, DETAIL_UNIT, REFLECTION_DEPTH_UNIT };
+                            REFRACTION_DEPTH_UNIT, DETAIL_UNIT, REFLECTION_DEPTH_UNIT, FOAM_UNIT };
 // The projected grid reaches this fraction of the far clip distance; past it the grid is a
 // wall up to the eye's level, which the camera sees exactly on the horizon line.
 constexpr float GRID_REACH = 0.9f;
@@ -45,7 +45,7 @@ constexpr float MAX_SURFACE_SLOPE = 1.0f;
 // Objects within this radius (m: fish, cannonballs) are cut at the surface's tangent plane
 // under their origin, larger ones (ships) at the surface evaluated vertex by vertex.
 constexpr float TANGENT_PLANE_RADIUS = 1.0f;
-const char* const PASS_NAMES[] = {"sky_bake", "reflection", "refraction", "opaque", "water", "sky", "post"};
+const char* const PASS_NAMES[] = {"sky_bake", "reflection", "refraction", "opaque", "water", "sky", "splash", "post"};
 // Samples a pixel of the msaa4 targets; the FXAA pass reads its source on this unit.
 constexpr int MSAA_SAMPLES = 4;
 constexpr GLuint FXAA_SOURCE_UNIT = 0;
@@ -199,7 +199,7 @@ void Renderer::resizeTargets(glm::ivec2 internal) {
 }
 
 void Renderer::render(const CameraView& camera, const WaterView& water, const std::vector<ObjectDraw>& objects, double time,
-                      glm::ivec2 size) {
+                      glm::ivec2 size, std::span<const SplashDrop> drops) {
     m_underwater = camera.position.y < camera.waterHeight;
     m_antialias = antialiasMode(m_def.antialias, isSoftwareRenderer());
     if (m_antialias == Antialias::Msaa4 && !m_msaaSupported) {
@@ -215,6 +215,7 @@ void Renderer::render(const CameraView& camera, const WaterView& water, const st
     // --- passes
     if (glm::normalize(m_def.sun_direction) != m_bakedSun) skyBakePass();
     prepareWater(camera, water, internal.y);
+    uploadSplashDrops(drops, camera);
     const bool above = !m_underwater;
     if (m_def.reflections && above) reflectionPass(objects);
     if (m_def.refractions && above) refractionPass(objects);
@@ -229,7 +230,8 @@ void Renderer::render(const CameraView& camera, const WaterView& water, const st
     glBindBufferBase(GL_UNIFORM_BUFFER, FRAME_UBO_BINDING, m_frameUniforms[MAIN_VIEW].id());
     opaquePass(objects);
     waterPass(camera);
-    skyPass();  // last: it shades only the pixels nothing else covered
+    skyPass();  // it shades only the pixels nothing else covered
+    splashPass();  // after the sky: the sprites write no depth
     if (!direct) postPass(size);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glBindVertexArray(0);
@@ -292,6 +294,7 @@ void Renderer::reflectionPass(const std::vector<ObjectDraw>& objects) {
     glFrontFace(GL_CW);  // the mirror flips the winding
     drawObjects(objects, REFLECTION_VIEW);
     glFrontFace(GL_CCW);
+    drawSplashDrops(REFLECTION_VIEW);
     if (msaa) resolveTarget(m_rttMultisampled, m_reflection, true);  // alpha becomes fractional coverage at edges
     m_passTimers[REFLECTION_PASS].end();
     glPopDebugGroup();
@@ -447,8 +450,10 @@ void Renderer::uploadWaterUniforms(const CameraView& camera, const WaterView& wa
         glTextureSubImage2D(m_rippleTexture.id(), 0, 0, 0, m_rippleCells, m_rippleCells, GL_RED, GL_FLOAT, water.ripples);
         u.rippleParams = glm::vec4(water.rippleOrigin, water.rippleCellSize, float(m_rippleCells));
     }
+    uploadFoam(water, u);
     glNamedBufferSubData(m_waterUniforms.id(), 0, sizeof u, &u);
     glBindBufferBase(GL_UNIFORM_BUFFER, WATER_UBO_BINDING, m_waterUniforms.id());
+    glBindTextureUnit(FOAM_UNIT, u.foamParams.w > 0.0f ? m_foamTexture.id() : 0);
     glBindTextureUnit(DISPLACEMENT_UNIT, layers ? water.displacement->id() : m_flatDisplacement.id());
     glBindTextureUnit(SLOPES_UNIT, layers ? water.slopes->id() : m_flatSlopes.id());
     glBindTextureUnit(RIPPLES_UNIT, u.rippleParams.w > 0.0f ? m_rippleTexture.id() : 0);

@@ -5,6 +5,8 @@
 //   opaque     → objects from the camera into the framebuffer
 //   water      → the composite surface on a projected grid, shaded from the targets and sky
 //   sky        → the cube map (or underwater fog) where nothing else was drawn
+//   splash     → splash drops as lit, soft sprites over the frame (depth-tested, blended; the
+//                reflection pass draws them too, mirrored)
 //   post       → the internal frame to the framebuffer: MSAA resolve, FXAA, upscale (when
 //                resolution_scale < 1); skipped when the frame was drawn into it directly
 #pragma once
@@ -18,6 +20,7 @@
 #include <array>
 #include <glm/mat4x4.hpp>
 #include <map>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -53,6 +56,10 @@ struct WaterView {
     int rippleCells = 0;                    ///< ripple patch cells per side (0: no ripple layer)
     glm::vec2 rippleOrigin{0.0f};           ///< world (x, z) of cell (0, 0)'s centre, m
     float rippleCellSize = 1.0f;            ///< m per cell
+    const float* foam = nullptr;            ///< persistent foam coverage [0, 1], foamCells² row-major (z rows)
+    int foamCells = 0;                      ///< foam map cells per side (0: no foam map)
+    glm::vec2 foamOrigin{0.0f};             ///< world (x, z) of foam cell (0, 0)'s centre, m
+    float foamCellSize = 1.0f;              ///< m per foam cell
     /// How far the FFT cascades together move a rest point (m; λ included): the projected
     /// grid reaches this far past the view. Gerstner and ripple bounds the renderer derives.
     ocean::DisplacementBounds fftBounds;
@@ -78,9 +85,10 @@ struct WaterUniforms {
     glm::vec4 waterParams;   ///< λ, gravity, Gerstner wave count, smallest grid w (a guard)
     glm::vec4 gridParams;    ///< grid resolution, grid reach from the eye (m), cascades, FFT N
     glm::vec4 rippleParams;  ///< origin x, origin z (m), cell size (m), cells per side (0: none)
+    glm::vec4 foamParams;    ///< foam map: origin x, origin z (m), cell size (m), cells per side (0: none)
     glm::vec4 gerstner[32];
 };
-static_assert(sizeof(WaterUniforms) == 16 * (4 + 4 + 32), "WaterUniforms must match std140 layout");
+static_assert(sizeof(WaterUniforms) == 16 * (4 + 5 + 32), "WaterUniforms must match std140 layout");
 constexpr int MAX_GERSTNER_WAVES = 32;
 
 /// std140 mirror of `FrameUniforms` in shaders/common_frame.glsl: one copy per view
@@ -99,6 +107,9 @@ struct FrameUniforms {
 };
 static_assert(sizeof(FrameUniforms) == 2 * 64 + 8 * 16, "FrameUniforms must match std140 layout");
 
+/// One splash drop to draw: world centre (xyz, m) and radius (w, m).
+using SplashDrop = glm::vec4;
+
 /// GPU ms of each pass in the latest resolved frame (pass name → ms).
 using PassTimes = std::vector<std::pair<const char*, double>>;
 
@@ -106,9 +117,10 @@ using PassTimes = std::vector<std::pair<const char*, double>>;
 class Renderer {
 public:
     explicit Renderer(const RenderDef& def);
-    /// Draws one frame of the scene into the default framebuffer of `size`.
+    /// Draws one frame of the scene into the default framebuffer of `size`; `drops`: the live
+    /// splash drops (drawn unless [render] splash_drops is off).
     void render(const CameraView& camera, const WaterView& water, const std::vector<ObjectDraw>& objects, double time,
-                glm::ivec2 size);
+                glm::ivec2 size, std::span<const SplashDrop> drops = {});
     /// GPU ms per pass of the latest frame whose timer queries resolved (empty until one does).
     PassTimes takePassTimes();
     RenderDef& def() { return m_def; }
@@ -118,7 +130,7 @@ public:
 
 private:
     enum View { MAIN_VIEW, REFLECTION_VIEW, REFRACTION_VIEW, VIEW_COUNT };
-    enum Pass { SKY_BAKE_PASS, REFLECTION_PASS, REFRACTION_PASS, OPAQUE_PASS, WATER_PASS, SKY_PASS, POST_PASS, PASS_COUNT };
+    enum Pass { SKY_BAKE_PASS, REFLECTION_PASS, REFRACTION_PASS, OPAQUE_PASS, WATER_PASS, SKY_PASS, SPLASH_PASS, POST_PASS, PASS_COUNT };
 
     void skyBakePass();  // in: sun direction; out: m_skyCube (linear radiance, mipmapped)
     void reflectionPass(const std::vector<ObjectDraw>& objects);  // in: mirrored view, objects; out: m_reflection colour + depth
@@ -127,7 +139,13 @@ private:
     void prepareWater(const CameraView& camera, const WaterView& water, int internalHeight);  // out: grid, water uniforms, layer textures bound
     void waterPass(const CameraView& camera);  // in: water layers, targets, sky; out: framebuffer
     void skyPass();  // in: sky cube, depth; out: colour where nothing was drawn
+    void splashPass();  // in: camera view, uploaded drops, depth; out: framebuffer colour (blended)
     void postPass(glm::ivec2 size);  // in: m_multisampled or m_internal; out: framebuffer of `size`
+
+    // Splash drops and foam (renderer_effects.cpp).
+    void uploadSplashDrops(std::span<const SplashDrop> drops, const CameraView& camera);  // out: m_splashBuffer, sprite uniforms
+    void drawSplashDrops(View view);  // the uploaded drops as sprites into the bound target (MAIN_VIEW or REFLECTION_VIEW)
+    void uploadFoam(const WaterView& water, WaterUniforms& u);  // out: m_foamTexture, u.foamParams
 
     void drawObjects(const std::vector<ObjectDraw>& objects, View view);
     const Mesh& meshFor(const ObjectDraw& object);
@@ -155,6 +173,13 @@ private:
     Framebuffer m_skyBakeFramebuffer;
     glm::vec3 m_bakedSun{0.0f};
     Texture m_detailMap;      // DU/DV (rg) and foam pattern (b), tileable, mipmapped
+    Texture m_foamTexture;    // R16F foam coverage of the foam map, re-uploaded every frame
+    int m_foamCells = 0;
+    Program m_splashProgram, m_splashMirrorProgram;
+    VertexArray m_splashVao;
+    Buffer m_splashBuffer;    // this frame's drops, (centre, radius) per instance
+    size_t m_splashCapacity = 0;  // drops the buffer holds
+    GLsizei m_splashCount = 0;    // drops uploaded this frame
     RenderTarget m_reflection, m_refraction;
     RenderTarget m_internal;      // the frame (RGBA8, display-encoded) when it is not drawn into the framebuffer directly
     RenderTarget m_multisampled;  // msaa4: the frame's 4 samples a pixel, resolved into m_internal

@@ -4,6 +4,7 @@
 
 #include "world/camera.h"
 #include "core/log.h"
+#include "foam/foam_map.h"
 #include "ecs/components.h"
 #include "gfx/gl.h"
 #include "interaction/ewave_gpu.h"
@@ -13,6 +14,7 @@
 #include "ocean/ocean_fft_cpu.h"
 #include "ocean/ocean_fft_gpu.h"
 #include "ocean/ocean_textures.h"
+#include "sim/splash_foam_system.h"
 #include "water/composite_water.h"
 
 namespace ob::game {
@@ -141,6 +143,12 @@ gfx::WaterView prepareWaterView(ecs::World& world, double time) {
         view.rippleCells = patch->def().resolution;
         view.rippleOrigin = patch->origin();
         view.rippleCellSize = patch->def().cell_size;
+    }
+    if (const foam::FoamMap* foam = foamMap(world)) {
+        view.foam = foam->coverage().data();
+        view.foamCells = foam->resolution();
+        view.foamOrigin = foam->origin();
+        view.foamCellSize = foam->cellSize();
     }
     OceanState* ocean = world.resource<OceanState>();
     if (!ocean || !ocean->textures) return view;

@@ -15,6 +15,7 @@
 #include "ocean/ocean_fft_cpu.h"
 #include "world/script.h"
 #include "behaviours/ship.h"
+#include "splash/splash_particles.h"
 #include "sim/splash_foam_system.h"
 #include "ui/ui_panels.h"
 #include "water/composite_water.h"
@@ -74,7 +75,13 @@ void renderSystem(ecs::World& world, const ecs::Tick& tick) {
             d.waterHeight = s.height;
             d.waterSlope = -glm::vec2(s.normal.x, s.normal.z) / s.normal.y;
         }
-    res->renderer->render(camera, prepareWaterView(world, tick.time), draws, tick.time, size);
+    std::vector<gfx::SplashDrop> drops;
+    if (const splash::SplashParticles* particles = splashParticles(world); particles && res->scene->render.splash_drops) {
+        drops.resize(size_t(particles->size()));
+        for (size_t i = 0; i < drops.size(); ++i)
+            drops[i] = gfx::SplashDrop(particles->x()[i], particles->y()[i], particles->z()[i], particles->radius()[i]);
+    }
+    res->renderer->render(camera, prepareWaterView(world, tick.time), draws, tick.time, size, drops);
     gfx::PassTimes passes = res->renderer->takePassTimes();
     double gpuMs = 0.0;
     for (const auto& [pass, ms] : passes) {
