@@ -49,7 +49,7 @@ struct WorkerCountGuard {
 
 } // namespace
 
-TEST_CASE("the default scene stepped twice for 120 steps gives the same state hash", "[determinism]") {
+TEST_CASE("the default scene stepped twice for 120 steps gives the same state hash", "[determinism][threads]") {
     game::SceneDef scene = game::loadScene(game::defaultScenePath());
     uint64_t a = hashAfterSteps(scene, 120);
     CHECK(a == hashAfterSteps(scene, 120));
@@ -65,7 +65,7 @@ TEST_CASE("two headless runs of 120 frames report the same state hash", "[determ
     CHECK(a != cliHash("--set camera.follow_height_m=8"));
 }
 
-TEST_CASE("the GPU ocean backend (whose query maps are computed a step ahead on another thread) gives the CPU backend's state hash", "[determinism]") {
+TEST_CASE("the GPU ocean backend (whose query maps are computed a step ahead on another thread) gives the CPU backend's state hash", "[determinism][threads]") {
     // 40 frames: the GPU transforms on a software rasteriser are slow, and every frame's
     // maps enter the hash (the ships and the crate float on them from the first step).
     std::string gpuLog, cpuLog;
@@ -75,7 +75,7 @@ TEST_CASE("the GPU ocean backend (whose query maps are computed a step ahead on 
     CHECK(cpuLog.find("ocean: cpu (FFTW) backend") != std::string::npos);
 }
 
-TEST_CASE("the state hash is the same with 1, 2, 3 and 8 workers (ripple rows and ocean threads split)", "[determinism][parallel]") {
+TEST_CASE("the state hash is the same with 1, 2, 3 and 8 workers (ripple rows and ocean threads split)", "[determinism][parallel][threads]") {
     // A 1024² patch splits its 1022 interior rows into chunks of 32 (MIN_CELLS_PER_CHUNK /
     // 1024), so every worker count here really splits it; the 256² ocean runs on 2 threads
     // once 2 workers are set. The bodies fall in within the 150 steps and ring the patch.
@@ -94,7 +94,7 @@ TEST_CASE("the state hash is the same with 1, 2, 3 and 8 workers (ripple rows an
     for (size_t i = 1; i < hashes.size(); ++i) CHECK(hashes[i] == hashes[0]);
 }
 
-TEST_CASE("ocean maps are bit-identical on 1, 2, 3 and 8 threads at any time", "[determinism][ocean]") {
+TEST_CASE("ocean maps are bit-identical on 1, 2, 3 and 8 threads at any time", "[determinism][ocean][threads]") {
     game::SceneDef scene = game::loadScene(game::defaultScenePath());
     ocean::OceanDef def = scene.ocean;
     def.cascades = 3;
