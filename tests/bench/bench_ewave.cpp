@@ -21,17 +21,22 @@ using namespace ob::interaction;
 
 namespace {
 
+// Fills a field's height and velocity with noise, the same for every benchmark.
+void fillNoise(EWaveField& field) {
+    std::mt19937 rng(1);
+    std::uniform_real_distribution<double> noise(-0.1, 0.1);
+    for (double& v : field.heightState()) v = noise(rng);
+    for (double& v : field.velocityState()) v = noise(rng);
+}
+
 // One step of an N×N absorbing field (0.25 m cells, 60 Hz, the default damping) holding noise.
 // Args: N, workers. Waves decay by 0.5 % a step at most: no refill needed for the run.
 void BM_EWaveStep(benchmark::State& state) {
     const int n = int(state.range(0));
     ob::setWorkerCount(int(state.range(1)));
-    EWaveField field(n, n, 0.25f, EWaveBoundary::Absorbing, 32);
-    field.setDamping(3.0f, 1e-3f);
-    std::mt19937 rng(1);
-    std::uniform_real_distribution<double> noise(-0.1, 0.1);
-    for (double& v : field.heightState()) v = noise(rng);
-    for (double& v : field.velocityState()) v = noise(rng);
+    EWaveField field(n, n, 0.25f, EWaveBoundary::Absorbing, 32);  // 0.25 m cells
+    field.setDamping(3.0f, 1e-3f);                                 // the default damping
+    fillNoise(field);
     field.step(1.0f / 60.0f);  // coefficients and sponge built outside the timing
     for (auto _ : state) field.step(1.0f / 60.0f);
     ob::setWorkerCount(0);
@@ -48,12 +53,9 @@ void BM_EWaveGpuStep(benchmark::State& state) {
     ob::setLogQuiet(true);
     const auto platform = ob::platform::createHeadlessPlatform({16, 16});
     const int n = int(state.range(0));
-    EWaveField field(n, n, 0.25f, EWaveBoundary::Absorbing, 32);
-    field.setDamping(3.0f, 1e-3f);
-    std::mt19937 rng(1);
-    std::uniform_real_distribution<double> noise(-0.1, 0.1);
-    for (double& v : field.heightState()) v = noise(rng);
-    for (double& v : field.velocityState()) v = noise(rng);
+    EWaveField field(n, n, 0.25f, EWaveBoundary::Absorbing, 32);  // 0.25 m cells
+    field.setDamping(3.0f, 1e-3f);                                 // the default damping
+    fillNoise(field);
     EWaveGpu gpu(field);
     gpu.upload(field);
     const auto body = [&] {
