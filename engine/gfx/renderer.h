@@ -15,6 +15,7 @@
 #include "gfx/mesh.h"
 #include "gfx/render_def.h"
 #include "gfx/render_target.h"
+#include "gfx/scene_view.h"
 #include "gfx/projected_grid.h"
 
 #include <array>
@@ -31,16 +32,6 @@ enum class Antialias : uint8_t { Off, Fxaa, Msaa4 };
 /// The mode a `RenderDef::antialias` key selects: "auto" is Msaa4 on a GPU and Fxaa on a
 /// software rasteriser (which pays for every sample on the CPU).
 Antialias antialiasMode(const std::string& key, bool softwareRenderer);
-
-/// What the camera sees from where: the render phase fills this from the camera entity.
-struct CameraView {
-    glm::vec3 position{0.0f};   ///< eye (world m)
-    glm::mat4 view{1.0f};       ///< world → eye
-    glm::mat4 projection{1.0f}; ///< eye → clip
-    float nearM = 0.1f;         ///< near clip distance (m)
-    float farM = 20000.0f;      ///< far clip distance (m)
-    float waterHeight = 0.0f;   ///< composite water surface height under the eye (m): below it, the underwater look
-};
 
 /// The water layers the surface pass draws (everything optional: absent layers are flat).
 struct WaterView {
@@ -63,19 +54,6 @@ struct WaterView {
     /// How far the FFT cascades together move a rest point (m; λ included): the projected
     /// grid reaches this far past the view. Gerstner and ripple bounds the renderer derives.
     ocean::DisplacementBounds fftBounds;
-};
-
-/// The built-in shapes an object can be drawn as.
-enum class MeshKind : uint8_t { Sphere, Box };
-
-/// One opaque object to draw this frame.
-struct ObjectDraw {
-    MeshKind mesh = MeshKind::Sphere;
-    glm::mat4 model{1.0f};          ///< unit mesh → world (scale, rotation, position)
-    glm::vec3 color{0.8f};          ///< base colour (linear RGB)
-    std::string modelFile;          ///< glTF file drawn instead of `mesh` ("" = built-in)
-    float waterHeight = 0.0f;       ///< the water surface's height under the object's origin (m)
-    glm::vec2 waterSlope{0.0f};     ///< and its slope there (dh/dx, dh/dz)
 };
 
 /// std140 mirror of `WaterUniforms` in shaders/common_water.glsl.
@@ -106,9 +84,6 @@ struct FrameUniforms {
     glm::vec4 switches;             ///< reflections, refractions, foam (1 on, 0 off), 0
 };
 static_assert(sizeof(FrameUniforms) == 2 * 64 + 8 * 16, "FrameUniforms must match std140 layout");
-
-/// One splash drop to draw: world centre (xyz, m) and radius (w, m).
-using SplashDrop = glm::vec4;
 
 /// GPU ms of each pass in the latest resolved frame (pass name → ms).
 using PassTimes = std::vector<std::pair<const char*, double>>;

@@ -1,9 +1,6 @@
 // Ripple patch placement, world sampling and per-sphere stamping.
 #include "interaction/ripple_patch.h"
 
-#include "interaction/ewave_gpu.h"
-#include "interaction/ripple_gpu.h"
-
 #include <algorithm>
 
 #include <cmath>
@@ -36,46 +33,18 @@ RipplePatch::RipplePatch(const RippleDef& def)
 
 RipplePatch::~RipplePatch() = default;
 
-bool RipplePatch::useGpu() {
-    if (m_ewave) {
-        if (!EWaveGpu::supports(m_ewave->rows(), m_ewave->cols())) return false;
-        m_ewaveGpu = std::make_unique<EWaveGpu>(*m_ewave);
-        return true;
-    }
-    m_gpu = std::make_unique<RippleFieldGpu>(m_field.rows(), m_field.cols(), m_field.boundary(), m_field.spongeWidth());
-    m_gpu->upload(m_field);
-    return true;
-}
-
 void RipplePatch::step(float dt) {
     if (m_ewave) {
+        const bool sources = !m_sources.empty();
         for (const EWaveSource& s : m_sources) m_ewave->addSource(s.gx, s.gz, s.radiusCells, s.accel, dt);
-        if (!m_ewaveGpu) {
-            m_sources.clear();
-            m_ewave->step(dt);
-            return;
-        }
-        if (m_edited || !m_sources.empty()) m_ewaveGpu->upload(*m_ewave);
-        m_edited = false;
         m_sources.clear();
-        m_ewaveGpu->step(dt);
-        m_ewaveGpu->download(m_ewave->heightState(), m_ewave->velocityState());
-        m_ewave->syncHeight();
-        return;
+        if (m_offload) m_offload->step(dt, m_def.damping, m_edited || sources);
+        else m_ewave->step(dt);
+    } else {
+        if (m_offload) m_offload->step(dt, m_def.damping, m_edited);
+        else m_field.step(m_def.damping);
     }
-    if (!m_gpu) {
-        m_field.step(m_def.damping);
-        return;
-    }
-    if (m_edited) m_gpu->upload(m_field);
     m_edited = false;
-    m_gpu->stamp(m_pending);
-    m_pending.clear();
-    m_gpu->step(m_def.damping);
-    m_gpu->readCurrent(m_readback);
-    std::copy(m_readback.begin(), m_readback.end(), m_field.current().begin());
-    m_gpu->readPrevious(m_readback);
-    std::copy(m_readback.begin(), m_readback.end(), m_field.previous().begin());
 }
 
 void RipplePatch::centerOn(glm::vec2 worldCenter) {
@@ -90,10 +59,9 @@ void RipplePatch::centerOn(glm::vec2 worldCenter) {
             s.gx -= float(shift.x);
             s.gz -= float(shift.y);
         }
-        if (m_ewaveGpu) m_edited = true;  // the GPU twin takes the scrolled state next step
     }
     m_field.scroll(shift.x, shift.y);
-    if (m_gpu) m_gpu->scroll(shift.x, shift.y);
+    if (m_offload) m_offload->scroll(shift.x, shift.y);
     m_originCell = target;
 }
 
@@ -143,11 +111,11 @@ bool RipplePatch::stampSphere(const BoundingSphere& sphere, SphereContact& conta
         m_sources.push_back(ewaveSource(stamp, g.x, g.y, m_def.cell_size, velocity.y));
         return true;
     }
-    if (!m_gpu) return stepSphere(m_field, m_footprints, m_def.cell_size, sphere, contact, motion);
+    if (!m_offload) return stepSphere(m_field, m_footprints, m_def.cell_size, sphere, contact, motion);
     RippleStamp stamp;
     if (!planSphereStamp(m_field.current(), m_field.rows(), m_field.cols(), m_def.cell_size, sphere, contact, motion, stamp))
         return false;
-    m_pending.push_back(stamp);
+    m_offload->stamp(stamp);
     return true;
 }
 

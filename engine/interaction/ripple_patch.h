@@ -13,31 +13,39 @@
 
 namespace ob::interaction {
 
-class EWaveGpu;
-class RippleFieldGpu;
-struct RippleStamp;
+/// Where a patch's solver steps when not on the CPU: the GPU twins (interaction/gpu/,
+/// attachGpu) implement it. The CPU field stays what queries, hashing and rendering read: the
+/// offload takes the state when it changed, steps it and writes it back into the CPU field.
+class RippleOffload {
+public:
+    virtual ~RippleOffload() = default;
+    /// kang2008: one Table 2 stamp planned on the CPU, applied with the next step (ewave adds
+    /// its sources to the CPU field instead: never called).
+    virtual void stamp(const RippleStamp& stamp) = 0;
+    /// The patch moved by whole cells (the CPU field has scrolled too).
+    virtual void scroll(int dx, int dz) = 0;
+    /// One step over dt (s) with eq. 2's damping DF (kang2008); `cpuChanged`: the CPU state was
+    /// written since the last step (upload it first). Writes the new state into the CPU field.
+    virtual void step(float dt, float damping, bool cpuChanged) = 0;
+};
 
-/// kang2008: the field runs on the CPU (RippleField) or, once useGpu() is called on a GL
-/// context, on the GPU twin (RippleFieldGpu): Table 2 still decides on the CPU, the stamps and
-/// the step run in compute shaders, and Vh(t), Vh(t−1) are read back after each step into the
-/// CPU field, which stays what queries, hashing and rendering read.
+/// kang2008: the field runs on the CPU (RippleField) or, once an offload is set, on the GPU
+/// twin (RippleFieldGpu): Table 2 still decides on the CPU, the stamps and the step run in
+/// compute shaders, and Vh(t), Vh(t−1) are read back after each step into the CPU field.
 /// ewave: an EWaveField (CPU, FFTW); Table 2 decides as for kang2008 (planStamp) and each stamp
 /// becomes a pressure source on the vertical velocity (ewaveSource). Queries, hashing and
-/// rendering read its height h and velocity v. Once useGpu() is called, the GPU twin (EWaveGpu)
-/// steps it: the sources are added to the CPU field, which is uploaded whenever it changed
-/// (sources, scrolling, fieldEdited), and h, v are read back after each step into the CPU
-/// field, which stays what queries, hashing and rendering read.
+/// rendering read its height h and velocity v. With an offload (EWaveGpu) the sources are added
+/// to the CPU field, which is uploaded whenever it changed (sources, scrolling, fieldEdited),
+/// and h, v are read back after each step.
 class RipplePatch {
 public:
     explicit RipplePatch(const RippleDef& def);
     ~RipplePatch();
-    /// Moves the field to its GPU twin (needs a current GL 4.3+ context): kang2008
-    /// RippleFieldGpu, ewave EWaveGpu. Returns false, and stays on the CPU, where the twin
-    /// cannot run it (ewave: N above EWaveGpu::MAX_RESOLUTION).
-    bool useGpu();
+    /// Steps the field through `offload` from now on (interaction/gpu/ attachGpu).
+    void setOffload(std::unique_ptr<RippleOffload> offload) { m_offload = std::move(offload); }
     /// True for the dispersive model (def().model == "ewave").
     bool isEWave() const { return m_ewave != nullptr; }
-    bool onGpu() const { return m_gpu != nullptr || m_ewaveGpu != nullptr; }
+    bool onGpu() const { return m_offload != nullptr; }
 
     /// Moves the patch so its centre is the cell nearest `worldCenter` (scrolls the field).
     void centerOn(glm::vec2 worldCenter);
@@ -54,10 +62,8 @@ public:
     /// Table 2 and eq. 3–7 for one sphere this step (see stepSphere); world centre, m.
     bool stampSphere(const BoundingSphere& sphere, SphereContact& contact, const glm::vec3& centre,
                      const glm::vec3& velocity, float mass, float surfaceY);
-    /// One step of dt seconds: kang2008 the convolution of eq. 1–2 with the patch's DF (on the
-    /// GPU: this step's stamps first, then the step, then the read-back; dt unused); ewave the
-    /// exact per-mode step over dt (on the GPU: sources added and uploaded, the step, the
-    /// read-back of h and v).
+    /// One step of dt seconds: kang2008 the convolution of eq. 1–2 with the patch's DF (dt
+    /// unused); ewave the exact per-mode step over dt, its sources added first.
     void step(float dt);
 
     const RippleDef& def() const { return m_def; }
@@ -90,11 +96,8 @@ private:
     std::vector<EWaveSource> m_sources;  // ewave: this step's stamps, applied over the step's dt in step()
     FootprintCache m_footprints;
     glm::ivec2 m_originCell{0, 0};  // world cell index of the field's cell (0, 0)
-    std::unique_ptr<RippleFieldGpu> m_gpu;
-    std::unique_ptr<EWaveGpu> m_ewaveGpu;
-    std::vector<RippleStamp> m_pending;  // GPU: this step's stamps, in entity then sphere order
-    std::vector<float> m_readback;
-    bool m_edited = false;  // GPU: the CPU field changed since the last read-back
+    std::unique_ptr<RippleOffload> m_offload;
+    bool m_edited = false;  // offload: the CPU field changed since the last step
 };
 
 } // namespace ob::interaction

@@ -78,4 +78,11 @@ bool stepSphere(RippleField& field, FootprintCache& cache, float cellSize, const
     return true;
 }
 
+bool planSphereStamp(std::span<const float> current, int rows, int cols, float cellSize, const BoundingSphere& def,
+                     SphereContact& contact, const SphereMotion& m, RippleStamp& out) {
+    assert(cellSize > 0.0f && def.radius > 0.0f && current.size() == size_t(rows) * size_t(cols));
+    return planStamp(rows, cols, cellSize, def, contact, m,
+                     [&](int x, int z) { return current[size_t(z) * size_t(cols) + size_t(x)]; }, out);
+}
+
 } // namespace ob::interaction

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <span>
 #include <unordered_map>
 #include <vector>
 
@@ -202,5 +203,12 @@ inline bool planStamp(int rows, int cols, float cellSize, const BoundingSphere& 
 /// from the cache. Returns true if it stamped.
 bool stepSphere(RippleField& field, FootprintCache& cache, float cellSize, const BoundingSphere& def,
                 SphereContact& contact, const SphereMotion& motion);
+
+/// Table 2 for one sphere, as stepSphere decides it, without touching a field: updates the
+/// contact and, when the sphere stamps this step, fills `out` with the stamp stepSphere would
+/// apply. `current` is Vh(t) (rows × cols, row-major) as the caller last read it back: the
+/// centre cell's value becomes eq. 5's base at first contact. Returns true to stamp.
+bool planSphereStamp(std::span<const float> current, int rows, int cols, float cellSize, const BoundingSphere& def,
+                     SphereContact& contact, const SphereMotion& motion, RippleStamp& out);
 
 } // namespace ob::interaction

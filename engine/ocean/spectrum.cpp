@@ -100,17 +100,10 @@ void synthRow(const float* __restrict sinWt, const float* __restrict cosWt,
 
 // --- noise -----------------------------------------------------------------------------
 
-std::uint64_t mix64(std::uint64_t x) {
-    x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
-    x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
-    return x ^ (x >> 31);
-}
-
 GaussianRng::GaussianRng(std::uint64_t seed) : m_state(seed) {}
 
 std::uint64_t GaussianRng::nextBits() {
-    m_state += 0x9E3779B97F4A7C15ull;
-    return mix64(m_state);
+    return splitmix64(m_state);
 }
 
 double GaussianRng::next() {

@@ -1,6 +1,7 @@
 // Wave spectra and the time-dependent spectrum h̃(K,t) of the FFT ocean: SPEC §2.1 eq. 2–7
 // (seed 000 §2.1, seed 003 "Phillips"/"hTilde"); JONSWAP after Hasselmann et al. 1973.
 #pragma once
+#include "core/random.h"
 #include "ocean/ocean_def.h"
 
 #include <complex>
@@ -11,9 +12,6 @@ namespace ob::ocean {
 
 // ---------------------------------------------------------------------------------------
 // Noise (eq. 4): a portable generator, so a seed gives the same sea with any C++ library.
-
-/// SplitMix64 finaliser (Steele, Lea, Flood 2014): a bijective 64-bit mix.
-std::uint64_t mix64(std::uint64_t x);
 
 /// Standard normal samples from SplitMix64 uniforms and the Box–Muller transform, written
 /// out (std::normal_distribution differs between libraries); same stream for a seed wherever

@@ -3,6 +3,7 @@
 
 #include "core/hash.h"
 #include "core/parallel.h"
+#include "core/random.h"
 #include "core/simd.h"
 #include "interaction/ripple_patch.h"
 #include "water/water_query.h"
@@ -19,14 +20,6 @@ namespace {
 constexpr float DEG = std::numbers::pi_v<float> / 180.0f;
 // Drops per parallelFor chunk: a chunk's flight is ~10 µs, enough to pay for a hand-off.
 constexpr int FLIGHT_CHUNK = 16384;
-
-// splitmix64 (Steele, Lea, Flood 2014): one 64-bit state, a full-period stream.
-uint64_t splitmix64(uint64_t& state) {
-    uint64_t z = (state += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-}
 
 // One step of the exact linear-drag flight for drops [begin, end): v ← a·v − g·b·ŷ,
 // x ← x + b·v − g·c·ŷ (old v), age += dt. Element-wise, so any split gives the same bits.
@@ -79,7 +72,7 @@ float crownSpeed(const Impact& impact) { return std::sqrt(2.0f * GRAVITY * crown
 
 SplashParticles::SplashParticles(const SplashDef& def, uint64_t seed) : m_def(def), m_rng(seed) {}
 
-float SplashParticles::uniform() { return float(splitmix64(m_rng) >> 40) * 0x1.0p-24f; }
+float SplashParticles::uniform() { return uniform01f(m_rng); }
 
 bool SplashParticles::push(const glm::vec3& p, const glm::vec3& v, float r) {
     if (size() >= m_def.max_particles) return false;

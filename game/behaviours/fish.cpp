@@ -1,6 +1,7 @@
 // Fish schools: swimming on a circle or in a region, ballistic jumps, Table 2 stamps.
 #include "behaviours/fish.h"
 
+#include "core/random.h"
 #include "ecs/components.h"
 #include "interaction/ripple_patch.h"
 #include "water/composite_water.h"
@@ -15,17 +16,8 @@ namespace ob::game {
 
 namespace {
 
-// splitmix64: a uniform double in [0, 1) from the school's sequence.
-double uniform(uint64_t& state) {
-    uint64_t z = (state += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    z ^= z >> 31;
-    return double(z >> 11) * (1.0 / 9007199254740992.0);
-}
-
 // Time until a fish's next jump: uniform in [0.5, 1.5] × the mean interval.
-float nextJumpDelay(FishSchool& s) { return s.jumpInterval * float(0.5 + uniform(s.rng)); }
+float nextJumpDelay(FishSchool& s) { return s.jumpInterval * float(0.5 + uniform01(s.rng)); }
 
 // The paper's fish sphere (seed 001 §V-2): smaller than the body (radius 0.35 × length),
 // SHR 1.4, AF −0.3, SD from the motion (+1 rising, −1 falling).
@@ -74,16 +66,16 @@ ecs::Entity spawnFishSchool(ecs::World& world, const ObjectDef& o, uint64_t seed
     s.stamped.assign(n, 0);
     for (size_t i = 0; i < n; ++i) {
         if (s.region) {
-            s.position[i] = glm::vec3(s.centre.x + s.halfSize.x * float(2.0 * uniform(s.rng) - 1.0), -s.depth,
-                                      s.centre.y + s.halfSize.y * float(2.0 * uniform(s.rng) - 1.0));
-            s.lane[i] = float(2.0 * M_PI * uniform(s.rng));
+            s.position[i] = glm::vec3(s.centre.x + s.halfSize.x * float(2.0 * uniform01(s.rng) - 1.0), -s.depth,
+                                      s.centre.y + s.halfSize.y * float(2.0 * uniform01(s.rng) - 1.0));
+            s.lane[i] = float(2.0 * M_PI * uniform01(s.rng));
         } else {
             // Spread evenly round the circle, on lanes within ±15% of its radius.
-            s.angle[i] = float(2.0 * M_PI * (double(i) + 0.5 * uniform(s.rng)) / double(n));
-            s.lane[i] = s.radius * float(0.85 + 0.3 * uniform(s.rng));
+            s.angle[i] = float(2.0 * M_PI * (double(i) + 0.5 * uniform01(s.rng)) / double(n));
+            s.lane[i] = s.radius * float(0.85 + 0.3 * uniform01(s.rng));
             s.position[i] = glm::vec3(s.centre.x + s.lane[i] * std::cos(s.angle[i]), -s.depth, s.centre.y + s.lane[i] * std::sin(s.angle[i]));
         }
-        s.timer[i] = s.jumpInterval * float(1.5 * uniform(s.rng));  // staggered first jumps
+        s.timer[i] = s.jumpInterval * float(1.5 * uniform01(s.rng));  // staggered first jumps
     }
     ecs::Entity e = world.create();
     world.add<ecs::Transform>(e, {glm::vec3(s.centre.x, 0.0f, s.centre.y)});

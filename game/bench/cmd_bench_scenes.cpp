@@ -9,6 +9,7 @@
 #include "gfx/gl.h"
 #include "bench/paper_tables.h"
 #include "platform/platform.h"
+#include "view/sandbox_view.h"
 #include "world/sandbox.h"
 #include "world/scene.h"
 #include "bench/svg_chart.h"

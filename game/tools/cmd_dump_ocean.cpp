@@ -5,8 +5,8 @@
 #include "core/log.h"
 #include "core/npy.h"
 #include "ocean/ocean_fft_cpu.h"
-#include "ocean/ocean_fft_gpu.h"
-#include "ocean/ocean_textures.h"
+#include "ocean/gpu/ocean_fft_gpu.h"
+#include "ocean/gpu/ocean_textures.h"
 #include "platform/platform.h"
 
 #include <vector>

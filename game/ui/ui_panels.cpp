@@ -5,10 +5,9 @@
 #include "world/camera.h"
 #include "behaviours/cannon.h"
 #include "world/controls.h"
+#include "view/sandbox_view.h"
 #include "world/sandbox.h"
 #include "core/error.h"
-#include "core/file_write.h"
-#include "core/toml_writer.h"
 #include "ecs/components.h"
 #include "gfx/ui_overlay.h"
 #include "behaviours/ship.h"
@@ -18,32 +17,6 @@
 #include <imgui.h>
 
 namespace ob::game {
-
-std::string saveScene(SceneDef scene, const std::string& path) {
-    // Model paths are absolute once loaded; the file names them relative to itself, so the
-    // scene and its models move together.
-    namespace fs = std::filesystem;
-    const fs::path folder = fs::absolute(fs::path(path)).parent_path();
-    for (ObjectDef& o : scene.objects)
-        if (!o.model.empty() && fs::path(o.model).is_absolute()) o.model = fs::path(o.model).lexically_relative(folder).string();
-    try {
-        writeFileWhole(path, "scene", [&](std::ostream& out) {
-            out << "# Saved from oceanbox: the keys that differ from the defaults.\n" << writeToml(scene);
-        });
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
-}
-
-std::string checkEditedScene(SceneDef& scene) {
-    try {
-        parseScene(writeToml(scene), "edited scene");
-        return "";
-    } catch (const InputError& e) {
-        return e.what();
-    }
-}
 
 // The last frames' CPU ms per phase and frame ms, as lines.
 static void timingGraph(const ecs::FrameTimer& timer) {

@@ -14,14 +14,6 @@ namespace ob::game {
 /// are edited on a copy that "restart with these settings" hands to `restart` once valid.
 void drawPanels(ecs::World& world, SceneDef& scene, const ecs::FrameTimer& timer, std::optional<SceneDef>& restart);
 
-/// Checks an edited scene as a scene file would be checked (written as TOML, read back):
-/// "" when valid, else the loader's messages.
-std::string checkEditedScene(SceneDef& scene);
-
-/// Writes the scene as TOML (the keys that differ from the defaults) to `path`, whole or
-/// not at all, model paths relative to the file's folder; returns "" or what went wrong.
-std::string saveScene(SceneDef scene, const std::string& path);
-
 /// The keys and mouse actions that do something in this world now (the overlay's help).
 std::vector<std::string> keyHelp(ecs::World& world);
 

@@ -1,4 +1,4 @@
-// The sandbox's phase table and the systems that connect the platform and renderer.
+// The sandbox's phase table, its world's set-up and its state hash.
 #include "world/sandbox.h"
 
 #include "world/camera.h"
@@ -6,18 +6,14 @@
 #include "world/controls.h"
 #include "core/hash.h"
 #include "ecs/components.h"
-#include "gfx/renderer.h"
 #include "interaction/ripple_patch.h"
-#include "gfx/ui_overlay.h"
 #include "behaviours/fish.h"
 #include "sim/objects.h"
 #include "behaviours/spawning.h"
 #include "ocean/ocean_fft_cpu.h"
 #include "world/script.h"
 #include "behaviours/ship.h"
-#include "splash/splash_particles.h"
 #include "sim/splash_foam_system.h"
-#include "ui/ui_panels.h"
 #include "water/composite_water.h"
 #include "sim/water_systems.h"
 
@@ -28,72 +24,13 @@ namespace ob::game {
 
 namespace {
 
-// Input phase, first: the platform's events into the input queue, stamped with the clock
-// time the frame started at (they came since then), so this frame's first step sees them.
-// Presses, clicks, wheel and motion the UI takes are not the game's.
+// The view's two rows (nothing without a view): the platform's events first in the input
+// phase, the passes and the UI last in the render phase.
 void platformInputSystem(ecs::World& world, const ecs::Tick& tick) {
-    auto* res = world.resource<FrameResources>();
-    auto* input = world.resource<platform::InputState>();
-    auto* queue = world.resource<platform::InputQueue>();
-    if (!res || !res->platform || !input || !queue) return;
-    if (res->ui) res->ui->captureFlags(input->uiCapturesMouse, input->uiCapturesKeyboard);
-    std::vector<platform::InputEvent> events;
-    res->platform->pollEvents(events);
-    using T = platform::InputEvent::Type;
-    for (platform::InputEvent& e : events) {
-        if (input->uiCapturesKeyboard && e.type == T::KeyDown) continue;
-        if (input->uiCapturesMouse && (e.type == T::ButtonDown || e.type == T::Move || e.type == T::Scroll)) continue;
-        e.time = tick.clock - tick.dt;
-        queue->push(e);
-    }
+    if (View* view = world.resource<View>()) view->pollInput(world, tick);
 }
-
-// Render phase: the passes, then the UI, then present.
 void renderSystem(ecs::World& world, const ecs::Tick& tick) {
-    auto* res = world.resource<FrameResources>();
-    if (!res || !res->renderer) return;
-    glm::ivec2 size = res->platform->framebufferSize();
-    if (size.x <= 0 || size.y <= 0) return;  // minimised
-    res->renderer->def() = res->scene->render;
-    // Dynamic resolution: the last frame's time sets this frame's internal scale.
-    if (auto* dynamic = world.resource<DynamicScale>(); dynamic && res->scene->render.target_fps > 0.0f) {
-        auto& control = dynamic->control;
-        if (!control || std::abs(control->targetSeconds() * res->scene->render.target_fps - 1.0) > 1e-6)
-            control.emplace(res->scene->render.target_fps, res->scene->render.resolution_scale);
-        else if (!res->timer->frameSamples().empty())
-            control->update(res->timer->frameSamples().back() / 1000.0);
-        res->renderer->def().resolution_scale = control->scale();
-    }
-    gfx::CameraView camera = cameraView(world, size);
-    if (const OceanState* ocean = world.resource<OceanState>(); ocean && ocean->water)
-        camera.waterHeight = ocean->water->sample(camera.position.x, camera.position.z).height;
-    std::vector<gfx::ObjectDraw> draws = objectDraws(world);
-    appendFishDraws(world, draws);
-    if (const OceanState* ocean = world.resource<OceanState>(); ocean && ocean->water)
-        for (gfx::ObjectDraw& d : draws) {
-            const water::WaterSample s = ocean->water->sample(d.model[3].x, d.model[3].z);
-            d.waterHeight = s.height;
-            d.waterSlope = -glm::vec2(s.normal.x, s.normal.z) / s.normal.y;
-        }
-    std::vector<gfx::SplashDrop> drops;
-    if (const splash::SplashParticles* particles = splashParticles(world); particles && res->scene->render.splash_drops) {
-        drops.resize(size_t(particles->size()));
-        for (size_t i = 0; i < drops.size(); ++i)
-            drops[i] = gfx::SplashDrop(particles->x()[i], particles->y()[i], particles->z()[i], particles->radius()[i]);
-    }
-    res->renderer->render(camera, prepareWaterView(world, tick.time), draws, tick.time, size, drops);
-    gfx::PassTimes passes = res->renderer->takePassTimes();
-    double gpuMs = 0.0;
-    for (const auto& [pass, ms] : passes) {
-        res->timer->addGpuPass(pass, ms);
-        gpuMs += ms;
-    }
-    if (!passes.empty()) res->timer->setGpu(ecs::Phase::Render, gpuMs);
-    if (res->ui) {
-        res->ui->begin();
-        drawPanels(world, *res->scene, *res->timer, *res->restart);
-        res->ui->end();
-    }
+    if (View* view = world.resource<View>()) view->render(world, tick);
 }
 
 // The frame's phase table: every system in execution order, its phase and its rate.
@@ -133,14 +70,6 @@ Sandbox::Sandbox(const SceneDef& scene) : m_scene(scene), m_schedule(scene.sim) 
 
 Sandbox::~Sandbox() = default;
 
-void Sandbox::attachPlatform(platform::Platform& platform, bool withUi) {
-    m_renderer = std::make_unique<gfx::Renderer>(m_scene.render);
-    attachWaterGpu(m_world);
-    if (withUi && platform.nativeWindow()) m_ui = std::make_unique<gfx::UiOverlay>(platform.nativeWindow());
-    m_world.setResource(std::make_unique<FrameResources>(
-        FrameResources{&platform, m_renderer.get(), m_ui.get(), &m_schedule.timer(), &m_scene, &m_restart}));
-}
-
 void Sandbox::setScriptedInput(std::vector<platform::InputEvent> events) {
     m_world.setResource(std::make_unique<ScriptedInput>(ScriptedInput{std::move(events), 0}));
 }
@@ -165,8 +94,6 @@ void Sandbox::setCameraPose(const CameraPose& pose, bool keepMode) {
     }
     m_world.get<ecs::Transform>(rigs.entities()[0]) = pose.transform;
 }
-
-void Sandbox::enableDynamicResolution() { m_world.setResource(std::make_unique<DynamicScale>()); }
 
 std::vector<std::string> Sandbox::takeScreenshotRequests() {
     std::vector<std::string> files;

@@ -1,9 +1,8 @@
-// The sandbox: one scene's world, its phase table and, when attached, the platform,
-// renderer and UI that draw it.
+// The sandbox: one scene's world, its phase table and, when attached, the view (platform,
+// renderer and UI: view/sandbox_view.*) that draws it and brings the player's input in.
 #pragma once
 #include "ecs/schedule.h"
 #include "ecs/world.h"
-#include "gfx/dynamic_resolution.h"
 #include "world/camera.h"
 #include "platform/input.h"
 #include "world/scene.h"
@@ -15,27 +14,18 @@
 #include <utility>
 #include <vector>
 
-namespace ob::gfx {
-class Renderer;
-class UiOverlay;
-}
-
 namespace ob::game {
 
-/// What the input and render systems reach through the world (absent: pure simulation).
-struct FrameResources {
-    platform::Platform* platform = nullptr;
-    gfx::Renderer* renderer = nullptr;
-    gfx::UiOverlay* ui = nullptr;          ///< window mode only
-    ecs::FrameTimer* timer = nullptr;
-    SceneDef* scene = nullptr;             ///< live-edited by the UI
-    std::optional<SceneDef>* restart = nullptr;  ///< set by the UI: rebuild the world from this scene
-};
-
-/// Dynamic resolution, when on (a resource): the controller, made at the first frame and
-/// again when [render] target_fps changes.
-struct DynamicScale {
-    std::optional<gfx::DynamicResolution> control;
+/// What draws the world and brings the player's input in (view/sandbox_view.cpp: the
+/// platform, the renderer and the UI overlay). A resource of the world; a pure simulation has
+/// none, and then the two phase-table rows that call it do nothing.
+class View {
+public:
+    virtual ~View() = default;
+    /// Input phase, first: the platform's events into the input queue.
+    virtual void pollInput(ecs::World& world, const ecs::Tick& tick) = 0;
+    /// Render phase, last: the passes, the UI, present.
+    virtual void render(ecs::World& world, const ecs::Tick& tick) = 0;
 };
 
 /// Where the camera is and how the player has steered it (kept across a restart).
@@ -49,7 +39,8 @@ public:
     /// Builds the world from the scene (entities, resources) and the phase table.
     explicit Sandbox(const SceneDef& scene);
     ~Sandbox();
-    /// Adds rendering (and the UI overlay when `withUi`) on the current GL context.
+    /// Adds the view: rendering (and the UI overlay when `withUi`) on the current GL context,
+    /// and the GPU twins the scene asks for. (Defined in view/, the library that links GL.)
     void attachPlatform(platform::Platform& platform, bool withUi);
     /// One frame at clock time `now` (s): input, the steps due, render.
     void frame(double now) { m_schedule.runFrame(m_world, now); }
@@ -67,7 +58,7 @@ public:
     /// The scene the UI asked to restart with (validated), once.
     std::optional<SceneDef> takeRestartRequest() { return std::exchange(m_restart, std::nullopt); }
     /// The internal scale follows the frame time to hold [render] target_fps (play; a `run`
-    /// only when asked, so its frames stay reproducible).
+    /// only when asked, so its frames stay reproducible). (Defined in view/.)
     void enableDynamicResolution();
     /// Input events (clock time order) fed to the input queue as the clock reaches them.
     void setScriptedInput(std::vector<platform::InputEvent> events);
@@ -87,8 +78,6 @@ private:
     SceneDef m_scene;
     ecs::World m_world;
     ecs::Schedule m_schedule;
-    std::unique_ptr<gfx::Renderer> m_renderer;
-    std::unique_ptr<gfx::UiOverlay> m_ui;
     std::optional<SceneDef> m_restart;
 };
 

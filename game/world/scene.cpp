@@ -3,6 +3,8 @@
 
 #include "assets/model.h"
 #include "core/error.h"
+#include "core/file_write.h"
+#include "core/toml_writer.h"
 #include "core/toml_reader.h"
 #include "behaviours/spawning.h"
 
@@ -127,6 +129,32 @@ std::string defaultScenePath() {
     const char* relative = "config/scenes/default.toml";
     if (std::filesystem::exists(relative)) return relative;
     return std::string(OCEANBOX_SOURCE_DIR) + "/" + relative;
+}
+
+std::string saveScene(SceneDef scene, const std::string& path) {
+    // Model paths are absolute once loaded; the file names them relative to itself, so the
+    // scene and its models move together.
+    namespace fs = std::filesystem;
+    const fs::path folder = fs::absolute(fs::path(path)).parent_path();
+    for (ObjectDef& o : scene.objects)
+        if (!o.model.empty() && fs::path(o.model).is_absolute()) o.model = fs::path(o.model).lexically_relative(folder).string();
+    try {
+        writeFileWhole(path, "scene", [&](std::ostream& out) {
+            out << "# Saved from oceanbox: the keys that differ from the defaults.\n" << writeToml(scene);
+        });
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+std::string checkEditedScene(SceneDef& scene) {
+    try {
+        parseScene(writeToml(scene), "edited scene");
+        return "";
+    } catch (const InputError& e) {
+        return e.what();
+    }
 }
 
 } // namespace ob::game

@@ -75,4 +75,12 @@ SceneDef parseScene(const std::string& text, const std::string& sourceName, cons
 /// folder if it has one, else from the source tree).
 std::string defaultScenePath();
 
+/// Checks an edited scene as a scene file would be checked (written as TOML, read back):
+/// "" when valid, else the loader's messages.
+std::string checkEditedScene(SceneDef& scene);
+
+/// Writes the scene as TOML (the keys that differ from the defaults) to `path`, whole or
+/// not at all, model paths relative to the file's folder; returns "" or what went wrong.
+std::string saveScene(SceneDef scene, const std::string& path);
+
 } // namespace ob::game

@@ -5,7 +5,7 @@
 #include "core/log.h"
 #include "core/parallel.h"
 #include "gfx/gl.h"
-#include "interaction/ewave_gpu.h"
+#include "interaction/gpu/ewave_gpu.h"
 #include "platform/platform.h"
 #include "interaction/ewave_field.h"
 #include "interaction/sphere_stamp.h"

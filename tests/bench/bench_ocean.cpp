@@ -3,8 +3,8 @@
 #include "core/log.h"
 #include "gfx/gl.h"
 #include "ocean/ocean_fft_cpu.h"
-#include "ocean/ocean_fft_gpu.h"
-#include "ocean/ocean_textures.h"
+#include "ocean/gpu/ocean_fft_gpu.h"
+#include "ocean/gpu/ocean_textures.h"
 #include "platform/platform.h"
 
 #include <benchmark/benchmark.h>

@@ -4,7 +4,7 @@
 #include "core/log.h"
 #include "core/parallel.h"
 #include "gfx/gl.h"
-#include "interaction/ripple_gpu.h"
+#include "interaction/gpu/ripple_gpu.h"
 #include "platform/platform.h"
 #include "sim/fish_swarm.h"
 #include "interaction/ripple_field.h"

@@ -4,7 +4,8 @@
 // to end through ripples.backend = "gpu". Timings under a hidden tag.
 #include "gfx/gl.h"
 #include "interaction/ewave_field.h"
-#include "interaction/ewave_gpu.h"
+#include "interaction/gpu/ewave_gpu.h"
+#include "interaction/gpu/ripple_offload.h"
 #include "interaction/ripple_def.h"
 #include "interaction/ripple_patch.h"
 #include "platform/platform.h"
@@ -208,7 +209,7 @@ TEST_CASE("RipplePatch on the ewave GPU twin: written state (fieldEdited) and sc
     def.boundary = "absorbing";
     def.sponge_width = 8;
     RipplePatch cpu(def), gpu(def);
-    REQUIRE(gpu.useGpu());
+    REQUIRE(attachGpu(gpu));
     REQUIRE(gpu.onGpu());
     REQUIRE_FALSE(cpu.onGpu());
     const float dt = 1.0f / 60.0f;

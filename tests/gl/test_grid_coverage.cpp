@@ -8,7 +8,7 @@
 #include "gfx/renderer.h"
 #include "ocean/gerstner.h"
 #include "ocean/ocean_fft_cpu.h"
-#include "ocean/ocean_textures.h"
+#include "ocean/gpu/ocean_textures.h"
 #include "ocean/spectrum.h"
 #include "platform/platform.h"
 #include "world/camera.h"

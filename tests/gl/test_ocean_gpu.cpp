@@ -3,8 +3,8 @@
 // single wave (eq. 2, 3, 6, 7); the CPU upload path (timings: tests/bench/bench_ocean.cpp).
 #include "gfx/gl.h"
 #include "ocean/ocean_fft_cpu.h"
-#include "ocean/ocean_fft_gpu.h"
-#include "ocean/ocean_textures.h"
+#include "ocean/gpu/ocean_fft_gpu.h"
+#include "ocean/gpu/ocean_textures.h"
 #include "platform/platform.h"
 
 #include <catch2/catch.hpp>

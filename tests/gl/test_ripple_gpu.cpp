@@ -3,7 +3,7 @@
 // on the CPU, readback (SPEC §2.5, seed 001; timings: tests/bench/bench_ripple.cpp).
 #include "gfx/gl.h"
 #include "interaction/ripple_field.h"
-#include "interaction/ripple_gpu.h"
+#include "interaction/gpu/ripple_gpu.h"
 #include "interaction/sphere_stamp.h"
 #include "platform/platform.h"
 

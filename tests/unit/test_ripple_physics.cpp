@@ -2,7 +2,6 @@
 // tests of test_ripple_field.cpp and test_sphere_stamp.cpp: isotropy and speed of a drop's
 // ring, energy over long runs, what AF does to a splash, how much the sponge reflects, and
 // when a moving sphere stamps; and `dump ripples`.
-#include "tools/cmd_dump_ripples.h"
 #include "core/error.h"
 #include "core/npy.h"
 #include "interaction/ripple_field.h"
@@ -352,24 +351,3 @@ TEST_CASE("Table 2: a sphere resting on the water stamps every step, however the
     CHECK(a.fixHeight == 0.0f);
 }
 
-TEST_CASE("dump ripples writes the patch's Vh(t) after K steps as [N, N] float32, and refuses a scene without ripples",
-          "[ripple][cli]") {
-    ob::game::SceneDef scene;
-    scene.ripples.model = "kang2008";
-    scene.ripples.resolution = 32;
-    scene.ocean.resolution = 16;
-    const std::string out = ob::test::tempPath("ripples.npy");
-    REQUIRE(ob::game::dumpRipples(scene, 3, out) == ob::EXIT_OK);
-    const ob::NpyArray a = ob::readNpy(out);
-    REQUIRE(a.shape == std::vector<size_t>{32, 32});
-    // The same scene stepped here gives the same field, bit for bit.
-    ob::game::Sandbox sandbox(scene);
-    for (int k = 0; k < 3; ++k) sandbox.step();
-    const auto* patch = sandbox.world().resource<RipplePatch>();
-    REQUIRE(patch);
-    const auto field = patch->field().current();
-    CHECK(std::equal(field.begin(), field.end(), a.data.begin()));
-    scene.ripples.enabled = false;
-    CHECK_THROWS_AS(ob::game::dumpRipples(scene, 3, out), ob::InputError);
-    CHECK_THROWS_WITH(ob::game::dumpRipples(scene, 3, out), Catch::Contains("ripples.enabled"));
-}

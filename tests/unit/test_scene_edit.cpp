@@ -1,6 +1,6 @@
 // The UI's scene editor checks an edited scene as the loader checks a file.
 #include "world/scene.h"
-#include "ui/ui_panels.h"
+#include "world/scene.h"
 
 #include <catch2/catch.hpp>
 

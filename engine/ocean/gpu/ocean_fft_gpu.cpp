@@ -1,11 +1,11 @@
 // GPU spectral ocean: synthesis (eq. 2, 6, 7, 9) → row FFTs → column FFTs (eq. 1) → unpack
 // into OceanTextures with imageStore. SPEC §2.1; seed 000 §3.3; seed 003.
-#include "ocean/ocean_fft_gpu.h"
+#include "ocean/gpu/ocean_fft_gpu.h"
 
 #include "core/error.h"
 #include "gfx/shader.h"
 #include "ocean/ocean_fft_cpu.h"
-#include "ocean/ocean_textures.h"
+#include "ocean/gpu/ocean_textures.h"
 
 #include <cassert>
 #include <chrono>

@@ -1,7 +1,7 @@
 // Ripple field on the GPU: eq. 1–2 step, eq. 5 + 7 stamps and scrolling in compute shaders
 // (shaders/ripple_step.comp, shaders/ripple_stamp.comp), the twin of RippleField and
 // stampFootprint (seed 001; SPEC §2.5). Table 2 stays on the CPU (planSphereStamp).
-#include "interaction/ripple_gpu.h"
+#include "interaction/gpu/ripple_gpu.h"
 
 #include "gfx/shader.h"
 
@@ -49,13 +49,6 @@ constexpr GLbitfield WRITE_BARRIERS =
     GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT | GL_PIXEL_BUFFER_BARRIER_BIT;
 
 } // namespace
-
-bool planSphereStamp(std::span<const float> current, int rows, int cols, float cellSize, const BoundingSphere& def,
-                     SphereContact& contact, const SphereMotion& m, RippleStamp& out) {
-    assert(cellSize > 0.0f && def.radius > 0.0f && current.size() == size_t(rows) * size_t(cols));
-    return planStamp(rows, cols, cellSize, def, contact, m,
-                     [&](int x, int z) { return current[size_t(z) * size_t(cols) + size_t(x)]; }, out);
-}
 
 bool RippleFieldGpu::available() { return GLAD_GL_VERSION_4_3 != 0; }
 

@@ -12,15 +12,6 @@
 
 namespace ob::interaction {
 
-/// One eq. 5 + eq. 7 footprint to apply on the GPU: the arguments stampFootprint takes, with
-/// the footprint named by its SR. Table 2 (updateContact) decides on the CPU which go in.
-/// Table 2 for one sphere, as stepSphere decides it, without touching a field: updates the
-/// contact and, when the sphere stamps this step, fills `out` with the stamp stepSphere would
-/// apply. `current` is Vh(t) (rows × cols, row-major) as the caller last read it back: the
-/// centre cell's value becomes eq. 5's base at first contact. Returns true to stamp.
-bool planSphereStamp(std::span<const float> current, int rows, int cols, float cellSize, const BoundingSphere& def,
-                     SphereContact& contact, const SphereMotion& motion, RippleStamp& out);
-
 /// N×M ripple field in GPU buffers, stepped and stamped by compute shaders. Same layout and
 /// semantics as RippleField: row-major floats (index z·M + x), two levels Vh(t), Vh(t−1)
 /// ping-ponged (step writes Vh(t+1) over Vh(t−1), then they swap), outer ring held at 0.

@@ -1,5 +1,5 @@
 // Ocean displacement and slope texture arrays: creation, CPU upload, mips, read-back.
-#include "ocean/ocean_textures.h"
+#include "ocean/gpu/ocean_textures.h"
 
 #include "ocean/ocean_fft_cpu.h"
 

@@ -1,0 +1,40 @@
+// What the renderer is told of the world each frame: the camera, the objects, the splash
+// drops. Plain data without GL, so the simulation side fills it without a context (the water
+// layers, which live in GPU textures, are the renderer's WaterView).
+#pragma once
+#include <cstdint>
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+#include <string>
+
+namespace ob::gfx {
+
+/// What the camera sees from where: the render phase fills this from the camera entity.
+struct CameraView {
+    glm::vec3 position{0.0f};   ///< eye (world m)
+    glm::mat4 view{1.0f};       ///< world → eye
+    glm::mat4 projection{1.0f}; ///< eye → clip
+    float nearM = 0.1f;         ///< near clip distance (m)
+    float farM = 20000.0f;      ///< far clip distance (m)
+    float waterHeight = 0.0f;   ///< composite water surface height under the eye (m): below it, the underwater look
+};
+
+/// The built-in shapes an object can be drawn as.
+enum class MeshKind : uint8_t { Sphere, Box };
+
+/// One opaque object to draw this frame.
+struct ObjectDraw {
+    MeshKind mesh = MeshKind::Sphere;
+    glm::mat4 model{1.0f};          ///< unit mesh → world (scale, rotation, position)
+    glm::vec3 color{0.8f};          ///< base colour (linear RGB)
+    std::string modelFile;          ///< glTF file drawn instead of `mesh` ("" = built-in)
+    float waterHeight = 0.0f;       ///< the water surface's height under the object's origin (m)
+    glm::vec2 waterSlope{0.0f};     ///< and its slope there (dh/dx, dh/dz)
+};
+
+/// One splash drop to draw: world centre (xyz, m) and radius (w, m).
+using SplashDrop = glm::vec4;
+
+} // namespace ob::gfx

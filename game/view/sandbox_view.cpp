@@ -1,0 +1,102 @@
+// The sandbox's view: input from the platform, the frame to the renderer, the UI panels.
+#include "view/sandbox_view.h"
+
+#include "behaviours/fish.h"
+#include "gfx/renderer.h"
+#include "gfx/ui_overlay.h"
+#include "sim/objects.h"
+#include "sim/splash_foam_system.h"
+#include "sim/water_systems.h"
+#include "splash/splash_particles.h"
+#include "ui/ui_panels.h"
+#include "view/water_view.h"
+#include "water/composite_water.h"
+
+#include <cmath>
+#include <vector>
+
+namespace ob::game {
+
+SandboxView::SandboxView(platform::Platform& platform, bool withUi, SceneDef& scene, ecs::FrameTimer& timer,
+                         std::optional<SceneDef>& restart)
+    : m_platform(platform), m_scene(scene), m_timer(timer), m_restart(restart),
+      m_renderer(std::make_unique<gfx::Renderer>(scene.render)) {
+    if (withUi && platform.nativeWindow()) m_ui = std::make_unique<gfx::UiOverlay>(platform.nativeWindow());
+}
+
+SandboxView::~SandboxView() = default;
+
+// Input phase, first: the platform's events into the input queue, stamped with the clock
+// time the frame started at (they came since then), so this frame's first step sees them.
+// Presses, clicks, wheel and motion the UI takes are not the game's.
+void SandboxView::pollInput(ecs::World& world, const ecs::Tick& tick) {
+    auto* input = world.resource<platform::InputState>();
+    auto* queue = world.resource<platform::InputQueue>();
+    if (!input || !queue) return;
+    if (m_ui) m_ui->captureFlags(input->uiCapturesMouse, input->uiCapturesKeyboard);
+    std::vector<platform::InputEvent> events;
+    m_platform.pollEvents(events);
+    using T = platform::InputEvent::Type;
+    for (platform::InputEvent& e : events) {
+        if (input->uiCapturesKeyboard && e.type == T::KeyDown) continue;
+        if (input->uiCapturesMouse && (e.type == T::ButtonDown || e.type == T::Move || e.type == T::Scroll)) continue;
+        e.time = tick.clock - tick.dt;
+        queue->push(e);
+    }
+}
+
+// Render phase: the passes, then the UI, then present.
+void SandboxView::render(ecs::World& world, const ecs::Tick& tick) {
+    glm::ivec2 size = m_platform.framebufferSize();
+    if (size.x <= 0 || size.y <= 0) return;  // minimised
+    m_renderer->def() = m_scene.render;
+    // Dynamic resolution: the last frame's time sets this frame's internal scale.
+    if (auto* dynamic = world.resource<DynamicScale>(); dynamic && m_scene.render.target_fps > 0.0f) {
+        auto& control = dynamic->control;
+        if (!control || std::abs(control->targetSeconds() * m_scene.render.target_fps - 1.0) > 1e-6)
+            control.emplace(m_scene.render.target_fps, m_scene.render.resolution_scale);
+        else if (!m_timer.frameSamples().empty())
+            control->update(m_timer.frameSamples().back() / 1000.0);
+        m_renderer->def().resolution_scale = control->scale();
+    }
+    gfx::CameraView camera = cameraView(world, size);
+    if (const OceanState* ocean = world.resource<OceanState>(); ocean && ocean->water)
+        camera.waterHeight = ocean->water->sample(camera.position.x, camera.position.z).height;
+    std::vector<gfx::ObjectDraw> draws = objectDraws(world);
+    appendFishDraws(world, draws);
+    if (const OceanState* ocean = world.resource<OceanState>(); ocean && ocean->water)
+        for (gfx::ObjectDraw& d : draws) {
+            const water::WaterSample s = ocean->water->sample(d.model[3].x, d.model[3].z);
+            d.waterHeight = s.height;
+            d.waterSlope = -glm::vec2(s.normal.x, s.normal.z) / s.normal.y;
+        }
+    std::vector<gfx::SplashDrop> drops;
+    if (const splash::SplashParticles* particles = splashParticles(world); particles && m_scene.render.splash_drops) {
+        drops.resize(size_t(particles->size()));
+        for (size_t i = 0; i < drops.size(); ++i)
+            drops[i] = gfx::SplashDrop(particles->x()[i], particles->y()[i], particles->z()[i], particles->radius()[i]);
+    }
+    m_renderer->render(camera, prepareWaterView(world, tick.time), draws, tick.time, size, drops);
+    gfx::PassTimes passes = m_renderer->takePassTimes();
+    double gpuMs = 0.0;
+    for (const auto& [pass, ms] : passes) {
+        m_timer.addGpuPass(pass, ms);
+        gpuMs += ms;
+    }
+    if (!passes.empty()) m_timer.setGpu(ecs::Phase::Render, gpuMs);
+    if (m_ui) {
+        m_ui->begin();
+        drawPanels(world, m_scene, m_timer, m_restart);
+        m_ui->end();
+    }
+}
+
+
+void Sandbox::attachPlatform(platform::Platform& platform, bool withUi) {
+    m_world.setResource(std::unique_ptr<View>(new SandboxView(platform, withUi, m_scene, m_schedule.timer(), m_restart)));
+    attachWaterGpu(m_world);
+}
+
+void Sandbox::enableDynamicResolution() { m_world.setResource(std::make_unique<DynamicScale>()); }
+
+} // namespace ob::game

@@ -1,0 +1,42 @@
+// The sandbox's view: the platform's input, the renderer and the UI overlay over a world
+// (Sandbox::attachPlatform makes it). The one part of the gameplay that needs a GL context.
+#pragma once
+#include "gfx/dynamic_resolution.h"
+#include "world/sandbox.h"
+
+#include <memory>
+#include <optional>
+
+namespace ob::gfx {
+class Renderer;
+class UiOverlay;
+}
+
+namespace ob::game {
+
+/// Dynamic resolution, when on (a resource): the controller, made at the first frame and
+/// again when [render] target_fps changes.
+struct DynamicScale {
+    std::optional<gfx::DynamicResolution> control;
+};
+
+class SandboxView final : public View {
+public:
+    /// `scene` is live-edited by the UI; `restart` is where the UI puts a scene to rebuild
+    /// the world from. The UI overlay only when `withUi` and there is a window.
+    SandboxView(platform::Platform& platform, bool withUi, SceneDef& scene, ecs::FrameTimer& timer,
+                std::optional<SceneDef>& restart);
+    ~SandboxView() override;
+    void pollInput(ecs::World& world, const ecs::Tick& tick) override;
+    void render(ecs::World& world, const ecs::Tick& tick) override;
+
+private:
+    platform::Platform& m_platform;
+    SceneDef& m_scene;
+    ecs::FrameTimer& m_timer;
+    std::optional<SceneDef>& m_restart;
+    std::unique_ptr<gfx::Renderer> m_renderer;
+    std::unique_ptr<gfx::UiOverlay> m_ui;
+};
+
+} // namespace ob::game

@@ -1,0 +1,104 @@
+// The water on the GPU and the renderer's view of it.
+#include "view/water_view.h"
+
+#include "core/log.h"
+#include "foam/foam_map.h"
+#include "gfx/gl.h"
+#include "interaction/gpu/ewave_gpu.h"
+#include "interaction/gpu/ripple_offload.h"
+#include "interaction/ripple_patch.h"
+#include "ocean/gpu/ocean_fft_gpu.h"
+#include "ocean/gpu/ocean_textures.h"
+#include "ocean/gerstner.h"
+#include "ocean/ocean_fft_cpu.h"
+#include "sim/splash_foam_system.h"
+#include "sim/water_systems.h"
+
+namespace ob::game {
+
+OceanGpu::~OceanGpu() = default;
+
+void attachWaterGpu(ecs::World& world) {
+    // The ripple patch: auto means the GPU where there is one (software rendering: the CPU).
+    if (auto* patch = world.resource<interaction::RipplePatch>()) {
+        const std::string& backend = patch->def().backend;
+        // Auto: the CPU up to 1024² even beside a GPU, where its step (0.1 ms at 256², 0.3 ms at
+        // 1024²) costs less than the GPU's stamps, step and read-back stall (2.3 ms and 4.3 ms
+        // on an H200 in the default scene).
+        // The same switch for both models: kang2008 RippleFieldGpu, ewave EWaveGpu.
+        const bool gpu = backend == "gpu" || (backend == "auto" && !gfx::isSoftwareRenderer() && patch->def().resolution >= 2048);
+        if (gpu && !interaction::attachGpu(*patch))
+            logWarn("ripples: the ewave GPU field runs up to %d² cells; %d² runs on the CPU (FFTW)",
+                    interaction::EWaveGpu::MAX_RESOLUTION, patch->def().resolution);
+        logInfo("ripples: %s, %s backend, %d² cells of %g m", patch->def().model.c_str(),
+                patch->onGpu() ? (patch->isEWave() ? "gpu (compute shaders, float FFT)" : "gpu (compute shaders)")
+                                : (patch->isEWave() ? "cpu (FFTW)" : "cpu"), patch->def().resolution,
+                double(patch->def().cell_size));
+    }
+    OceanState* ocean = world.resource<OceanState>();
+    if (!ocean) return;
+    OceanGpu& side = world.setResource(std::make_unique<OceanGpu>());
+    side.textures = std::make_unique<ocean::OceanTextures>(ocean->def.resolution, ocean->def.cascades);
+    // auto: the GPU where there is one; on a software rasteriser FFTW is faster.
+    bool gpu = ocean->def.backend == "gpu" || (ocean->def.backend == "auto" && !gfx::isSoftwareRenderer());
+    if (gpu && !ocean::OceanFftGpu::available()) {
+        logWarn("ocean: compute shaders unavailable, using the CPU backend");
+        gpu = false;
+    }
+    if (gpu) {
+        side.gpu = std::make_unique<ocean::OceanFftGpu>(ocean->def);
+        ocean->cpuNext = std::make_unique<ocean::OceanFftCpu>(ocean->def);
+    }
+    logInfo("ocean: %s backend, %d² × %d cascade(s)", gpu ? "gpu (compute shaders)" : "cpu (FFTW)", ocean->def.resolution,
+            ocean->def.cascades);
+}
+
+// Factor on the CPU maps' displacement extremes when the GPU renders another time.
+constexpr float FFT_BOUND_SLACK = 1.1f;
+
+gfx::WaterView prepareWaterView(ecs::World& world, double time) {
+    gfx::WaterView view;
+    if (auto* patch = world.resource<interaction::RipplePatch>()) {
+        view.ripples = patch->height().data();
+        view.rippleCells = patch->def().resolution;
+        view.rippleOrigin = patch->origin();
+        view.rippleCellSize = patch->def().cell_size;
+    }
+    if (const foam::FoamMap* foam = foamMap(world)) {
+        view.foam = foam->coverage().data();
+        view.foamCells = foam->resolution();
+        view.foamOrigin = foam->origin();
+        view.foamCellSize = foam->cellSize();
+    }
+    const OceanState* ocean = world.resource<OceanState>();
+    OceanGpu* side = world.resource<OceanGpu>();
+    if (!ocean || !side) return view;
+    // The GPU backend synthesises at the render time; the CPU one uploads its latest step.
+    double wanted = side->gpu ? time : ocean->mapsTime;
+    if (wanted >= 0.0 && wanted != side->uploadedTime) {
+        if (side->gpu) side->gpu->update(time, *side->textures);
+        else side->textures->upload(*ocean->cpu);
+        side->textures->generateMipmaps();
+        side->uploadedTime = wanted;
+    }
+    view.displacement = &side->textures->displacement();
+    view.slopes = &side->textures->slopes();
+    view.cascades = ocean->def.cascades;
+    view.resolution = ocean->def.resolution;
+    for (int c = 0; c < ocean->def.cascades; ++c) view.cascadeSize[size_t(c)] = float(ocean::cascadePatchSize(ocean->def, c));
+    view.lambda = -ocean->def.choppiness;
+    view.gravity = ocean->def.gravity;
+    // How far the grid must reach: the extremes of the CPU maps (at the step's end). The GPU
+    // synthesises at the render time, up to a few steps from those maps; the extremes of the
+    // whole tile change by far less than a tenth in that time, so a tenth more covers it.
+    view.fftBounds = ocean->cpu->displacementBounds();
+    if (side->gpu && ocean->mapsTime != time) {
+        view.fftBounds.up *= FFT_BOUND_SLACK;
+        view.fftBounds.down *= FFT_BOUND_SLACK;
+        view.fftBounds.horizontal *= FFT_BOUND_SLACK;
+    }
+    for (const ocean::GerstnerWave& w : ocean->waves) view.gerstner.emplace_back(w.kx, w.kz, w.amplitude, w.phase);
+    return view;
+}
+
+} // namespace ob::game

@@ -1,0 +1,30 @@
+// The water on the GPU: the ocean's textures and GPU FFT, the ripple patch's GPU twin, and
+// what the render phase hands the renderer of the water's layers.
+#pragma once
+#include "ecs/world.h"
+#include "gfx/renderer.h"
+
+#include <memory>
+
+namespace ob::ocean {
+class OceanFftGpu;
+class OceanTextures;
+}
+
+namespace ob::game {
+
+/// The ocean's GPU side (a resource, with a GL context only).
+struct OceanGpu {
+    std::unique_ptr<ocean::OceanTextures> textures;
+    std::unique_ptr<ocean::OceanFftGpu> gpu;  ///< set when the GPU backend renders
+    double uploadedTime = -1.0;               ///< time of the maps in the textures (s)
+    ~OceanGpu();
+};
+
+/// Creates the textures and, per [ocean] and [ripples] backend, the GPU FFT and the GPU
+/// ripple field (needs a current GL context).
+void attachWaterGpu(ecs::World& world);
+/// Render phase helper: brings the textures to `time` and describes the water layers.
+gfx::WaterView prepareWaterView(ecs::World& world, double time);
+
+} // namespace ob::game
