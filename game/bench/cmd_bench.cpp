@@ -74,9 +74,8 @@ gfx::CameraView swarmCamera(float extent, glm::ivec2 size) {
     return v;
 }
 
-} // namespace
-
-int benchSpheres(const SpheresBenchArgs& a) {
+// The flags' ranges and values (exit 2 with the flag's name).
+void checkSpheresArgs(const SpheresBenchArgs& a) {
     if (a.counts.empty()) throw InputError("--counts: give at least one count");
     for (long c : a.counts) checkRange("--counts", c, 1, 10000000);
     checkRange("--field", a.field, 3, 8192);
@@ -86,6 +85,32 @@ int benchSpheres(const SpheresBenchArgs& a) {
     checkRange("--warmup", a.warmup, 0, 1000000);
     if (a.seed < 0) throw InputError("--seed: must be >= 0");
     checkRange("--workers", a.workers, 0, 256);
+}
+
+// The chart: our fps against seed 001's Table 5.
+void writeSpheresChart(const SpheresBenchArgs& a, const ChartSeries& ours) {
+    Chart chart;
+    char title[128];
+    std::snprintf(title, sizeof title, "Jumping fish: fps against spheres (SR %g, %d² field)", double(a.radiusCells), a.field);
+    chart.title = title;
+    chart.xLabel = "fish (one bounding sphere each)";
+    chart.yLabel = "frames per second";
+    chart.logX = true;
+    chart.logY = true;
+    chart.series.push_back(ours);
+    ChartSeries paper{"seed 001 Table 5 (2.6 GHz CPU, 2008)", {}, {}, true, 1};
+    for (const PaperSwarmFps& p : SEED001_TABLE5) {
+        paper.x.push_back(p.count);
+        paper.y.push_back(p.fps);
+    }
+    chart.series.push_back(paper);
+    writeChart(a.output.chart, chart);
+}
+
+} // namespace
+
+int benchSpheres(const SpheresBenchArgs& a) {
+    checkSpheresArgs(a);
     const auto [w, h] = parseSize("--size", a.size);
     checkOutputs(a.output);
     setWorkerCount(a.workers);
@@ -162,24 +187,7 @@ int benchSpheres(const SpheresBenchArgs& a) {
     progress.done();
     table.printMarkdown(stdout);
     if (!a.output.out.empty()) table.writeCsv(a.output.out, machine);
-    if (!a.output.chart.empty()) {
-        Chart chart;
-        char title[128];
-        std::snprintf(title, sizeof title, "Jumping fish: fps against spheres (SR %g, %d² field)", double(a.radiusCells), a.field);
-        chart.title = title;
-        chart.xLabel = "fish (one bounding sphere each)";
-        chart.yLabel = "frames per second";
-        chart.logX = true;
-        chart.logY = true;
-        chart.series.push_back(ours);
-        ChartSeries paper{"seed 001 Table 5 (2.6 GHz CPU, 2008)", {}, {}, true, 1};
-        for (const PaperSwarmFps& p : SEED001_TABLE5) {
-            paper.x.push_back(p.count);
-            paper.y.push_back(p.fps);
-        }
-        chart.series.push_back(paper);
-        writeChart(a.output.chart, chart);
-    }
+    if (!a.output.chart.empty()) writeSpheresChart(a, ours);
     if (renderer && gfx::glErrorCount() > 0) {
         logWarn("%d GL error(s) were reported during the run", gfx::glErrorCount());
         return EXIT_FAILURE_RUNTIME;

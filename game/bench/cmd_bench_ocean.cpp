@@ -132,9 +132,8 @@ double fftwAloneMs(const ocean::OceanDef& def, int warmup, int frames) {
     return medianOf(samples);
 }
 
-} // namespace
-
-int benchOcean(const OceanBenchArgs& a) {
+// The flags' ranges and values (exit 2 with the flag's name).
+void checkOceanArgs(const OceanBenchArgs& a) {
     if (a.sizes.empty()) throw InputError("--sizes: give at least one spectrum size");
     for (long s : a.sizes) {
         checkRange("--sizes", s, 16, ocean::OceanFftGpu::MAX_RESOLUTION);
@@ -145,6 +144,45 @@ int benchOcean(const OceanBenchArgs& a) {
         if (b != "cpu" && b != "gpu") throw InputError("--backend: expected cpu or gpu, got '" + b + "'");
     checkRange("--frames", a.frames, 1, 1000000);
     checkRange("--warmup", a.warmup, 0, 1000000);
+}
+
+// The chart: our series against seed 000's Tables 1–3.
+void writeOceanChart(const OceanBenchArgs& a, const std::map<std::string, ChartSeries>& series) {
+    Chart chart;
+    chart.title = "Spectral ocean: fps against spectrum size";
+    chart.xLabel = "spectrum N (N² modes)";
+    chart.yLabel = "frames (or updates, transforms) per second";
+    chart.logX = true;
+    chart.logY = true;
+    for (const auto& [key, sr] : series) chart.series.push_back(sr);
+    struct Column {
+        const char* label;
+        double PaperOceanFps::*value;
+        bool render;
+        int colour;
+    };
+    const Column columns[] = {{"seed 000 T1 sim + render CPU", &PaperOceanFps::simRenderCpu, true, 0},
+                              {"seed 000 T2 sim CPU", &PaperOceanFps::simCpu, false, 1},
+                              {"seed 000 T3 FFTW (P4 3 GHz)", &PaperOceanFps::fftCpuFftw, false, 3},
+                              {"seed 000 T1 sim + render GPU", &PaperOceanFps::simRenderGpu, true, 4},
+                              {"seed 000 T2 sim GPU", &PaperOceanFps::simGpu, false, 5},
+                              {"seed 000 T3 FFT GPU", &PaperOceanFps::fftGpu, false, 6}};
+    for (const Column& c : columns) {
+        if (c.render && a.noRender) continue;
+        ChartSeries paper{c.label, {}, {}, true, c.colour};
+        for (const PaperOceanFps& p : SEED000_TABLES) {
+            paper.x.push_back(p.size);
+            paper.y.push_back(p.*c.value);
+        }
+        chart.series.push_back(paper);
+    }
+    writeChart(a.output.chart, chart);
+}
+
+} // namespace
+
+int benchOcean(const OceanBenchArgs& a) {
+    checkOceanArgs(a);
     const auto [w, h] = parseSize("--size", a.size);
     const std::string path = a.scene.empty() ? defaultScenePath() : resolveScene(a.scene);
     loadScene(path, a.sets);
@@ -213,37 +251,7 @@ int benchOcean(const OceanBenchArgs& a) {
     setLogQuiet(false);
     table.printMarkdown(stdout);
     if (!a.output.out.empty()) table.writeCsv(a.output.out, machine);
-    if (!a.output.chart.empty()) {
-        Chart chart;
-        chart.title = "Spectral ocean: fps against spectrum size";
-        chart.xLabel = "spectrum N (N² modes)";
-        chart.yLabel = "frames (or updates, transforms) per second";
-        chart.logX = true;
-        chart.logY = true;
-        for (auto& [key, sr] : series) chart.series.push_back(sr);
-        struct Column {
-            const char* label;
-            double PaperOceanFps::*value;
-            bool render;
-            int colour;
-        };
-        const Column columns[] = {{"seed 000 T1 sim + render CPU", &PaperOceanFps::simRenderCpu, true, 0},
-                                  {"seed 000 T2 sim CPU", &PaperOceanFps::simCpu, false, 1},
-                                  {"seed 000 T3 FFTW (P4 3 GHz)", &PaperOceanFps::fftCpuFftw, false, 3},
-                                  {"seed 000 T1 sim + render GPU", &PaperOceanFps::simRenderGpu, true, 4},
-                                  {"seed 000 T2 sim GPU", &PaperOceanFps::simGpu, false, 5},
-                                  {"seed 000 T3 FFT GPU", &PaperOceanFps::fftGpu, false, 6}};
-        for (const Column& c : columns) {
-            if (c.render && a.noRender) continue;
-            ChartSeries paper{c.label, {}, {}, true, c.colour};
-            for (const PaperOceanFps& p : SEED000_TABLES) {
-                paper.x.push_back(p.size);
-                paper.y.push_back(p.*c.value);
-            }
-            chart.series.push_back(paper);
-        }
-        writeChart(a.output.chart, chart);
-    }
+    if (!a.output.chart.empty()) writeOceanChart(a, series);
     if (gfx::glErrorCount() > 0) {
         logWarn("%d GL error(s) were reported during the run", gfx::glErrorCount());
         return EXIT_FAILURE_RUNTIME;

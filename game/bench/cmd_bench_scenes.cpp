@@ -45,9 +45,8 @@ double timingOf(const std::vector<std::pair<std::string, double>>& timings, cons
 
 bool isPowerOfTwo(long v) { return v > 0 && (v & (v - 1)) == 0; }
 
-} // namespace
-
-int benchFields(const FieldsBenchArgs& a) {
+// The flags' ranges and values (exit 2 with the flag's name).
+void checkFieldsArgs(const FieldsBenchArgs& a) {
     if (a.sizes.empty()) throw InputError("--sizes: give at least one field size");
     for (long s : a.sizes) {
         checkRange("--sizes", s, 16, 4096);
@@ -56,6 +55,47 @@ int benchFields(const FieldsBenchArgs& a) {
     if (a.scenes.empty()) throw InputError("--scenes: give at least one scene");
     checkRange("--frames", a.frames, 1, 1000000);
     checkRange("--warmup", a.warmup, 0, 1000000);
+}
+
+// The chart: our series against seed 001's Table 3.
+void writeFieldsChart(const FieldsBenchArgs& a, const std::map<std::string, ChartSeries>& series) {
+    Chart chart;
+    chart.title = "Scenes: fps against ripple field size";
+    chart.xLabel = "ripple field cells per side";
+    chart.yLabel = "frames per second";
+    chart.logX = true;
+    chart.logY = true;
+    for (const auto& [key, sr] : series) chart.series.push_back(sr);
+    // The paper's curve for each scene it measured; for scenes it did not, its "all" scene.
+    // Colours: a paper scene takes our scene's pair; the "all" stand-in the next pair.
+    std::vector<std::pair<std::string, int>> paperScenes;
+    for (size_t k = 0; k < a.scenes.size(); ++k)
+        for (const PaperFieldFps& p : SEED001_TABLE3)
+            if (a.scenes[k] == p.scene) {
+                paperScenes.emplace_back(a.scenes[k], 2 * int(k));
+                break;
+            }
+    if (paperScenes.empty()) paperScenes.emplace_back("all", 2 * int(a.scenes.size()));
+    for (const auto& [s, colour] : paperScenes) {
+        ChartSeries full{"seed 001 Table 3 " + s, {}, {}, true, colour};
+        ChartSeries only{"seed 001 Table 3 " + s + ", spheres only", {}, {}, true, colour + 1};
+        for (const PaperFieldFps& p : SEED001_TABLE3) {
+            if (s != p.scene) continue;
+            full.x.push_back(p.size);
+            full.y.push_back(p.full);
+            only.x.push_back(p.size);
+            only.y.push_back(p.spheresOnly);
+        }
+        if (!a.noRender) chart.series.push_back(full);
+        chart.series.push_back(only);
+    }
+    writeChart(a.output.chart, chart);
+}
+
+} // namespace
+
+int benchFields(const FieldsBenchArgs& a) {
+    checkFieldsArgs(a);
     const auto [w, h] = parseSize("--size", a.size);
     std::vector<std::string> paths;
     for (const std::string& s : a.scenes) {
@@ -114,39 +154,7 @@ int benchFields(const FieldsBenchArgs& a) {
     setLogQuiet(false);
     table.printMarkdown(stdout);
     if (!a.output.out.empty()) table.writeCsv(a.output.out, machine);
-    if (!a.output.chart.empty()) {
-        Chart chart;
-        chart.title = "Scenes: fps against ripple field size";
-        chart.xLabel = "ripple field cells per side";
-        chart.yLabel = "frames per second";
-        chart.logX = true;
-        chart.logY = true;
-        for (auto& [key, sr] : series) chart.series.push_back(sr);
-        // The paper's curve for each scene it measured; for scenes it did not, its "all" scene.
-        // Colours: a paper scene takes our scene's pair; the "all" stand-in the next pair.
-        std::vector<std::pair<std::string, int>> paperScenes;
-        for (size_t k = 0; k < a.scenes.size(); ++k)
-            for (const PaperFieldFps& p : SEED001_TABLE3)
-                if (a.scenes[k] == p.scene) {
-                    paperScenes.emplace_back(a.scenes[k], 2 * int(k));
-                    break;
-                }
-        if (paperScenes.empty()) paperScenes.emplace_back("all", 2 * int(a.scenes.size()));
-        for (const auto& [s, colour] : paperScenes) {
-            ChartSeries full{"seed 001 Table 3 " + s, {}, {}, true, colour};
-            ChartSeries only{"seed 001 Table 3 " + s + ", spheres only", {}, {}, true, colour + 1};
-            for (const PaperFieldFps& p : SEED001_TABLE3) {
-                if (s != p.scene) continue;
-                full.x.push_back(p.size);
-                full.y.push_back(p.full);
-                only.x.push_back(p.size);
-                only.y.push_back(p.spheresOnly);
-            }
-            if (!a.noRender) chart.series.push_back(full);
-            chart.series.push_back(only);
-        }
-        writeChart(a.output.chart, chart);
-    }
+    if (!a.output.chart.empty()) writeFieldsChart(a, series);
     if (platform && gfx::glErrorCount() > 0) {
         logWarn("%d GL error(s) were reported during the run", gfx::glErrorCount());
         return EXIT_FAILURE_RUNTIME;
