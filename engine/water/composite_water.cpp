@@ -219,7 +219,7 @@ bool CompositeWater::step(const Eval& e, float x, float z, glm::vec2& rest, floa
     return false;
 }
 
-WaterSample CompositeWater::finish(const Eval& e, float x, float z) const {
+WaterSample CompositeWater::finish(const Eval& e, float x, float z, bool ripples) const {
     const ocean::GerstnerSums& g = e.g;
     const FftTerms& f = e.f;
     WaterSample s;
@@ -249,7 +249,7 @@ WaterSample CompositeWater::finish(const Eval& e, float x, float z) const {
         slope = glm::vec2{-n.x / ny + f.sx, -n.z / ny + f.sz};
     }
 
-    if (m_ripple.height) {
+    if (ripples && m_ripple.height) {
         s.height += m_ripple.height(x, z);
         if (m_ripple.slope) {
             slope += m_ripple.slope(x, z);
@@ -277,16 +277,16 @@ RestPoint CompositeWater::restPoint(float x, float z) const {
     }
 }
 
-WaterSample CompositeWater::sample(float x, float z) const {
+WaterSample CompositeWater::sample(float x, float z, WaterLayers layers) const {
     glm::vec2 rest{x, z};
     for (int it = 1;; ++it) {
-        Eval e{m_gerstner.sums(rest.x, rest.y), {}};
-        addDisplacement(rest.x, rest.y, e.f);
+        Eval e{layers.gerstner ? m_gerstner.sums(rest.x, rest.y) : ocean::GerstnerSums{}, {}};
+        if (layers.fft) addDisplacement(rest.x, rest.y, e.f);
         glm::vec2 moved = rest;
         float residual;
         if (step(e, x, z, moved, residual) || it >= m_settings.maxIterations) {
-            addSurface(rest.x, rest.y, e.f);
-            return finish(e, x, z);
+            if (layers.fft) addSurface(rest.x, rest.y, e.f);
+            return finish(e, x, z, layers.ripples);
         }
         rest = moved;
     }

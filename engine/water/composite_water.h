@@ -88,7 +88,9 @@ public:
     /// Order of the FFT rate estimate now: 0 (one update seen), 1 or 2.
     int fftRateOrder() const;
 
-    WaterSample sample(float x, float z) const override;
+    using WaterQuery::sample;
+    /// Left-out layers add nothing (the Newton inversion then moves only by the ones kept).
+    WaterSample sample(float x, float z, WaterLayers layers) const override;
     void sampleBatch(std::span<const glm::vec2> points, std::span<WaterSample> out) const override;
 
     /// The rest point under world (x, z) and how the inversion went.
@@ -130,7 +132,7 @@ private:
     void addDisplacement(float alpha, float beta, FftTerms& t) const;
     void addSurface(float alpha, float beta, FftTerms& t) const;
     bool step(const Eval& e, float x, float z, glm::vec2& rest, float& residual) const;
-    WaterSample finish(const Eval& e, float x, float z) const;
+    WaterSample finish(const Eval& e, float x, float z, bool ripples = true) const;
     void recordFrame();
 
     ocean::GerstnerField m_gerstner;

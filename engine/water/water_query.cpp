@@ -10,7 +10,7 @@ void WaterQuery::sampleBatch(std::span<const glm::vec2> points, std::span<WaterS
     for (size_t i = 0; i < points.size(); ++i) out[i] = sample(points[i].x, points[i].y);
 }
 
-WaterSample FlatWater::sample(float, float) const {
+WaterSample FlatWater::sample(float, float, WaterLayers) const {
     WaterSample s;
     s.height = m_height;
     return s;

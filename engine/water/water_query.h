@@ -15,14 +15,25 @@ struct WaterSample {
     float verticalVelocity = 0.0f;   ///< ∂height/∂t at the fixed world (x, z), m/s
 };
 
+/// Which layers of the surface a query includes; a left-out layer reads as flat, still
+/// water. Buoyancy, for one, asks for everything but the ripples (it reads the ripples round
+/// a body apart, so that a body does not float on its own crater).
+struct WaterLayers {
+    bool gerstner = true;  ///< the Gerstner swell
+    bool fft = true;       ///< the FFT cascades
+    bool ripples = true;   ///< the interactive ripple layer
+};
+
 /// Reads the composite water surface at world positions. Implementations are immutable
 /// between their owner's updates, so any number of threads may query at once.
 class WaterQuery {
 public:
     virtual ~WaterQuery() = default;
 
-    /// The surface above world (x, z), metres.
-    virtual WaterSample sample(float x, float z) const = 0;
+    /// The surface above world (x, z), metres: every layer.
+    WaterSample sample(float x, float z) const { return sample(x, z, WaterLayers{}); }
+    /// The surface of the given layers only above world (x, z).
+    virtual WaterSample sample(float x, float z, WaterLayers layers) const = 0;
 
     /// sample() at every point (world x, z); out.size() must equal points.size(). The default
     /// loops over sample(); implementations override it with a vectorised path.
@@ -35,7 +46,8 @@ public:
     /// The plane y = height (metres).
     explicit FlatWater(float height = 0.0f) : m_height(height) {}
 
-    WaterSample sample(float x, float z) const override;
+    using WaterQuery::sample;
+    WaterSample sample(float x, float z, WaterLayers layers) const override;
     void sampleBatch(std::span<const glm::vec2> points, std::span<WaterSample> out) const override;
 
 private:

@@ -30,11 +30,6 @@ interaction::BoundingSphere paperFishSphere(float length) {
     return s;
 }
 
-float gravityOf(ecs::World& world) {
-    const auto* def = world.resource<physics::PhysicsDef>();
-    return def && def->gravity > 0.0f ? def->gravity : 9.81f;
-}
-
 } // namespace
 
 ecs::Entity spawnFishSchool(ecs::World& world, const ObjectDef& o, uint64_t seed) {
@@ -85,7 +80,7 @@ ecs::Entity spawnFishSchool(ecs::World& world, const ObjectDef& o, uint64_t seed
 }
 
 void fishSystem(ecs::World& world, const ecs::Tick& tick) {
-    const float g = gravityOf(world);
+    const float g = physicsDef(world).gravity;
     const float dt = float(tick.dt);
     for (FishSchool& s : world.pool<FishSchool>().components()) {
         // Take-off speed from the swimming depth to the apex, and the arc's duration.

@@ -48,31 +48,31 @@ interaction::BoundingSphere paperShipSphere(float cellSize) {
 
 ecs::Entity spawnShip(ecs::World& world, const ObjectDef& o) {
     auto& physicsWorld = *world.resource<physics::PhysicsWorld>();
-    const float volume = SHIP_HULL.x * SHIP_HULL.y * SHIP_HULL.z;
+    const float volume = o.hull.x * o.hull.y * o.hull.z;
     const float mass = o.density * volume;
     physics::BodyState start;
     start.position = o.position;
     start.rotation = glm::angleAxis(glm::radians(o.yaw_deg), glm::vec3(0, 1, 0));
     start.linearVelocity = o.velocity;
-    physics::BodyId id = physicsWorld.addBox(SHIP_HULL * 0.5f, mass, start);
+    physics::BodyId id = physicsWorld.addBox(o.hull * 0.5f, mass, start);
     // A model is in metres (the hull box is its hull); the built-in unit box is scaled to the hull.
-    Renderable look{gfx::MeshKind::Box, o.model.empty() ? SHIP_HULL * 0.5f : glm::vec3(1.0f), o.color, o.model};
-    ecs::Entity e = spawnBody(world, "ship", o.name, id, latticeProbes(SHIP_HULL, PROBES), volume, mass, start, look);
+    Renderable look{gfx::MeshKind::Box, o.model.empty() ? o.hull * 0.5f : o.hull / ObjectDef{}.hull, o.color, o.model};
+    ecs::Entity e = spawnBody(world, "ship", o.name, id, latticeProbes(o.hull, PROBES), volume, mass, start, look);
     world.get<Body>(e).horizontalDrag = 0.0f;  // the hull model below resists horizontal motion
 
     // Six spheres on the keel line at the still-water line (draft = hull depth · density ratio),
     // so they always cross the surface (seed 001: "always in contact").
-    const auto* water = world.resource<physics::PhysicsDef>();
-    const float draft = SHIP_HULL.y * std::min(o.density / (water ? water->water_density : 1025.0f), 1.0f);
+    const float draft = o.hull.y * std::min(o.density / physicsDef(world).water_density, 1.0f);
     interaction::BoundingSphere sphere = boundingSphereFor(o, paperShipSphere(rippleCellSize(world)), rippleCellSize(world));
     interaction::SphereSet set;
     for (int k = 0; k < SHIP_SPHERES; ++k) {
-        sphere.offset = glm::vec3(0.0f, draft - 0.5f * SHIP_HULL.y, (float(k) + 0.5f) * SHIP_HULL.z / SHIP_SPHERES - 0.5f * SHIP_HULL.z);
+        sphere.offset = glm::vec3(0.0f, draft - 0.5f * o.hull.y, (float(k) + 0.5f) * o.hull.z / SHIP_SPHERES - 0.5f * o.hull.z);
         set.spheres.push_back(sphere);
     }
     world.add<interaction::SphereSet>(e, std::move(set));
 
     Ship ship;
+    ship.hull = o.hull;
     ship.player = o.player;
     ship.speed = o.speed;
     ship.waypoints = o.waypoints;
@@ -125,7 +125,7 @@ void hullForces(const Ship& ship, const ecs::Transform& t, const ecs::Motion& mo
     if (wet <= 0.0f) return;
     const float top = std::max(ship.speed, 0.5f);
     const float mass = motion.mass;
-    const glm::vec3 stern = t.position + t.rotation * glm::vec3(0.0f, -0.25f * SHIP_HULL.y, -0.5f * SHIP_HULL.z);
+    const glm::vec3 stern = t.position + t.rotation * glm::vec3(0.0f, -0.25f * ship.hull.y, -0.5f * ship.hull.z);
     // Forward resistance m·u|u|/(top·COAST_TIME); the engine feeds that forward at the
     // target speed and closes the error in SPEED_TIME.
     const float resistance = mass * f.forward * std::abs(f.forward) / (top * COAST_TIME);
@@ -143,19 +143,19 @@ void hullForces(const Ship& ship, const ecs::Transform& t, const ecs::Motion& mo
     body.forces.push_back({-f.starboard * (mass * f.sideways / SLIP_TIME * wet), t.position});
     // The rudder: a sideways force at the stern whose moment brings the yaw rate to the
     // rudder's (which needs water flowing past it: it fades below half the top speed).
-    const float yawInertia = mass * (SHIP_HULL.z * SHIP_HULL.z + SHIP_HULL.x * SHIP_HULL.x) / 12.0f;
+    const float yawInertia = mass * (ship.hull.z * ship.hull.z + ship.hull.x * ship.hull.x) / 12.0f;
     const float wantedYawRate = -ship.rudder * MAX_TURN * std::clamp(f.forward / (0.5f * top), -1.0f, 1.0f);
     const float moment = yawInertia * (wantedYawRate - body.angularVelocity.y) / YAW_TIME;
     // A force F·(bow × up) at the stern (arm L/2 behind the centre) turns about +y by F·L/2.
-    body.forces.push_back({glm::cross(f.bow, glm::vec3(0, 1, 0)) * (moment / (0.5f * SHIP_HULL.z) * wet), stern});
+    body.forces.push_back({glm::cross(f.bow, glm::vec3(0, 1, 0)) * (moment / (0.5f * ship.hull.z) * wet), stern});
     // Bilge keels: a couple about the hull's long axis against the roll rate (vertical
     // forces ±F at the two sides, F·beam = moment).
     const glm::vec3 keel = t.rotation * glm::vec3(0, 0, 1), side = t.rotation * glm::vec3(1, 0, 0), deck = t.rotation * glm::vec3(0, 1, 0);
-    const float rollInertia = mass * (SHIP_HULL.x * SHIP_HULL.x + SHIP_HULL.y * SHIP_HULL.y) / 12.0f;
+    const float rollInertia = mass * (ship.hull.x * ship.hull.x + ship.hull.y * ship.hull.y) / 12.0f;
     const float rollMoment = -rollInertia * glm::dot(body.angularVelocity, keel) / ROLL_TIME * wet;
-    const glm::vec3 couple = deck * (rollMoment / SHIP_HULL.x);
-    body.forces.push_back({couple, t.position + side * (0.5f * SHIP_HULL.x)});
-    body.forces.push_back({-couple, t.position - side * (0.5f * SHIP_HULL.x)});
+    const glm::vec3 couple = deck * (rollMoment / ship.hull.x);
+    body.forces.push_back({couple, t.position + side * (0.5f * ship.hull.x)});
+    body.forces.push_back({-couple, t.position - side * (0.5f * ship.hull.x)});
 }
 
 } // namespace

@@ -10,14 +10,12 @@
 
 namespace ob::game {
 
-/// The hull every ship has (m): beam x, depth y, length z; bow at local +z (the ship model
-/// made for it fits x∈[−1.5, 1.5], y∈[−0.75, 0.75], z∈[−5, 5]).
-constexpr glm::vec3 SHIP_HULL{3.0f, 1.5f, 10.0f};
 /// Bounding spheres along the hull (seed 001 fig. 15).
 constexpr int SHIP_SPHERES = 6;
 
 /// A ship's behaviour state.
 struct Ship {
+    glm::vec3 hull{3.0f, 1.5f, 10.0f}; ///< the hull box (m): beam x, depth y, length z, bow at local +z
     bool player = false;               ///< steered from the input state
     float speed = 5.0f;                ///< cruise (scripted) or top (player) speed, m/s
     std::vector<glm::vec2> waypoints;  ///< [x, z] in visiting order, looping; empty: hold the heading

@@ -15,7 +15,7 @@ const std::vector<ObjectType>& objectTypes() {
         {"sphere", spawnFloatingBody, {"velocity", "radius", "density"}},
         {"box", spawnFloatingBody, {"velocity", "size", "density"}},
         {"ship", [](ecs::World& w, const ObjectDef& o, uint64_t) { return spawnShip(w, o); },
-         {"velocity", "density", "player", "yaw_deg", "speed", "waypoints"}},
+         {"velocity", "density", "hull", "player", "yaw_deg", "speed", "waypoints"}},
         {"cannon", [](ecs::World& w, const ObjectDef& o, uint64_t) { return spawnCannon(w, o); },
          {"player", "yaw_deg", "elevation_deg", "muzzle_speed", "rate", "ball_radius", "ball_density", "sink_depth"}},
         {"fish_school", spawnFishSchool,

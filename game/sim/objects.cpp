@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <glm/gtc/matrix_transform.hpp>
 
 namespace ob::game {
@@ -33,6 +34,12 @@ std::vector<Probe> latticeProbes(glm::vec3 size, glm::ivec3 counts) {
 static std::vector<Probe> probesFor(const ObjectDef& o) {
     if (o.type == "sphere") return {Probe{glm::vec3(0.0f), o.radius}};
     return latticeProbes(o.size, glm::ivec3(3));
+}
+
+const physics::PhysicsDef& physicsDef(ecs::World& world) {
+    const auto* def = world.resource<physics::PhysicsDef>();
+    if (!def) throw std::logic_error("an object spawned before spawnObjects set [physics]");
+    return *def;
 }
 
 float rippleCellSize(ecs::World& world) {

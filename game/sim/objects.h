@@ -24,6 +24,7 @@ struct ObjectDef {
     float radius = 0.5f;                  ///< sphere: radius, m; fish_school: radius of its circle, m; [0.01, 10000]
     glm::vec3 size{1.0f, 1.0f, 1.0f};     ///< box: edge lengths [x, y, z], m; fish_school "region": [x, _, z] extent, m
     float density = 500.0f;               ///< sphere, box, ship: kg/m³, [1, 100000] (water: 1025; below floats)
+    glm::vec3 hull{3.0f, 1.5f, 10.0f};    ///< ship: hull box, beam x, depth y, length z (bow +z), m, [0.1, 1000]; a model is scaled from this default
     glm::vec3 color{0.75f, 0.32f, 0.18f}; ///< all: base colour, linear RGB
     std::string model;                    ///< all: glTF 2.0 file drawn instead of the built-in mesh ("" = built-in)
     // --- ship, cannon
@@ -61,6 +62,7 @@ template <class V> void describe(V& v, ObjectDef& d) {
     v.field("radius", d.radius, range(0.01, 10000), "sphere radius, m; fish_school: circle radius, m");
     v.field("size", d.size, range(0.01, 10000), "box edge lengths, m; fish_school region: [x, _, z] extent, m");
     v.field("density", d.density, range(1, 100000), "density, kg/m³ (sphere, box, ship)");
+    v.field("hull", d.hull, range(0.1, 1000), "ship: hull beam, depth, length, m (a model is scaled from 3 × 1.5 × 10)");
     v.field("color", d.color, range(0, 1), "base colour (linear RGB)");
     v.field("model", d.model, Choices{}, "glTF 2.0 file (.gltf/.glb) drawn instead of the built-in mesh");
     v.field("player", d.player, "ship: W/S throttle, A/D rudder; cannon: arrows aim, Space fires");
@@ -127,6 +129,9 @@ struct Renderable {
 /// A lattice of counts.x × counts.y × counts.z equal probe spheres at the cell centres of a
 /// box of `size` (m, centred on the origin) whose volumes sum to the box's.
 std::vector<Probe> latticeProbes(glm::vec3 size, glm::ivec3 counts);
+/// The scene's [physics] (gravity, water density), which spawnObjects makes a resource before
+/// any object is spawned. Throws std::logic_error before that.
+const physics::PhysicsDef& physicsDef(ecs::World& world);
 /// The ripple patch's cell size (m), or the [ripples] default when there is no patch:
 /// bounding spheres are sized in cells (seed 001's SR).
 float rippleCellSize(ecs::World& world);

@@ -12,11 +12,11 @@
 
 namespace ob::game {
 
-void addControls(ecs::World& world) {
+void addControls(ecs::World& world, const ControlsDef& def) {
     world.setResource(std::make_unique<platform::InputQueue>());
     world.setResource(std::make_unique<platform::InputState>());
     world.setResource(std::make_unique<StepInput>());
-    world.setResource(std::make_unique<WindowControls>());
+    world.setResource(std::make_unique<WindowControls>()).def = def;
     world.setResource(std::make_unique<ecs::SimControl>());
 }
 
@@ -73,15 +73,16 @@ void spawnRequestsSystem(ecs::World& world, const ecs::Tick& tick) {
     auto& rigs = world.pool<CameraRig>();
     if (rigs.size() > 0) focus = rigs.components()[0].focus;
     for (; controls->spawnFish > 0; --controls->spawnFish) {
+        const ControlsDef& def = controls->def;
         ObjectDef fish;
         fish.type = "fish_school";
         fish.position = focus;
-        fish.radius = 6.0f;
-        fish.count = 12;
-        fish.speed = 3.0f;
-        fish.jump_interval = 2.0f;
-        fish.length = 0.7f;
-        fish.color = glm::vec3(0.55f, 0.6f, 0.65f);
+        fish.radius = def.fish_radius;
+        fish.count = def.fish_count;
+        fish.speed = def.fish_speed;
+        fish.jump_interval = def.fish_jump_interval;
+        fish.length = def.fish_length;
+        fish.color = def.fish_color;
         spawnObject(world, fish, tick.step * 31ull + uint64_t(controls->spawnFish));
         logInfo("fish school spawned at (%.0f, %.0f)", double(focus.x), double(focus.z));
     }

@@ -2,12 +2,34 @@
 // overlay H, quit Esc) and the simulation's input (held keys and presses, per fixed step).
 #pragma once
 #include "behaviours/step_input.h"
+#include "core/schema.h"
 #include "ecs/schedule.h"
 #include "platform/input.h"
 
+#include <glm/vec3.hpp>
 #include <vector>
 
 namespace ob::game {
+
+/// What the player's keys make, section [controls]: the fish school F spawns at the
+/// camera's focus (swimming on a circle; a fish_school object's keys).
+struct ControlsDef {
+    int fish_count = 12;                         ///< fish in the school, [1, 10000]
+    float fish_radius = 6.0f;                    ///< radius of the circle they swim on, m, [0.5, 1000]
+    float fish_speed = 3.0f;                     ///< swimming speed, m/s, [0, 100]
+    float fish_jump_interval = 2.0f;             ///< mean time between one fish's jumps, s, [0.1, 1e6]
+    float fish_length = 0.7f;                    ///< body length, m, [0.01, 100]
+    glm::vec3 fish_color{0.55f, 0.6f, 0.65f};    ///< base colour (linear RGB)
+};
+
+template <class V> void describe(V& v, ControlsDef& d) {
+    v.field("fish_count", d.fish_count, range(1, 10000), "F: fish in the school spawned at the camera's focus");
+    v.field("fish_radius", d.fish_radius, range(0.5, 1000), "F: radius of the circle the school swims on, m");
+    v.field("fish_speed", d.fish_speed, range(0, 100), "F: swimming speed, m/s");
+    v.field("fish_jump_interval", d.fish_jump_interval, range(0.1, 1e6), "F: mean time between one fish's jumps, s");
+    v.field("fish_length", d.fish_length, range(0.01, 100), "F: body length of a fish, m");
+    v.field("fish_color", d.fish_color, range(0, 1), "F: the school's colour (linear RGB)");
+}
 
 
 /// Scripted input events not yet queued (a resource; `run --input`).
@@ -18,6 +40,7 @@ struct ScriptedInput {
 
 /// Requests the frame's keys make of the simulation, and the overlay switch (a resource).
 struct WindowControls {
+    ControlsDef def;          ///< the scene's [controls]
     int spawnFish = 0;        ///< fish schools to spawn at the camera's focus next step
     int screenshotCount = 0;  ///< screenshots taken so far (names oceanbox_shot_NNN.png)
     bool showOverlay = true;  ///< H: the UI overlay is drawn
@@ -25,7 +48,7 @@ struct WindowControls {
 
 /// Creates the input queue, the frame's and the steps' input state, the controls and
 /// SimControl resources.
-void addControls(ecs::World& world);
+void addControls(ecs::World& world, const ControlsDef& def);
 /// Input phase: queues the scripted events due by this frame's clock, then gives the frame
 /// its events (call after the platform's events are queued).
 void frameInputSystem(ecs::World& world, const ecs::Tick& tick);

@@ -59,7 +59,7 @@ const ecs::SystemEntry SYSTEMS[] = {
 
 Sandbox::Sandbox(const SceneDef& scene) : m_scene(scene), m_schedule(scene.sim) {
     for (const ecs::SystemEntry& s : SYSTEMS) m_schedule.add(s);
-    addControls(m_world);
+    addControls(m_world, m_scene.controls);
     spawnCamera(m_world, m_scene.camera);
     addOcean(m_world, m_scene.ocean, m_scene.gerstner);
     addRipples(m_world, m_scene.ripples, float(m_schedule.stepSeconds()));

@@ -1,6 +1,7 @@
 // A scene: every Def of the sandbox, read from a TOML file in config/scenes/.
 #pragma once
 #include "world/camera.h"
+#include "world/controls.h"
 #include "sim/objects.h"
 #include "ecs/schedule.h"
 #include "foam/foam_def.h"
@@ -34,6 +35,7 @@ struct SceneDef {
     ecs::SimDef sim;              ///< [sim]
     platform::WindowDef window;   ///< [window]
     CameraDef camera;             ///< [camera]
+    ControlsDef controls;         ///< [controls]
     gfx::RenderDef render;        ///< [render]
     ocean::OceanDef ocean;        ///< [ocean]
     ocean::GerstnerDef gerstner;  ///< [gerstner]
@@ -50,6 +52,7 @@ template <class V> void describe(V& v, SceneDef& s) {
     v.section("sim", s.sim);
     v.section("window", s.window);
     v.section("camera", s.camera);
+    v.section("controls", s.controls);
     v.section("render", s.render);
     v.section("ocean", s.ocean);
     v.section("gerstner", s.gerstner);

@@ -58,6 +58,9 @@ TEST_CASE("F spawns one school of fish per press", "[input]") {
         CHECK(run(CALM, f, k, 96)["fish_schools"].size() == 1);
         CHECK(run(CALM, f + "[[press]]\nat = 1.0\nkey = \"f\"\nhold = 0.01\n", k, 96)["fish_schools"].size() == 2);
     }
+    // The school is the scene's [controls] (12 fish by default).
+    CHECK(run(CALM, f, 1, 96)["fish_schools"][0]["fish"] == 12);
+    CHECK(run(CALM + "[controls]\nfish_count = 5\n", f, 1, 96)["fish_schools"][0]["fish"] == 5);
 }
 
 TEST_CASE("P pauses the simulation and N then advances exactly one step", "[input]") {

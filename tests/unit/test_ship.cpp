@@ -67,7 +67,7 @@ Wake sail(float speed, float seconds) {
     }
     const ecs::Entity ship = sandbox.world().pool<game::Ship>().entities()[0];
     const glm::vec3 centre = sandbox.world().get<ecs::Transform>(ship).position;
-    const float stern = centre.z - 0.5f * game::SHIP_HULL.z;
+    const float stern = centre.z - 0.5f * game::ObjectDef{}.hull.z;
     // Threshold: 5% of the spheres' stamp depth SR·SHR·Δ (7 · 0.2 · 0.2 m).
     const float threshold = 0.05f * 7.0f * 0.2f * 0.2f;
     Wake w;
@@ -80,7 +80,7 @@ Wake sail(float speed, float seconds) {
         }
         if (a > threshold) w.length = d;
     }
-    for (float z = stern; z <= stern + game::SHIP_HULL.z; z += 0.1f) w.depth = std::min(w.depth, patch->heightAt({0.0f, z}));
+    for (float z = stern; z <= stern + game::ObjectDef{}.hull.z; z += 0.1f) w.depth = std::min(w.depth, patch->heightAt({0.0f, z}));
     auto now = patch->field().current();
     for (size_t i = 0; i < now.size(); ++i) w.change = std::max(w.change, std::abs(now[i] - before[i]));
     REQUIRE(std::abs(sandbox.world().get<ecs::Motion>(ship).velocity.z - speed) < 0.05f * speed + 0.01f);  // held its speed
@@ -106,6 +106,22 @@ TEST_CASE("seed 001 fig. 16: a ship at rest leaves a standing deformation, slow 
     CHECK(slow.length > rest.length + 0.5f);
     // Five times faster: the rebound is left behind sooner, the wake is longer.
     CHECK(fast.length > 2.0f * slow.length);
+}
+
+TEST_CASE("a ship's hull key sets its box: mass, and a draft of depth times the density ratio (Archimedes)", "[ship]") {
+    // A hull twice the default in every direction, density 400 kg/m³ in water of 1025: it
+    // weighs 400·(6·3·20) kg and floats at rest with 3·400/1025 m of its depth under water.
+    game::Sandbox sandbox(game::parseScene("[ocean]\namplitude = 0.0\n[gerstner]\ncount = 0\n[ripples]\nenabled = false\n"
+                                           "[[objects]]\ntype = \"ship\"\nposition = [0, 0.5, 0]\nspeed = 0.0\n"
+                                           "density = 400.0\nhull = [6.0, 3.0, 20.0]\n",
+                                           "big_hull.toml"));
+    ecs::World& world = sandbox.world();
+    const ecs::Entity ship = world.pool<game::Ship>().entities()[0];
+    CHECK(world.get<ecs::Motion>(ship).mass == Approx(400.0 * 6 * 3 * 20).epsilon(1e-6));
+    for (int i = 0; i < 1200; ++i) sandbox.step();  // 20 s: the heave has settled
+    const float bottom = world.get<ecs::Transform>(ship).position.y - 1.5f;
+    // The probe lattice resolves the draft to within its layer spacing's rounding (3 layers).
+    CHECK(-bottom == Approx(3.0 * 400.0 / 1025.0).margin(0.05));
 }
 
 TEST_CASE("the player's ship: W opens the throttle and it settles at its top speed, D turns it to starboard", "[ship]") {
