@@ -151,17 +151,14 @@ void physicsSystem(ecs::World& world, const ecs::Tick& tick) {
             p.velocity = s.linearVelocity + glm::cross(s.angularVelocity, p.centre - s.position);
             p.velocity.x *= body.horizontalDrag;  // the drag sees this much of the horizontal motion
             p.velocity.z *= body.horizontalDrag;
-            water::WaterSample w = water->sample(p.centre.x, p.centre.z);
+            // The ocean without the ripples: their level comes from round the body (above),
+            // and drag is against the ocean's motion only (between a stamp and the next step
+            // the ripple cells near a body always move, which is no real current).
+            const water::WaterSample w = water->sample(p.centre.x, p.centre.z, {.ripples = false});
             p.surfaceHeight = w.height;
             p.surfaceNormal = w.normal;
             p.surfaceVelocity = w.verticalVelocity;
-            if (patch) {
-                glm::vec2 xz(p.centre.x, p.centre.z);
-                p.surfaceHeight += rippleAround(*patch, xz, reach) - patch->heightAt(xz);
-                // Drag is against the ocean's motion only: between a stamp and the next
-                // step the ripple cells near a body always move, which is no real current.
-                p.surfaceVelocity -= patch->velocityAt(xz, dt);
-            }
+            if (patch) p.surfaceHeight += rippleAround(*patch, glm::vec2(p.centre.x, p.centre.z), reach);
             physics::ProbeForce f = physics::probeForce(*def, p);
             physicsWorld->applyForce(body.id, f.force, f.point);
             float v = probe.radius * probe.radius * probe.radius;

@@ -316,6 +316,36 @@ TEST_CASE("Ripple hook: height, slope and rate are added at the world position, 
     CHECK(water.sample(0, 0).normal.x == Approx(-1 / std::sqrt(2.0f)).margin(1e-6));
 }
 
+TEST_CASE("Layers: a query of some layers equals the sea built of those layers alone, ripples left out add nothing", "[water]") {
+    // Independent references: a CompositeWater made of only the layers asked for.
+    const ocean::OceanDef def = smallOcean();
+    ocean::OceanFftCpu fft(def, 1);
+    fft.update(3.0);
+    CompositeWater all(SEED002_FIRST8, GF, &fft), gerstnerOnly(SEED002_FIRST8, GF), fftOnly({}, GF, &fft);
+    RippleHook hook;
+    hook.height = [](float x, float z) { return 0.3f * std::sin(0.5f * x - 0.2f * z); };
+    hook.rate = [](float x, float) { return 0.4f + 0.01f * x; };
+    all.setRipple(hook);
+    CompositeWater noRipples(SEED002_FIRST8, GF, &fft);
+    for (CompositeWater* w : {&all, &gerstnerOnly, &fftOnly, &noRipples}) w->update(3.0);
+    const auto same = [](const WaterSample& a, const WaterSample& b) {
+        return a.height == b.height && a.normal == b.normal && a.verticalVelocity == b.verticalVelocity;
+    };
+    for (int k = 0; k < 50; ++k) {
+        const float x = -20.0f + 0.83f * float(k), z = 9.0f - 0.47f * float(k);
+        INFO("at (" << x << ", " << z << ")");
+        CHECK(same(all.sample(x, z, {.ripples = false}), noRipples.sample(x, z)));
+        CHECK(same(all.sample(x, z, {.fft = false, .ripples = false}), gerstnerOnly.sample(x, z)));
+        CHECK(same(all.sample(x, z, {.gerstner = false, .ripples = false}), fftOnly.sample(x, z)));
+        const WaterSample flat = all.sample(x, z, {.gerstner = false, .fft = false, .ripples = false});
+        CHECK((flat.height == 0.0f && flat.normal == glm::vec3(0, 1, 0) && flat.verticalVelocity == 0.0f));
+        // Everything = without the ripples + the ripple layer at the world point (its height and rate).
+        const WaterSample full = all.sample(x, z), ocean = all.sample(x, z, {.ripples = false});
+        CHECK(full.height - ocean.height == Approx(hook.height(x, z)).margin(1e-5));
+        CHECK(full.verticalVelocity - ocean.verticalVelocity == Approx(hook.rate(x, z)).margin(1e-5));
+    }
+}
+
 TEST_CASE("sampleBatch equals sample() point by point (composite sea, 200 points, Exact and SlopeSum normals)", "[water]") {
     const ocean::OceanDef def = smallOcean(2);
     ocean::OceanFftCpu fft(def, 1);
