@@ -27,7 +27,7 @@ struct RenderDef {
     float target_fps = 30.0f;                       ///< dynamic resolution: the internal scale follows the frame time to hold this rate (play; run only when set on the command line), [0, 1000]; 0 = off (resolution_scale as set)
     std::string antialias = "auto";                 ///< edge smoothing: "off", "fxaa" (one post pass), "msaa4" (4 samples a pixel), "auto" (msaa4 on a GPU, fxaa on a software rasteriser)
     int grid_resolution = 0;                        ///< projected grid cells per side, [16, 2048]; 0 = auto (one per 3 px of internal height on a GPU, per 6 px on a software rasteriser, within [32, 512])
-    float upscale_sharpness = 0.5f;                 ///< sharpening of the frame scaled up from resolution_scale < 1 (fxaa), [0, 1]; 0 = plain bilinear
+    float upscale_sharpness = 0.75f;                ///< sharpening of the frame scaled up from resolution_scale < 1 (fxaa), [0, 1]; 0 = plain bilinear
     bool far_fade = true;                           ///< far field without regular patterns: FFT cascades fade out by tile_fade tiles, Gerstner waves where the grid is too sparse to sample them
     float tile_fade = 6.0f;                         ///< FFT cascade c is gone past this many of its tiles from the eye (fading from a third of it), [1, 1000]
     bool water_full_quality = false;                ///< every water term per pixel (the reference the shipped shading is tested against); slower on a software rasteriser
