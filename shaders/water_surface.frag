@@ -6,6 +6,7 @@
 // scrolled in time (seed 004 eq. 4–5); mixed by Fresnel (n = 1.33); plus sun glitter
 // (seed 000) and foam where the FFT Jacobian folds or the ripples are steep, and where the
 // persistent foam map holds coverage (its bubble pattern thins as the coverage decays).
+// Each FFT cascade's slopes fade out with distance ([render] far_fade) as its displacement does.
 // Compiled with WATER_FULL_QUALITY ([render] water_full_quality): every term per pixel, the
 // reference the shipped shading is tested against (the ripple slope from four height lookups,
 // the haze from the sky per pixel instead of per vertex).
