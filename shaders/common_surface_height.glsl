@@ -2,14 +2,15 @@
 // as the water vertex shader displaces it; needs common_water.glsl. Used where objects meet
 // the water: the reflection and refraction passes clip them at the surface, not the mean level.
 
-// Displacement (x, y, z) of rest point `rest` at time t: Gerstner and every FFT cascade (finest level).
+// Displacement (x, y, z) of rest point `rest` at time t: Gerstner and every FFT cascade (finest
+// level), each faded with distance as the water pass draws it.
 vec3 surfaceDisplacement(vec2 rest, float t) {
     vec3 offset;
     vec2 slope;
-    gerstner(rest, t, offset, slope);
+    gerstner(rest, t, 0.0, offset, slope);
     int cascades = int(u_gridParams.z);
     for (int c = 0; c < cascades; ++c) {
-        vec4 d = textureLod(u_displacement, cascadeCoord(rest, c), 0.0);
+        vec4 d = cascadeWeight(rest, c) * textureLod(u_displacement, cascadeCoord(rest, c), 0.0);
         offset += vec3(u_waterParams.x * d.x, d.y, u_waterParams.x * d.z);
     }
     return offset;

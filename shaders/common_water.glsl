@@ -7,6 +7,9 @@ layout(std140, binding = 1) uniform WaterUniforms {
     vec4 u_gridParams;         // x grid resolution, y grid reach from the eye (m), z cascade count, w FFT resolution N
     vec4 u_rippleParams;       // xy world origin of cell (0, 0) (m), z cell size (m), w cells per side (0: none)
     vec4 u_foamParams;         // foam map: xy world origin of cell (0, 0) (m), z cell size (m), w cells per side (0: none)
+    vec4 u_cascadeFade;        // per cascade: eye distance (m) where its fade begins
+    vec4 u_cascadeFadeEnd;     // per cascade: eye distance (m) past which it is gone; 0: never fades
+    vec4 u_farFade;            // x 1: Gerstner waves fade where the grid is too sparse for them (0: exact)
     vec4 u_gerstner[32];       // (kx, kz, amplitude, phase) per wave
 };
 
@@ -14,6 +17,7 @@ layout(binding = 0) uniform sampler2DArray u_displacement;  // layer c: (Dx, h, 
 layout(binding = 1) uniform sampler2DArray u_slopes;        // layer c: (dh/dx, dh/dz, J, 0)
 layout(binding = 2) uniform sampler2D u_ripples;            // ripple heights Vh(t) (m), 0 outside
 layout(binding = 9) uniform sampler2D u_foamMap;            // persistent foam coverage [0, 1], 0 outside
+layout(binding = 10) uniform sampler2D u_rippleSlopes;      // ripple (dh/dx, dh/dz) per cell, one cell of margin round the patch
 
 // Ripple height at world (x, z) (bilinear between cell centres; 0 outside the patch).
 float rippleHeight(vec2 world) {
@@ -38,12 +42,20 @@ bool inRipplePatch(vec2 world) {
     return u_rippleParams.w > 0.0 && all(greaterThan(cell, vec2(-1.0))) && all(lessThan(cell, vec2(u_rippleParams.w)));
 }
 
-// Ripple slope (dh/dx, dh/dz) at world (x, z), central differences over one cell.
+// Ripple slope (dh/dx, dh/dz) at world (x, z): central differences over one cell of the
+// bilinear heights. Interpolating is linear, so that equals the bilinear interpolation of each
+// cell's central difference, which the renderer stores beside the heights (one lookup, not four;
+// texel (i + 1, j + 1) is cell (i, j), so the margin holds the differences against the zero outside).
 vec2 rippleSlope(vec2 world) {
     if (!inRipplePatch(world)) return vec2(0.0);
+#ifdef WATER_FULL_QUALITY
     float h = u_rippleParams.z;
     return vec2(rippleHeight(world + vec2(h, 0.0)) - rippleHeight(world - vec2(h, 0.0)),
                 rippleHeight(world + vec2(0.0, h)) - rippleHeight(world - vec2(0.0, h))) / (2.0 * h);
+#else
+    vec2 cell = (world - u_rippleParams.xy) / u_rippleParams.z;
+    return textureLod(u_rippleSlopes, (cell + 1.5) / (u_rippleParams.w + 2.0), 0.0).xy;
+#endif
 }
 
 // The projected grid point (u, v): homogeneous bilinear interpolation, w clamped (seed 000).
@@ -54,8 +66,11 @@ vec2 gridPoint(vec2 uv) {
 
 // Gerstner waves at rest point (α, β), time t (SPEC §2.2), in one pass over the waves:
 // the displacement (x − α, y, z − β), and the slope (∂y/∂x, ∂y/∂z) of the displaced surface
-// from the analytic normal n = ∂r/∂β × ∂r/∂α, as −n.xz / n.y.
-void gerstner(vec2 rest, float t, out vec3 offset, out vec2 slope) {
+// from the analytic normal n = ∂r/∂β × ∂r/∂α, as −n.xz / n.y. `spacing` (m): the distance
+// between the grid's vertices there (0: exact). A wave shorter than three spacings fades out
+// (gone at three, whole at six): sampled by vertices further apart than half its length it
+// would alias into a regular pattern of false, longer waves (seen at the horizon).
+void gerstner(vec2 rest, float t, float spacing, out vec3 offset, out vec2 slope) {
     offset = vec3(0.0);
     float axx = 0.0, axz = 0.0, azz = 0.0, sx = 0.0, sz = 0.0;
     int count = int(u_waterParams.z);
@@ -64,9 +79,11 @@ void gerstner(vec2 rest, float t, out vec3 offset, out vec2 slope) {
         float k = length(w.xy);
         float theta = dot(w.xy, rest) - sqrt(u_waterParams.y * k) * t - w.w;
         float c = cos(theta), s = sin(theta);
-        offset.xz -= (w.xy / k) * w.z * s;
-        offset.y += w.z * c;
-        float ac = w.z * c / k, as = w.z * s;
+        float wavelength = 6.2831853 / k;
+        float a = w.z * (1.0 - smoothstep(wavelength / 6.0, wavelength / 3.0, spacing));
+        offset.xz -= (w.xy / k) * a * s;
+        offset.y += a * c;
+        float ac = a * c / k, as = a * s;
         axx += w.x * w.x * ac;
         axz += w.x * w.y * ac;
         azz += w.y * w.y * ac;
@@ -82,4 +99,12 @@ void gerstner(vec2 rest, float t, out vec3 offset, out vec2 slope) {
 // Texture coordinate of world rest point p in cascade c (texel i sits at X = i·L/N).
 vec3 cascadeCoord(vec2 p, int c) {
     return vec3(p / u_cascadeSize[c] + 0.5 / u_gridParams.w, float(c));
+}
+
+// Weight of cascade c at rest point p: 1 near the eye, fading to 0 between the cascade's two
+// fade distances, so far away no tile repeats in a regular pattern (the Gerstner waves, which
+// never repeat, carry the far field). Needs common_frame.glsl for the eye.
+float cascadeWeight(vec2 p, int c) {
+    if (u_cascadeFadeEnd[c] <= 0.0) return 1.0;
+    return 1.0 - smoothstep(u_cascadeFade[c], u_cascadeFadeEnd[c], length(p - u_cameraPositionTime.xz));
 }

@@ -4,10 +4,13 @@
 // along it, and blend each pixel toward its neighbour across the edge by how far it sits
 // from the nearer end; a sub-pixel term softens single-pixel features. One pass at the
 // output size: when the frame was drawn smaller, the same lookups scale it up (bilinear),
-// the edge found at the source pixel under the output one.
+// the edge found at the source pixel under the output one, and the pixels off the edges
+// sharpened (after AMD's contrast-adaptive sharpening, on luma) so the bilinear upscale does
+// not look blurred.
 in vec2 v_ndc;
 layout(binding = 0) uniform sampler2D u_source;  // rgb display-encoded colour, a its luma; linear filtered
 layout(location = 0) uniform vec2 u_texel;       // 1 / source size (uv per source pixel)
+layout(location = 1) uniform float u_sharpness;  // [0, 1]: 0 none (drawn at the output size), 1 the most
 out vec4 o_color;
 
 // Contrast below max(EDGE_MIN, EDGE_RELATIVE · brightest) is not an edge: most pixels stop there.
@@ -21,6 +24,19 @@ const float WALK[WALK_STEPS] = float[](1.0, 1.5, 2.0, 4.0, 12.0);
 
 float lumaAt(vec2 uv) { return textureLod(u_source, uv, 0.0).a; }
 
+// The colour c scaled up at a source pixel whose luma is m and its cross n, s, e, w: its luma
+// pushed away from the cross's mean by a negative-lobe filter, (L + k·Σcross) / (1 + 4k), k =
+// −sharpness·amp/5, where amp shrinks as the cross nears black or white (no clipped halos);
+// the luma's change is added to every channel, so the hue stays.
+vec3 sharpen(vec3 c, float m, float n, float s, float e, float w) {
+    float lo = min(min(min(n, s), min(e, w)), m), hi = max(max(max(n, s), max(e, w)), m);
+    float amp = sqrt(clamp(min(lo, 1.0 - hi) / max(hi, 1e-4), 0.0, 1.0));
+    float k = -0.2 * u_sharpness * amp;
+    float luma = dot(c, vec3(0.299, 0.587, 0.114));
+    float sharpened = (luma + k * (n + s + e + w)) / (1.0 + 4.0 * k);
+    return clamp(c + (sharpened - luma), 0.0, 1.0);
+}
+
 void main() {
     vec2 uv = v_ndc * 0.5 + 0.5;
     // The 3×3 lumas around the source pixel: two gathers of four (each a 2×2 block, in the
@@ -32,7 +48,8 @@ void main() {
     float brightest = max(max(max(n, s), max(e, w)), m);
     float range = brightest - min(min(min(n, s), min(e, w)), m);
     if (range < max(EDGE_MIN, EDGE_RELATIVE * brightest)) {
-        o_color = vec4(textureLod(u_source, uv, 0.0).rgb, 1.0);
+        // Off the edges: the bilinear colour, sharpened when scaling up.
+        o_color = vec4(sharpen(textureLod(u_source, uv, 0.0).rgb, m, n, s, e, w), 1.0);
         return;
     }
     float nw = textureLodOffset(u_source, centre, 0.0, ivec2(-1, 1)).a;

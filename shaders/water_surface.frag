@@ -6,6 +6,10 @@
 // scrolled in time (seed 004 eq. 4–5); mixed by Fresnel (n = 1.33); plus sun glitter
 // (seed 000) and foam where the FFT Jacobian folds or the ripples are steep, and where the
 // persistent foam map holds coverage (its bubble pattern thins as the coverage decays).
+// Each FFT cascade's slopes fade out with distance ([render] far_fade) as its displacement does.
+// Compiled with WATER_FULL_QUALITY ([render] water_full_quality): every term per pixel, the
+// reference the shipped shading is tested against (the ripple slope from four height lookups,
+// the haze from the sky per pixel instead of per vertex).
 #include "common_frame.glsl"
 #include "common_sky.glsl"
 #include "common_fresnel.glsl"
@@ -14,6 +18,7 @@
 in vec3 v_world;
 in vec2 v_rest;
 in vec2 v_gerstnerSlope;
+in vec3 v_haze;
 layout(binding = 3) uniform samplerCube u_sky;
 layout(binding = 4) uniform sampler2D u_reflection;       // rgb linear radiance, a coverage
 layout(binding = 5) uniform sampler2D u_refraction;       // rgb linear radiance
@@ -49,9 +54,11 @@ void main() {
     int cascades = int(u_gridParams.z);
     for (int c = 0; c < cascades; ++c) {
         vec3 uv = cascadeCoord(v_rest, c);
-        vec3 s = texture(u_slopes, uv).xyz;  // (dh/dx, dh/dz, J)
-        slope += s.xy;
-        jacobian = min(jacobian, s.z);
+        // (dh/dx, dh/dz, J), faded out with distance as the vertex shader fades the displacement
+        vec3 s = texture(u_slopes, uv).xyz;
+        float weight = cascadeWeight(v_rest, c);
+        slope += weight * s.xy;
+        jacobian = min(jacobian, mix(1.0, s.z, weight));
     }
     vec3 n = normalize(vec3(-slope.x, 1.0, -slope.y));
     vec3 eye = u_cameraPositionTime.xyz;
@@ -61,16 +68,21 @@ void main() {
     vec3 sun = u_sunDirectionFresnel.xyz;
     bool exact = u_sunDirectionFresnel.w > 0.5;
     vec3 body = waterBodyColor();
+    vec3 r = reflect(-v, n);
+    r.y = abs(r.y);
 
-    if (eyeUnderwater()) {
+    // One sky lookup serves both sides (a software rasteriser runs every branch for every
+    // pixel): from above, the reflected ray; from below, the refracted one.
+    vec3 refracted = refract(-v, -n, WATER_IOR);
+    bool underwater = eyeUnderwater();
+    vec3 sky = textureLod(u_sky, underwater && dot(refracted, refracted) > 0.0 ? refracted : r, 0.0).rgb;
+    if (underwater) {
         // The surface from below: Snell's window (the sky refracted in) inside the critical
         // angle, total internal reflection of the dark water outside it.
-        vec3 nb = -n;
-        vec3 refracted = refract(-v, nb, WATER_IOR);
         vec3 color = body * 0.5;
         if (dot(refracted, refracted) > 0.0) {
             float transmitted = 1.0 - fresnel(dot(refracted, n), exact);
-            color = mix(color, textureLod(u_sky, refracted, 0.0).rgb, transmitted);
+            color = mix(color, sky, transmitted);
         }
         o_color = finalColor(underwaterFog(color, dist));
         return;
@@ -83,9 +95,7 @@ void main() {
     float surfaceDepth = eyeDepth(gl_FragCoord.z);
 
     float cosV = max(dot(v, n), 0.0);
-    vec3 r = reflect(-v, n);
-    r.y = abs(r.y);
-    vec3 reflection = textureLod(u_sky, r, 0.0).rgb;
+    vec3 reflection = sky;
     if (u_switches.x > 0.5) {
         // The mirrored camera has the camera's projection: its depth less the surface's is
         // the path from the surface to the mirrored object.
@@ -134,7 +144,11 @@ void main() {
         }
         color = mix(color, vec3(0.9, 0.95, 1.0) * (0.4 + 0.6 * max(sun.y, 0.0)), foam * 0.85);
     }
+#ifdef WATER_FULL_QUALITY
     vec3 haze = textureLod(u_sky, normalize(vec3(-v.x, 0.0, -v.z)), 0.0).rgb;
+#else
+    vec3 haze = v_haze;
+#endif
     color = mix(color, haze, 1.0 - exp(-dist * 0.00025));
     o_color = finalColor(color);
 }

@@ -1,7 +1,7 @@
 #version 450 core
 // Water surface vertices: projected grid point → Gerstner displacement + every FFT cascade's
 // choppy displacement (seed 000 vertex shader) + the ripple height at the displaced point;
-// past the grid's reach, a wall to the horizon.
+// past the grid's reach, a wall to the horizon. Each cascade fades out with distance.
 #include "common_frame.glsl"
 #include "common_water.glsl"
 
@@ -9,6 +9,8 @@ layout(location = 0) in vec2 a_uv;
 out vec3 v_world;   // displaced surface point (m)
 out vec2 v_rest;    // rest point on the mean plane (m)
 out vec2 v_gerstnerSlope;  // Gerstner slope per vertex: long waves are smooth across a cell
+out vec3 v_haze;           // the sky at the horizon behind the point (linear radiance): it changes only with the azimuth
+layout(binding = 3) uniform samplerCube u_sky;
 
 void main() {
     vec2 rest = gridPoint(a_uv);
@@ -26,16 +28,18 @@ void main() {
 
     float t = u_cameraPositionTime.w;
     vec3 offset;
-    gerstner(rest, t, offset, v_gerstnerSlope);
+    gerstner(rest, t, u_farFade.x > 0.5 ? spacing : 0.0, offset, v_gerstnerSlope);
     vec3 pos = vec3(rest.x, 0.0, rest.y) + offset;
     int cascades = int(u_gridParams.z);
     for (int c = 0; c < cascades; ++c) {
         float lod = log2(max(spacing * u_gridParams.w / u_cascadeSize[c], 1.0));
-        vec4 d = textureLod(u_displacement, cascadeCoord(rest, c), lod);
+        vec4 d = cascadeWeight(rest, c) * textureLod(u_displacement, cascadeCoord(rest, c), lod);
         pos += vec3(u_waterParams.x * d.x, d.y, u_waterParams.x * d.z);
     }
     pos.y += rippleHeight(pos.xz);
     if (horizonWall) pos = vec3(rest.x, u_cameraPositionTime.y, rest.y);
+    vec2 away = pos.xz - eye;
+    v_haze = textureLod(u_sky, dot(away, away) > 1e-8 ? vec3(away.x, 0.0, away.y) : vec3(1.0, 0.0, 0.0), 0.0).rgb;
     v_world = pos;
     v_rest = rest;
     gl_Position = u_viewProjection * vec4(pos, 1.0);

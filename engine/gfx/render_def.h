@@ -27,6 +27,10 @@ struct RenderDef {
     float target_fps = 30.0f;                       ///< dynamic resolution: the internal scale follows the frame time to hold this rate (play; run only when set on the command line), [0, 1000]; 0 = off (resolution_scale as set)
     std::string antialias = "auto";                 ///< edge smoothing: "off", "fxaa" (one post pass), "msaa4" (4 samples a pixel), "auto" (msaa4 on a GPU, fxaa on a software rasteriser)
     int grid_resolution = 0;                        ///< projected grid cells per side, [16, 2048]; 0 = auto (one per 3 px of internal height on a GPU, per 6 px on a software rasteriser, within [32, 512])
+    float upscale_sharpness = 0.75f;                ///< sharpening of the frame scaled up from resolution_scale < 1 (fxaa), [0, 1]; 0 = plain bilinear
+    bool far_fade = true;                           ///< far field without regular patterns: FFT cascades fade out by tile_fade tiles, Gerstner waves where the grid is too sparse to sample them
+    float tile_fade = 6.0f;                         ///< FFT cascade c is gone past this many of its tiles from the eye (fading from a third of it), [1, 1000]
+    bool water_full_quality = false;                ///< every water term per pixel (the reference the shipped shading is tested against); slower on a software rasteriser
 };
 
 template <class V> void describe(V& v, RenderDef& d) {
@@ -50,6 +54,10 @@ template <class V> void describe(V& v, RenderDef& d) {
     v.field("antialias", d.antialias, Choices{"auto", "off", "fxaa", "msaa4"},
             "edge smoothing: off, fxaa (post pass), msaa4 (4 samples), auto (msaa4 on a GPU, fxaa in software)");
     v.field("grid_resolution", d.grid_resolution, range(0, 2048), "projected grid cells per side; 0 = auto (internal height / 3 on a GPU, / 6 in software)");
+    v.field("upscale_sharpness", d.upscale_sharpness, range(0, 1), "sharpening of a frame scaled up from resolution_scale < 1 (fxaa); 0 = none");
+    v.field("far_fade", d.far_fade, "FFT cascades fade out with distance, Gerstner waves where the grid cannot sample them");
+    v.field("tile_fade", d.tile_fade, range(1, 1000), "FFT cascades fade out by this many of their tiles from the eye (far_fade)");
+    v.field("water_full_quality", d.water_full_quality, "every water term per pixel (reference shading; slower in software)");
 }
 
 } // namespace ob::gfx

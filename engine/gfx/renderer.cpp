@@ -27,10 +27,12 @@ constexpr GLuint FRAME_UBO_BINDING = 0;
 constexpr GLuint WATER_UBO_BINDING = 1;
 // Texture units of the water and sky passes (shaders/common_water.glsl, water_surface.frag).
 enum TextureUnit : GLuint { DISPLACEMENT_UNIT, SLOPES_UNIT, RIPPLES_UNIT, SKY_UNIT, REFLECTION_UNIT, REFRACTION_UNIT,
-                            REFRACTION_DEPTH_UNIT, DETAIL_UNIT, REFLECTION_DEPTH_UNIT, FOAM_UNIT };
+                            REFRACTION_DEPTH_UNIT, DETAIL_UNIT, REFLECTION_DEPTH_UNIT, FOAM_UNIT, RIPPLE_SLOPES_UNIT };
 // The projected grid reaches this fraction of the far clip distance; past it the grid is a
 // wall up to the eye's level, which the camera sees exactly on the horizon line.
 constexpr float GRID_REACH = 0.9f;
+// A cascade starts to fade out at this fraction of its fade distance ([render] tile_fade tiles).
+constexpr float TILE_FADE_START = 1.0f / 3.0f;
 constexpr int SKY_CUBE_SIZE = 128;
 constexpr int DETAIL_MAP_SIZE = 256;
 // Mean water level (m): the mirrored eye's. The reflection and refraction passes cut objects
@@ -56,6 +58,19 @@ Antialias antialiasMode(const std::string& key, bool softwareRenderer) {
     if (key == "msaa4") return Antialias::Msaa4;
     assert(key == "auto");  // the scene's Choices let nothing else through
     return softwareRenderer ? Antialias::Fxaa : Antialias::Msaa4;
+}
+
+// Central differences (dh/dx, dh/dz) = (h(i+1, j) − h(i−1, j), h(i, j+1) − h(i, j−1)) / 2Δ of
+// the n² ripple heights (row j along z), heights outside the patch 0, on an (n + 2)² grid
+// whose texel (i + 1, j + 1) is cell (i, j): the water shader's ripple slope in one lookup.
+static void rippleSlopes(const float* h, int n, float cellSize, std::vector<glm::vec2>& out) {
+    const size_t m = size_t(n) + 2;
+    out.assign(m * m, glm::vec2(0.0f));
+    const auto at = [&](int i, int j) { return i < 0 || j < 0 || i >= n || j >= n ? 0.0f : h[size_t(j) * size_t(n) + size_t(i)]; };
+    const float scale = 1.0f / (2.0f * cellSize);
+    for (int j = -1; j <= n; ++j)
+        for (int i = -1; i <= n; ++i)
+            out[size_t(j + 1) * m + size_t(i + 1)] = scale * glm::vec2(at(i + 1, j) - at(i - 1, j), at(i, j + 1) - at(i, j - 1));
 }
 
 static int mipLevels(int size) {
@@ -387,7 +402,7 @@ void Renderer::skyPass() {
 }
 
 // The internal frame to the framebuffer: the samples resolved (msaa4), then FXAA, which
-// also scales up, or a blit (bilinear when scaling up).
+// also scales up (sharpened off the edges), or a blit (bilinear when scaling up).
 void Renderer::postPass(glm::ivec2 size) {
     glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, POST_PASS, -1, "post");
     m_passTimers[POST_PASS].begin();
@@ -399,6 +414,7 @@ void Renderer::postPass(glm::ivec2 size) {
         glDisable(GL_DEPTH_TEST);
         glBindTextureUnit(FXAA_SOURCE_UNIT, m_internal.color.id());
         glProgramUniform2f(m_fxaaProgram.id(), 0, 1.0f / float(internal.x), 1.0f / float(internal.y));
+        glProgramUniform1f(m_fxaaProgram.id(), 1, internal == size ? 0.0f : m_def.upscale_sharpness);
         glUseProgram(m_fxaaProgram.id());
         glBindVertexArray(m_emptyVao.id());
         glDrawArrays(GL_TRIANGLES, 0, 3);
@@ -434,6 +450,11 @@ void Renderer::uploadWaterUniforms(const CameraView& camera, const WaterView& wa
     const bool layers = water.cascades > 0 && water.displacement && water.slopes;
     const int cascades = layers ? water.cascades : 1;
     for (int c = 0; c < 4; ++c) u.cascadeSize[c] = layers ? water.cascadeSize[size_t(c)] : 1.0f;
+    u.farFade = glm::vec4(m_def.far_fade ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f);
+    for (int c = 0; c < 4 && layers && m_def.far_fade; ++c) {
+        u.cascadeFadeEnd[c] = m_def.tile_fade * water.cascadeSize[size_t(c)];
+        u.cascadeFade[c] = TILE_FADE_START * u.cascadeFadeEnd[c];
+    }
     const int waves = std::min(int(water.gerstner.size()), MAX_GERSTNER_WAVES);
     for (int m = 0; m < waves; ++m) u.gerstner[m] = water.gerstner[size_t(m)];
     u.waterParams = glm::vec4(water.lambda, water.gravity, float(waves), 0.5f * grid.minW);  // the clamp only guards rounding
@@ -445,9 +466,12 @@ void Renderer::uploadWaterUniforms(const CameraView& camera, const WaterView& wa
             glTextureParameteri(m_rippleTexture.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
             const float zero[4] = {0, 0, 0, 0};
             glTextureParameterfv(m_rippleTexture.id(), GL_TEXTURE_BORDER_COLOR, zero);
+            m_rippleSlopeTexture = createTexture2D("ripple slopes", GL_RG32F, glm::ivec2(water.rippleCells + 2));
             m_rippleCells = water.rippleCells;
         }
         glTextureSubImage2D(m_rippleTexture.id(), 0, 0, 0, m_rippleCells, m_rippleCells, GL_RED, GL_FLOAT, water.ripples);
+        rippleSlopes(water.ripples, m_rippleCells, water.rippleCellSize, m_rippleSlopes);
+        glTextureSubImage2D(m_rippleSlopeTexture.id(), 0, 0, 0, m_rippleCells + 2, m_rippleCells + 2, GL_RG, GL_FLOAT, m_rippleSlopes.data());
         u.rippleParams = glm::vec4(water.rippleOrigin, water.rippleCellSize, float(m_rippleCells));
     }
     uploadFoam(water, u);
@@ -457,6 +481,7 @@ void Renderer::uploadWaterUniforms(const CameraView& camera, const WaterView& wa
     glBindTextureUnit(DISPLACEMENT_UNIT, layers ? water.displacement->id() : m_flatDisplacement.id());
     glBindTextureUnit(SLOPES_UNIT, layers ? water.slopes->id() : m_flatSlopes.id());
     glBindTextureUnit(RIPPLES_UNIT, u.rippleParams.w > 0.0f ? m_rippleTexture.id() : 0);
+    glBindTextureUnit(RIPPLE_SLOPES_UNIT, u.rippleParams.w > 0.0f ? m_rippleSlopeTexture.id() : 0);
 }
 
 // Before the object passes: they clip against (and mirror about) the surface these describe.
@@ -483,7 +508,9 @@ void Renderer::waterPass(const CameraView&) {
     glBindTextureUnit(REFLECTION_DEPTH_UNIT, m_reflection.depth.id());
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
-    glUseProgram(m_waterProgram.id());
+    if (m_def.water_full_quality && !m_waterFullProgram.id())
+        m_waterFullProgram = loadProgram("water_surface (full quality)", {"water_surface.vert", "water_surface.frag"}, "#define WATER_FULL_QUALITY\n");
+    glUseProgram(m_def.water_full_quality ? m_waterFullProgram.id() : m_waterProgram.id());
     glBindVertexArray(m_gridVao.id());
     glDrawElements(GL_TRIANGLES, m_gridIndexCount, GL_UNSIGNED_INT, nullptr);
     // The targets are drawn into again next frame: never leave them bound for sampling.

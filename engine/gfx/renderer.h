@@ -64,9 +64,12 @@ struct WaterUniforms {
     glm::vec4 gridParams;    ///< grid resolution, grid reach from the eye (m), cascades, FFT N
     glm::vec4 rippleParams;  ///< origin x, origin z (m), cell size (m), cells per side (0: none)
     glm::vec4 foamParams;    ///< foam map: origin x, origin z (m), cell size (m), cells per side (0: none)
+    glm::vec4 cascadeFade;     ///< per cascade: eye distance (m) where it starts to fade out
+    glm::vec4 cascadeFadeEnd;  ///< per cascade: eye distance (m) past which it is gone (0: never fades)
+    glm::vec4 farFade;         ///< x 1 = Gerstner waves fade where the grid is too sparse for them, 0 = exact
     glm::vec4 gerstner[32];
 };
-static_assert(sizeof(WaterUniforms) == 16 * (4 + 5 + 32), "WaterUniforms must match std140 layout");
+static_assert(sizeof(WaterUniforms) == 16 * (4 + 8 + 32), "WaterUniforms must match std140 layout");
 constexpr int MAX_GERSTNER_WAVES = 32;
 
 /// std140 mirror of `FrameUniforms` in shaders/common_frame.glsl: one copy per view
@@ -143,7 +146,10 @@ private:
     GLsizei m_gridIndexCount = 0;
     Texture m_flatDisplacement, m_flatSlopes;  // 1×1 layers: no displacement, zero slope, J = 1
     Texture m_rippleTexture;  // R32F heights of the ripple patch, re-uploaded every frame
+    Texture m_rippleSlopeTexture;  // RG32F central differences of the heights, one cell of margin, every frame
+    std::vector<glm::vec2> m_rippleSlopes;  // their texels, (cells + 2)² row-major
     int m_rippleCells = 0;
+    Program m_waterFullProgram;  // the water program with every term per pixel (water_full_quality), loaded on first use
     Texture m_skyCube;        // RGBA16F cube map of the sky's radiance
     Framebuffer m_skyBakeFramebuffer;
     glm::vec3 m_bakedSun{0.0f};

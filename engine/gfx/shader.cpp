@@ -30,7 +30,7 @@ struct Expansion {
 // The file's path as messages give it: the folder it is read from, then its name.
 std::string shaderPath(const std::string& name) { return shaderDirectory() + "/" + name; }
 
-void expand(const std::string& name, Expansion& out, int depth) {
+void expand(const std::string& name, Expansion& out, int depth, const std::string& defines = {}) {
     if (depth > 16) throw RuntimeError(shaderPath(name) + ": #include nested too deeply (a cycle?); fix the #include lines");
     std::ifstream in(shaderPath(name));
     if (!in) throw RuntimeError("shader file not found: " + shaderPath(name) +
@@ -50,7 +50,7 @@ void expand(const std::string& name, Expansion& out, int depth) {
         } else {
             out.text += line + "\n";
             if (lineNo == 1 && line.find("#version") != std::string::npos)
-                out.text += "#line 2 " + std::to_string(index) + "\n";
+                out.text += defines + "#line 2 " + std::to_string(index) + "\n";
         }
     }
 }
@@ -86,13 +86,13 @@ GLenum stageOf(const std::string& name) {
 
 } // namespace
 
-Program loadProgram(const char* label, std::initializer_list<const char*> files) {
+Program loadProgram(const char* label, std::initializer_list<const char*> files, const std::string& defines) {
     Program program(glCreateProgram());
     glObjectLabel(GL_PROGRAM, program.id(), -1, label);
     std::vector<Handle<GlKind::Shader>> shaders;
     for (const char* file : files) {
         Expansion e;
-        expand(file, e, 0);
+        expand(file, e, 0, defines);
         Handle<GlKind::Shader> shader(glCreateShader(stageOf(file)));
         glObjectLabel(GL_SHADER, shader.id(), -1, file);
         const char* src = e.text.c_str();

@@ -13,7 +13,8 @@ std::string shaderDirectory();
 
 /// Compiles and links the named stage files (e.g. {"water_flat.vert", "water_flat.frag"};
 /// the stage comes from the extension: .vert .frag .comp .geom). Throws ob::RuntimeError
-/// with the compiler log mapped to file:line on failure or a missing file.
-Program loadProgram(const char* label, std::initializer_list<const char*> files);
+/// with the compiler log mapped to file:line on failure or a missing file. `defines`: lines
+/// (e.g. "#define WATER_FULL_QUALITY\n") put after each stage's #version line.
+Program loadProgram(const char* label, std::initializer_list<const char*> files, const std::string& defines = {});
 
 } // namespace ob::gfx

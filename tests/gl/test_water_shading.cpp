@@ -1,0 +1,193 @@
+// The water pass's shading against its reference and the far field (docs/benchmarks.md, the
+// water pass): the shipped shading draws the frame the full-quality program draws (every term
+// per pixel) within a stated mean difference; the far field of the cannon scene shows no
+// regular pattern (no peak in the spectra of a band of rows under the horizon); a frame scaled
+// up from half size is sharpened off the edges and keeps its colours.
+#include "gfx/gl.h"
+#include "gfx/renderer.h"
+#include "platform/platform.h"
+#include "world/sandbox.h"
+#include "world/scene.h"
+#include "support/test_image.h"
+#include "support/test_support.h"
+
+#include <algorithm>
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <complex>
+#include <glm/gtc/matrix_transform.hpp>
+#include <numeric>
+#include <vector>
+
+using namespace ob;
+using test::Image;
+
+namespace {
+
+// The scene file `name` after `frames` frames of 1/60 s, read back at `size`.
+Image renderScene(const char* name, glm::ivec2 size, int frames, const std::vector<std::string>& overrides, const char* tag) {
+    auto platform = platform::createHeadlessPlatform(size);
+    const int errorsBefore = gfx::glErrorCount();
+    game::Sandbox sandbox(game::loadScene(std::string(OCEANBOX_SOURCE_DIR) + "/config/scenes/" + name + ".toml", overrides));
+    sandbox.attachPlatform(*platform, false);
+    for (int f = 0; f < frames; ++f) sandbox.frame(f / 60.0);
+    const std::string path = test::tempPath(std::string(name) + "_" + tag + ".png");
+    gfx::writeScreenshot(path, size);
+    CHECK(gfx::glErrorCount() == errorsBefore);
+    Image img = test::loadPng(path);
+    REQUIRE(img.w == size.x);
+    return img;
+}
+
+// Mean absolute channel difference (0..255 units) over the whole image.
+double meanDifference(const Image& a, const Image& b) {
+    double sum = 0.0;
+    for (size_t i = 0; i < a.rgb.size(); ++i) sum += std::abs(int(a.rgb[i]) - int(b.rgb[i]));
+    return sum / double(a.rgb.size());
+}
+
+float luma(const Image& img, int x, int y) {
+    const unsigned char* p = &img.rgb[size_t((y * img.w + x) * 3)];
+    return (0.299f * float(p[0]) + 0.587f * float(p[1]) + 0.114f * float(p[2])) / 255.0f;
+}
+
+// How far one bin of a row's power spectrum stands out of its neighbours: the largest ratio,
+// over periods of 4 px to a fifth of the row, of a bin's power to the median of the bins 2 to
+// 5 away on either side (the row's mean and linear trend removed, Hann window). About 1 for an
+// irregular surface (or the haze's flat colour), far more where one period repeats across the row.
+double spectralPeak(const Image& img, int y) {
+    const int n = img.w;
+    std::vector<double> row(static_cast<size_t>(n), 0.0);
+    double mean = 0.0, slope = 0.0, spread = 0.0;
+    const double middle = 0.5 * (n - 1);
+    for (int x = 0; x < n; ++x) mean += (row[size_t(x)] = luma(img, x, y)) / n;
+    for (int x = 0; x < n; ++x) slope += (x - middle) * (row[size_t(x)] - mean), spread += (x - middle) * (x - middle);
+    slope /= spread;
+    const int top = n / 4 + 6;
+    std::vector<double> power(size_t(top), 0.0);
+    for (int k = 0; k < top; ++k) {
+        std::complex<double> sum = 0.0;
+        for (int x = 0; x < n; ++x) {
+            const double hann = 0.5 - 0.5 * std::cos(2.0 * M_PI * x / (n - 1));
+            sum += (row[size_t(x)] - mean - slope * (x - middle)) * hann * std::polar(1.0, -2.0 * M_PI * k * x / n);
+        }
+        power[size_t(k)] = std::norm(sum);
+    }
+    double peak = 0.0;
+    for (int k = 5; k <= n / 4; ++k) {
+        std::vector<double> around;
+        for (int j = k - 5; j <= k + 5; ++j)
+            if (std::abs(j - k) > 1) around.push_back(power[size_t(j)]);
+        std::nth_element(around.begin(), around.begin() + long(around.size() / 2), around.end());
+        peak = std::max(peak, power[size_t(k)] / std::max(around[around.size() / 2], 1e-12));
+    }
+    return peak;
+}
+
+} // namespace
+
+TEST_CASE("the optimised water shading draws the full-quality frame: mean difference under 0.05 of 255", "[gl][render][water]") {
+    gfx::requestDebugOutput(true);
+    const glm::ivec2 size(320, 180);
+    // The default scene: two cascades, Gerstner swell, ripples and foam round the ships.
+    const Image fast = renderScene("default", size, 6, {}, "fast");
+    const Image full = renderScene("default", size, 6, {"render.water_full_quality=true"}, "full");
+    INFO("default scene: mean |fast - full| = " << meanDifference(fast, full) << " of 255");
+    CHECK(meanDifference(fast, full) < 0.05);
+}
+
+TEST_CASE("the ripple slope from one lookup equals the four-lookup central difference: rings seen from above", "[gl][render][water]") {
+    gfx::requestDebugOutput(true);
+    const glm::ivec2 size(320, 180);
+    // Rings h = a·cos(2πr / 0.8 m) on a 128² patch of 0.1 m cells round the origin, seen from
+    // 4 m up and 6 m back: the ripple slope is the only relief in the frame.
+    const int cells = 128;
+    auto rings = [&](float amplitude) {
+        std::vector<float> h(size_t(cells) * size_t(cells));
+        for (int j = 0; j < cells; ++j)
+            for (int i = 0; i < cells; ++i) {
+                const float r = 0.1f * std::hypot(float(i) - 63.5f, float(j) - 63.5f);
+                h[size_t(j * cells + i)] = amplitude * std::cos(2.0f * float(M_PI) * r / 0.8f);
+            }
+        return h;
+    };
+    auto render = [&](const std::vector<float>& heights, bool fullQuality, const char* tag) {
+        auto platform = platform::createHeadlessPlatform(size);
+        const int errorsBefore = gfx::glErrorCount();
+        gfx::RenderDef def;
+        def.water_full_quality = fullQuality;
+        gfx::Renderer renderer(def);
+        gfx::WaterView water;
+        water.ripples = heights.data();
+        water.rippleCells = cells;
+        water.rippleOrigin = glm::vec2(-6.35f);
+        water.rippleCellSize = 0.1f;
+        gfx::CameraView camera;
+        camera.position = glm::vec3(0.0f, 4.0f, -6.0f);
+        camera.view = glm::lookAtRH(camera.position, glm::vec3(0.0f, 0.0f, 1.0f), glm::vec3(0, 1, 0));
+        camera.projection = glm::perspectiveRH_NO(glm::radians(60.0f), float(size.x) / float(size.y), camera.nearM, camera.farM);
+        renderer.render(camera, water, {}, 0.0, size);
+        const std::string path = test::tempPath(std::string("rings_") + tag + ".png");
+        gfx::writeScreenshot(path, size);
+        CHECK(gfx::glErrorCount() == errorsBefore);
+        Image img = test::loadPng(path);
+        REQUIRE(img.w == size.x);
+        return img;
+    };
+    const std::vector<float> heights = rings(0.01f), weaker = rings(0.009f);
+    const Image fast = render(heights, false, "fast"), full = render(heights, true, "full");
+    const Image weakerFull = render(weaker, true, "weaker");
+    INFO("mean |fast - full| = " << meanDifference(fast, full) << ", |rings 10 % weaker - full| = " << meanDifference(weakerFull, full) << " of 255");
+    CHECK(meanDifference(fast, full) < 0.05);
+    // The bound sees a slope 10 % off.
+    CHECK(meanDifference(weakerFull, full) > 4 * 0.05);
+}
+
+TEST_CASE("the far field of the cannon scene shows no regular pattern: no spectral peak under the horizon", "[gl][render][water]") {
+    gfx::requestDebugOutput(true);
+    const glm::ivec2 size(320, 180);
+    // The cannon scene's camera: its single long Gerstner wave, sampled by a grid sparser than
+    // half its length near the horizon, and the 60 m FFT tile would repeat there.
+    const game::SceneDef scene = game::loadScene(std::string(OCEANBOX_SOURCE_DIR) + "/config/scenes/cannon.toml");
+    const glm::vec3 view = scene.camera.target - scene.camera.position;
+    const float pitch = std::atan2(-view.y, std::hypot(view.x, view.z));
+    const float focal = 0.5f * float(size.y) / std::tan(glm::radians(0.5f * scene.camera.fov_deg));
+    const int horizon = int(std::lround(0.5f * float(size.y) - focal * std::tan(pitch)));  // row from the top
+    REQUIRE(horizon > 10);
+
+    auto bandPeak = [&](const Image& img) {
+        double peak = 0.0;
+        for (int y = horizon; y <= horizon + 8; ++y) peak = std::max(peak, spectralPeak(img, y));
+        return peak;
+    };
+    const Image faded = renderScene("cannon", size, 2, {}, "faded");
+    const Image unfaded = renderScene("cannon", size, 2, {"render.far_fade=false"}, "unfaded");
+    INFO("horizon row " << horizon << ": largest peak / median, faded " << bandPeak(faded) << ", unfaded " << bandPeak(unfaded));
+    CHECK(bandPeak(faded) < 4.0);
+    CHECK(bandPeak(unfaded) > 12.0);  // the test sees the pattern where it is
+}
+
+TEST_CASE("a frame scaled up from half size is sharpened off the edges and keeps its colours", "[gl][render][water]") {
+    gfx::requestDebugOutput(true);
+    const glm::ivec2 size(320, 180);
+    const Image sharp = renderScene("default", size, 2, {"render.resolution_scale=0.5", "render.antialias=fxaa"}, "sharp");
+    const Image soft = renderScene("default", size, 2, {"render.resolution_scale=0.5", "render.antialias=fxaa", "render.upscale_sharpness=0"}, "soft");
+    // Detail: the mean luma step between horizontal neighbours over the sea (lower half).
+    auto detail = [&](const Image& img) {
+        double sum = 0.0;
+        for (int y = size.y / 2; y < size.y; ++y)
+            for (int x = 1; x < size.x; ++x) sum += std::abs(luma(img, x, y) - luma(img, x - 1, y));
+        return sum / double((size.y - size.y / 2) * (size.x - 1));
+    };
+    INFO("neighbour step: sharpened " << detail(sharp) << ", bilinear " << detail(soft));
+    CHECK(detail(sharp) > 1.2 * detail(soft));
+    for (int band = 0; band < 6; ++band) {
+        const int y0 = band * size.y / 6, y1 = (band + 1) * size.y / 6;
+        INFO("rows " << y0 << "-" << y1);
+        CHECK(glm::length(sharp.mean(0, y0, size.x, y1) - soft.mean(0, y0, size.x, y1)) < 0.01f);
+    }
+    // At full size the key changes nothing.
+    const Image full = renderScene("default", size, 2, {"render.antialias=fxaa"}, "fullsize");
+    const Image fullSoft = renderScene("default", size, 2, {"render.antialias=fxaa", "render.upscale_sharpness=0"}, "fullsize_soft");
+    CHECK(full.maxDifference(fullSoft, 0, size.y) == 0);
+}
