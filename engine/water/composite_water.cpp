@@ -292,8 +292,10 @@ WaterSample CompositeWater::sample(float x, float z) const {
     }
 }
 
-void CompositeWater::sampleBatch(std::span<const glm::vec2> points, std::span<WaterSample> out) const {
-    assert(points.size() == out.size());
+// Inverts the displacement at every point, 64 at a time, the Gerstner sums vectorised over the
+// points still moving; calls finish(index, eval at the rest point, rest α, β) once per point.
+template <class Finish>
+void CompositeWater::invertBatch(std::span<const glm::vec2> points, Finish&& finish) const {
     float alpha[BATCH], beta[BATCH];
     glm::vec2 rest[BATCH];
     size_t active[BATCH];
@@ -321,8 +323,7 @@ void CompositeWater::sampleBatch(std::span<const glm::vec2> points, std::span<Wa
                 glm::vec2 moved = rest[i];
                 float residual;
                 if (step(e, target.x, target.y, moved, residual) || it >= m_settings.maxIterations) {
-                    addSurface(alpha[k], beta[k], e.f);
-                    out[base + i] = finish(e, target.x, target.y);
+                    finish(base + i, e, alpha[k], beta[k]);
                 } else {
                     rest[i] = moved;
                     active[still++] = i;
@@ -331,6 +332,22 @@ void CompositeWater::sampleBatch(std::span<const glm::vec2> points, std::span<Wa
             live = still;
         }
     }
+}
+
+void CompositeWater::sampleBatch(std::span<const glm::vec2> points, std::span<WaterSample> out) const {
+    assert(points.size() == out.size());
+    invertBatch(points, [&](size_t i, Eval& e, float alpha, float beta) {
+        addSurface(alpha, beta, e.f);
+        out[i] = finish(e, points[i].x, points[i].y);
+    });
+}
+
+void CompositeWater::horizontalVelocityBatch(std::span<const glm::vec2> points, std::span<glm::vec2> out) const {
+    assert(points.size() == out.size());
+    invertBatch(points, [&](size_t i, Eval& e, float alpha, float beta) {
+        addSurface(alpha, beta, e.f);
+        out[i] = glm::vec2(e.g.vx + e.f.dxt, e.g.vz + e.f.dzt);
+    });
 }
 
 glm::vec3 CompositeWater::displace(float alpha, float beta) const {

@@ -7,8 +7,11 @@
 #include "gfx/gl.h"
 #include "gfx/renderer.h"
 #include "interaction/ripple_patch.h"
+#include "ocean/gerstner.h"
+#include "ocean/ocean_fft_cpu.h"
 #include "platform/platform.h"
 #include "splash/splash_particles.h"
+#include "water/composite_water.h"
 #include "water/water_query.h"
 
 #include <benchmark/benchmark.h>
@@ -99,11 +102,58 @@ BENCHMARK(BM_FoamStep)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
-// The foam sources at N² cells (one thread): 0 whitecaps from a 256² Jacobian tile, 1 steep
-// ripples from a 256² patch, 2 a ship's 6 hull spheres of the wake.
+// The foam's velocity over the default scene's sea (8 Gerstner waves, two 256² cascades of
+// 250 m and 95 m) on a map of N² cells, 102.4 m across: 0 the surface's horizontal velocity at
+// the (F + 1)² nodes of the velocity grid (CompositeWater::horizontalVelocityBatch, one
+// thread); 1 the per-cell velocity bilinear between them (setVelocityNodes). Args: N, F, part, workers.
+void BM_FoamVelocity(benchmark::State& state) {
+    const int n = int(state.range(0));
+    const int part = int(state.range(2));
+    ob::setWorkerCount(int(state.range(3)));
+    ob::ocean::OceanDef od;
+    od.resolution = 256;
+    od.patch_size = 250.0f;
+    od.wind_speed = 16.0f;
+    od.wind_direction = {1.0f, 0.6f};
+    od.choppiness = 1.2f;
+    od.cascades = 2;
+    ob::ocean::GerstnerDef gd;
+    gd.count = 8;
+    gd.seed = 7;
+    const std::vector<ob::ocean::GerstnerWave> waves = ob::ocean::resolveWaves(gd, od);
+    ob::ocean::OceanFftCpu fft(od, 1);
+    ob::water::CompositeWater water(waves, od.gravity, &fft);
+    ob::water::primeAt(&fft, water, 10.0);
+    ob::foam::FoamDef def;
+    def.resolution = n;
+    def.flow_resolution = int(state.range(1));
+    ob::foam::FoamMap map(def, 102.4f, glm::vec2(3.0f, -7.0f));
+    const std::vector<glm::vec2> nodes = map.flowNodePositions();
+    std::vector<glm::vec2> velocity(nodes.size());
+    water.horizontalVelocityBatch(nodes, velocity);
+    for (auto _ : state) {
+        if (part == 0) water.horizontalVelocityBatch(nodes, velocity);
+        if (part == 1) map.setVelocityNodes(velocity);
+        benchmark::DoNotOptimize(velocity.data());
+        benchmark::DoNotOptimize(map.velocityX().data());
+    }
+    ob::setWorkerCount(0);
+}
+BENCHMARK(BM_FoamVelocity)
+    ->ArgNames({"N", "F", "part", "workers"})
+    ->Args({512, 32, 0, 1})
+    ->Args({512, 64, 0, 1})
+    ->Args({512, 32, 1, 1})
+    ->Args({512, 32, 1, 2})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+// The foam sources at N² cells: 0 whitecaps from a 256² Jacobian tile, 1 steep ripples from a
+// 256² patch, 2 a ship's 6 hull spheres of the wake. Args: N, source, workers.
 void BM_FoamSources(benchmark::State& state) {
     const int n = int(state.range(0));
     const int source = int(state.range(1));
+    ob::setWorkerCount(int(state.range(2)));
     ob::foam::FoamDef def;
     def.resolution = n;
     ob::foam::FoamMap map(def, 64.0f);
@@ -119,10 +169,11 @@ void BM_FoamSources(benchmark::State& state) {
             for (int s = 0; s < 6; ++s) map.addWake(glm::vec3(float(s) * 1.5f, 0.0f, 0.0f), glm::vec3(6.0f, 0.0f, 0.0f), 1.75f, DT);
         benchmark::DoNotOptimize(map.coverage().data());
     }
+    ob::setWorkerCount(0);
 }
 BENCHMARK(BM_FoamSources)
-    ->ArgNames({"N", "source"})
-    ->ArgsProduct({{256, 512}, {0, 1, 2}})
+    ->ArgNames({"N", "source", "workers"})
+    ->ArgsProduct({{256, 512}, {0, 1, 2}, {1, 2}})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
