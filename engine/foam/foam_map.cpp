@@ -146,30 +146,36 @@ std::vector<glm::vec2> FoamMap::flowNodePositions() const {
     return out;
 }
 
-void FoamMap::setVelocityNodes(std::span<const glm::vec2> nodes) {
-    const int m = flowNodes(), s = flowStride(), n = m_n;
-    assert(nodes.size() == size_t(m) * size_t(m));
-    velocityX();  // allocates, switches to the per-cell flow
-    const float inv = 1.0f / float(s);  // exact: s is a power of two
-    parallelFor(0, n, ROW_CHUNK, [&](int rowLo, int rowHi) {
-        std::vector<glm::vec2> r(static_cast<size_t>(m));  // the row's nodes, lerped along z
-        for (int j = rowLo; j < rowHi; ++j) {
-            const int l = j / s;
-            const float tz = float(j % s) * inv;
-            const glm::vec2* n0 = &nodes[size_t(l) * size_t(m)];
-            const glm::vec2* n1 = n0 + m;
-            for (int k = 0; k < m; ++k) r[size_t(k)] = n0[k] * (1 - tz) + n1[k] * tz;
-            float* ux = &m_ux[size_t(j) * size_t(n)];
-            float* uz = &m_uz[size_t(j) * size_t(n)];
-            for (int i = 0; i < n; ++i) {
-                const int k = i / s;
-                const float tx = float(i % s) * inv;
-                const glm::vec2 v = r[size_t(k)] * (1 - tx) + r[size_t(k) + 1] * tx;
-                ux[i] = v.x;
-                uz[i] = v.y;
-            }
+// Cells [k·s, (k + 1)·s) of a row, k < segments, linear between node values v[k] and v[k + 1].
+OB_VECTOR_KERNEL static void nodeSegmentsKernel(float* __restrict out, const float* __restrict v, int segments, int s,
+                                                float inv) {
+    for (int k = 0; k < segments; ++k) {
+        const float v0 = v[k], v1 = v[k + 1];
+        float* d = out + size_t(k) * size_t(s);
+        for (int q = 0; q < s; ++q) {
+            const float tx = float(q) * inv;
+            d[q] = v0 * (1 - tx) + v1 * tx;
         }
-    });
+    }
+}
+
+void FoamMap::setVelocityNodes(std::span<const glm::vec2> nodes) {
+    assert(nodes.size() == size_t(flowNodes()) * size_t(flowNodes()));
+    m_nodes.assign(nodes.begin(), nodes.end());
+    m_flow = Flow::Nodes;
+}
+
+// Row j's velocity component (0: x, 1: z) from the nodes: the two node rows around it lerped
+// along z into scratch (flowNodes() floats), then along x between each pair of nodes.
+void FoamMap::nodeRow(int j, int component, float* out, float* scratch) const {
+    const int m = flowNodes(), s = flowStride();
+    const float inv = 1.0f / float(s);  // exact: s is a power of two
+    const int l = j / s;
+    const float tz = float(j % s) * inv;
+    const glm::vec2* n0 = &m_nodes[size_t(l) * size_t(m)];
+    const glm::vec2* n1 = n0 + m;  // l + 1 ≤ N/s: a node row exists
+    for (int k = 0; k < m; ++k) scratch[k] = n0[k][component] * (1 - tz) + n1[k][component] * tz;
+    nodeSegmentsKernel(out, scratch, m - 1, s, inv);
 }
 
 void FoamMap::add(int i, int j, float amount) {
@@ -201,29 +207,55 @@ OB_VECTOR_KERNEL static void addExcessKernel(float* __restrict f, const float* _
     }
 }
 
+// One foam row of the whitecap source: the tile row (lerped along z) read bilinearly along x
+// at each column's two samples, J = row[i0]·(1 − t) + row[i1]·t, then the excess as addExcessKernel.
+OB_VECTOR_KERNEL static void whitecapRowKernel(float* __restrict f, const float* __restrict row, const int* __restrict i0,
+                                               const int* __restrict i1, const float* __restrict t, int n, float j0,
+                                               float rate) {
+    for (int i = 0; i < n; ++i) {
+        const float j = row[i0[i]] * (1 - t[i]) + row[i1[i]] * t[i];
+        float excess = j0 - j;
+        excess = excess > 0.0f ? excess : 0.0f;
+        const float v = f[i] + excess * rate;
+        f[i] = v < 1.0f ? v : 1.0f;
+    }
+}
+
 void FoamMap::addWhitecaps(std::span<const float> jacobian, int n, float tile, float dt) {
     if (m_def.whitecap_weight <= 0.0f || n <= 0) return;
     const float toTile = float(n) / tile;  // tile samples per metre
     const glm::vec2 o = origin();
     // Bilinear in the periodic tile at each cell centre (rest-point coordinates): the columns'
-    // samples and weights once, then row by row. The source is max(0, J₀ − J) = max(0, (−J) − (−J₀)).
-    std::vector<Wrapped> columns(static_cast<size_t>(m_n));
-    for (int i = 0; i < m_n; ++i) columns[size_t(i)] = wrap((o.x + float(i) * m_cell) * toTile, n);
+    // samples and weights once (structure of arrays), then per row the two tile rows lerped
+    // along z and read at them.
+    std::vector<int> c0(static_cast<size_t>(m_n)), c1(static_cast<size_t>(m_n));
+    std::vector<float> ct(static_cast<size_t>(m_n));
+    for (int i = 0; i < m_n; ++i) {
+        const Wrapped c = wrap((o.x + float(i) * m_cell) * toTile, n);
+        c0[size_t(i)] = c.i0, c1[size_t(i)] = c.i1, ct[size_t(i)] = c.t;
+    }
     parallelFor(0, m_n, ROW_CHUNK, [&](int rowLo, int rowHi) {
-        std::vector<float> negJ(static_cast<size_t>(m_n));
+        std::vector<float> row(static_cast<size_t>(n));
         for (int j = rowLo; j < rowHi; ++j) {
             const Wrapped r = wrap((o.y + float(j) * m_cell) * toTile, n);
             const float* r0 = &jacobian[size_t(r.i0) * size_t(n)];
             const float* r1 = &jacobian[size_t(r.i1) * size_t(n)];
-            for (int i = 0; i < m_n; ++i) {
-                const Wrapped& c = columns[size_t(i)];
-                negJ[size_t(i)] =
-                    -((r0[c.i0] * (1 - c.t) + r0[c.i1] * c.t) * (1 - r.t) + (r1[c.i0] * (1 - c.t) + r1[c.i1] * c.t) * r.t);
-            }
-            addExcessKernel(&m_f[size_t(j) * size_t(m_n)], negJ.data(), m_n, -m_def.whitecap_jacobian,
-                            m_def.whitecap_weight * dt);
+            for (int x = 0; x < n; ++x) row[size_t(x)] = r0[x] * (1 - r.t) + r1[x] * r.t;
+            whitecapRowKernel(&m_f[size_t(j) * size_t(m_n)], row.data(), c0.data(), c1.data(), ct.data(), m_n,
+                              m_def.whitecap_jacobian, m_def.whitecap_weight * dt);
         }
     });
+}
+
+// |∇h| by central differences at the interior cells [1, cols − 1) of the ripple row `mid`
+// (its neighbours one row up and down at ∓cols), per metre via inv2d = 1/(2Δ).
+OB_VECTOR_KERNEL static void slopeRippleRow(float* __restrict out, const float* __restrict mid, int cols, float inv2d) {
+    const float* up = mid - cols;
+    const float* down = mid + cols;
+    for (int x = 1; x < cols - 1; ++x) {
+        const float sx = (mid[x + 1] - mid[x - 1]) * inv2d, sz = (down[x] - up[x]) * inv2d;
+        out[x] = std::sqrt(sx * sx + sz * sz);
+    }
 }
 
 void FoamMap::addRipples(const interaction::RipplePatch& patch, float dt) {
@@ -253,17 +285,15 @@ void FoamMap::addRipples(const interaction::RipplePatch& patch, float dt) {
     }
     if (jLo >= jHi) return;
     parallelFor(jLo, jHi, ROW_CHUNK, [&](int rowLo, int rowHi) {
-        std::vector<float> slope(static_cast<size_t>(m_n));
+        std::vector<float> slope(static_cast<size_t>(m_n)), rippleSlope(static_cast<size_t>(cols));
+        int slopeRow = -1;  // the ripple row rippleSlope holds
         for (int j = rowLo; j < rowHi; ++j) {
             const int z = rz[size_t(j)];
-            const float* up = &h[size_t(z - 1) * size_t(cols)];
-            const float* mid = up + cols;
-            const float* down = mid + cols;
-            for (int i = iLo; i < iHi; ++i) {
-                const int x = rx[size_t(i)];
-                const float sx = (mid[x + 1] - mid[x - 1]) * inv2d, sz = (down[x] - up[x]) * inv2d;
-                slope[size_t(i)] = std::sqrt(sx * sx + sz * sz);
+            if (z != slopeRow) {  // |∇h| along the whole ripple row, once per ripple row
+                slopeRippleRow(rippleSlope.data(), &h[size_t(z) * size_t(cols)], cols, inv2d);
+                slopeRow = z;
             }
+            for (int i = iLo; i < iHi; ++i) slope[size_t(i)] = rippleSlope[size_t(rx[size_t(i)])];
             addExcessKernel(&m_f[size_t(j) * size_t(m_n) + size_t(iLo)], &slope[size_t(iLo)], iHi - iLo,
                             m_def.ripple_slope, m_def.ripple_weight * dt);
         }
@@ -352,15 +382,23 @@ void FoamMap::step(float dt) {
     // independent within a pass. Rows where the flow crosses more than a cell redo the pass
     // with a general linear interpolation (0 from outside).
     const float back = dt / m_cell;  // (m/s) → cells over dt
-    const float* ux = m_ux.data();
-    const float* uz = m_uz.data();
+    const bool nodes = m_flow == Flow::Nodes;
+    // Row j's velocity component: the per-cell arrays' row, or formed from the nodes in rowBuf.
+    const auto velocityRow = [&](int j, int component, std::vector<float>& rowBuf, std::vector<float>& scratch) -> const float* {
+        if (!nodes) return (component == 0 ? m_ux.data() : m_uz.data()) + size_t(j) * size_t(n);
+        rowBuf.resize(size_t(n));
+        scratch.resize(size_t(flowNodes()));
+        nodeRow(j, component, rowBuf.data(), scratch.data());
+        return rowBuf.data();
+    };
     m_split.resize(m_f.size());
     float* split = m_split.data();
     parallelFor(0, n, ROW_CHUNK, [&](int rowLo, int rowHi) {
+        std::vector<float> rowBuf, scratch;
         for (int j = rowLo; j < rowHi; ++j) {
             const size_t row = size_t(j) * size_t(n);
             const float* s = src + row;
-            const float* u = ux + row;
+            const float* u = velocityRow(j, 0, rowBuf, scratch);
             float* d = split + row;
             const bool over = xPassKernel(d, s, u, 1, n - 1, back) != 0;
             for (int i : {0, n - 1}) d[i] = lerpRow(s, n, float(i) - u[i] * back);
@@ -370,11 +408,12 @@ void FoamMap::step(float dt) {
     });
     m_zeros.resize(size_t(n), 0.0f);
     parallelFor(0, n, ROW_CHUNK, [&](int rowLo, int rowHi) {
+        std::vector<float> rowBuf, scratch;
         for (int j = rowLo; j < rowHi; ++j) {
             const size_t row = size_t(j) * size_t(n);
             const float* up = j > 0 ? split + row - size_t(n) : m_zeros.data();
             const float* down = j + 1 < n ? split + row + size_t(n) : m_zeros.data();
-            const float* u = uz + row;
+            const float* u = velocityRow(j, 1, rowBuf, scratch);
             float* d = dst + row;
             if (zPassKernel(d, up, split + row, down, u, n, back, a) == 0) continue;
             for (int i = 0; i < n; ++i) {

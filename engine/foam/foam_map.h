@@ -87,6 +87,7 @@ public:
     std::vector<glm::vec2> flowNodePositions() const;
     /// Sets the per-cell velocity bilinear between the nodes' (m/s, world x and z; row-major
     /// like flowNodePositions()); the weights are exact binary fractions (power-of-two stride).
+    /// step() forms each row's velocities as it goes (velocityX/Z() switch back to their arrays).
     void setVelocityNodes(std::span<const glm::vec2> nodes);
 
     // --- sources (laws (a)–(d) above), each clamped to coverage 1
@@ -109,8 +110,9 @@ public:
     void hash(StateHasher& h) const;
 
 private:
-    enum class Flow { Still, Uniform, Field };
+    enum class Flow { Still, Uniform, Field, Nodes };
     void add(int i, int j, float amount);
+    void nodeRow(int j, int component, float* out, float* scratch) const;
 
     FoamDef m_def;
     int m_n;
@@ -120,8 +122,9 @@ private:
     Flow m_flow = Flow::Still;
     glm::vec2 m_uniform{0.0f};
     std::vector<float> m_ux, m_uz;  // Flow::Field, m/s
-    std::vector<float> m_split;     // Flow::Field: the coverage after the x pass (see step)
-    std::vector<float> m_zeros;     // Flow::Field: a row of zeros, the rows beyond the map's edges
+    std::vector<glm::vec2> m_nodes; // Flow::Nodes, m/s (flowNodes()² row-major)
+    std::vector<float> m_split;     // Flow::Field, Nodes: the coverage after the x pass (see step)
+    std::vector<float> m_zeros;     // Flow::Field, Nodes: a row of zeros, the rows beyond the map's edges
 };
 
 } // namespace ob::foam

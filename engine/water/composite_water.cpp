@@ -2,6 +2,7 @@
 // then height, slope-form normal (SPEC §2.3) and Eulerian vertical velocity at the rest point.
 #include "water/composite_water.h"
 
+#include "core/parallel.h"
 #include "ocean/ocean_fft_cpu.h"
 
 #include <algorithm>
@@ -344,9 +345,21 @@ void CompositeWater::sampleBatch(std::span<const glm::vec2> points, std::span<Wa
 
 void CompositeWater::horizontalVelocityBatch(std::span<const glm::vec2> points, std::span<glm::vec2> out) const {
     assert(points.size() == out.size());
-    invertBatch(points, [&](size_t i, Eval& e, float alpha, float beta) {
-        addSurface(alpha, beta, e.f);
-        out[i] = glm::vec2(e.g.vx + e.f.dxt, e.g.vz + e.f.dzt);
+    const bool rates = m_fft && m_frameCount >= 2;
+    const float lambda = m_fft ? m_fft->lambda() : 0.0f;
+    // Blocks of BATCH points over the pool: every point is independent, so any split gives the same bits.
+    const int blocks = int((points.size() + BATCH - 1) / BATCH);
+    parallelFor(0, blocks, 2, [&](int lo, int hi) {
+        const size_t begin = size_t(lo) * BATCH, end = std::min(points.size(), size_t(hi) * BATCH);
+        invertBatch(points.subspan(begin, end - begin), [&](size_t i, Eval& e, float alpha, float beta) {
+            glm::vec2 u(e.g.vx, e.g.vz);
+            if (rates)
+                for (const Cascade& cas : m_cascades) {
+                    const Bilinear b(alpha, beta, cas.invCell, m_fft->resolution());
+                    u += lambda * glm::vec2(b.value(cas.rate.data(), 4, 1), b.value(cas.rate.data(), 4, 2));
+                }
+            out[begin + i] = u;
+        });
     });
 }
 

@@ -59,7 +59,7 @@ BENCHMARK(BM_SplashStep)
     ->UseRealTime();
 
 // One FoamMap::step at N² cells. Args: N, flow (0 still: decay only; 1 uniform; 2 per-cell
-// field), workers. The map is refilled (not timed) now and then so it never turns subnormal.
+// field; 3 per cell from a 32² velocity grid's nodes), workers. The map is refilled (not timed) now and then so it never turns subnormal.
 void BM_FoamStep(benchmark::State& state) {
     const int n = int(state.range(0));
     const int flow = int(state.range(1));
@@ -81,6 +81,15 @@ void BM_FoamStep(benchmark::State& state) {
             uz[c] = -0.3f + 0.3f * std::cos(float(c / size_t(n)) * 0.1f);
         }
     }
+    if (flow == 3) {  // the same field on the default 32² velocity grid (what the sandbox uses)
+        const int m = map.flowNodes(), stride = map.flowStride();
+        std::vector<glm::vec2> nodes(size_t(m) * size_t(m));
+        for (int l = 0; l < m; ++l)
+            for (int k = 0; k < m; ++k)
+                nodes[size_t(l) * size_t(m) + size_t(k)] = glm::vec2(0.8f + 0.3f * std::sin(float(k * stride) * 0.1f),
+                                                                     -0.3f + 0.3f * std::cos(float(l * stride) * 0.1f));
+        map.setVelocityNodes(nodes);
+    }
     map.step(DT);  // warm-up: starts the pool's workers
     int steps = 0;
     for (auto _ : state) {
@@ -98,18 +107,17 @@ void BM_FoamStep(benchmark::State& state) {
 }
 BENCHMARK(BM_FoamStep)
     ->ArgNames({"N", "flow", "workers"})
-    ->ArgsProduct({{256, 512, 1024}, {0, 1, 2}, {1, 2}})
+    ->ArgsProduct({{256, 512, 1024}, {0, 1, 2, 3}, {1, 2}})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
 // The foam's velocity over the default scene's sea (8 Gerstner waves, two 256² cascades of
-// 250 m and 95 m) on a map of N² cells, 102.4 m across: 0 the surface's horizontal velocity at
-// the (F + 1)² nodes of the velocity grid (CompositeWater::horizontalVelocityBatch, one
-// thread); 1 the per-cell velocity bilinear between them (setVelocityNodes). Args: N, F, part, workers.
+// 250 m and 95 m) at the (F + 1)² nodes of the velocity grid of a map 102.4 m across:
+// CompositeWater::horizontalVelocityBatch (rest points by Newton, then the particles'
+// velocities). Args: N, F, workers.
 void BM_FoamVelocity(benchmark::State& state) {
     const int n = int(state.range(0));
-    const int part = int(state.range(2));
-    ob::setWorkerCount(int(state.range(3)));
+    ob::setWorkerCount(int(state.range(2)));
     ob::ocean::OceanDef od;
     od.resolution = 256;
     od.patch_size = 250.0f;
@@ -132,19 +140,14 @@ void BM_FoamVelocity(benchmark::State& state) {
     std::vector<glm::vec2> velocity(nodes.size());
     water.horizontalVelocityBatch(nodes, velocity);
     for (auto _ : state) {
-        if (part == 0) water.horizontalVelocityBatch(nodes, velocity);
-        if (part == 1) map.setVelocityNodes(velocity);
+        water.horizontalVelocityBatch(nodes, velocity);
         benchmark::DoNotOptimize(velocity.data());
-        benchmark::DoNotOptimize(map.velocityX().data());
     }
     ob::setWorkerCount(0);
 }
 BENCHMARK(BM_FoamVelocity)
-    ->ArgNames({"N", "F", "part", "workers"})
-    ->Args({512, 32, 0, 1})
-    ->Args({512, 64, 0, 1})
-    ->Args({512, 32, 1, 1})
-    ->Args({512, 32, 1, 2})
+    ->ArgNames({"N", "F", "workers"})
+    ->ArgsProduct({{512}, {16, 32, 64}, {1, 2}})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 

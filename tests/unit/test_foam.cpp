@@ -267,6 +267,10 @@ TEST_CASE("same inputs give bit-identical foam for any worker count", "[foam][de
             map.addWake(glm::vec3(float(s) * 0.1f, 0.0f, 0.0f), glm::vec3(6.0f, 0.0f, 0.0f), 1.0f, DT);
             map.step(DT);
         }
+        std::vector<glm::vec2> nodes = map.flowNodePositions();  // a velocity grid's nodes
+        for (glm::vec2& v : nodes) v = glm::vec2(0.6f * std::sin(v.y * 0.3f), 0.4f * std::cos(v.x * 0.2f));
+        map.setVelocityNodes(nodes);
+        for (int s = 0; s < 60; ++s) map.step(DT);
         map.setUniformVelocity(glm::vec2(0.7f, 0.2f));
         for (int s = 0; s < 60; ++s) map.step(DT);
         setWorkerCount(0);
