@@ -401,9 +401,9 @@ void FoamMap::step(float dt) {
             const float* u = velocityRow(j, 0, rowBuf, scratch);
             float* d = split + row;
             const bool over = xPassKernel(d, s, u, 1, n - 1, back) != 0;
-            for (int i : {0, n - 1}) d[i] = lerpRow(s, n, float(i) - u[i] * back);
-            if (!over && std::abs(u[0] * back) <= 1.0f && std::abs(u[n - 1] * back) <= 1.0f) continue;
-            for (int i = 0; i < n; ++i) d[i] = lerpRow(s, n, float(i) - u[i] * back);
+            for (int i : {0, n - 1}) d[i] = lerpRow(s, n, float(i) - u[i] * back);  // a neighbour is outside
+            if (!over) continue;
+            for (int i = 1; i < n - 1; ++i) d[i] = lerpRow(s, n, float(i) - u[i] * back);
         }
     });
     m_zeros.resize(size_t(n), 0.0f);
