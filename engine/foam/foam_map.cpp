@@ -8,6 +8,7 @@
 #include "splash/splash_particles.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <numbers>
 
@@ -31,27 +32,42 @@ OB_VECTOR_KERNEL void uniformRowKernel(float* __restrict dst, const float* __res
         dst[i] = w00 * s0[i + ix] + w10 * s0[i + ix + 1] + w01 * s1[i + ix] + w11 * s1[i + ix + 1];
 }
 
-// Zero cells round the padded copy the per-cell flow reads.
-constexpr int PAD = 2;
+// Linear interpolation of a row of n values (0 outside) at g (in cells; centres at integers).
+inline float lerpRow(const float* row, int n, float g) {
+    g = std::clamp(g, -1.0f, float(n));  // beyond: both samples are 0 anyway
+    const float g0 = std::floor(g);
+    const int x0 = int(g0);
+    const float t = g - g0;
+    return (1 - t) * cellOr0(row, n, x0, 0) + t * cellOr0(row, n, x0 + 1, 0);
+}
 
-// One row j of the per-cell flow step: dst[i] = a · bilinear(padded, (i, j) − u·back), the
-// traced point clamped to [−1.5, n + 0.5] (inside the zero ring). int(g + PAD) − PAD is
-// floor(g) there, as g + PAD > 0.
-OB_VECTOR_KERNEL void fieldRowKernel(float* __restrict dst, const float* __restrict padded, const float* __restrict ux,
-                                     const float* __restrict uz, int n, int j, int stride, float back, float a) {
-    const float lo = -1.5f, hi = float(n) + 0.5f;
-    for (int i = 0; i < n; ++i) {
-        float gx = float(i) - ux[i] * back, gz = float(j) - uz[i] * back;
-        gx = gx < lo ? lo : gx;
-        gx = gx > hi ? hi : gx;
-        gz = gz < lo ? lo : gz;
-        gz = gz > hi ? hi : gz;
-        const int x0 = int(gx + float(PAD)) - PAD, z0 = int(gz + float(PAD)) - PAD;
-        const float tx = gx - float(x0), tz = gz - float(z0);
-        const int c = (z0 + PAD) * stride + (x0 + PAD);
-        const float v00 = padded[c], v10 = padded[c + 1], v01 = padded[c + stride], v11 = padded[c + stride + 1];
-        dst[i] = a * ((v00 * (1 - tx) + v10 * tx) * (1 - tz) + (v01 * (1 - tx) + v11 * tx) * tz);
+// Per-cell flow, pass 1, the cells [lo, hi) of a row (neighbours inside it): the water moves
+// c = ux·back cells along x this step; for |c| ≤ 1 the departure point x − c lies between the
+// cell and its upstream neighbour: dst = src + max(c, 0)·(left − src) + max(−c, 0)·(right − src).
+// Returns nonzero when some |c| > 1 (the row is then redone by lerpRow).
+OB_VECTOR_KERNEL int xPassKernel(float* __restrict dst, const float* __restrict src, const float* __restrict ux, int lo,
+                                 int hi, float back) {
+    int over = 0;
+    for (int i = lo; i < hi; ++i) {
+        const float c = ux[i] * back;
+        const float cp = c > 0.0f ? c : 0.0f, cm = c < 0.0f ? -c : 0.0f;
+        over |= int(c > 1.0f) | int(c < -1.0f);
+        dst[i] = src[i] + cp * (src[i - 1] - src[i]) + cm * (src[i + 1] - src[i]);
     }
+    return over;
+}
+
+// Pass 2, one row along z from the rows above (j − 1), at and below (j + 1) it, times the decay a.
+OB_VECTOR_KERNEL int zPassKernel(float* __restrict dst, const float* __restrict up, const float* __restrict mid,
+                                 const float* __restrict down, const float* __restrict uz, int n, float back, float a) {
+    int over = 0;
+    for (int i = 0; i < n; ++i) {
+        const float c = uz[i] * back;
+        const float cp = c > 0.0f ? c : 0.0f, cm = c < 0.0f ? -c : 0.0f;
+        over |= int(c > 1.0f) | int(c < -1.0f);
+        dst[i] = a * (mid[i] + cp * (up[i] - mid[i]) + cm * (down[i] - mid[i]));
+    }
+    return over;
 }
 
 OB_VECTOR_KERNEL void scaleKernel(float* __restrict dst, const float* __restrict src, size_t count, float a) {
@@ -121,6 +137,47 @@ std::span<float> FoamMap::velocityZ() {
     return m_uz;
 }
 
+std::vector<glm::vec2> FoamMap::flowNodePositions() const {
+    const int m = flowNodes(), s = flowStride();
+    const glm::vec2 o = origin();
+    std::vector<glm::vec2> out(size_t(m) * size_t(m));
+    for (int l = 0; l < m; ++l)
+        for (int k = 0; k < m; ++k) out[size_t(l) * size_t(m) + size_t(k)] = o + glm::vec2(float(k * s), float(l * s)) * m_cell;
+    return out;
+}
+
+// Cells [k·s, (k + 1)·s) of a row, k < segments, linear between node values v[k] and v[k + 1].
+OB_VECTOR_KERNEL static void nodeSegmentsKernel(float* __restrict out, const float* __restrict v, int segments, int s,
+                                                float inv) {
+    for (int k = 0; k < segments; ++k) {
+        const float v0 = v[k], v1 = v[k + 1];
+        float* d = out + size_t(k) * size_t(s);
+        for (int q = 0; q < s; ++q) {
+            const float tx = float(q) * inv;
+            d[q] = v0 * (1 - tx) + v1 * tx;
+        }
+    }
+}
+
+void FoamMap::setVelocityNodes(std::span<const glm::vec2> nodes) {
+    assert(nodes.size() == size_t(flowNodes()) * size_t(flowNodes()));
+    m_nodes.assign(nodes.begin(), nodes.end());
+    m_flow = Flow::Nodes;
+}
+
+// Row j's velocity component (0: x, 1: z) from the nodes: the two node rows around it lerped
+// along z into scratch (flowNodes() floats), then along x between each pair of nodes.
+void FoamMap::nodeRow(int j, int component, float* out, float* scratch) const {
+    const int m = flowNodes(), s = flowStride();
+    const float inv = 1.0f / float(s);  // exact: s is a power of two
+    const int l = j / s;
+    const float tz = float(j % s) * inv;
+    const glm::vec2* n0 = &m_nodes[size_t(l) * size_t(m)];
+    const glm::vec2* n1 = n0 + m;  // l + 1 ≤ N/s: a node row exists
+    for (int k = 0; k < m; ++k) scratch[k] = n0[k][component] * (1 - tz) + n1[k][component] * tz;
+    nodeSegmentsKernel(out, scratch, m - 1, s, inv);
+}
+
 void FoamMap::add(int i, int j, float amount) {
     float& f = m_f[size_t(j) * size_t(m_n) + size_t(i)];
     f = std::min(1.0f, f + amount);
@@ -150,24 +207,54 @@ OB_VECTOR_KERNEL static void addExcessKernel(float* __restrict f, const float* _
     }
 }
 
+// One foam row of the whitecap source: the tile row (lerped along z) read bilinearly along x
+// at each column's two samples, J = row[i0]·(1 − t) + row[i1]·t, then the excess as addExcessKernel.
+OB_VECTOR_KERNEL static void whitecapRowKernel(float* __restrict f, const float* __restrict row, const int* __restrict i0,
+                                               const int* __restrict i1, const float* __restrict t, int n, float j0,
+                                               float rate) {
+    for (int i = 0; i < n; ++i) {
+        const float j = row[i0[i]] * (1 - t[i]) + row[i1[i]] * t[i];
+        float excess = j0 - j;
+        excess = excess > 0.0f ? excess : 0.0f;
+        const float v = f[i] + excess * rate;
+        f[i] = v < 1.0f ? v : 1.0f;
+    }
+}
+
 void FoamMap::addWhitecaps(std::span<const float> jacobian, int n, float tile, float dt) {
     if (m_def.whitecap_weight <= 0.0f || n <= 0) return;
     const float toTile = float(n) / tile;  // tile samples per metre
     const glm::vec2 o = origin();
     // Bilinear in the periodic tile at each cell centre (rest-point coordinates): the columns'
-    // samples and weights once, then row by row. The source is max(0, J₀ − J) = max(0, (−J) − (−J₀)).
-    std::vector<Wrapped> columns(static_cast<size_t>(m_n));
-    for (int i = 0; i < m_n; ++i) columns[size_t(i)] = wrap((o.x + float(i) * m_cell) * toTile, n);
-    std::vector<float> negJ(static_cast<size_t>(m_n));
-    for (int j = 0; j < m_n; ++j) {
-        const Wrapped r = wrap((o.y + float(j) * m_cell) * toTile, n);
-        const float* r0 = &jacobian[size_t(r.i0) * size_t(n)];
-        const float* r1 = &jacobian[size_t(r.i1) * size_t(n)];
-        for (int i = 0; i < m_n; ++i) {
-            const Wrapped& c = columns[size_t(i)];
-            negJ[size_t(i)] = -((r0[c.i0] * (1 - c.t) + r0[c.i1] * c.t) * (1 - r.t) + (r1[c.i0] * (1 - c.t) + r1[c.i1] * c.t) * r.t);
+    // samples and weights once (structure of arrays), then per row the two tile rows lerped
+    // along z and read at them.
+    std::vector<int> c0(static_cast<size_t>(m_n)), c1(static_cast<size_t>(m_n));
+    std::vector<float> ct(static_cast<size_t>(m_n));
+    for (int i = 0; i < m_n; ++i) {
+        const Wrapped c = wrap((o.x + float(i) * m_cell) * toTile, n);
+        c0[size_t(i)] = c.i0, c1[size_t(i)] = c.i1, ct[size_t(i)] = c.t;
+    }
+    parallelFor(0, m_n, ROW_CHUNK, [&](int rowLo, int rowHi) {
+        std::vector<float> row(static_cast<size_t>(n));
+        for (int j = rowLo; j < rowHi; ++j) {
+            const Wrapped r = wrap((o.y + float(j) * m_cell) * toTile, n);
+            const float* r0 = &jacobian[size_t(r.i0) * size_t(n)];
+            const float* r1 = &jacobian[size_t(r.i1) * size_t(n)];
+            for (int x = 0; x < n; ++x) row[size_t(x)] = r0[x] * (1 - r.t) + r1[x] * r.t;
+            whitecapRowKernel(&m_f[size_t(j) * size_t(m_n)], row.data(), c0.data(), c1.data(), ct.data(), m_n,
+                              m_def.whitecap_jacobian, m_def.whitecap_weight * dt);
         }
-        addExcessKernel(&m_f[size_t(j) * size_t(m_n)], negJ.data(), m_n, -m_def.whitecap_jacobian, m_def.whitecap_weight * dt);
+    });
+}
+
+// |∇h| by central differences at the interior cells [1, cols − 1) of the ripple row `mid`
+// (its neighbours one row up and down at ∓cols), per metre via inv2d = 1/(2Δ).
+OB_VECTOR_KERNEL static void slopeRippleRow(float* __restrict out, const float* __restrict mid, int cols, float inv2d) {
+    const float* up = mid - cols;
+    const float* down = mid + cols;
+    for (int x = 1; x < cols - 1; ++x) {
+        const float sx = (mid[x + 1] - mid[x - 1]) * inv2d, sz = (down[x] - up[x]) * inv2d;
+        out[x] = std::sqrt(sx * sx + sz * sz);
     }
 }
 
@@ -179,7 +266,8 @@ void FoamMap::addRipples(const interaction::RipplePatch& patch, float dt) {
     const float inv2d = 1.0f / (2.0f * patch.def().cell_size);
     const glm::vec2 o = origin();
     // The nearest ripple cell of each foam column and row; only interior ripple cells have a
-    // central difference, and they form one range of columns and one of rows.
+    // central difference, and they form one range of columns and one of rows (the rows split
+    // over the pool).
     std::vector<int> rx(static_cast<size_t>(m_n));
     int iLo = m_n, iHi = 0;
     for (int i = 0; i < m_n; ++i) {
@@ -188,21 +276,28 @@ void FoamMap::addRipples(const interaction::RipplePatch& patch, float dt) {
         if (x >= 1 && x <= cols - 2) iLo = std::min(iLo, i), iHi = std::max(iHi, i + 1);
     }
     if (iLo >= iHi) return;
-    std::vector<float> slope(static_cast<size_t>(m_n));
+    std::vector<int> rz(static_cast<size_t>(m_n));
+    int jLo = m_n, jHi = 0;
     for (int j = 0; j < m_n; ++j) {
         const long z = std::lround(patch.toGrid(glm::vec2(o.x, o.y + float(j) * m_cell)).y);
-        if (z < 1 || z > rows - 2) continue;
-        const float* up = &h[size_t(z - 1) * size_t(cols)];
-        const float* mid = up + cols;
-        const float* down = mid + cols;
-        for (int i = iLo; i < iHi; ++i) {
-            const int x = rx[size_t(i)];
-            const float sx = (mid[x + 1] - mid[x - 1]) * inv2d, sz = (down[x] - up[x]) * inv2d;
-            slope[size_t(i)] = std::sqrt(sx * sx + sz * sz);
-        }
-        addExcessKernel(&m_f[size_t(j) * size_t(m_n) + size_t(iLo)], &slope[size_t(iLo)], iHi - iLo, m_def.ripple_slope,
-                        m_def.ripple_weight * dt);
+        rz[size_t(j)] = int(z);
+        if (z >= 1 && z <= rows - 2) jLo = std::min(jLo, j), jHi = std::max(jHi, j + 1);
     }
+    if (jLo >= jHi) return;
+    parallelFor(jLo, jHi, ROW_CHUNK, [&](int rowLo, int rowHi) {
+        std::vector<float> slope(static_cast<size_t>(m_n)), rippleSlope(static_cast<size_t>(cols));
+        int slopeRow = -1;  // the ripple row rippleSlope holds
+        for (int j = rowLo; j < rowHi; ++j) {
+            const int z = rz[size_t(j)];
+            if (z != slopeRow) {  // |∇h| along the whole ripple row, once per ripple row
+                slopeRippleRow(rippleSlope.data(), &h[size_t(z) * size_t(cols)], cols, inv2d);
+                slopeRow = z;
+            }
+            for (int i = iLo; i < iHi; ++i) slope[size_t(i)] = rippleSlope[size_t(rx[size_t(i)])];
+            addExcessKernel(&m_f[size_t(j) * size_t(m_n) + size_t(iLo)], &slope[size_t(iLo)], iHi - iLo,
+                            m_def.ripple_slope, m_def.ripple_weight * dt);
+        }
+    });
 }
 
 void FoamMap::addLandings(std::span<const splash::Landing> landings) {
@@ -282,24 +377,52 @@ void FoamMap::step(float dt) {
         return;
     }
 
-    // --- per-cell velocity: trace each cell centre back by u·dt, bilinear there. The source is
-    // copied into a map with a ring of PAD zero cells and the traced point clamped into that
-    // ring, so the kernel reads no branch: beyond the ring the value would be 0 as well.
-    const int stride = n + 2 * PAD;
-    m_padded.resize(size_t(stride) * size_t(stride));  // the ring is 0 from here on, rows are overwritten
-    parallelFor(0, n, ROW_CHUNK, [&](int rowLo, int rowHi) {
-        for (int j = rowLo; j < rowHi; ++j)
-            std::copy(src + size_t(j) * size_t(n), src + size_t(j + 1) * size_t(n),
-                      m_padded.data() + size_t(j + PAD) * size_t(stride) + PAD);
-    });
+    // --- per-cell velocity, split by axis: along x with u_x into m_split, then along z with u_z
+    // (and the decay) into the result; each pass reads only the previous one, so rows are
+    // independent within a pass. Rows where the flow crosses more than a cell redo the pass
+    // with a general linear interpolation (0 from outside).
     const float back = dt / m_cell;  // (m/s) → cells over dt
-    const float* ux = m_ux.data();
-    const float* uz = m_uz.data();
-    const float* padded = m_padded.data();
+    const bool nodes = m_flow == Flow::Nodes;
+    // Row j's velocity component: the per-cell arrays' row, or formed from the nodes in rowBuf.
+    const auto velocityRow = [&](int j, int component, std::vector<float>& rowBuf, std::vector<float>& scratch) -> const float* {
+        if (!nodes) return (component == 0 ? m_ux.data() : m_uz.data()) + size_t(j) * size_t(n);
+        rowBuf.resize(size_t(n));
+        scratch.resize(size_t(flowNodes()));
+        nodeRow(j, component, rowBuf.data(), scratch.data());
+        return rowBuf.data();
+    };
+    m_split.resize(m_f.size());
+    float* split = m_split.data();
     parallelFor(0, n, ROW_CHUNK, [&](int rowLo, int rowHi) {
+        std::vector<float> rowBuf, scratch;
         for (int j = rowLo; j < rowHi; ++j) {
             const size_t row = size_t(j) * size_t(n);
-            fieldRowKernel(dst + row, padded, ux + row, uz + row, n, j, stride, back, a);
+            const float* s = src + row;
+            const float* u = velocityRow(j, 0, rowBuf, scratch);
+            float* d = split + row;
+            const bool over = xPassKernel(d, s, u, 1, n - 1, back) != 0;
+            for (int i : {0, n - 1}) d[i] = lerpRow(s, n, float(i) - u[i] * back);  // a neighbour is outside
+            if (!over) continue;
+            for (int i = 1; i < n - 1; ++i) d[i] = lerpRow(s, n, float(i) - u[i] * back);
+        }
+    });
+    m_zeros.resize(size_t(n), 0.0f);
+    parallelFor(0, n, ROW_CHUNK, [&](int rowLo, int rowHi) {
+        std::vector<float> rowBuf, scratch;
+        for (int j = rowLo; j < rowHi; ++j) {
+            const size_t row = size_t(j) * size_t(n);
+            const float* up = j > 0 ? split + row - size_t(n) : m_zeros.data();
+            const float* down = j + 1 < n ? split + row + size_t(n) : m_zeros.data();
+            const float* u = velocityRow(j, 1, rowBuf, scratch);
+            float* d = dst + row;
+            if (zPassKernel(d, up, split + row, down, u, n, back, a) == 0) continue;
+            for (int i = 0; i < n; ++i) {
+                const float g = std::clamp(float(j) - u[i] * back, -1.0f, float(n));
+                const float g0 = std::floor(g);
+                const int z0 = int(g0);
+                const float t = g - g0;
+                d[i] = a * ((1 - t) * cellOr0(split, n, i, z0) + t * cellOr0(split, n, i, z0 + 1));
+            }
         }
     });
     m_f.swap(m_next);

@@ -4,8 +4,10 @@
 // Laws (coverage f ∈ [0, 1] per cell; N×N cells of side Δ = extent/N; cell (i, j) has its
 // centre at origin() + (i, j)·Δ, i along x, j along z; row-major, index j·N + i):
 //   transport  ∂f/∂t + u·∇f = −f/τ + S,  τ = [foam] decay_s, u the surface's horizontal velocity
-//   step(dt)   f ← e^(−dt/τ) · f(x − u(x)·dt): semi-Lagrangian, bilinear between cell centres,
-//              0 from outside the map; the decay is exact for any dt (no sources: f(t) = f(0)·e^(−t/τ))
+//   step(dt)   f ← e^(−dt/τ) · f(x − u(x)·dt): semi-Lagrangian, linear between cell centres,
+//              0 from outside the map; the decay is exact for any dt (no sources: f(t) = f(0)·e^(−t/τ)).
+//              A uniform u reads one bilinear stencil; a per-cell u is split by axis (along x with
+//              u_x, then along z with u_z; for a uniform u the same bilinear step)
 //   sources    each add S·dt (or a fixed amount) to a cell, clamped to 1; call them between steps:
 //     (a) whitecaps  S = whitecap_weight · max(0, J_0 − J), J the ocean's Jacobian at the cell
 //                    centre (bilinear in the periodic cascade tile, at rest points), J_0 = whitecap_jacobian
@@ -17,11 +19,14 @@
 //                    ((p − c)·u ≤ 0): a point it passes at lateral offset y gains
 //                    wake_weight·sqrt(1 − (y/R)²) (before decay and the clamp), nothing ahead of it
 // The map scrolls in whole cells (centerOn), like the ripple patch, so foam stays put in the world.
+// The per-cell velocity is either the caller's (velocityX/Z) or bilinear between the nodes of a
+// coarse grid (setVelocityNodes; the surface's velocity varies over a wavelength, not a cell).
 // Rows are split over the worker pool; each cell's value depends only on the previous map, so
 // the bits do not depend on the worker count.
 #pragma once
 #include "foam/foam_def.h"
 
+#include <algorithm>
 #include <span>
 #include <vector>
 #include <glm/vec2.hpp>
@@ -45,8 +50,8 @@ constexpr float DROP_FOAM_RADIUS_FACTOR = 10.0f;
 /// The foam coverage map (see the laws above).
 class FoamMap {
 public:
-    /// A map of def.resolution² cells over a square of side `extent` metres (the ripple patch's
-    /// N·Δ) centred on the cell nearest `centre` (world x, z). Coverage starts at 0, the velocity at 0.
+    /// A map of def.resolution² cells over a square of side `extent` metres (the caller resolves
+    /// def.extent_m) centred on the cell nearest `centre` (world x, z). Coverage starts at 0, the velocity at 0.
     FoamMap(const FoamDef& def, float extent, glm::vec2 centre = glm::vec2(0.0f));
 
     /// Moves the map so its centre is the cell nearest `worldCentre` (scrolls the data; new cells 0).
@@ -73,6 +78,17 @@ public:
     /// Per-cell velocity, m/s (row-major like coverage()); calling these switches the map to it.
     std::span<float> velocityX();
     std::span<float> velocityZ();
+    /// Cells between two nodes of the velocity grid: resolution / min(flow_resolution, resolution).
+    int flowStride() const { return m_n / std::min(m_def.flow_resolution, m_n); }
+    /// Nodes per side of the velocity grid, N / flowStride() + 1: node (k, l) sits on cell
+    /// (k, l)·flowStride()'s centre (the last one a cell beyond the map's edge).
+    int flowNodes() const { return m_n / flowStride() + 1; }
+    /// World (x, z) of every node, row-major (index l·flowNodes() + k).
+    std::vector<glm::vec2> flowNodePositions() const;
+    /// Sets the per-cell velocity bilinear between the nodes' (m/s, world x and z; row-major
+    /// like flowNodePositions()); the weights are exact binary fractions (power-of-two stride).
+    /// step() forms each row's velocities as it goes (velocityX/Z() switch back to their arrays).
+    void setVelocityNodes(std::span<const glm::vec2> nodes);
 
     // --- sources (laws (a)–(d) above), each clamped to coverage 1
     /// (a) Jacobian of an ocean cascade: n×n floats row-major [j][i] at X = (i, j)·tile/n (m).
@@ -94,8 +110,9 @@ public:
     void hash(StateHasher& h) const;
 
 private:
-    enum class Flow { Still, Uniform, Field };
+    enum class Flow { Still, Uniform, Field, Nodes };
     void add(int i, int j, float amount);
+    void nodeRow(int j, int component, float* out, float* scratch) const;
 
     FoamDef m_def;
     int m_n;
@@ -105,7 +122,9 @@ private:
     Flow m_flow = Flow::Still;
     glm::vec2 m_uniform{0.0f};
     std::vector<float> m_ux, m_uz;  // Flow::Field, m/s
-    std::vector<float> m_padded;    // Flow::Field: the coverage inside a ring of zeros (see step)
+    std::vector<glm::vec2> m_nodes; // Flow::Nodes, m/s (flowNodes()² row-major)
+    std::vector<float> m_split;     // Flow::Field, Nodes: the coverage after the x pass (see step)
+    std::vector<float> m_zeros;     // Flow::Field, Nodes: a row of zeros, the rows beyond the map's edges
 };
 
 } // namespace ob::foam

@@ -2,6 +2,7 @@
 // then height, slope-form normal (SPEC §2.3) and Eulerian vertical velocity at the rest point.
 #include "water/composite_water.h"
 
+#include "core/parallel.h"
 #include "ocean/ocean_fft_cpu.h"
 
 #include <algorithm>
@@ -292,8 +293,10 @@ WaterSample CompositeWater::sample(float x, float z, WaterLayers layers) const {
     }
 }
 
-void CompositeWater::sampleBatch(std::span<const glm::vec2> points, std::span<WaterSample> out) const {
-    assert(points.size() == out.size());
+// Inverts the displacement at every point, 64 at a time, the Gerstner sums vectorised over the
+// points still moving; calls finish(index, eval at the rest point, rest α, β) once per point.
+template <class Finish>
+void CompositeWater::invertBatch(std::span<const glm::vec2> points, Finish&& finish) const {
     float alpha[BATCH], beta[BATCH];
     glm::vec2 rest[BATCH];
     size_t active[BATCH];
@@ -321,8 +324,7 @@ void CompositeWater::sampleBatch(std::span<const glm::vec2> points, std::span<Wa
                 glm::vec2 moved = rest[i];
                 float residual;
                 if (step(e, target.x, target.y, moved, residual) || it >= m_settings.maxIterations) {
-                    addSurface(alpha[k], beta[k], e.f);
-                    out[base + i] = finish(e, target.x, target.y);
+                    finish(base + i, e, alpha[k], beta[k]);
                 } else {
                     rest[i] = moved;
                     active[still++] = i;
@@ -331,6 +333,34 @@ void CompositeWater::sampleBatch(std::span<const glm::vec2> points, std::span<Wa
             live = still;
         }
     }
+}
+
+void CompositeWater::sampleBatch(std::span<const glm::vec2> points, std::span<WaterSample> out) const {
+    assert(points.size() == out.size());
+    invertBatch(points, [&](size_t i, Eval& e, float alpha, float beta) {
+        addSurface(alpha, beta, e.f);
+        out[i] = finish(e, points[i].x, points[i].y);
+    });
+}
+
+void CompositeWater::horizontalVelocityBatch(std::span<const glm::vec2> points, std::span<glm::vec2> out) const {
+    assert(points.size() == out.size());
+    const bool rates = m_fft && m_frameCount >= 2;
+    const float lambda = m_fft ? m_fft->lambda() : 0.0f;
+    // Blocks of BATCH points over the pool: every point is independent, so any split gives the same bits.
+    const int blocks = int((points.size() + BATCH - 1) / BATCH);
+    parallelFor(0, blocks, 2, [&](int lo, int hi) {
+        const size_t begin = size_t(lo) * BATCH, end = std::min(points.size(), size_t(hi) * BATCH);
+        invertBatch(points.subspan(begin, end - begin), [&](size_t i, Eval& e, float alpha, float beta) {
+            glm::vec2 u(e.g.vx, e.g.vz);
+            if (rates)
+                for (const Cascade& cas : m_cascades) {
+                    const Bilinear b(alpha, beta, cas.invCell, m_fft->resolution());
+                    u += lambda * glm::vec2(b.value(cas.rate.data(), 4, 1), b.value(cas.rate.data(), 4, 2));
+                }
+            out[begin + i] = u;
+        });
+    });
 }
 
 glm::vec3 CompositeWater::displace(float alpha, float beta) const {

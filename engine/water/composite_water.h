@@ -93,6 +93,13 @@ public:
     WaterSample sample(float x, float z, WaterLayers layers) const override;
     void sampleBatch(std::span<const glm::vec2> points, std::span<WaterSample> out) const override;
 
+    /// Horizontal velocity (m/s, world x and z) of the surface above each world (x, z) point:
+    /// ∂(x, z)/∂t of the particle displaced there (its rest point found as sample() finds it),
+    /// Gerstner Σ K̂·a·ω·cos θ (analytic) plus the cascades' λ·∂D/∂t (the rates behind the
+    /// vertical velocity; 0 until two updates). The ripple layer is a height field: no part.
+    /// out.size() must equal points.size().
+    void horizontalVelocityBatch(std::span<const glm::vec2> points, std::span<glm::vec2> out) const;
+
     /// The rest point under world (x, z) and how the inversion went.
     RestPoint restPoint(float x, float z) const;
     /// Forward map: world position (x, y, z) of rest point (α, β), ripples included.
@@ -134,6 +141,7 @@ private:
     bool step(const Eval& e, float x, float z, glm::vec2& rest, float& residual) const;
     WaterSample finish(const Eval& e, float x, float z, bool ripples = true) const;
     void recordFrame();
+    template <class Finish> void invertBatch(std::span<const glm::vec2> points, Finish&& finish) const;
 
     ocean::GerstnerField m_gerstner;
     const ocean::OceanFftCpu* m_fft = nullptr;

@@ -33,6 +33,7 @@ struct SplashFoamState {
         uint64_t seen = 0;  ///< the last step its entity was met (others are removed: ids are reused)
     };
     std::unordered_map<uint32_t, Trackers> crossings;
+    std::vector<glm::vec2> flowNodes, flowVelocity;  ///< the foam's velocity grid (world x, z; m/s)
 };
 
 // A sphere of water-like density's mass (fish: no Motion), kg.
@@ -56,8 +57,9 @@ void splashFoamSystem(ecs::World& world, const ecs::Tick& tick) {
     auto* patch = world.resource<interaction::RipplePatch>();
     const float dt = float(tick.dt);
     if (!state->foam && state->foamDef.enabled && patch) {
-        const float extent = float(patch->def().resolution) * patch->def().cell_size;
-        state->foam = std::make_unique<foam::FoamMap>(state->foamDef, extent, patch->origin() + glm::vec2(0.5f * extent));
+        const float patchSide = float(patch->def().resolution) * patch->def().cell_size;
+        const float extent = state->foamDef.extent_m > 0.0f ? state->foamDef.extent_m : patchSide;
+        state->foam = std::make_unique<foam::FoamMap>(state->foamDef, extent, patch->origin() + glm::vec2(0.5f * patchSide));
     }
     splash::SplashParticles* drops = state->particles.get();
     foam::FoamMap* foam = state->foam.get();
@@ -152,13 +154,19 @@ void splashFoamSystem(ecs::World& world, const ecs::Tick& tick) {
         if (foam) foam->addLandings(drops->landings());
     }
 
-    // --- foam: whitecaps (first cascade's Jacobian), steep ripples, then transport and decay
+    // --- foam: whitecaps (first cascade's Jacobian), steep ripples, then transport with the
+    // surface's horizontal velocity (the particles' orbital motion, Gerstner and cascades, on
+    // the map's coarse velocity grid) and decay
     if (foam) {
         const ocean::OceanFftCpu& fft = *ocean->cpu;
         const int n = fft.resolution();
         foam->addWhitecaps(std::span(fft.channel(0, ocean::OceanChannel::Jacobian), size_t(n) * size_t(n)), n,
                            float(fft.patchSize(0)), dt);
         if (patch) foam->addRipples(*patch, dt);
+        state->flowNodes = foam->flowNodePositions();
+        state->flowVelocity.resize(state->flowNodes.size());
+        ocean->water->horizontalVelocityBatch(state->flowNodes, state->flowVelocity);
+        foam->setVelocityNodes(state->flowVelocity);
         foam->step(dt);
     }
 }

@@ -20,12 +20,13 @@ class FoamMap;
 namespace ob::game {
 
 /// Creates the splash and foam resource from [splash] and [foam] (nothing when both are off;
-/// no foam without a ripple patch, whose square it covers). seed: [sim] seed.
+/// no foam without a ripple patch, on whose centre it stays; its side is [foam] extent_m, else
+/// the patch's). seed: [sim] seed.
 void addSplashFoam(ecs::World& world, const splash::SplashDef& splash, const foam::FoamDef& foam, uint64_t seed);
 /// Interaction phase, after the ripple step: crossings of every bounding sphere and fish emit
 /// splashes, ship bows spray above [splash] bow_speed, the drops fly and land (stamped into the
 /// ripple patch and the foam), then the foam takes whitecaps, steep ripples and hull wakes,
-/// and steps (still: the ocean's mean surface drift is zero).
+/// and steps with the surface's horizontal velocity (the ocean layers' particle velocity).
 void splashFoamSystem(ecs::World& world, const ecs::Tick& tick);
 /// The live drops (null when [splash] is off).
 const splash::SplashParticles* splashParticles(ecs::World& world);

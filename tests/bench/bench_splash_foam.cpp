@@ -7,8 +7,11 @@
 #include "gfx/gl.h"
 #include "gfx/renderer.h"
 #include "interaction/ripple_patch.h"
+#include "ocean/gerstner.h"
+#include "ocean/ocean_fft_cpu.h"
 #include "platform/platform.h"
 #include "splash/splash_particles.h"
+#include "water/composite_water.h"
 #include "water/water_query.h"
 
 #include <benchmark/benchmark.h>
@@ -56,7 +59,7 @@ BENCHMARK(BM_SplashStep)
     ->UseRealTime();
 
 // One FoamMap::step at N² cells. Args: N, flow (0 still: decay only; 1 uniform; 2 per-cell
-// field), workers. The map is refilled (not timed) now and then so it never turns subnormal.
+// field; 3 per cell from a 32² velocity grid's nodes), workers. The map is refilled (not timed) now and then so it never turns subnormal.
 void BM_FoamStep(benchmark::State& state) {
     const int n = int(state.range(0));
     const int flow = int(state.range(1));
@@ -78,6 +81,15 @@ void BM_FoamStep(benchmark::State& state) {
             uz[c] = -0.3f + 0.3f * std::cos(float(c / size_t(n)) * 0.1f);
         }
     }
+    if (flow == 3) {  // the same field on the default 32² velocity grid (what the sandbox uses)
+        const int m = map.flowNodes(), stride = map.flowStride();
+        std::vector<glm::vec2> nodes(size_t(m) * size_t(m));
+        for (int l = 0; l < m; ++l)
+            for (int k = 0; k < m; ++k)
+                nodes[size_t(l) * size_t(m) + size_t(k)] = glm::vec2(0.8f + 0.3f * std::sin(float(k * stride) * 0.1f),
+                                                                     -0.3f + 0.3f * std::cos(float(l * stride) * 0.1f));
+        map.setVelocityNodes(nodes);
+    }
     map.step(DT);  // warm-up: starts the pool's workers
     int steps = 0;
     for (auto _ : state) {
@@ -95,15 +107,56 @@ void BM_FoamStep(benchmark::State& state) {
 }
 BENCHMARK(BM_FoamStep)
     ->ArgNames({"N", "flow", "workers"})
-    ->ArgsProduct({{256, 512, 1024}, {0, 1, 2}, {1, 2}})
+    ->ArgsProduct({{256, 512, 1024}, {0, 1, 2, 3}, {1, 2}})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
-// The foam sources at N² cells (one thread): 0 whitecaps from a 256² Jacobian tile, 1 steep
-// ripples from a 256² patch, 2 a ship's 6 hull spheres of the wake.
+// The foam's velocity over the default scene's sea (8 Gerstner waves, two 256² cascades of
+// 250 m and 95 m) at the (F + 1)² nodes of the velocity grid of a map 102.4 m across:
+// CompositeWater::horizontalVelocityBatch (rest points by Newton, then the particles'
+// velocities). Args: N, F, workers.
+void BM_FoamVelocity(benchmark::State& state) {
+    const int n = int(state.range(0));
+    ob::setWorkerCount(int(state.range(2)));
+    ob::ocean::OceanDef od;
+    od.resolution = 256;
+    od.patch_size = 250.0f;
+    od.wind_speed = 16.0f;
+    od.wind_direction = {1.0f, 0.6f};
+    od.choppiness = 1.2f;
+    od.cascades = 2;
+    ob::ocean::GerstnerDef gd;
+    gd.count = 8;
+    gd.seed = 7;
+    const std::vector<ob::ocean::GerstnerWave> waves = ob::ocean::resolveWaves(gd, od);
+    ob::ocean::OceanFftCpu fft(od, 1);
+    ob::water::CompositeWater water(waves, od.gravity, &fft);
+    ob::water::primeAt(&fft, water, 10.0);
+    ob::foam::FoamDef def;
+    def.resolution = n;
+    def.flow_resolution = int(state.range(1));
+    ob::foam::FoamMap map(def, 102.4f, glm::vec2(3.0f, -7.0f));
+    const std::vector<glm::vec2> nodes = map.flowNodePositions();
+    std::vector<glm::vec2> velocity(nodes.size());
+    water.horizontalVelocityBatch(nodes, velocity);
+    for (auto _ : state) {
+        water.horizontalVelocityBatch(nodes, velocity);
+        benchmark::DoNotOptimize(velocity.data());
+    }
+    ob::setWorkerCount(0);
+}
+BENCHMARK(BM_FoamVelocity)
+    ->ArgNames({"N", "F", "workers"})
+    ->ArgsProduct({{512}, {16, 32, 64}, {1, 2}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+// The foam sources at N² cells: 0 whitecaps from a 256² Jacobian tile, 1 steep ripples from a
+// 256² patch, 2 a ship's 6 hull spheres of the wake. Args: N, source, workers.
 void BM_FoamSources(benchmark::State& state) {
     const int n = int(state.range(0));
     const int source = int(state.range(1));
+    ob::setWorkerCount(int(state.range(2)));
     ob::foam::FoamDef def;
     def.resolution = n;
     ob::foam::FoamMap map(def, 64.0f);
@@ -119,10 +172,11 @@ void BM_FoamSources(benchmark::State& state) {
             for (int s = 0; s < 6; ++s) map.addWake(glm::vec3(float(s) * 1.5f, 0.0f, 0.0f), glm::vec3(6.0f, 0.0f, 0.0f), 1.75f, DT);
         benchmark::DoNotOptimize(map.coverage().data());
     }
+    ob::setWorkerCount(0);
 }
 BENCHMARK(BM_FoamSources)
-    ->ArgNames({"N", "source"})
-    ->ArgsProduct({{256, 512}, {0, 1, 2}})
+    ->ArgNames({"N", "source", "workers"})
+    ->ArgsProduct({{256, 512}, {0, 1, 2}, {1, 2}})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 

@@ -6,11 +6,13 @@
 #include "foam/foam_map.h"
 #include "interaction/ripple_patch.h"
 #include "splash/splash_particles.h"
+#include "water/composite_water.h"
 
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <random>
 #include <vector>
 
@@ -110,6 +112,88 @@ TEST_CASE("a uniform flow carries a foam blob by v·t (within a cell), by the un
         CHECK(std::abs(at.y - (2.0f + v.y * t)) <= map.cellSize());
         CHECK(map.sample(-2.0f, 2.0f) < 0.01f);
     }
+}
+
+TEST_CASE("a per-cell flow that crosses more than a cell a step moves the blob like the uniform path", "[foam]") {
+    // 0.5 s steps at (1.3, −0.7) m/s on 0.25 m cells: 2.6 and 1.4 cells a step, beyond the
+    // neighbour-only passes; the rows are redone by a general linear interpolation.
+    const glm::vec2 v(1.3f, -0.7f);
+    const float dt = 0.5f;
+    std::vector<float> result[2];
+    for (bool perCell : {false, true}) {
+        FoamDef def = smallDef(128);
+        def.decay_s = 1e4f;
+        FoamMap map(def, 32.0f);
+        blob(map, -2.0f, 2.0f, 0.6f);
+        if (perCell) {
+            std::span<float> ux = map.velocityX(), uz = map.velocityZ();
+            std::fill(ux.begin(), ux.end(), v.x);
+            std::fill(uz.begin(), uz.end(), v.y);
+        } else {
+            map.setUniformVelocity(v);
+        }
+        const glm::dvec2 before = centroid(map);
+        for (int s = 0; s < 6; ++s) map.step(dt);
+        const glm::dvec2 moved = centroid(map) - before;
+        INFO((perCell ? "per-cell" : "uniform") << " path: moved (" << moved.x << ", " << moved.y << ") m, expected ("
+                                                 << v.x * 3.0f << ", " << v.y * 3.0f << ")");
+        CHECK(std::abs(moved.x - v.x * 3.0) < map.cellSize());
+        CHECK(std::abs(moved.y - v.y * 3.0) < map.cellSize());
+        result[perCell].assign(map.coverage().begin(), map.coverage().end());
+    }
+    // Both are the same linear interpolation, per axis or as a bilinear stencil: equal to rounding.
+    double worst = 0.0;
+    for (size_t c = 0; c < result[0].size(); ++c) worst = std::max(worst, double(std::abs(result[0][c] - result[1][c])));
+    CHECK(worst < 1e-5);
+}
+
+TEST_CASE("one Gerstner wave carries a foam blob along its particles' orbit: out by the closed-form excursion, back after a period", "[foam]") {
+    // A wave of λ = 64 m along x (k = 2π/64, ω = sqrt(g·k), T = 2π/ω = 6.4 s), a = 1 m (k·a = 0.1).
+    // Foam moves with the surface particles: the one displaced to x0 at t = 0 has its rest point
+    // α0 = x0 + a·sin(k·α0 − φ) and sits at x(t) = α0 − a·sin(k·α0 − ω·t − φ): the horizontal
+    // part of a circle, closed (no drift), so the blob swings by 2a and comes back after T.
+    // Its coverage centroid follows the particle up to ~1.5·σ²·∂²x/∂x0² (the flow stretches the
+    // blob unevenly): 1.5 · (0.7 m)² · 2a·k² < 1.5 cm for the blob widened by resampling; the
+    // step's velocity is its start's, a phase lag of ω·Δt/2: a·ω·Δt/2 = 0.8 cm.
+    const float k = 2.0f * std::numbers::pi_v<float> / 64.0f, a = 1.0f, phase = 0.3f;
+    const double omega = std::sqrt(9.81 * double(k)), period = 2.0 * std::numbers::pi / omega;
+    const std::vector<ocean::GerstnerWave> waves{{k, 0.0f, a, phase}};
+    water::CompositeWater water(waves, 9.81f);
+    FoamDef def = smallDef(512);
+    def.decay_s = 1e4f;
+    def.flow_resolution = 32;  // nodes every 16 cells (1 m)
+    FoamMap map(def, 32.0f);   // Δ = 0.0625 m
+    const float x0 = 1.0f, z0 = -2.0f, sigma = 0.5f;
+    blob(map, x0, z0, sigma);
+    double alpha0 = x0;  // fixed point of α = x0 + a·sin(kα − φ) (contracts: k·a < 1)
+    for (int it = 0; it < 100; ++it) alpha0 = x0 + a * std::sin(k * alpha0 - phase);
+    const glm::dvec2 start = centroid(map);
+    const std::vector<glm::vec2> nodes = map.flowNodePositions();
+    std::vector<glm::vec2> velocity(nodes.size());
+    const int steps = int(std::lround(period / DT));
+    double worst = 0.0, lo = 1e9, hi = -1e9, worstZ = 0.0;
+    for (int s = 0; s < steps; ++s) {
+        water.update(s * double(DT));
+        water.horizontalVelocityBatch(nodes, velocity);
+        map.setVelocityNodes(velocity);
+        map.step(DT);
+        const double t = (s + 1) * double(DT);
+        const glm::dvec2 at = centroid(map);
+        const double expected = alpha0 - a * std::sin(k * alpha0 - omega * t - phase);
+        worst = std::max(worst, std::abs(at.x - expected));
+        worstZ = std::max(worstZ, std::abs(at.y - start.y));
+        lo = std::min(lo, at.x);
+        hi = std::max(hi, at.x);
+    }
+    const glm::dvec2 end = centroid(map);
+    INFO("start " << start.x << " m, worst |x − orbit| " << worst << " m, swing " << hi - lo << " m (2a = " << 2 * a
+                  << "), after a period " << end.x - start.x << " m (" << steps << " steps of " << DT << " s for T = "
+                  << period << " s), worst z drift " << worstZ << " m");
+    CHECK(std::abs(start.x - x0) < 1e-3);
+    CHECK(worst < 0.03);
+    CHECK(std::abs((hi - lo) - 2 * a) < 0.03);
+    CHECK(std::abs(end.x - start.x) < 0.02);  // closed orbit: back where it started (T is 0.3 steps off a whole number)
+    CHECK(worstZ < 1e-3);                    // the wave runs along x
 }
 
 TEST_CASE("wake foam appears behind a moving hull, along its track, and not in front of it", "[foam]") {
@@ -216,6 +300,10 @@ TEST_CASE("same inputs give bit-identical foam for any worker count", "[foam][de
             map.addWake(glm::vec3(float(s) * 0.1f, 0.0f, 0.0f), glm::vec3(6.0f, 0.0f, 0.0f), 1.0f, DT);
             map.step(DT);
         }
+        std::vector<glm::vec2> nodes = map.flowNodePositions();  // a velocity grid's nodes
+        for (glm::vec2& v : nodes) v = glm::vec2(0.6f * std::sin(v.y * 0.3f), 0.4f * std::cos(v.x * 0.2f));
+        map.setVelocityNodes(nodes);
+        for (int s = 0; s < 60; ++s) map.step(DT);
         map.setUniformVelocity(glm::vec2(0.7f, 0.2f));
         for (int s = 0; s < 60; ++s) map.step(DT);
         setWorkerCount(0);

@@ -262,7 +262,7 @@ TEST_CASE("[splash] and [foam] load with defaults, take every key, and reject un
                                   "drop_size = 0.002\nmin_speed = 0.5\nmax_life = 4.0\nbow_speed = 2.5\nripple_energy = 0.1\n"
                                   "[foam]\nenabled = false\nresolution = 512\ndecay_s = 3.0\nwhitecap_weight = 1.0\n"
                                   "whitecap_jacobian = 0.3\nripple_weight = 2.0\nripple_slope = 0.4\nsplash_weight = 0.5\n"
-                                  "wake_weight = 0.6\n",
+                                  "wake_weight = 0.6\nextent_m = 102.4\nflow_resolution = 64\n",
                                   "full.toml", {"foam.decay_s=9"});
     CHECK_FALSE(s.splash.enabled);
     CHECK(s.splash.max_particles == 5000);
@@ -272,9 +272,14 @@ TEST_CASE("[splash] and [foam] load with defaults, take every key, and reject un
     CHECK(s.foam.resolution == 512);
     CHECK(s.foam.decay_s == 9.0f);
     CHECK(s.foam.wake_weight == 0.6f);
+    CHECK(s.foam.extent_m == 102.4f);
+    CHECK(s.foam.flow_resolution == 64);
+    CHECK(d.foam.extent_m == 0.0f);  // the ripple patch's side
     CHECK(sceneError("[splash]\nspray = 1\n") == "bad.toml:2:1: splash.spray: unknown key");
     CHECK(sceneError("[foam]\ndecay = 1\n") == "bad.toml:2:1: foam.decay: unknown key");
     CHECK(sceneError("[foam]\nresolution = 300\n").find("foam.resolution") != std::string::npos);
+    CHECK(sceneError("[foam]\nflow_resolution = 24\n").find("foam.flow_resolution") != std::string::npos);
+    CHECK(sceneError("[foam]\nextent_m = -1\n").find("foam.extent_m") != std::string::npos);
     CHECK(sceneError("[foam]\ndecay_s = 0\n").find("foam.decay_s") != std::string::npos);
     CHECK(sceneError("[splash]\ndrag = -1\n").find("splash.drag") != std::string::npos);
 }

@@ -10,6 +10,7 @@
 #include "water/composite_water.h"
 
 #include <catch2/catch.hpp>
+#include <glm/glm.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -427,4 +428,62 @@ TEST_CASE("dump surface: [K, 2] world points in, [K, 5] = (height, nx, ny, nz, v
     writeNpy(pointsPath, {0, 2}, nullptr);
     REQUIRE(game::dumpSurface(water, pointsPath, outPath) == 0);
     CHECK(readNpy(outPath).shape == std::vector<size_t>{0, 5});
+}
+
+TEST_CASE("Horizontal velocity is the particle's ∂(x, z)/∂t: differences in time of its displaced position, Gerstner (closed form too), FFT and both", "[water][foam]") {
+    const ocean::OceanDef def = smallOcean();
+    struct Case {
+        const char* name;
+        bool gerstner, fft;
+    };
+    for (const Case c : {Case{"Gerstner", true, false}, Case{"FFT", false, true}, Case{"both", true, true}}) {
+        ocean::OceanFftCpu fft(def, 1);
+        CompositeSettings settings;
+        settings.tolerance = 1e-6f;
+        settings.maxIterations = 32;
+        const std::vector<GerstnerWave> waves = c.gerstner ? SEED002_FIRST8 : std::vector<GerstnerWave>{};
+        CompositeWater water(waves, GF, c.fft ? &fft : nullptr, settings);
+        const double t = 7.0, dt = 0.01;
+        primeAt(c.fft ? &fft : nullptr, water, t);
+        std::vector<glm::vec2> points;
+        for (int k = 0; k < 60; ++k) points.push_back({-30.0f + 1.37f * k, 12.0f - 0.61f * k});
+        std::vector<glm::vec2> velocity(points.size());
+        water.horizontalVelocityBatch(points, velocity);
+        std::vector<glm::vec2> rests;
+        double closedForm = 0.0;
+        for (size_t k = 0; k < points.size(); ++k) {
+            rests.push_back(water.restPoint(points[k].x, points[k].y).rest);
+            if (!c.fft) {  // Σ K̂·a·ω·cos θ at the rest point (SPEC §2.2 differentiated in t)
+                glm::dvec2 v(0.0);
+                for (const GerstnerWave& w : waves) {
+                    const double kk = std::hypot(double(w.kx), double(w.kz)), omega = std::sqrt(G * kk);
+                    const double theta = w.kx * rests[k].x + w.kz * rests[k].y - omega * t - w.phase;
+                    v += glm::dvec2(w.kx, w.kz) / kk * double(w.amplitude) * omega * std::cos(theta);
+                }
+                closedForm = std::max(closedForm, glm::length(v - glm::dvec2(velocity[k])));
+            }
+        }
+        // The particle at each rest point, a little before and after: its displaced (x, z).
+        const auto positions = [&](double time) {
+            if (c.fft) fft.update(time);
+            water.update(time);
+            std::vector<glm::dvec2> p;
+            for (const glm::vec2 r : rests) {
+                const glm::vec3 q = water.displace(r.x, r.y);
+                p.push_back(glm::dvec2(q.x, q.z));
+            }
+            return p;
+        };
+        const std::vector<glm::dvec2> ahead = positions(t + dt), behind = positions(t - dt);
+        double worst = 0.0, scale = 0.0;
+        for (size_t k = 0; k < points.size(); ++k) {
+            const glm::dvec2 fd = (ahead[k] - behind[k]) / (2 * dt);
+            worst = std::max(worst, glm::length(fd - glm::dvec2(velocity[k])));
+            scale = std::max(scale, double(glm::length(velocity[k])));
+        }
+        INFO(c.name << ": max |u| " << scale << " m/s, worst |u − FD| " << worst << " m/s, worst |u − closed form| " << closedForm);
+        CHECK(scale > 0.1);
+        CHECK(worst < 0.01 * scale + 5e-4);  // FFT rates: 3-point backward differences, (ω·Δt)²/3
+        CHECK(closedForm < 1e-4 * scale + 1e-5);
+    }
 }
