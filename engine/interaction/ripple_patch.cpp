@@ -49,7 +49,7 @@ bool RipplePatch::useGpu() {
 
 void RipplePatch::step(float dt) {
     if (m_ewave) {
-        for (const EWaveSource& s : m_sources) m_ewave->addSource(s.gx, s.gz, s.radiusCells, s.accel, dt);
+        m_ewave->addSources(m_sources, dt);
         if (!m_ewaveGpu) {
             m_sources.clear();
             m_ewave->step(dt);
