@@ -6,6 +6,7 @@
 #include "core/error.h"
 #include "core/parallel.h"
 #include "core/simd.h"
+#include "core/thread_choice.h"
 #include "interaction/ripple_field.h"
 #include "ocean/fftw_wisdom.h"
 
@@ -21,9 +22,9 @@ namespace ob::interaction {
 
 namespace {
 
-// The two transforms of a stage run on two workers from this many cells on; below it, waking
-// a worker costs more than half the transforms (the ocean measured the same for N < 256).
-constexpr size_t PARALLEL_MIN_CELLS = 256 * 256;
+// The two transforms of a stage may run on two workers (measured: chooseThreads) from this
+// many cells on; below it, waking a worker costs more than half the transforms.
+constexpr size_t PARALLEL_MIN_CELLS = 128 * 128;
 // Sources are split over the workers in row bands from this many cells of footprint on (a
 // hundred SR-20 spheres; a band's hand-off costs about as much as a few thousand cells).
 constexpr size_t PARALLEL_MIN_SOURCE_CELLS = 1 << 17;
@@ -100,6 +101,33 @@ EWaveField::EWaveField(int rows, int cols, float cellSize, EWaveBoundary boundar
     if (boundary == EWaveBoundary::Absorbing) m_spongeWidth = std::clamp(spongeWidth, 1, std::min(rows, cols) / 2);
     m_coef[0].resize(2 * m_modes);
     m_coef[1].resize(2 * m_modes);
+    chooseThreads();
+}
+
+// Both choices measured on this field while it is still 0 (a step of zeros costs what any step
+// costs and leaves zeros; the sources' velocity is cleared after), kept per size.
+void EWaveField::chooseThreads() {
+    const std::string size = std::to_string(m_rows) + "x" + std::to_string(m_cols);
+    if (m_cells >= PARALLEL_MIN_CELLS) {
+        const float dt = 1.0f / 60.0f;
+        m_stepThreads = measuredThreads("ewave step " + size, std::min(2, workerCount()), [&](int n) {
+            m_stepThreads = n;
+            step(dt);
+        });
+        m_preparedDt = -1.0f;
+    }
+    // Sources of 20 cells (or a quarter of the field) in a lattice, PARALLEL_MIN_SOURCE_CELLS of
+    // footprint in all: the smallest batch the bands are split for.
+    const float r = std::min(20.0f, float(std::min(m_rows, m_cols)) / 4.0f);
+    const size_t count = PARALLEL_MIN_SOURCE_CELLS / size_t((2.0f * r + 1.0f) * (2.0f * r + 1.0f)) + 1;
+    std::vector<EWaveSource> batch(count);
+    for (size_t i = 0; i < count; ++i)
+        batch[i] = {float((i * 37) % size_t(m_cols)), float((i * 61) % size_t(m_rows)), r, 1.0f};
+    m_sourceThreads = measuredThreads("ewave sources " + size, workerCount(), [&](int n) {
+        m_sourceThreads = n;
+        addSources(batch, 1.0f / 60.0f);
+    });
+    std::fill(m_v, m_v + m_cells, 0.0);
 }
 
 EWaveField::~EWaveField() {
@@ -196,7 +224,7 @@ void EWaveField::prepare(float dt) {
 void EWaveField::step(float dt) {
     assert(dt > 0.0f);
     if (dt != m_preparedDt) prepare(dt);
-    const int pairChunk = m_cells >= PARALLEL_MIN_CELLS ? 1 : 2;  // 2: both on the calling thread
+    const int pairChunk = m_stepThreads > 1 ? 1 : 2;  // 2: both on the calling thread
     // --- forward transforms of h and v, each whole on one worker
     parallelFor(0, 2, pairChunk, [&](int b, int e) {
         for (int t = b; t < e; ++t) forward(t);
@@ -288,7 +316,7 @@ void EWaveField::addSources(std::span<const EWaveSource> sources, float dt) {
         const double r = std::max(s.radiusCells, 1.0f);
         work += size_t(2.0 * r + 1.0) * size_t(2.0 * r + 1.0);
     }
-    const int minRows = work >= PARALLEL_MIN_SOURCE_CELLS ? std::max(1, m_rows / 16) : m_rows;
+    const int minRows = m_sourceThreads > 1 && work >= PARALLEL_MIN_SOURCE_CELLS ? std::max(1, m_rows / 16) : m_rows;
     parallelFor(0, m_rows, minRows, [&](int band0, int band1) {
         thread_local std::vector<double> dx2;
         dx2.resize(size_t(m_cols));

@@ -35,7 +35,8 @@ struct EWaveSource;
 /// dumps and the WaterQuery.
 ///
 /// Step (dt seconds): forward real-to-complex transforms of h and v (FFTW, float, each whole
-/// on one worker, so both cores work and the bits do not depend on the split), per mode
+/// on one worker, so both cores work and the bits do not depend on the split; whether two
+/// workers pay is measured per size when the field is made, measuredThreads), per mode
 ///   Δĥ = (a − 1)·ĥ + b·v̂,  Δv̂ = c·ĥ + (a − 1)·v̂  (double; a, b, c of modeStep)
 /// then per field: the inverse transform of its change added to it, and the boundary in real
 /// space.
@@ -88,7 +89,8 @@ public:
     /// R = radiusCells (>= 1 used). accel in m/s²; cells outside the field are skipped.
     void addSource(float gx, float gz, float radiusCells, float accel, float dt);
     /// addSource for each of `sources` in order (the same sum; row bands on the workers when
-    /// there are many: the bits do not depend on the split).
+    /// there are many and that was measured to pay for this size: the bits do not depend on
+    /// the split).
     void addSources(std::span<const EWaveSource> sources, float dt);
 
     /// Moves the patch by (dx, dz) whole cells: the value at (x+dx, z+dz) moves to (x, z) in h
@@ -122,6 +124,7 @@ public:
     float velocityAt(int x, int z) const { return float(m_v[size_t(z) * size_t(m_cols) + size_t(x)]); }
 
 private:
+    void chooseThreads();
     void prepare(float dt);
     void forward(int t);
     void backward(int t);
@@ -134,6 +137,8 @@ private:
     int m_spongeWidth = 0;
     float m_decayTime = 0.0f, m_viscosity = 0.0f;
     float m_preparedDt = -1.0f;        // dt of the coefficients below (and the sponge factors)
+    int m_stepThreads = 1;             // the step's transforms on 1 or 2 workers (measured, chooseThreads)
+    int m_sourceThreads = 1;           // addSources' row bands on 1 or workerCount() workers (measured)
     double* m_h = nullptr;             // fftw_alloc'd real arrays, rows·cols
     double* m_v = nullptr;
     float* m_real[2] = {};             // per field (h, v): the state in float, then its change; rows·cols
