@@ -1,9 +1,12 @@
 // Dispersive ripple field: exact per-mode rotation of (ĥ, v̂) with FFTW real-to-complex
-// transforms (SPEC §2.5b; Tessendorf, "eWave", 2014), then the boundary in real space.
+// transforms of the step's change (SPEC §2.5b; Tessendorf, "eWave", 2014), then the boundary
+// in real space.
 #include "interaction/ewave_field.h"
 
 #include "core/error.h"
 #include "core/parallel.h"
+#include "core/simd.h"
+#include "core/thread_choice.h"
 #include "interaction/ripple_field.h"
 #include "ocean/fftw_wisdom.h"
 
@@ -19,11 +22,12 @@ namespace ob::interaction {
 
 namespace {
 
-// Spectrum rows per parallel chunk: a chunk of fewer modes costs more to hand out than it saves.
-constexpr int MIN_MODES_PER_CHUNK = 16384;
-// The two transforms of a stage run on two workers from this many cells on; below it, waking
-// a worker costs more than half the transforms (the ocean measured the same for N < 256).
-constexpr size_t PARALLEL_MIN_CELLS = 256 * 256;
+// The two transforms of a stage may run on two workers (measured: chooseThreads) from this
+// many cells on; below it, waking a worker costs more than half the transforms.
+constexpr size_t PARALLEL_MIN_CELLS = 128 * 128;
+// Sources are split over the workers in row bands from this many cells of footprint on (a
+// hundred SR-20 spheres; a band's hand-off costs about as much as a few thousand cells).
+constexpr size_t PARALLEL_MIN_SOURCE_CELLS = 1 << 17;
 // Cap of a source's stagnation-pressure term, in g (see ewaveSource).
 constexpr float MAX_DYNAMIC_G = 15.0f;
 
@@ -32,6 +36,39 @@ double* allocReal(size_t n) {
     if (!p) throw RuntimeError("out of memory for the ewave ripple field");
     std::memset(p, 0, n * sizeof(double));
     return p;
+}
+
+// FFTW's allocation, so every array has the alignment the plans were made for.
+float* allocFloat(size_t n) {
+    float* p = fftwf_alloc_real(n);
+    if (!p) throw RuntimeError("out of memory for the ewave ripple field");
+    std::memset(p, 0, n * sizeof(float));
+    return p;
+}
+
+// state → float for the forward transform.
+OB_VECTOR_KERNEL void toFloatKernel(float* __restrict out, const double* __restrict f, size_t n) {
+    for (size_t i = 0; i < n; ++i) out[i] = float(f[i]);
+}
+
+// One field's change per mode, in double: out = ch·ĥ + cv·v̂ with (ch, cv) = coef[2m], coef[2m + 1].
+OB_VECTOR_KERNEL void changeKernel(float* __restrict out, const float* __restrict hs, const float* __restrict vs,
+                                   const double* __restrict coef, size_t modes) {
+    for (size_t m = 0; m < modes; ++m) {
+        const double ch = coef[2 * m], cv = coef[2 * m + 1];
+        out[2 * m] = float(ch * double(hs[2 * m]) + cv * double(vs[2 * m]));
+        out[2 * m + 1] = float(ch * double(hs[2 * m + 1]) + cv * double(vs[2 * m + 1]));
+    }
+}
+
+// f += change.
+OB_VECTOR_KERNEL void addKernel(double* __restrict f, const float* __restrict change, int n) {
+    for (int i = 0; i < n; ++i) f[i] += double(change[i]);
+}
+
+// f *= factor (the sponge).
+OB_VECTOR_KERNEL void scaleKernel(double* __restrict f, const float* __restrict factor, int n) {
+    for (int i = 0; i < n; ++i) f[i] *= double(factor[i]);
 }
 
 } // namespace
@@ -44,33 +81,68 @@ EWaveField::EWaveField(int rows, int cols, float cellSize, EWaveBoundary boundar
     assert(rows >= 2 && cols >= 2 && cellSize > 0.0f);
     m_h = allocReal(m_cells);
     m_v = allocReal(m_cells);
-    m_hSpec = allocReal(2 * m_modes);
-    m_vSpec = allocReal(2 * m_modes);
+    for (int t = 0; t < 2; ++t) {
+        m_real[t] = allocFloat(m_cells);
+        m_spec[t] = allocFloat(2 * m_modes);
+        m_change[t] = allocFloat(2 * m_modes);
+    }
     // Planning may overwrite the arrays (FFTW_MEASURE): they hold nothing yet.
-    auto* spec = reinterpret_cast<fftw_complex*>(m_hSpec);
-    m_forward = ocean::planWithWisdomDouble(
-        [&](unsigned flags) { return fftw_plan_dft_r2c_2d(rows, cols, m_h, spec, flags); });
-    m_backward = ocean::planWithWisdomDouble(
-        [&](unsigned flags) { return fftw_plan_dft_c2r_2d(rows, cols, spec, m_h, flags); });
+    // The forward transform may overwrite its input: m_real holds a float copy of the state.
+    m_forward = ocean::planWithWisdom([&](unsigned flags) {
+        return fftwf_plan_dft_r2c_2d(rows, cols, m_real[0], reinterpret_cast<fftwf_complex*>(m_spec[0]),
+                                     flags | FFTW_DESTROY_INPUT);
+    });
+    m_backward = ocean::planWithWisdom([&](unsigned flags) {
+        return fftwf_plan_dft_c2r_2d(rows, cols, reinterpret_cast<fftwf_complex*>(m_change[0]), m_real[0], flags);
+    });
     if (!m_forward || !m_backward)
         throw RuntimeError("FFTW could not plan a " + std::to_string(rows) + "×" + std::to_string(cols) + " transform");
-    std::memset(m_h, 0, m_cells * sizeof(double));
-    std::memset(m_hSpec, 0, 2 * m_modes * sizeof(double));
     m_hFloat.assign(m_cells, 0.0f);
     if (boundary == EWaveBoundary::Absorbing) m_spongeWidth = std::clamp(spongeWidth, 1, std::min(rows, cols) / 2);
-    m_coef.resize(3 * m_modes);
+    m_coef[0].resize(2 * m_modes);
+    m_coef[1].resize(2 * m_modes);
+    chooseThreads();
+}
+
+// Both choices measured on this field while it is still 0 (a step of zeros costs what any step
+// costs and leaves zeros; the sources' velocity is cleared after), kept per size.
+void EWaveField::chooseThreads() {
+    const std::string size = std::to_string(m_rows) + "x" + std::to_string(m_cols);
+    if (m_cells >= PARALLEL_MIN_CELLS) {
+        const float dt = 1.0f / 60.0f;
+        m_stepThreads = measuredThreads("ewave step " + size, std::min(2, workerCount()), [&](int n) {
+            m_stepThreads = n;
+            step(dt);
+        });
+        m_preparedDt = -1.0f;
+    }
+    // Sources of 20 cells (or a quarter of the field) in a lattice, PARALLEL_MIN_SOURCE_CELLS of
+    // footprint in all: the smallest batch the bands are split for.
+    const float r = std::min(20.0f, float(std::min(m_rows, m_cols)) / 4.0f);
+    const size_t count = PARALLEL_MIN_SOURCE_CELLS / size_t((2.0f * r + 1.0f) * (2.0f * r + 1.0f)) + 1;
+    std::vector<EWaveSource> batch(count);
+    for (size_t i = 0; i < count; ++i)
+        batch[i] = {float((i * 37) % size_t(m_cols)), float((i * 61) % size_t(m_rows)), r, 1.0f};
+    m_sourceThreads = measuredThreads("ewave sources " + size, workerCount(), [&](int n) {
+        m_sourceThreads = n;
+        addSources(batch, 1.0f / 60.0f);
+    });
+    std::fill(m_v, m_v + m_cells, 0.0);
 }
 
 EWaveField::~EWaveField() {
     {
         std::lock_guard<std::mutex> lock(ocean::fftwPlannerMutex());
-        if (m_forward) fftw_destroy_plan(m_forward);
-        if (m_backward) fftw_destroy_plan(m_backward);
+        if (m_forward) fftwf_destroy_plan(m_forward);
+        if (m_backward) fftwf_destroy_plan(m_backward);
     }
     fftw_free(m_h);
     fftw_free(m_v);
-    fftw_free(m_hSpec);
-    fftw_free(m_vSpec);
+    for (int t = 0; t < 2; ++t) {
+        fftwf_free(m_real[t]);
+        fftwf_free(m_spec[t]);
+        fftwf_free(m_change[t]);
+    }
 }
 
 void EWaveField::setDamping(float decayTime, float viscosity) {
@@ -89,6 +161,17 @@ EWaveField::ModeStep EWaveField::modeStep(double k, float dt, float decayTime, f
     const double w = omega(k);
     const double cs = std::cos(w * dtd), sn = std::sin(w * dtd);
     return {d * cs, d * sn / w, -d * w * sn};
+}
+
+// d·cos θ − 1 = (d − 1)·cos θ − 2·sin²(θ/2): no cancellation for the small θ and 1 − d of
+// long waves, whose change is the whole point.
+double EWaveField::modeStepMinusOne(double k, float dt, float decayTime, float viscosity, double scale) {
+    const double dtd = dt;
+    const double rate = decayTime > 0.0f ? 1.0 / double(decayTime) : 0.0;
+    const double dm1 = std::expm1(-(rate + 2.0 * double(viscosity) * k * k) * dtd);
+    if (k == 0.0) return dm1 * scale;
+    const double half = std::sin(0.5 * omega(k) * dtd);
+    return (dm1 * std::cos(omega(k) * dtd) - 2.0 * half * half) * scale;
 }
 
 // Sponge: friction γ = SPONGE_MAX_RATE·(1 − s_row·s_col) with RippleField's sin² profile s
@@ -110,9 +193,10 @@ std::vector<float> EWaveField::spongeFactors(int rows, int cols, int spongeWidth
     return sponge;
 }
 
-// Per mode (row j, column i of the r2c spectrum) the rotation by ωΔt times the damping and
-// FFTW's 1/(rows·cols) (a power of two for power-of-two sides: exact). The sponge factors
-// depend on Δt too: both are rebuilt when Δt or the damping changes.
+// Per mode (row j, column i of the r2c spectrum) the change's coefficients a − 1, b, c (the
+// rotation by ωΔt times the damping, less the identity) times FFTW's 1/(rows·cols) (a power of
+// two for power-of-two sides: exact). The sponge factors depend on Δt too: both are rebuilt
+// when Δt or the damping changes.
 void EWaveField::prepare(float dt) {
     const double norm = 1.0 / (double(m_rows) * double(m_cols));
     const double twoPi = 2.0 * std::numbers::pi;
@@ -122,11 +206,14 @@ void EWaveField::prepare(float dt) {
         const double kz = twoPi * jj / lz;
         for (int i = 0; i < m_specCols; ++i) {
             const double kx = twoPi * i / lx;
-            const ModeStep s = modeStep(std::sqrt(kx * kx + kz * kz), dt, m_decayTime, m_viscosity, norm);
-            double* c = &m_coef[3 * (size_t(j) * size_t(m_specCols) + size_t(i))];
-            c[0] = s.a;
-            c[1] = s.b;
-            c[2] = s.c;
+            const double k = std::sqrt(kx * kx + kz * kz);
+            const ModeStep s = modeStep(k, dt, m_decayTime, m_viscosity, norm);
+            const double am1 = modeStepMinusOne(k, dt, m_decayTime, m_viscosity, norm);
+            const size_t m = size_t(j) * size_t(m_specCols) + size_t(i);
+            m_coef[0][2 * m] = am1;  // Δĥ = (a − 1)·ĥ + b·v̂
+            m_coef[0][2 * m + 1] = s.b;
+            m_coef[1][2 * m] = s.c;  // Δv̂ = c·ĥ + (a − 1)·v̂
+            m_coef[1][2 * m + 1] = am1;
         }
     }
     m_sponge.clear();
@@ -137,95 +224,116 @@ void EWaveField::prepare(float dt) {
 void EWaveField::step(float dt) {
     assert(dt > 0.0f);
     if (dt != m_preparedDt) prepare(dt);
-    double* const real[2] = {m_h, m_v};
-    double* const spec[2] = {m_hSpec, m_vSpec};
-    const int pairChunk = m_cells >= PARALLEL_MIN_CELLS ? 1 : 2;  // 2: both on the calling thread
-    // --- forward transforms, h and v each whole on one worker
+    const int pairChunk = m_stepThreads > 1 ? 1 : 2;  // 2: both on the calling thread
+    // --- forward transforms of h and v, each whole on one worker
     parallelFor(0, 2, pairChunk, [&](int b, int e) {
-        for (int t = b; t < e; ++t) fftw_execute_dft_r2c(m_forward, real[t], reinterpret_cast<fftw_complex*>(spec[t]));
+        for (int t = b; t < e; ++t) forward(t);
     });
-    // --- every mode rotated by ωΔt and damped
-    const int minRows = std::max(1, MIN_MODES_PER_CHUNK / m_specCols);
-    parallelFor(0, m_rows, minRows, [&](int j0, int j1) {
-        const size_t m0 = size_t(j0) * size_t(m_specCols), m1 = size_t(j1) * size_t(m_specCols);
-        double* __restrict hs = m_hSpec;
-        double* __restrict vs = m_vSpec;
-        const double* __restrict c = m_coef.data();
-        for (size_t m = m0; m < m1; ++m) {
-            const double a = c[3 * m], b = c[3 * m + 1], g = c[3 * m + 2];
-            const double hr = hs[2 * m], hi = hs[2 * m + 1], vr = vs[2 * m], vi = vs[2 * m + 1];
-            hs[2 * m] = a * hr + b * vr;
-            hs[2 * m + 1] = a * hi + b * vi;
-            vs[2 * m] = g * hr + a * vr;
-            vs[2 * m + 1] = g * hi + a * vi;
-        }
-    });
-    // --- inverse transforms (normalised by the coefficients)
+    // --- per field (both spectra read, its own written): the change of every mode, its inverse
+    //     transform added to the field, the boundary, h's float copy
     parallelFor(0, 2, pairChunk, [&](int b, int e) {
-        for (int t = b; t < e; ++t) fftw_execute_dft_c2r(m_backward, reinterpret_cast<fftw_complex*>(spec[t]), real[t]);
+        for (int t = b; t < e; ++t) backward(t);
     });
-    applyBoundary();
-    syncHeight();
 }
 
-void EWaveField::syncHeight() {
-    for (size_t i = 0; i < m_cells; ++i) m_hFloat[i] = float(m_h[i]);
+// Field t (0: h, 1: v) in float, transformed into m_spec[t].
+void EWaveField::forward(int t) {
+    toFloatKernel(m_real[t], t == 0 ? m_h : m_v, m_cells);
+    fftwf_execute_dft_r2c(m_forward, m_real[t], reinterpret_cast<fftwf_complex*>(m_spec[t]));
 }
 
-void EWaveField::applyBoundary() {
-    const int rows = m_rows, cols = m_cols;
-    switch (m_boundary) {
-    case EWaveBoundary::Periodic:
-        return;
-    case EWaveBoundary::Fixed:
-        for (double* f : {m_h, m_v}) {
-            std::fill(f, f + cols, 0.0);
-            std::fill(f + size_t(rows - 1) * size_t(cols), f + m_cells, 0.0);
-            for (int z = 0; z < rows; ++z) {
-                f[size_t(z) * size_t(cols)] = 0.0;
-                f[size_t(z) * size_t(cols) + size_t(cols - 1)] = 0.0;
-            }
-        }
-        return;
-    case EWaveBoundary::Absorbing: {
-        // Only the band: rows in it whole, the other rows at their two ends.
-        const int w = m_spongeWidth;
-        auto scale = [&](size_t a, size_t b) {
-            for (size_t i = a; i < b; ++i) {
-                m_h[i] *= m_sponge[i];
-                m_v[i] *= m_sponge[i];
-            }
-        };
-        for (int z = 0; z < rows; ++z) {
-            const size_t row = size_t(z) * size_t(cols);
-            if (z < w || z >= rows - w) {
-                scale(row, row + size_t(cols));
+// Field t's change per mode, Δĥ = (a − 1)·ĥ + b·v̂ or Δv̂ = c·ĥ + (a − 1)·v̂ (normalised, in
+// double), its inverse transform, then added to the field.
+void EWaveField::backward(int t) {
+    changeKernel(m_change[t], m_spec[0], m_spec[1], m_coef[t].data(), m_modes);
+    fftwf_execute_dft_c2r(m_backward, reinterpret_cast<fftwf_complex*>(m_change[t]), m_real[t]);
+    finishRows(t == 0 ? m_h : m_v, m_real[t], 0, m_rows);
+}
+
+// Rows [z0, z1) of field f (m_h or m_v): the change added, then the boundary (Fixed: the outer
+// ring 0; Absorbing: the band scaled by the sponge factors), then, for h, its float copy.
+void EWaveField::finishRows(double* f, const float* change, int z0, int z1) {
+    const int rows = m_rows, cols = m_cols, w = m_spongeWidth;
+    for (int z = z0; z < z1; ++z) {
+        const size_t row = size_t(z) * size_t(cols);
+        double* fr = f + row;
+        addKernel(fr, change + row, cols);
+        switch (m_boundary) {
+        case EWaveBoundary::Periodic:
+            break;
+        case EWaveBoundary::Fixed:
+            if (z == 0 || z == rows - 1) {
+                std::fill(fr, fr + cols, 0.0);
             } else {
-                scale(row, row + size_t(w));
-                scale(row + size_t(cols - w), row + size_t(cols));
+                fr[0] = 0.0;
+                fr[cols - 1] = 0.0;
             }
+            break;
+        case EWaveBoundary::Absorbing:
+            // Only the band: rows in it whole, the other rows at their two ends.
+            if (z < w || z >= rows - w) {
+                scaleKernel(fr, m_sponge.data() + row, cols);
+            } else {
+                scaleKernel(fr, m_sponge.data() + row, w);
+                scaleKernel(fr + (cols - w), m_sponge.data() + row + size_t(cols - w), w);
+            }
+            break;
         }
-        return;
+        if (f == m_h) toFloatKernel(m_hFloat.data() + row, fr, size_t(cols));
     }
+}
+
+void EWaveField::syncHeight() { toFloatKernel(m_hFloat.data(), m_h, m_cells); }
+
+// One source over `rows` rows of n cells from v (row stride `stride`): per row q = 1 −
+// dz²/R² (dz = dz0 + row, exact), then v[x] += amount·max(0, q − dx2[x])², 0 outside the disc.
+OB_VECTOR_KERNEL static void sourceKernel(double* __restrict v, size_t stride, int rows, double dz0, double invR2,
+                                          const double* __restrict dx2, int n, double amount) {
+    for (int r = 0; r < rows; ++r, v += stride) {
+        const double dz = dz0 + double(r);
+        const double q = 1.0 - dz * dz * invR2;
+        if (q <= 0.0) continue;
+        for (int x = 0; x < n; ++x) {
+            const double w = std::max(0.0, q - dx2[x]);  // 1 − r²/R²
+            v[x] += amount * w * w;
+        }
     }
 }
 
 void EWaveField::addSource(float gx, float gz, float radiusCells, float accel, float dt) {
-    const float r = std::max(radiusCells, 1.0f);
-    const int x0 = std::max(0, int(std::ceil(gx - r))), x1 = std::min(m_cols - 1, int(std::floor(gx + r)));
-    const int z0 = std::max(0, int(std::ceil(gz - r))), z1 = std::min(m_rows - 1, int(std::floor(gz + r)));
-    const double amount = double(accel) * double(dt);
-    const double invR2 = 1.0 / (double(r) * double(r));
-    for (int z = z0; z <= z1; ++z) {
-        const double dz = double(z) - gz;
-        const double dz2 = dz * dz * invR2;
-        double* __restrict v = m_v + size_t(z) * size_t(m_cols);
-        for (int x = x0; x <= x1; ++x) {
-            const double dx = double(x) - gx;
-            const double q = std::max(0.0, 1.0 - (dx * dx * invR2 + dz2));  // 1 − r²/R², 0 outside
-            v[x] += amount * q * q;
-        }
+    const EWaveSource s{gx, gz, radiusCells, accel};
+    addSources({&s, 1}, dt);
+}
+
+// Row bands [z0, z1) of the field on the workers, each applying every source's rows in it in
+// list order: a cell receives its sources in the same order whatever the split, so the bits do
+// not depend on it. Per source the column terms (x − gx)²/R² are computed once, then per row
+// q = 1 − (z − gz)²/R² and v += amount·max(0, q − (x − gx)²/R²)² over the bounding square
+// (the corners cost less as multiply-adds than finding the disc's ends per row).
+void EWaveField::addSources(std::span<const EWaveSource> sources, float dt) {
+    size_t work = 0;  // cells in the sources' bounding squares
+    for (const EWaveSource& s : sources) {
+        const double r = std::max(s.radiusCells, 1.0f);
+        work += size_t(2.0 * r + 1.0) * size_t(2.0 * r + 1.0);
     }
+    const int minRows = m_sourceThreads > 1 && work >= PARALLEL_MIN_SOURCE_CELLS ? std::max(1, m_rows / 16) : m_rows;
+    parallelFor(0, m_rows, minRows, [&](int band0, int band1) {
+        thread_local std::vector<double> dx2;
+        dx2.resize(size_t(m_cols));
+        for (const EWaveSource& s : sources) {
+            const float r = std::max(s.radiusCells, 1.0f);
+            const int z0 = std::max(band0, int(std::ceil(s.gz - r))), z1 = std::min(band1 - 1, int(std::floor(s.gz + r)));
+            const int x0 = std::max(0, int(std::ceil(s.gx - r))), x1 = std::min(m_cols - 1, int(std::floor(s.gx + r)));
+            if (z0 > z1 || x0 > x1) continue;
+            const double invR2 = 1.0 / (double(r) * double(r));
+            for (int x = x0; x <= x1; ++x) {
+                const double dx = double(x) - s.gx;
+                dx2[size_t(x - x0)] = dx * dx * invR2;
+            }
+            sourceKernel(m_v + size_t(z0) * size_t(m_cols) + size_t(x0), size_t(m_cols), z1 - z0 + 1, double(z0) - s.gz, invR2,
+                         dx2.data(), x1 - x0 + 1, double(s.accel) * double(dt));
+        }
+    });
 }
 
 void EWaveField::scroll(int dx, int dz) {

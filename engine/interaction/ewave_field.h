@@ -8,7 +8,7 @@
 #include <span>
 #include <vector>
 
-struct fftw_plan_s;
+struct fftwf_plan_s;
 
 namespace ob::interaction {
 
@@ -19,17 +19,26 @@ enum class EWaveBoundary {
     Absorbing,  ///< a sponge band damps h and v in real space, so waves do not wrap around
 };
 
+struct EWaveSource;
+
 /// The dispersive ripple field: state (h, v) stepped exactly per Fourier mode.
 ///
-/// State and transforms in double precision: float FFTs change a mode's energy by about 1e-7
-/// a step (their rounded twiddle factors do not have modulus 1 exactly), 1e-3 over 10,000
-/// steps; double ones keep it to 1e-5 (SPEC §2.5b's energy test). height() is a float copy of
-/// h, made after each step, for the renderer, dumps and the WaterQuery.
+/// State in double precision, transforms in float, applied to the step's change only: a step
+/// adds to (h, v) the inverse transform of (R − 1)·(ĥ, v̂), R the mode's rotation and damping
+/// (in double) and 1 the identity, rather than replacing them with the inverse transform of
+/// R·(ĥ, v̂). Float transforms have a fixed gain error per mode of about 1e-7 (their rounded
+/// twiddle factors are not of modulus 1 exactly); replacing the state, it repeats every step
+/// and the energy drifts by 1.2e-3 over 10,000 steps (measured); on the change, which is
+/// ωΔt (≲ 0.2) of the state and a quarter turn out of phase with it, that error leaves the
+/// energy to 3e-6 over 10,000 steps (SPEC §2.5b's energy test holds 1e-5), at the cost of
+/// float transforms. height() is a float copy of h, made after each step, for the renderer,
+/// dumps and the WaterQuery.
 ///
-/// Step (dt seconds): forward real-to-complex transforms of h and v (FFTW, each whole on one
-/// worker, so both cores work and the bits do not depend on the split), per mode
-///   ĥ' = d·(ĥ·cos ωΔt + v̂·sin(ωΔt)/ω),  v̂' = d·(−ĥ·ω·sin ωΔt + v̂·cos ωΔt)
-/// (k = 0: ĥ' = d·(ĥ + v̂·Δt), v̂' = d·v̂), the inverse transforms, then the boundary in real
+/// Step (dt seconds): forward real-to-complex transforms of h and v (FFTW, float, each whole
+/// on one worker, so both cores work and the bits do not depend on the split; whether two
+/// workers pay is measured per size when the field is made, measuredThreads), per mode
+///   Δĥ = (a − 1)·ĥ + b·v̂,  Δv̂ = c·ĥ + (a − 1)·v̂  (double; a, b, c of modeStep)
+/// then per field: the inverse transform of its change added to it, and the boundary in real
 /// space.
 ///
 /// Damping, in physical units and independent of the step size: d = exp(−Δt/τ − 2·ν·k²·Δt),
@@ -62,6 +71,9 @@ public:
     /// ModeStep of wavenumber k (rad/m) over dt seconds with decay time τ (s; 0 = none) and
     /// viscosity ν (m²/s), times `scale` (the transforms' 1/(rows·cols)). The GPU twin uses it too.
     static ModeStep modeStep(double k, float dt, float decayTime, float viscosity, double scale);
+    /// modeStep's a − 1 before `scale`, times `scale`: d·cos ωΔt − 1 without the cancellation
+    /// of forming it from a (the coefficient of the step's change, see the class comment).
+    static double modeStepMinusOne(double k, float dt, float decayTime, float viscosity, double scale);
     /// The absorbing sponge's per-cell factors exp(−γΔt), row-major rows·cols (1 away from the
     /// band of `spongeWidth` cells), for a step of dt seconds.
     static std::vector<float> spongeFactors(int rows, int cols, int spongeWidth, float dt);
@@ -76,6 +88,10 @@ public:
     /// no square root or cosine per cell) at the exact sub-cell centre (gx, gz) in cells;
     /// R = radiusCells (>= 1 used). accel in m/s²; cells outside the field are skipped.
     void addSource(float gx, float gz, float radiusCells, float accel, float dt);
+    /// addSource for each of `sources` in order (the same sum; row bands on the workers when
+    /// there are many and that was measured to pay for this size: the bits do not depend on
+    /// the split).
+    void addSources(std::span<const EWaveSource> sources, float dt);
 
     /// Moves the patch by (dx, dz) whole cells: the value at (x+dx, z+dz) moves to (x, z) in h
     /// and v, cells with no source become 0, so waves stay put in the world.
@@ -108,8 +124,11 @@ public:
     float velocityAt(int x, int z) const { return float(m_v[size_t(z) * size_t(m_cols) + size_t(x)]); }
 
 private:
+    void chooseThreads();
     void prepare(float dt);
-    void applyBoundary();
+    void forward(int t);
+    void backward(int t);
+    void finishRows(double* f, const float* change, int z0, int z1);
 
     int m_rows, m_cols, m_specCols;
     size_t m_cells, m_modes;
@@ -118,14 +137,18 @@ private:
     int m_spongeWidth = 0;
     float m_decayTime = 0.0f, m_viscosity = 0.0f;
     float m_preparedDt = -1.0f;        // dt of the coefficients below (and the sponge factors)
+    int m_stepThreads = 1;             // the step's transforms on 1 or 2 workers (measured, chooseThreads)
+    int m_sourceThreads = 1;           // addSources' row bands on 1 or workerCount() workers (measured)
     double* m_h = nullptr;             // fftw_alloc'd real arrays, rows·cols
     double* m_v = nullptr;
-    double* m_hSpec = nullptr;         // complex rows × (cols/2 + 1), interleaved (re, im)
-    double* m_vSpec = nullptr;
-    fftw_plan_s* m_forward = nullptr;   // r2c rows × cols, out of place (new-array execute)
-    fftw_plan_s* m_backward = nullptr;  // c2r, out of place (destroys its input)
+    float* m_real[2] = {};             // per field (h, v): the state in float, then its change; rows·cols
+    float* m_spec[2] = {};             // per field: its spectrum, complex rows × (cols/2 + 1) interleaved (re, im)
+    float* m_change[2] = {};           // per field: the spectrum of its change, the same layout
+    fftwf_plan_s* m_forward = nullptr;   // r2c rows × cols, out of place (new-array execute)
+    fftwf_plan_s* m_backward = nullptr;  // c2r, out of place (destroys its input)
     std::vector<float> m_hFloat;        // height()
-    std::vector<double> m_coef;        // per mode: a = d·cos, b = d·sin/ω, c = −d·ω·sin, times 1/(rows·cols)
+    std::vector<double> m_coef[2];     // per field, per mode, the change's coefficients of ĥ and v̂ (h: a − 1, b;
+                                       // v: c, a − 1; modeStep's, times 1/(rows·cols))
     std::vector<float> m_sponge;       // per cell: the factor exp(−γΔt) (Absorbing), 1 away from the band
 };
 

@@ -36,7 +36,7 @@ RipplePatch::~RipplePatch() = default;
 void RipplePatch::step(float dt) {
     if (m_ewave) {
         const bool sources = !m_sources.empty();
-        for (const EWaveSource& s : m_sources) m_ewave->addSource(s.gx, s.gz, s.radiusCells, s.accel, dt);
+        m_ewave->addSources(m_sources, dt);
         m_sources.clear();
         if (m_offload) m_offload->step(dt, m_def.damping, m_edited || sources);
         else m_ewave->step(dt);

@@ -6,18 +6,18 @@
 #include "core/error.h"
 #include "core/log.h"
 #include "core/parallel.h"
+#include "core/thread_choice.h"
 #include "ocean/fftw_wisdom.h"
 
-#include <barrier>
 #include <cassert>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <mutex>
 #include <string>
 #include <algorithm>
-#include <thread>
 #include <fcntl.h>
 #include <fftw3.h>
 #include <sys/file.h>
@@ -28,11 +28,11 @@ namespace ob::ocean {
 
 namespace {
 
-// update() splits over threads (up to MAX_THREADS, one whole transform each at a time, so
-// the bits do not depend on the count) from this N on. Measured (2-core EPYC, FFTW 3.3.10):
-// N = 128 takes 0.15 ms on one thread, 0.17 ms on two (thread start and barriers cost more
-// than they save); N = 256 takes 0.8 ms on one, 0.5 ms on two.
-constexpr int PARALLEL_MIN_N = 256;
+// update() may split over threads (up to MAX_THREADS, one whole transform each at a time, so
+// the bits do not depend on the count) from this N on; whether it pays is measured per size
+// (measuredThreads). Below it a thread's start costs more than the update (2-core EPYC, FFTW
+// 3.3.10: N = 64 takes 0.03 ms on one thread, 0.08 ms on two).
+constexpr int PARALLEL_MIN_N = 128;
 constexpr unsigned MAX_THREADS = 4;
 constexpr int BLOCK = 16;  // see spectrum.cpp: whole blocks vectorise at -O2
 
@@ -95,13 +95,29 @@ OceanFftCpu::OceanFftCpu(const OceanDef& def, int threads) {
     validateOceanDef(def, 4096);
     m_n = def.resolution;
     m_lambda = -def.choppiness;
-    const int cores = std::clamp(workerCount(), 1, int(MAX_THREADS));
-    m_threads = threads > 0 ? threads : (m_n >= PARALLEL_MIN_N ? cores : 1);
     for (int c = 0; c < def.cascades; ++c) m_cascades.push_back(std::make_unique<Cascade>(def, c));
 
     // One plan serves every buffer: same size, in place, fftwf_alloc alignment.
     m_plan = plan(m_n, m_cascades[0]->buffers[0]);
     if (!m_plan) throw RuntimeError("FFTW could not plan a " + std::to_string(m_n) + "² transform");
+
+    // Auto: the thread count measured for this size (updates at t = 0, alternating 1 and all
+    // cores; the maps are cleared after, so nothing depends on whether it was measured here).
+    const int cores = std::clamp(workerCount(), 1, int(MAX_THREADS));
+    m_threads = threads > 0 ? threads : 1;
+    if (threads <= 0 && m_n >= PARALLEL_MIN_N) {
+        const std::string key = "ocean " + std::to_string(m_n) + "² ×" + std::to_string(def.cascades);
+        m_threads = measuredThreads(key, cores, [&](int n) {
+            m_threads = n;
+            update(0.0);
+        });
+        for (auto& c : m_cascades) {
+            for (auto* buffer : c->buffers) std::memset(buffer, 0, size_t(m_n) * size_t(m_n) * sizeof(fftwf_complex));
+            for (auto& plane : c->planes) std::fill(plane.begin(), plane.end(), 0.0f);
+        }
+        m_time = 0.0;
+        m_stageMs = {};
+    }
 }
 
 OceanFftCpu::~OceanFftCpu() {
@@ -200,30 +216,21 @@ void OceanFftCpu::update(double t) {
         m_stageMs = {ms(marks[0], marks[1]), ms(marks[1], marks[2]), ms(marks[2], marks[3])};
         return;
     }
-    // Every worker runs the three stages on its share; a barrier separates them because a
-    // transform reads every row and a row of the output depends on every mode.
-    std::barrier sync(m_threads);
-    const auto work = [&](int w) {
-        const int pairs = m_n / 2 + 1;
-        const int rowBegin = m_n * w / m_threads;
-        const int rowEnd = m_n * (w + 1) / m_threads;
-        // --- stage 1: packed spectra at time t (eq. 2, 6, 7; eq. 9 packing), by row pairs {m, −m}
-        synthesizeRows(pairs * w / m_threads, pairs * (w + 1) / m_threads);
-        sync.arrive_and_wait();
-        if (w == 0) marks[1] = Clock::now();
-        // --- stage 2: unnormalised inverse FFTs (eq. 1), whole transforms per worker
-        for (int k = w; k < transforms; k += m_threads) transform(k);
-        sync.arrive_and_wait();
-        if (w == 0) marks[2] = Clock::now();
-        // --- stage 3: unpack to channels and the Jacobian, by rows
-        unpackRows(rowBegin, rowEnd);
-    };
+    // The three stages on the worker pool, the end of each a barrier (a transform reads every
+    // row, a row of the output depends on every mode). Chunks are claimed as workers come, so
+    // a worker that wakes late leaves its chunks to the caller instead of making it wait.
+    const int pairs = m_n / 2 + 1;
     marks[0] = Clock::now();
-    std::vector<std::thread> helpers;
-    helpers.reserve(m_threads - 1);
-    for (int w = 1; w < m_threads; ++w) helpers.emplace_back(work, w);
-    work(0);
-    for (auto& helper : helpers) helper.join();
+    // --- stage 1: packed spectra at time t (eq. 2, 6, 7; eq. 9 packing), by row pairs {m, −m}
+    parallelFor(0, pairs, std::max(1, pairs / m_threads), [&](int b, int e) { synthesizeRows(b, e); });
+    marks[1] = Clock::now();
+    // --- stage 2: unnormalised inverse FFTs (eq. 1), whole transforms per chunk
+    parallelFor(0, transforms, std::max(1, transforms / m_threads), [&](int b, int e) {
+        for (int k = b; k < e; ++k) transform(k);
+    });
+    marks[2] = Clock::now();
+    // --- stage 3: unpack to channels and the Jacobian, by rows
+    parallelFor(0, m_n, std::max(1, m_n / m_threads), [&](int b, int e) { unpackRows(b, e); });
     marks[3] = Clock::now();
     m_stageMs = {ms(marks[0], marks[1]), ms(marks[1], marks[2]), ms(marks[2], marks[3])};
 }

@@ -37,7 +37,8 @@ constexpr int OCEAN_PACKED_TRANSFORMS = 4;
 class OceanFftCpu {
 public:
     /// Builds every cascade of def (seeded h̃0, FFT plans). threads: workers for update(),
-    /// 0 = auto (2 when N ≥ 256 and ob::workerCount() ≥ 2, else 1). Any count gives the
+    /// 0 = auto (from N = 128 on, 1 or all of ob::workerCount() up to 4, whichever was measured
+    /// faster for this N and cascade count on this machine, see measuredThreads; 1 below). Any count gives the
     /// same bits: each transform runs whole on one thread, the other stages point by point. Throws ob::InputError
     /// naming the key for a def no loader would accept (resolution not a power of two in
     /// [4, 4096], cascades outside [1, 4], non-positive sizes).

@@ -2,6 +2,7 @@
 // ripple level and ocean map) across runs, worker counts, ocean thread counts and processes
 // that plan their FFTs at the same time; a different scene does not.
 #include "core/parallel.h"
+#include "core/thread_choice.h"
 #include "interaction/ripple_patch.h"
 #include "ocean/ocean_fft_cpu.h"
 #include "world/sandbox.h"
@@ -42,9 +43,12 @@ std::string statsHash(const std::string& path) {
     return nlohmann::json::parse(in)["state_hash"].get<std::string>();
 }
 
-// Restores the default worker count however a test ends.
+// Restores the default worker count and thread measuring however a test ends.
 struct WorkerCountGuard {
-    ~WorkerCountGuard() { setWorkerCount(0); }
+    ~WorkerCountGuard() {
+        setWorkerCount(0);
+        setThreadMeasuring(true);
+    }
 };
 
 } // namespace
@@ -78,8 +82,10 @@ TEST_CASE("the GPU ocean backend (whose query maps are computed a step ahead on 
 TEST_CASE("the state hash is the same with 1, 2, 3 and 8 workers (ripple rows and ocean threads split)", "[determinism][parallel][threads]") {
     // A 1024² patch splits its 1022 interior rows into chunks of 32 (MIN_CELLS_PER_CHUNK /
     // 1024), so every worker count here really splits it; the 256² ocean runs on 2 threads
-    // once 2 workers are set. The bodies fall in within the 150 steps and ring the patch.
+    // once 2 workers are set (measuring off: whatever this machine measured, the split runs).
+    // The bodies fall in within the 150 steps and ring the patch.
     WorkerCountGuard guard;
+    setThreadMeasuring(false);
     game::SceneDef scene = game::loadScene(game::defaultScenePath(), {"ripples.model=kang2008", "ripples.resolution=1024", "ripples.cell_size=0.05"});
     std::vector<uint64_t> hashes;
     for (int workers : {1, 2, 3, 8}) {
@@ -91,6 +97,23 @@ TEST_CASE("the state hash is the same with 1, 2, 3 and 8 workers (ripple rows an
         CHECK(*std::max_element(field.begin(), field.end()) > 1e-3f);  // the stamps reached the patch
         hashes.push_back(sandbox.stateHash());
     }
+    for (size_t i = 1; i < hashes.size(); ++i) CHECK(hashes[i] == hashes[0]);
+}
+
+TEST_CASE("the state hash of the ewave default scene is the same on 1, 2 and 3 workers, and with thread counts measured", "[determinism][parallel][threads]") {
+    // Measuring off: the ewave step's two transforms and the ocean split over the workers (the
+    // sources' row bands too, for a step with enough footprint: tests_unit "many sources");
+    // measuring on: whatever this machine chose.
+    WorkerCountGuard guard;
+    game::SceneDef scene = game::loadScene(game::defaultScenePath());
+    std::vector<uint64_t> hashes;
+    setThreadMeasuring(false);
+    for (int workers : {1, 2, 3}) {
+        setWorkerCount(workers);
+        hashes.push_back(hashAfterSteps(scene, 40));
+    }
+    setThreadMeasuring(true);
+    hashes.push_back(hashAfterSteps(scene, 40));
     for (size_t i = 1; i < hashes.size(); ++i) CHECK(hashes[i] == hashes[0]);
 }
 

@@ -3,6 +3,8 @@
 // conserved without damping and decays at the documented rate with it; a drop's ring train
 // has the Cauchy–Poisson wavenumber g·t²/(4r²). The reference ω and the energy are computed
 // here (double-precision FFTW), not taken from the solver.
+#include "core/parallel.h"
+#include "core/thread_choice.h"
 #include "interaction/ewave_field.h"
 
 #include <catch2/catch.hpp>
@@ -214,4 +216,49 @@ TEST_CASE("ewave: scrolling moves h and v by whole cells, and the absorbing band
         CHECK(remaining[0] == Approx(1.0).epsilon(1e-4));
         CHECK(remaining[1] < 0.05);
     }
+}
+
+TEST_CASE("ewave: many sources add Σ accel·dt·(1 − r²/R²)² per cell, the same bits on any worker count", "[ewave][parallel]") {
+    // 3,000 sources (radius 1.5–20 cells, some clipped by the edges, sub-cell centres) on a
+    // 96 × 128 field: enough footprint for the row bands to be split over the workers. The
+    // reference is the biweight summed here per cell and source, in double.
+    const int rows = 96, cols = 128;
+    std::vector<ob::interaction::EWaveSource> sources(3000);
+    uint32_t state = 12345;
+    auto next = [&] { return float((state = state * 1664525u + 1013904223u) >> 8) / float(1 << 24); };
+    for (auto& s : sources) {
+        s.gx = -5.0f + 138.0f * next();
+        s.gz = -5.0f + 106.0f * next();
+        s.radiusCells = 1.5f + 18.5f * next();
+        s.accel = 20.0f * next() - 10.0f;
+    }
+    const float dt = 1.0f / 60.0f;
+    std::vector<double> want(size_t(rows) * cols, 0.0);
+    for (const auto& s : sources)
+        for (int z = 0; z < rows; ++z)
+            for (int x = 0; x < cols; ++x) {
+                const double r2 = (x - double(s.gx)) * (x - double(s.gx)) + (z - double(s.gz)) * (z - double(s.gz));
+                const double R2 = double(s.radiusCells) * double(s.radiusCells);
+                if (r2 < R2) want[size_t(z) * cols + x] += double(s.accel) * double(dt) * (1 - r2 / R2) * (1 - r2 / R2);
+            }
+    double peak = 0.0;
+    for (double w : want) peak = std::max(peak, std::abs(w));
+    std::vector<double> first;
+    ob::setThreadMeasuring(false);  // every worker count splits, whatever this machine measured
+    for (int workers : {1, 2, 3}) {
+        ob::setWorkerCount(workers);
+        EWaveField f(rows, cols, 0.25f);
+        f.addSources(sources, dt);
+        double err = 0.0;
+        for (size_t i = 0; i < want.size(); ++i) err = std::max(err, std::abs(f.velocityState()[i] - want[i]));
+        INFO(workers << " workers: largest error " << err << " of a peak " << peak);
+        CHECK(err <= 1e-12 * peak * sources.size());
+        std::vector<double> v(f.velocityState().begin(), f.velocityState().end());
+        if (first.empty())
+            first = v;
+        else
+            CHECK(v == first);
+    }
+    ob::setWorkerCount(0);
+    ob::setThreadMeasuring(true);
 }
