@@ -112,9 +112,8 @@ TEST_CASE("ewave: a sphere at constant speed leaves a Kelvin wake of 19.47° for
 }
 
 // U = 8 m/s: λ = 41 m, so the far wake needs a field of 256 m × 512 m (2M cells of 0.25 m);
-// stepped at 30 Hz (exact per mode at any step). Several minutes on 2 cores: hidden from the
-// default run; `tests_unit "[wake8]"`.
-TEST_CASE("ewave: a sphere at 8 m/s leaves a Kelvin wake of 19.47°", "[.][ewave][wake8]") {
+// stepped at 30 Hz (exact per mode at any step). About 100 s on 2 cores: a [long] test.
+TEST_CASE("ewave: a sphere at 8 m/s leaves a Kelvin wake of 19.47°", "[ewave][wake][wake8][long]") {
     const double kelvin = std::asin(1.0 / 3.0) * 180.0 / std::numbers::pi;
     const Wake w = runWake(8.0, 45.0, 1024, 2048, 30.0, 300.0);
     WARN("Kelvin wake, U = 8 m/s: envelope angle " << w.angleDeg << "° over " << w.samples << " cross-sections (theory "
