@@ -31,7 +31,7 @@ namespace ob::interaction {
 /// its one stamp: the CPU's bits.
 ///
 /// Cost: one dispatch per step, reading Vh(t) 9 times and Vh(t−1) once per cell. On llvmpipe
-/// (2-core EPYC, `tests_gl "[.ripple_gpu_bench]"`) a step takes 0.4 / 5 / 20 ms at N = 128 /
+/// (2-core EPYC, `oceanbox_bench --benchmark_filter=BM_RippleGpu`) a step takes 0.4 / 5 / 20 ms at N = 128 /
 /// 512 / 1024 against 0.007 / 0.12 / 0.45 ms for RippleField::step: on a software renderer
 /// the CPU field is the faster choice, as for the ocean FFT.
 ///
