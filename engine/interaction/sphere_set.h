@@ -11,6 +11,9 @@ namespace ob::interaction {
 struct SphereSet {
     std::vector<BoundingSphere> spheres;
     std::vector<SphereContact> contacts;  ///< one per sphere, same order
+    /// A hull driven through the water (a ship): bow spray from its foremost sphere (largest
+    /// local z) and wake foam from every wetted one (game/sim/splash_foam_system.cpp).
+    bool hull = false;
 };
 
 } // namespace ob::interaction

@@ -45,7 +45,7 @@ void fire(ecs::World& world, Cannon& cannon, glm::vec3 pivot) {
     physics::BodyId id = physicsWorld.addSphere(r, mass, start);
     ecs::Entity ball = spawnBody(world, "cannonball", "", id, {Probe{glm::vec3(0.0f), r}}, volume, mass, start,
                                  Renderable{gfx::MeshKind::Sphere, glm::vec3(r), BALL_COLOR, ""});
-    world.add<interaction::SphereSet>(ball, {{cannon.ballSphere}, {}});
+    world.add<interaction::SphereSet>(ball, {{cannon.ballSphere}, {}, false});
     world.add<Cannonball>(ball, {cannon.sinkDepth});
     ++cannon.shots;
 }

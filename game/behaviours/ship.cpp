@@ -65,6 +65,7 @@ ecs::Entity spawnShip(ecs::World& world, const ObjectDef& o) {
     const float draft = o.hull.y * std::min(o.density / physicsDef(world).water_density, 1.0f);
     interaction::BoundingSphere sphere = boundingSphereFor(o, paperShipSphere(rippleCellSize(world)), rippleCellSize(world));
     interaction::SphereSet set;
+    set.hull = true;
     for (int k = 0; k < SHIP_SPHERES; ++k) {
         sphere.offset = glm::vec3(0.0f, draft - 0.5f * o.hull.y, (float(k) + 0.5f) * o.hull.z / SHIP_SPHERES - 0.5f * o.hull.z);
         set.spheres.push_back(sphere);

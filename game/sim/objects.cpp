@@ -108,7 +108,7 @@ ecs::Entity spawnFloatingBody(ecs::World& world, const ObjectDef& o, uint64_t /*
     paper.direction = interaction::SphereDirection::Down;  // a floating body pushes the water down
     paper.heightRatio = 1.0f;
     paper.accelerationFactor = 0.0f;
-    world.add<interaction::SphereSet>(e, {{boundingSphereFor(o, paper, rippleCellSize(world))}, {}});
+    world.add<interaction::SphereSet>(e, {{boundingSphereFor(o, paper, rippleCellSize(world))}, {}, false});
     return e;
 }
 

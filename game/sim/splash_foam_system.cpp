@@ -8,7 +8,6 @@
 #include "interaction/ripple_patch.h"
 #include "interaction/sphere_set.h"
 #include "ocean/ocean_fft_cpu.h"
-#include "behaviours/ship.h"
 #include "splash/splash_particles.h"
 #include "water/composite_water.h"
 #include "sim/water_systems.h"
@@ -83,7 +82,6 @@ void splashFoamSystem(ecs::World& world, const ecs::Tick& tick) {
         const glm::vec3 velocity = motion ? motion->velocity : glm::vec3(0.0f);
         const float mass = motion ? motion->mass / float(set.spheres.size()) : 0.0f;  // shared by its spheres
         std::vector<splash::SurfaceCrossing>& trackers = trackersOf(uint32_t(e), set.spheres.size());
-        const bool ship = world.has<Ship>(e);
         size_t bow = 0;
         for (size_t k = 0; k < set.spheres.size(); ++k)
             if (set.spheres[k].offset.z > set.spheres[bow].offset.z) bow = k;
@@ -106,7 +104,7 @@ void splashFoamSystem(ecs::World& world, const ecs::Tick& tick) {
             }
             // Hull spheres in the water: bow spray from the foremost, wake foam from all.
             const bool wetted = centre.y - s.radius <= surface.height;
-            if (!ship || !wetted) continue;
+            if (!set.hull || !wetted) continue;
             if (drops && k == bow) drops->emitBowSpray(glm::vec3(centre.x, surface.height, centre.z), velocity, s.radius, dt);
             if (foam) foam->addWake(centre, velocity, s.radius, dt);
         }
