@@ -1,6 +1,7 @@
 // Measured thread counts kept in the cache folder: one "key of N = n" line per kernel.
 #include "core/thread_choice.h"
 
+#include "core/cache_file.h"
 #include "core/log.h"
 
 #include <algorithm>
@@ -14,8 +15,6 @@
 #include <mutex>
 #include <sstream>
 #include <vector>
-#include <fcntl.h>
-#include <sys/file.h>
 #include <unistd.h>
 
 namespace ob {
@@ -27,41 +26,6 @@ std::atomic<bool> s_measuring{[] {
     const char* env = std::getenv("OCEANBOX_MEASURE_THREADS");
     return !(env && std::string(env) == "0");
 }()};
-
-// Beside the FFTW wisdom (ocean/fftw_wisdom.cpp): $XDG_CACHE_HOME/oceanbox, else ~/.cache/oceanbox.
-std::string choicesPath() {
-    const char* xdg = std::getenv("XDG_CACHE_HOME");
-    if (xdg && *xdg) return std::string(xdg) + "/oceanbox/thread_choices";
-    const char* home = std::getenv("HOME");
-    if (home && *home) return std::string(home) + "/.cache/oceanbox/thread_choices";
-    return {};
-}
-
-// flock on path + ".lock" for the lifetime of the object (held() false where it cannot be had).
-class FileLock {
-public:
-    explicit FileLock(const std::string& path) {
-        if (path.empty()) return;
-        std::error_code ec;
-        std::filesystem::create_directories(std::filesystem::path(path).parent_path(), ec);
-        m_fd = ::open((path + ".lock").c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-        if (m_fd >= 0 && ::flock(m_fd, LOCK_EX) != 0) {
-            ::close(m_fd);
-            m_fd = -1;
-        }
-    }
-    ~FileLock() {
-        if (m_fd < 0) return;
-        ::flock(m_fd, LOCK_UN);
-        ::close(m_fd);
-    }
-    FileLock(const FileLock&) = delete;
-    FileLock& operator=(const FileLock&) = delete;
-    bool held() const { return m_fd >= 0; }
-
-private:
-    int m_fd = -1;
-};
 
 // "key of N = n" lines; anything else is skipped (a file from another version re-measures).
 std::map<std::string, int> readChoices(const std::string& path) {
@@ -129,7 +93,7 @@ int measuredThreads(const std::string& key, int threads, const std::function<voi
     std::lock_guard<std::mutex> lock(mutex);
     const std::string full = key + " of " + std::to_string(threads);
     if (const auto it = known.find(full); it != known.end()) return it->second;
-    const std::string path = choicesPath();
+    const std::string path = cachePath("thread_choices");  // beside the FFTW wisdom
     FileLock fileLock(path);
     std::map<std::string, int> choices;
     if (fileLock.held()) {

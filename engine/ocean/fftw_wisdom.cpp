@@ -2,57 +2,22 @@
 // an inter-process file lock.
 #include "ocean/fftw_wisdom.h"
 
+#include "core/cache_file.h"
 #include "core/log.h"
 
 #include <cstdlib>
 #include <filesystem>
 #include <string>
-#include <fcntl.h>
 #include <fftw3.h>
-#include <sys/file.h>
 #include <unistd.h>
 
 namespace ob::ocean {
 
 namespace {
 
-// suffix "f" for single precision, "d" for double.
-std::string wisdomPath(const char* suffix) {
-    const char* xdg = std::getenv("XDG_CACHE_HOME");
-    if (xdg && *xdg) return std::string(xdg) + "/oceanbox/fftw_wisdom_" + suffix;
-    const char* home = std::getenv("HOME");
-    if (home && *home) return std::string(home) + "/.cache/oceanbox/fftw_wisdom_" + suffix;
-    return {};
-}
-
-// The wisdom file's inter-process lock (flock on path + ".lock"), held while a process
-// reads the wisdom, plans and writes it back: processes planning at once then agree on one
-// measured plan per transform instead of each measuring its own (different plans round
-// differently).
-class WisdomLock {
-public:
-    explicit WisdomLock(const std::string& path) {
-        if (path.empty()) return;
-        std::error_code ec;
-        std::filesystem::create_directories(std::filesystem::path(path).parent_path(), ec);
-        m_fd = ::open((path + ".lock").c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-        if (m_fd >= 0 && ::flock(m_fd, LOCK_EX) != 0) {
-            ::close(m_fd);
-            m_fd = -1;
-        }
-    }
-    ~WisdomLock() {
-        if (m_fd < 0) return;
-        ::flock(m_fd, LOCK_UN);
-        ::close(m_fd);
-    }
-    WisdomLock(const WisdomLock&) = delete;
-    WisdomLock& operator=(const WisdomLock&) = delete;
-    bool held() const { return m_fd >= 0; }
-
-private:
-    int m_fd = -1;
-};
+// The wisdom file's inter-process lock (FileLock), held while a process reads the wisdom,
+// plans and writes it back: processes planning at once then agree on one measured plan per
+// transform instead of each measuring its own (different plans round differently).
 
 // Called with both locks held. Writes a temporary file and renames it, so a reader never
 // sees half a file. Returns false when the cache cannot be written.
@@ -74,8 +39,8 @@ bool exportWisdom(const std::string& path, Export exportTo) {
 template <class Plan, class Make, class Import, class Export, class Destroy>
 Plan planShared(const char* suffix, const Make& make, Import importFrom, Export exportTo, Destroy destroy) {
     std::lock_guard<std::mutex> lock(fftwPlannerMutex());
-    const std::string path = wisdomPath(suffix);
-    WisdomLock fileLock(path);
+    const std::string path = cachePath(std::string("fftw_wisdom_") + suffix);  // suffix "f" single, "d" double
+    FileLock fileLock(path);
     if (fileLock.held()) {
         importFrom(path.c_str());  // a missing or stale file: measure below
         Plan p = make(FFTW_MEASURE | FFTW_WISDOM_ONLY);
