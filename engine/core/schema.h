@@ -2,10 +2,14 @@
 // The same list drives the TOML loader (core/toml_reader), the TOML writer (core/toml_writer)
 // and the ImGui editor (gfx/ui_overlay).
 #pragma once
+#include <array>
+#include <cstddef>
 #include <cstdint>
-#include <initializer_list>
 #include <limits>
+#include <span>
 #include <string>
+#include <string_view>
+#include <type_traits>
 #include <vector>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -29,8 +33,30 @@ constexpr Limits direction() { return Limits{-std::numeric_limits<double>::infin
 /// No constraint.
 constexpr Limits any() { return Limits{}; }
 
-/// String keys that take one of a fixed set of words.
-using Choices = std::initializer_list<const char*>;
+/// A key that takes one of a fixed set of words is an enum with its words declared beside it,
+/// in the enum's order, by a function `names` found by argument-dependent lookup:
+///
+///   enum class Fresnel : uint8_t { Schlick, Exact };
+///   constexpr std::array<const char*, 2> names(Fresnel) { return {"schlick", "exact"}; }
+template <class E>
+concept NamedEnum = std::is_enum_v<E> && requires(E e) { names(e); };
+
+/// The words of E's values, in order.
+template <NamedEnum E> inline constexpr auto enumNames = names(E{});
+
+/// The word of one value ("exact").
+template <NamedEnum E> constexpr const char* enumName(E value) { return enumNames<E>[std::size_t(value)]; }
+
+/// The value whose word is `word`; false when none is.
+template <NamedEnum E> bool enumFromName(std::string_view word, E& value) {
+    for (std::size_t i = 0; i < enumNames<E>.size(); ++i)
+        if (word == enumNames<E>[i]) return value = E(i), true;
+    return false;
+}
+
+/// An enum's words as visitors take them (their `choice(key, words, index, doc)` members do
+/// the work once for every enum).
+using Words = std::span<const char* const>;
 
 /// The visitor interface a describe() function is written against (documentation only:
 /// describe() is a template, any type with these members works).
@@ -39,7 +65,8 @@ using Choices = std::initializer_list<const char*>;
 ///   void field(const char* key, uint64_t& value, const char* doc);
 ///   void field(const char* key, float& value, Limits, const char* doc);
 ///   void field(const char* key, glm::vec2& / glm::vec3& value, Limits, const char* doc);
-///   void field(const char* key, std::string& value, Choices, const char* doc);
+///   void field(const char* key, std::string& value, const char* doc);             // free text
+///   template <NamedEnum E> void field(const char* key, E& value, const char* doc);  // one of E's words
 ///   void field(const char* key, std::vector<glm::vec2>& points, Limits, const char* doc);  // [[x, z], ...]
 ///   template <class Def> void section(const char* key, Def& def);
 ///   template <class Item> void list(const char* key, std::vector<Item>& items, const char* doc);

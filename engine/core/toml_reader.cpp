@@ -393,27 +393,31 @@ void TomlReader::field(const char* key, glm::vec3& value, Limits limits, const c
     readVector<3>(*m_state, key, &value.x, limits);
 }
 
-void TomlReader::field(const char* key, std::string& value, Choices choices, const char*) {
-    const toml::node* node = m_state->lookup(key);
-    if (!node) return;
+// The string at `key`, or null (absent, or an error reported).
+static const toml::value<std::string>* readString(auto& s, const char* key) {
+    const toml::node* node = s.lookup(key);
+    if (!node) return nullptr;
     auto str = node->as_string();
-    if (!str) {
-        m_state->error(*node, key, std::string("expected a string, got ") + typeName(*node));
-        return;
-    }
-    if (choices.size() == 0) {
-        value = str->get();
-        return;
-    }
+    if (!str) s.error(*node, key, std::string("expected a string, got ") + typeName(*node));
+    return str;
+}
+
+void TomlReader::field(const char* key, std::string& value, const char*) {
+    if (auto str = readString(*m_state, key)) value = str->get();
+}
+
+void TomlReader::choice(const char* key, Words words, std::size_t& index) {
+    auto str = readString(*m_state, key);
+    if (!str) return;
     std::string list;
-    for (const char* c : choices) {
-        if (str->get() == c) {
-            value = c;
+    for (std::size_t i = 0; i < words.size(); ++i) {
+        if (str->get() == words[i]) {
+            index = i;
             return;
         }
-        list += std::string(list.empty() ? "" : ", ") + "\"" + c + "\"";
+        list += std::string(list.empty() ? "" : ", ") + "\"" + words[i] + "\"";
     }
-    m_state->error(*node, key, "must be one of " + list + ", got \"" + str->get() + "\"");
+    m_state->error(*str, key, "must be one of " + list + ", got \"" + str->get() + "\"");
 }
 
 void TomlReader::field(const char* key, std::vector<glm::vec2>& points, Limits limits, const char*) {

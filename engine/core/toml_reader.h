@@ -42,7 +42,14 @@ public:
     void field(const char* key, float& value, Limits limits, const char* doc);
     void field(const char* key, glm::vec2& value, Limits limits, const char* doc);
     void field(const char* key, glm::vec3& value, Limits limits, const char* doc);
-    void field(const char* key, std::string& value, Choices choices, const char* doc);
+    void field(const char* key, std::string& value, const char* doc);
+    template <NamedEnum E> void field(const char* key, E& value, const char* /*doc*/) {
+        std::size_t index = std::size_t(value);
+        choice(key, enumNames<E>, index);
+        value = E(index);
+    }
+    /// One of `words` (an enum's), read as its index.
+    void choice(const char* key, Words words, std::size_t& index);
     /// A list of 2D points, `[[x, z], ...]` (may be empty).
     void field(const char* key, std::vector<glm::vec2>& points, Limits limits, const char* doc);
 

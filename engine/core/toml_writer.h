@@ -56,7 +56,8 @@ public:
     void field(const char* key, float& v, Limits, const char*) { add(key, tomlValue(v)); }
     void field(const char* key, glm::vec2& v, Limits, const char*) { add(key, tomlValue(v)); }
     void field(const char* key, glm::vec3& v, Limits, const char*) { add(key, tomlValue(v)); }
-    void field(const char* key, std::string& v, Choices, const char*) { add(key, tomlValue(v)); }
+    void field(const char* key, std::string& v, const char*) { add(key, tomlValue(v)); }
+    template <NamedEnum E> void field(const char* key, E& v, const char*) { add(key, tomlValue(std::string(enumName(v)))); }
     void field(const char* key, std::vector<glm::vec2>& v, Limits, const char*) { add(key, tomlValue(v)); }
     template <class Def> void section(const char* key, Def& def) {
         TomlNode child;

@@ -2,15 +2,26 @@
 #pragma once
 #include "core/schema.h"
 
-#include <string>
-
 namespace ob::gfx {
+
+/// The Fresnel term of the water surface.
+enum class Fresnel : uint8_t { Schlick, Exact };
+constexpr std::array<const char*, 2> names(Fresnel) { return {"schlick", "exact"}; }
+
+/// Edge smoothing of the frame.
+enum class Antialias : uint8_t {
+    Auto,   ///< Msaa4 on a GPU, Fxaa on a software rasteriser (which pays for every sample on the CPU)
+    Off,
+    Fxaa,   ///< one post pass
+    Msaa4,  ///< 4 samples a pixel
+};
+constexpr std::array<const char*, 4> names(Antialias) { return {"auto", "off", "fxaa", "msaa4"}; }
 
 /// Look of the sky and the water surface; every switch removes its pass or term.
 struct RenderDef {
     glm::vec3 sun_direction{0.35f, 0.30f, 0.88f};  ///< direction toward the sun (world, y up; normalised on use)
     glm::vec3 water_color{0.015f, 0.09f, 0.13f};   ///< deep water body colour (linear RGB, 0..1)
-    std::string fresnel = "schlick";                ///< "schlick" approximation or "exact" unpolarised equations (n = 1.33)
+    Fresnel fresnel = Fresnel::Schlick;             ///< "schlick" approximation or "exact" unpolarised equations (n = 1.33)
     bool reflections = true;                        ///< planar reflection pass (objects above the water, mirrored); off: sky only
     bool refractions = true;                        ///< refraction pass (objects below the water, depth colour); off: body colour only
     float rtt_scale = 0.5f;                         ///< reflection/refraction target size / framebuffer size, [0.1, 1]
@@ -25,7 +36,7 @@ struct RenderDef {
     float exposure = 1.0f;                          ///< scene exposure multiplier before tone mapping, [0.01, 16]
     float resolution_scale = 1.0f;                  ///< internal render size / framebuffer size, [0.25, 1]; below 1 the frame is scaled up (bilinear)
     float target_fps = 30.0f;                       ///< dynamic resolution: the internal scale follows the frame time to hold this rate (play; run only when set on the command line), [0, 1000]; 0 = off (resolution_scale as set)
-    std::string antialias = "auto";                 ///< edge smoothing: "off", "fxaa" (one post pass), "msaa4" (4 samples a pixel), "auto" (msaa4 on a GPU, fxaa on a software rasteriser)
+    Antialias antialias = Antialias::Auto;          ///< edge smoothing: "off", "fxaa" (one post pass), "msaa4" (4 samples a pixel), "auto" (msaa4 on a GPU, fxaa on a software rasteriser)
     int grid_resolution = 0;                        ///< projected grid cells per side, [16, 2048]; 0 = auto (one per 3 px of internal height on a GPU, per 6 px on a software rasteriser, within [32, 512])
     float upscale_sharpness = 0.75f;                ///< sharpening of the frame scaled up from resolution_scale < 1 (fxaa), [0, 1]; 0 = plain bilinear
     bool far_fade = true;                           ///< far field without regular patterns: FFT cascades fade out by tile_fade tiles, Gerstner waves where the grid is too sparse to sample them
@@ -36,7 +47,7 @@ struct RenderDef {
 template <class V> void describe(V& v, RenderDef& d) {
     v.field("sun_direction", d.sun_direction, direction(), "direction toward the sun (world, y up)");
     v.field("water_color", d.water_color, range(0, 1), "deep water body colour (linear RGB)");
-    v.field("fresnel", d.fresnel, Choices{"schlick", "exact"}, "Fresnel term: Schlick or exact (n = 1.33)");
+    v.field("fresnel", d.fresnel, "Fresnel term: Schlick or exact (n = 1.33)");
     v.field("reflections", d.reflections, "planar reflection pass (local objects mirrored); off: sky only");
     v.field("refractions", d.refractions, "refraction pass (objects under water, depth colour); off: body colour");
     v.field("rtt_scale", d.rtt_scale, range(0.1, 1), "reflection/refraction target size / framebuffer size");
@@ -51,8 +62,7 @@ template <class V> void describe(V& v, RenderDef& d) {
     v.field("exposure", d.exposure, range(0.01, 16), "exposure multiplier before tone mapping");
     v.field("resolution_scale", d.resolution_scale, range(0.25, 1), "internal render size / framebuffer size (scaled up below 1)");
     v.field("target_fps", d.target_fps, range(0, 1000), "dynamic resolution holds this frame rate (play); 0 = off");
-    v.field("antialias", d.antialias, Choices{"auto", "off", "fxaa", "msaa4"},
-            "edge smoothing: off, fxaa (post pass), msaa4 (4 samples), auto (msaa4 on a GPU, fxaa in software)");
+    v.field("antialias", d.antialias, "edge smoothing: off, fxaa (post pass), msaa4 (4 samples), auto (msaa4 on a GPU, fxaa in software)");
     v.field("grid_resolution", d.grid_resolution, range(0, 2048), "projected grid cells per side; 0 = auto (internal height / 3 on a GPU, / 6 in software)");
     v.field("upscale_sharpness", d.upscale_sharpness, range(0, 1), "sharpening of a frame scaled up from resolution_scale < 1 (fxaa); 0 = none");
     v.field("far_fade", d.far_fade, "FFT cascades fade out with distance, Gerstner waves where the grid cannot sample them");

@@ -52,11 +52,8 @@ const char* const PASS_NAMES[] = {"sky_bake", "reflection", "refraction", "opaqu
 constexpr int MSAA_SAMPLES = 4;
 constexpr GLuint FXAA_SOURCE_UNIT = 0;
 
-Antialias antialiasMode(const std::string& key, bool softwareRenderer) {
-    if (key == "off") return Antialias::Off;
-    if (key == "fxaa") return Antialias::Fxaa;
-    if (key == "msaa4") return Antialias::Msaa4;
-    assert(key == "auto");  // the scene's Choices let nothing else through
+Antialias antialiasMode(Antialias key, bool softwareRenderer) {
+    if (key != Antialias::Auto) return key;
     return softwareRenderer ? Antialias::Fxaa : Antialias::Msaa4;
 }
 
@@ -165,7 +162,7 @@ void Renderer::buildGrid(int resolution) {
 // view-projection stays the camera's.
 void Renderer::updateFrameUniforms(const CameraView& camera, double time, glm::ivec2 size) {
     FrameUniforms u{};
-    u.sunDirectionFresnel = glm::vec4(glm::normalize(m_def.sun_direction), m_def.fresnel == "exact" ? 1.0f : 0.0f);
+    u.sunDirectionFresnel = glm::vec4(glm::normalize(m_def.sun_direction), m_def.fresnel == Fresnel::Exact ? 1.0f : 0.0f);
     u.waterColorExposure = glm::vec4(m_def.water_color, m_def.exposure);
     u.depthParams = glm::vec4(camera.nearM, camera.farM, m_def.water_clarity, float(mipLevels(SKY_CUBE_SIZE)));
     u.shading = glm::vec4(m_def.dudv_strength, m_def.normal_distortion, m_def.glitter, m_def.glitter_shininess);

@@ -27,11 +27,9 @@
 
 namespace ob::gfx {
 
-/// Edge smoothing of the frame (RenderDef::antialias once "auto" is decided).
-enum class Antialias : uint8_t { Off, Fxaa, Msaa4 };
-/// The mode a `RenderDef::antialias` key selects: "auto" is Msaa4 on a GPU and Fxaa on a
-/// software rasteriser (which pays for every sample on the CPU).
-Antialias antialiasMode(const std::string& key, bool softwareRenderer);
+/// The mode a `RenderDef::antialias` key selects (never Auto: that is Msaa4 on a GPU and Fxaa
+/// on a software rasteriser).
+Antialias antialiasMode(Antialias key, bool softwareRenderer);
 
 /// The water layers the surface pass draws (everything optional: absent layers are flat).
 struct WaterView {

@@ -90,12 +90,15 @@ void UiEditor::field(const char* key, glm::vec3& value, Limits limits, const cha
     tooltip(doc);
 }
 
-void UiEditor::field(const char* key, std::string& value, Choices choices, const char* doc) {
-    if (choices.size() == 0) {
-        ImGui::Text("%s = %s", key, value.c_str());
-    } else if (ImGui::BeginCombo(key, value.c_str())) {
-        for (const char* c : choices)
-            if (ImGui::Selectable(c, value == c)) value = c;
+void UiEditor::field(const char* key, std::string& value, const char* doc) {
+    ImGui::Text("%s = %s", key, value.c_str());
+    tooltip(doc);
+}
+
+void UiEditor::choice(const char* key, Words words, std::size_t& index, const char* doc) {
+    if (ImGui::BeginCombo(key, words[index])) {
+        for (std::size_t i = 0; i < words.size(); ++i)
+            if (ImGui::Selectable(words[i], i == index)) index = i;
         ImGui::EndCombo();
     }
     tooltip(doc);

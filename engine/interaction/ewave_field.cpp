@@ -75,7 +75,7 @@ OB_VECTOR_KERNEL void scaleKernel(double* __restrict f, const float* __restrict 
 
 double EWaveField::omega(double k) { return std::sqrt(GRAVITY * k + SURFACE_TENSION * k * k * k); }
 
-EWaveField::EWaveField(int rows, int cols, float cellSize, EWaveBoundary boundary, int spongeWidth)
+EWaveField::EWaveField(int rows, int cols, float cellSize, RippleBoundary boundary, int spongeWidth)
     : m_rows(rows), m_cols(cols), m_specCols(cols / 2 + 1), m_cells(size_t(rows) * size_t(cols)),
       m_modes(size_t(rows) * size_t(cols / 2 + 1)), m_cellSize(cellSize), m_boundary(boundary) {
     assert(rows >= 2 && cols >= 2 && cellSize > 0.0f);
@@ -98,7 +98,7 @@ EWaveField::EWaveField(int rows, int cols, float cellSize, EWaveBoundary boundar
     if (!m_forward || !m_backward)
         throw RuntimeError("FFTW could not plan a " + std::to_string(rows) + "×" + std::to_string(cols) + " transform");
     m_hFloat.assign(m_cells, 0.0f);
-    if (boundary == EWaveBoundary::Absorbing) m_spongeWidth = std::clamp(spongeWidth, 1, std::min(rows, cols) / 2);
+    if (boundary == RippleBoundary::Absorbing) m_spongeWidth = std::clamp(spongeWidth, 1, std::min(rows, cols) / 2);
     m_coef[0].resize(2 * m_modes);
     m_coef[1].resize(2 * m_modes);
     chooseThreads();
@@ -217,7 +217,7 @@ void EWaveField::prepare(float dt) {
         }
     }
     m_sponge.clear();
-    if (m_boundary == EWaveBoundary::Absorbing) m_sponge = spongeFactors(m_rows, m_cols, m_spongeWidth, dt);
+    if (m_boundary == RippleBoundary::Absorbing) m_sponge = spongeFactors(m_rows, m_cols, m_spongeWidth, dt);
     m_preparedDt = dt;
 }
 
@@ -259,9 +259,9 @@ void EWaveField::finishRows(double* f, const float* change, int z0, int z1) {
         double* fr = f + row;
         addKernel(fr, change + row, cols);
         switch (m_boundary) {
-        case EWaveBoundary::Periodic:
+        case RippleBoundary::Periodic:
             break;
-        case EWaveBoundary::Fixed:
+        case RippleBoundary::Fixed:
             if (z == 0 || z == rows - 1) {
                 std::fill(fr, fr + cols, 0.0);
             } else {
@@ -269,7 +269,7 @@ void EWaveField::finishRows(double* f, const float* change, int z0, int z1) {
                 fr[cols - 1] = 0.0;
             }
             break;
-        case EWaveBoundary::Absorbing:
+        case RippleBoundary::Absorbing:
             // Only the band: rows in it whole, the other rows at their two ends.
             if (z < w || z >= rows - w) {
                 scaleKernel(fr, m_sponge.data() + row, cols);

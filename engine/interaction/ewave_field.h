@@ -3,6 +3,7 @@
 // advances every Fourier mode of the periodic grid exactly by ω(k)² = g·k + (σ/ρ)·k³.
 // Row-major rows×cols floats, row = z, column = x; h in metres, v in m/s.
 #pragma once
+#include "interaction/ripple_def.h"
 #include "interaction/sphere_stamp.h"
 
 #include <span>
@@ -12,12 +13,9 @@ struct fftwf_plan_s;
 
 namespace ob::interaction {
 
-/// What happens at the edge of an ewave patch.
-enum class EWaveBoundary {
-    Periodic,   ///< the transform's own torus: waves leave one side and come back on the other
-    Fixed,      ///< the outer ring of cells is held at h = v = 0 after each step (waves reflect)
-    Absorbing,  ///< a sponge band damps h and v in real space, so waves do not wrap around
-};
+// The edge (RippleBoundary, interaction/ripple_def.h): Periodic is the transform's own torus;
+// Fixed holds the outer ring of cells at h = v = 0 after each step (waves reflect); Absorbing
+// damps h and v in a sponge band in real space, so waves do not wrap around.
 
 struct EWaveSource;
 
@@ -55,7 +53,7 @@ public:
 
     /// rows (z) and cols (x) >= 2, cellSize in metres > 0; spongeWidth in cells (Absorbing),
     /// clamped to half the smaller side. h and v start at 0; no damping until setDamping.
-    EWaveField(int rows, int cols, float cellSize, EWaveBoundary boundary = EWaveBoundary::Periodic,
+    EWaveField(int rows, int cols, float cellSize, RippleBoundary boundary = RippleBoundary::Periodic,
                int spongeWidth = 32);
     ~EWaveField();
     EWaveField(const EWaveField&) = delete;
@@ -102,7 +100,7 @@ public:
     int rows() const { return m_rows; }
     int cols() const { return m_cols; }
     float cellSize() const { return m_cellSize; }
-    EWaveBoundary boundary() const { return m_boundary; }
+    RippleBoundary boundary() const { return m_boundary; }
     int spongeWidth() const { return m_spongeWidth; }
     float decayTime() const { return m_decayTime; }
     float viscosity() const { return m_viscosity; }
@@ -133,7 +131,7 @@ private:
     int m_rows, m_cols, m_specCols;
     size_t m_cells, m_modes;
     float m_cellSize;
-    EWaveBoundary m_boundary;
+    RippleBoundary m_boundary;
     int m_spongeWidth = 0;
     float m_decayTime = 0.0f, m_viscosity = 0.0f;
     float m_preparedDt = -1.0f;        // dt of the coefficients below (and the sponge factors)

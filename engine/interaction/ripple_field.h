@@ -1,16 +1,17 @@
 // Ripple field: linear convolution of a two-level height field, seed 001 eq. 1–2 (SPEC §2.5).
 // Row-major N×M floats, row = z, column = x; heights in metres; one cell per vertex.
 #pragma once
+#include "interaction/ripple_def.h"
+
 #include <span>
 #include <vector>
 
 namespace ob::interaction {
 
-/// What happens to waves at the patch edge. In both modes the outer ring of cells is held at 0.
-enum class RippleBoundary {
-    Fixed,      ///< interior cells follow eq. 1–2 exactly; waves reflect off the zero ring
-    Absorbing,  ///< a sponge band inside the ring ramps up friction, so waves leave the patch
-};
+// The edge (interaction/ripple_def.h): in every mode the outer ring of cells is held at 0.
+// Fixed: interior cells follow eq. 1–2 exactly and waves reflect off the zero ring; Absorbing:
+// a sponge band inside the ring ramps up friction, so waves leave the patch. Eq. 1–2 has no
+// periodic form: Periodic is held as Fixed (a scene cannot ask for it).
 
 /// N×M ripple height field with two time levels, Vh(t) and Vh(t−1), stepped by eq. 1–2.
 class RippleField {

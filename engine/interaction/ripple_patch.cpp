@@ -8,22 +8,12 @@
 
 namespace ob::interaction {
 
-namespace {
-
-EWaveBoundary ewaveBoundary(const std::string& b) {
-    if (b == "absorbing") return EWaveBoundary::Absorbing;
-    if (b == "fixed") return EWaveBoundary::Fixed;
-    return EWaveBoundary::Periodic;
-}
-
-} // namespace
-
 RipplePatch::RipplePatch(const RippleDef& def)
     : m_def(def),
-      m_field(def.model == "ewave" ? 1 : def.resolution, def.model == "ewave" ? 1 : def.resolution,
-              def.boundary == "absorbing" ? RippleBoundary::Absorbing : RippleBoundary::Fixed, def.sponge_width) {
-    if (def.model == "ewave") {
-        m_ewave = std::make_unique<EWaveField>(def.resolution, def.resolution, def.cell_size, ewaveBoundary(def.boundary),
+      m_field(def.model == RippleModel::EWave ? 1 : def.resolution, def.model == RippleModel::EWave ? 1 : def.resolution,
+              def.boundary, def.sponge_width) {
+    if (def.model == RippleModel::EWave) {
+        m_ewave = std::make_unique<EWaveField>(def.resolution, def.resolution, def.cell_size, def.boundary,
                                                def.sponge_width);
         m_ewave->setDamping(def.decay_time, def.viscosity);
     }

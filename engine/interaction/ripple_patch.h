@@ -43,7 +43,7 @@ public:
     ~RipplePatch();
     /// Steps the field through `offload` from now on (interaction/gpu/ attachGpu).
     void setOffload(std::unique_ptr<RippleOffload> offload) { m_offload = std::move(offload); }
-    /// True for the dispersive model (def().model == "ewave").
+    /// True for the dispersive model (def().model == RippleModel::EWave).
     bool isEWave() const { return m_ewave != nullptr; }
     bool onGpu() const { return m_offload != nullptr; }
 

@@ -1,6 +1,7 @@
 // Spectral ocean settings, section [ocean]: one field per scene key (SPEC §2.1; seed 000 §2.1,
 // seed 003). Formulas behind each key: engine/ocean/spectrum.h.
 #pragma once
+#include "core/backend.h"
 #include "core/schema.h"
 
 #include <cstdint>
@@ -9,10 +10,14 @@
 
 namespace ob::ocean {
 
+/// Which closed form the spectrum Ph(K) follows (engine/ocean/spectrum.h).
+enum class SpectrumKind : uint8_t { Phillips, Jonswap };
+constexpr std::array<const char*, 2> names(SpectrumKind) { return {"phillips", "jonswap"}; }
+
 /// The wind-driven FFT ocean (Tessendorf): spectrum, grid, cascades, time evolution.
 struct OceanDef {
-    std::string backend = "auto";      ///< where the FFT runs: "auto" (gpu when a GL 4.5 context exists, else cpu) | "cpu" (FFTW) | "gpu"
-    std::string spectrum = "phillips"; ///< "phillips" (SPEC eq. 5) | "jonswap" (Hasselmann 1973, fetch-limited, cos² spreading)
+    Backend backend = Backend::Auto;   ///< where the FFT runs: "auto" (gpu on a hardware GPU, else cpu) | "cpu" (FFTW) | "gpu"
+    SpectrumKind spectrum = SpectrumKind::Phillips; ///< "phillips" (SPEC eq. 5) | "jonswap" (Hasselmann 1973, fetch-limited, cos² spreading)
     int resolution = 256;              ///< N, grid points per side of every cascade; power of two in [16, 2048]
     float patch_size = 250.0f;         ///< L, side of the first (largest) cascade's periodic tile, metres, [1, 100000]
     float amplitude = 0.0009f;         ///< A, dimensionless Phillips constant, [0, 1]; eq. 5 is applied with A·(2π/L)² per mode, so heights do not depend on N or L; 0.0009 gives the Pierson–Moskowitz Hs ≈ 0.21·V²/g (unused by jonswap)
@@ -28,8 +33,8 @@ struct OceanDef {
 };
 
 template <class V> void describe(V& v, OceanDef& d) {
-    v.field("backend", d.backend, Choices{"auto", "cpu", "gpu"}, "where the ocean FFT runs");
-    v.field("spectrum", d.spectrum, Choices{"phillips", "jonswap"}, "wave spectrum: Phillips (eq. 5) or JONSWAP");
+    v.field("backend", d.backend, "where the ocean FFT runs");
+    v.field("spectrum", d.spectrum, "wave spectrum: Phillips (eq. 5) or JONSWAP");
     v.field("resolution", d.resolution, powerOfTwo(16, 2048), "grid points per side (N)");
     v.field("patch_size", d.patch_size, range(1, 100000), "side of the largest tile, metres (L)");
     v.field("amplitude", d.amplitude, range(0, 1), "Phillips constant A (dimensionless)");

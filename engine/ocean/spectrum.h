@@ -56,9 +56,6 @@ std::complex<double> modeNoise(std::uint64_t seed, int cascade, int n, int m);
 //   travel and ŵ. With eq. 1–2 the h̃0(K) term travels toward −K, so θ is measured from −K̂.
 //   Per mode: Ph(K) = S(K)·Δk²/2 · exp(−k²l²).
 
-/// Which closed form Ph(K) follows.
-enum class SpectrumKind { Phillips, Jonswap };
-
 /// An OceanDef's spectrum keys resolved to SI values shared by every cascade.
 struct SpectrumParams {
     SpectrumKind kind = SpectrumKind::Phillips; ///< closed form

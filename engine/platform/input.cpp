@@ -5,12 +5,6 @@
 
 namespace ob::platform {
 
-const char* keyName(Key k) {
-    static const char* NAMES[KEY_COUNT] = {"w",  "a",    "s",    "d",     "q",  "e", "space", "shift", "escape", "up",
-                                           "down", "left", "right", "f1", "p", "n", "f",     "f12",   "h",      "c"};
-    return NAMES[size_t(k)];
-}
-
 void InputState::beginConsume() {
     presses.fill(0);
     clicks.fill(0);

@@ -16,8 +16,10 @@ enum class Key : uint8_t {
     W, A, S, D, Q, E, Space, Shift, Escape, Up, Down, Left, Right, F1, P, N, F, F12, H, C, Count
 };
 constexpr size_t KEY_COUNT = size_t(Key::Count);
-/// Lower-case key names as scripts write them ("w", "space", "f12", ...).
-const char* keyName(Key k);
+/// Lower-case key names as scripts write them (enumName(Key::Space) is "space").
+constexpr std::array<const char*, KEY_COUNT> names(Key) {
+    return {"w", "a", "s", "d", "q", "e", "space", "shift", "escape", "up", "down", "left", "right", "f1", "p", "n", "f", "f12", "h", "c"};
+}
 
 enum class MouseButton : uint8_t { Left, Right, Count };
 constexpr size_t BUTTON_COUNT = size_t(MouseButton::Count);

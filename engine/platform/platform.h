@@ -1,7 +1,7 @@
 // Platform: a GL 4.5 core context and its events, behind one interface with three
 // implementations: a GLFW window, and headless an OSMesa (llvmpipe) or EGL (GPU) context.
 #pragma once
-#include "core/schema.h"
+#include "platform/window_def.h"
 #include "platform/input.h"
 
 #include <glm/vec2.hpp>
@@ -10,19 +10,6 @@
 #include <vector>
 
 namespace ob::platform {
-
-/// Window and context settings, section [window].
-struct WindowDef {
-    int width = 1280;       ///< framebuffer width (px), [16, 8192]
-    int height = 720;       ///< framebuffer height (px), [16, 8192]
-    bool vsync = true;      ///< wait for the display's refresh (window only)
-};
-
-template <class V> void describe(V& v, WindowDef& d) {
-    v.field("width", d.width, range(16, 8192), "framebuffer width (px)");
-    v.field("height", d.height, range(16, 8192), "framebuffer height (px)");
-    v.field("vsync", d.vsync, "wait for the display's refresh (window only)");
-}
 
 /// A GL 4.5 core context with a default framebuffer of framebufferSize().
 class Platform {

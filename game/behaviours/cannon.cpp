@@ -126,4 +126,14 @@ void cannonSystem(ecs::World& world, const ecs::Tick& tick) {
     }
 }
 
+StampSource cannonSource() {
+    return {"cannons", [](ecs::World&, SphereUse, const SphereVisitor&) {},
+            [](ecs::World& world) {
+                float largest = 0.0f;
+                for (const Cannon& c : world.pool<Cannon>().components())
+                    largest = std::max(largest, c.ballSphere.radius * c.ballSphere.heightRatio);
+                return largest;
+            }};
+}
+
 } // namespace ob::game

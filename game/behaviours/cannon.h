@@ -5,6 +5,7 @@
 #include "ecs/schedule.h"
 #include "interaction/sphere_stamp.h"
 #include "sim/objects.h"
+#include "sim/stamp_sources.h"
 
 namespace ob::game {
 
@@ -38,5 +39,8 @@ ecs::Entity spawnCannon(ecs::World& world, const ObjectDef& def);
 glm::vec3 cannonAim(float yawDeg, float elevationDeg);
 /// Script phase: sunk balls are removed, cannons aim (player), then fire when asked or due.
 void cannonSystem(ecs::World& world, const ecs::Tick& tick);
+/// The cannons as a stamp source: their balls, once fired, are bodies (bodySource); a cannon
+/// counts its ball's stamp from the start.
+StampSource cannonSource();
 
 } // namespace ob::game

@@ -4,11 +4,13 @@
 #include "core/random.h"
 #include "ecs/components.h"
 #include "interaction/ripple_patch.h"
+#include "splash/splash_particles.h"
 #include "water/composite_water.h"
 #include "sim/water_systems.h"
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 
@@ -34,7 +36,7 @@ interaction::BoundingSphere paperFishSphere(float length) {
 
 ecs::Entity spawnFishSchool(ecs::World& world, const ObjectDef& o, uint64_t seed) {
     FishSchool s;
-    s.region = o.shape == "region";
+    s.region = o.shape == SchoolShape::Region;
     s.centre = glm::vec2(o.position.x, o.position.z);
     s.radius = o.radius;
     s.halfSize = 0.5f * glm::vec2(o.size.x, o.size.z);
@@ -139,29 +141,56 @@ void fishSystem(ecs::World& world, const ecs::Tick& tick) {
     }
 }
 
-void fishStampSystem(ecs::World& world, const ecs::Tick&) {
-    auto* patch = world.resource<interaction::RipplePatch>();
-    const OceanState* ocean = world.resource<OceanState>();
-    if (!patch || !ocean) return;
-    const float cells = float(patch->def().resolution);
-    for (FishSchool& s : world.pool<FishSchool>().components()) {
-        const float reach = s.sphere.radius / patch->def().cell_size + 1.0f;  // footprint radius, cells
+namespace {
+
+// Every fish, school then fish order. To stamp, only the fish that can: a swimming fish that
+// is not in contact is deep under, Table 2 leaves it Free and it needs no water query, and a
+// fish off the patch has nothing to stamp (this is what keeps a large swarm cheap).
+void eachFishSphere(ecs::World& world, SphereUse use, const SphereVisitor& visit) {
+    const auto* patch = world.resource<interaction::RipplePatch>();
+    if (use == SphereUse::Stamp && !patch) return;
+    auto& schools = world.pool<FishSchool>();
+    for (size_t k = 0; k < schools.size(); ++k) {
+        FishSchool& s = schools.components()[k];
+        PlacedSphere p;
+        p.owner = uint32_t(schools.entities()[k]);
+        p.count = uint32_t(s.size());
+        p.sphere = &s.sphere;
+        const float r = s.sphere.radius;
+        p.crossingMass = splash::WATER_DENSITY * 4.0f / 3.0f * std::numbers::pi_v<float> * r * r * r;  // of water-like density
         for (size_t i = 0; i < s.size(); ++i) {
+            p.index = uint32_t(i);
+            p.contact = &s.contacts[i];
+            p.centre = s.position[i];
+            p.velocity = s.velocity[i];
+            p.underwater = !s.jumping[i];
+            if (use == SphereUse::Crossing) {
+                visit(p);
+                continue;
+            }
             s.stamped[i] = 0;
-            // A swimming fish that is not in contact is deep under: Table 2 leaves it Free
-            // and it needs no water query (this is what keeps a large swarm cheap).
             if (!s.jumping[i] && s.contacts[i].phase == interaction::ContactPhase::Free) continue;
-            const glm::vec3& p = s.position[i];
-            const glm::vec2 g = patch->toGrid(glm::vec2(p.x, p.z));
+            const float reach = s.sphere.radius / patch->def().cell_size + 1.0f;  // footprint radius, cells
+            const float cells = float(patch->def().resolution);
+            const glm::vec2 g = patch->toGrid(glm::vec2(p.centre.x, p.centre.z));
             if (g.x < -reach || g.y < -reach || g.x > cells + reach || g.y > cells + reach) continue;
-            const float surface = ocean->water->sample(p.x, p.z).height;
-            if (patch->stampSphere(s.sphere, s.contacts[i], p, s.velocity[i], 1.0f, surface)) {
+            if (visit(p)) {
                 s.stamped[i] = 1;
                 ++s.stamps;
             }
         }
     }
 }
+
+float largestFishStamp(ecs::World& world) {
+    float largest = 0.0f;
+    for (const FishSchool& s : world.pool<FishSchool>().components()) largest = std::max(largest, s.sphere.radius * s.sphere.heightRatio);
+    return largest;
+}
+
+} // namespace
+
+StampSource fishSource() { return {"fish", eachFishSphere, largestFishStamp}; }
 
 void appendFishDraws(ecs::World& world, std::vector<gfx::ObjectDraw>& draws) {
     for (const FishSchool& s : world.pool<FishSchool>().components()) {

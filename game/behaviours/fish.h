@@ -6,6 +6,7 @@
 #include "ecs/schedule.h"
 #include "interaction/sphere_stamp.h"
 #include "sim/objects.h"
+#include "sim/stamp_sources.h"
 
 #include <cstdint>
 #include <string>
@@ -51,9 +52,8 @@ constexpr size_t MAX_DRAWN_FISH = 4096;
 ecs::Entity spawnFishSchool(ecs::World& world, const ObjectDef& def, uint64_t seed);
 /// Script phase: every fish swims or flies its arc one step.
 void fishSystem(ecs::World& world, const ecs::Tick& tick);
-/// Interaction phase, before the ripple step: the fish near the surface stamp the ripple
-/// patch by Table 2 (fish in school order).
-void fishStampSystem(ecs::World& world, const ecs::Tick& tick);
+/// The fish as a stamp source (school then fish order; 1 kg each in eq. 6, as seed 001's sweep).
+StampSource fishSource();
 /// Appends the fish to draw (facing their velocity) to the opaque pass's list.
 void appendFishDraws(ecs::World& world, std::vector<gfx::ObjectDraw>& draws);
 

@@ -6,38 +6,34 @@
 #include "behaviours/ship.h"
 
 #include <algorithm>
+#include <cassert>
 #include <memory>
 
 namespace ob::game {
 
-const std::vector<ObjectType>& objectTypes() {
-    static const std::vector<ObjectType> TYPES = {
-        {"sphere", spawnFloatingBody, {"velocity", "radius", "density"}},
-        {"box", spawnFloatingBody, {"velocity", "size", "density"}},
-        {"ship", [](ecs::World& w, const ObjectDef& o, uint64_t) { return spawnShip(w, o); },
+const ObjectSpawner& objectSpawner(ObjectType type) {
+    static const ObjectSpawner SPAWNERS[] = {
+        {ObjectType::Sphere, spawnFloatingBody, {"velocity", "radius", "density"}},
+        {ObjectType::Box, spawnFloatingBody, {"velocity", "size", "density"}},
+        {ObjectType::Ship, [](ecs::World& w, const ObjectDef& o, uint64_t) { return spawnShip(w, o); },
          {"velocity", "density", "hull", "player", "yaw_deg", "speed", "waypoints"}},
-        {"cannon", [](ecs::World& w, const ObjectDef& o, uint64_t) { return spawnCannon(w, o); },
+        {ObjectType::Cannon, [](ecs::World& w, const ObjectDef& o, uint64_t) { return spawnCannon(w, o); },
          {"player", "yaw_deg", "elevation_deg", "muzzle_speed", "rate", "ball_radius", "ball_density", "sink_depth"}},
-        {"fish_school", spawnFishSchool,
+        {ObjectType::FishSchool, spawnFishSchool,
          {"radius", "size", "speed", "count", "shape", "depth", "jump_height", "jump_interval", "length", "draw"}},
     };
-    return TYPES;
+    static_assert(std::size(SPAWNERS) == enumNames<ObjectType>.size(), "one spawner per object type");
+    assert(SPAWNERS[size_t(type)].type == type);
+    return SPAWNERS[size_t(type)];
 }
 
-const ObjectType* findObjectType(std::string_view name) {
-    for (const ObjectType& t : objectTypes())
-        if (name == t.name) return &t;
-    return nullptr;
-}
-
-bool objectTypeReads(const ObjectType& type, std::string_view key) {
+bool objectTypeReads(const ObjectSpawner& type, std::string_view key) {
     return std::find(std::begin(OBJECT_COMMON_KEYS), std::end(OBJECT_COMMON_KEYS), key) != std::end(OBJECT_COMMON_KEYS) ||
            std::find(type.keys.begin(), type.keys.end(), key) != type.keys.end();
 }
 
 ecs::Entity spawnObject(ecs::World& world, const ObjectDef& o, uint64_t seed) {
-    const ObjectType* type = findObjectType(o.type);
-    return type ? type->spawn(world, o, seed) : ecs::Entity::None;  // the scene loader admits only listed types
+    return objectSpawner(o.type).spawn(world, o, seed);
 }
 
 void spawnObjects(ecs::World& world, const physics::PhysicsDef& def, const std::vector<ObjectDef>& objects, uint64_t seed) {

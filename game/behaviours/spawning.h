@@ -11,9 +11,9 @@
 
 namespace ob::game {
 
-/// One kind of object.
-struct ObjectType {
-    const char* name;                                            ///< the `type` key's value
+/// How one type of object enters the world.
+struct ObjectSpawner {
+    ObjectType type;
     ecs::Entity (*spawn)(ecs::World&, const ObjectDef&, uint64_t seed);
     std::vector<std::string_view> keys;                          ///< what it reads besides OBJECT_COMMON_KEYS
 };
@@ -24,12 +24,10 @@ inline constexpr std::string_view OBJECT_COMMON_KEYS[] = {"type",   "name",     
                                                           "model",  "spheres",      "sphere_cells",        "sphere_height_ratio",
                                                           "sphere_af"};
 
-/// Every type, in the order `type`'s choices list them.
-const std::vector<ObjectType>& objectTypes();
-/// The type named `name`, or null.
-const ObjectType* findObjectType(std::string_view name);
-/// Whether an object of type `type` reads `key` (a key of ObjectDef).
-bool objectTypeReads(const ObjectType& type, std::string_view key);
+/// The spawner of `type`.
+const ObjectSpawner& objectSpawner(ObjectType type);
+/// Whether an object of the spawner's type reads `key` (a key of ObjectDef).
+bool objectTypeReads(const ObjectSpawner& type, std::string_view key);
 
 /// Creates the physics resource and every object of the scene (spawnObject, in order).
 void spawnObjects(ecs::World& world, const physics::PhysicsDef& def, const std::vector<ObjectDef>& objects, uint64_t seed);

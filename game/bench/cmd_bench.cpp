@@ -109,6 +109,24 @@ void writeSpheresChart(const SpheresBenchArgs& a, const ChartSeries& ours) {
 
 } // namespace
 
+// The spheres table: its columns and the settings every row shares.
+static BenchTable spheresTable(const SpheresBenchArgs& a, const FishSwarmDef& base) {
+    std::vector<std::string> columns{"count", "fps", "ms_frame", "ms_stamp", "ms_step"};
+    if (a.render) columns.push_back("ms_render");
+    BenchTable table(a.output.command, columns);
+    char buf[256];
+    std::snprintf(buf, sizeof buf, "%d² cells of %g m, fixed boundary, SR %g, SHR %g, AF %g, DF %g, %g Hz", a.field,
+                  double(base.cell_size), double(a.radiusCells), double(base.height_ratio),
+                  double(base.acceleration_factor), double(base.damping), double(base.step_hz));
+    table.setting("field", buf);
+    table.setting("stamping", a.stamping + ", " + std::to_string(workerCount()) + " worker(s)");
+    table.setting("frames", std::to_string(a.frames) + " measured after " + std::to_string(a.warmup) +
+                                " warm-up; medians; one simulation step per frame");
+    table.setting("render", a.render ? "water surface with the ripple layer, " + a.size + " headless (fish not drawn)"
+                                     : "none (fish not drawn)");
+    return table;
+}
+
 int benchSpheres(const SpheresBenchArgs& a) {
     checkSpheresArgs(a);
     const auto [w, h] = parseSize("--size", a.size);
@@ -124,24 +142,12 @@ int benchSpheres(const SpheresBenchArgs& a) {
     }
     const MachineInfo machine = machineInfo(a.render);
 
-    std::vector<std::string> columns{"count", "fps", "ms_frame", "ms_stamp", "ms_step"};
-    if (a.render) columns.push_back("ms_render");
-    BenchTable table(a.output.command, columns);
     FishSwarmDef base;
     base.field = a.field;
     base.radius_cells = a.radiusCells;
     base.seed = uint64_t(a.seed);
     base.mode = a.stamping == "sequential" ? StampMode::Sequential : StampMode::Batched;
-    char buf[256];
-    std::snprintf(buf, sizeof buf, "%d² cells of %g m, fixed boundary, SR %g, SHR %g, AF %g, DF %g, %g Hz", a.field,
-                  double(base.cell_size), double(a.radiusCells), double(base.height_ratio),
-                  double(base.acceleration_factor), double(base.damping), double(base.step_hz));
-    table.setting("field", buf);
-    table.setting("stamping", a.stamping + ", " + std::to_string(workerCount()) + " worker(s)");
-    table.setting("frames", std::to_string(a.frames) + " measured after " + std::to_string(a.warmup) +
-                                " warm-up; medians; one simulation step per frame");
-    table.setting("render", a.render ? "water surface with the ripple layer, " + a.size + " headless (fish not drawn)"
-                                     : "none (fish not drawn)");
+    BenchTable table = spheresTable(a, base);
 
     Progress progress("spheres");
     ChartSeries ours{a.render ? "oceanbox (rendered)" : "oceanbox (no rendering)", {}, {}, false, 0};

@@ -38,7 +38,7 @@ void addPlayCommand(CLI::App& app, CommandAction& action) {
     cmd->callback([&action, play] {
         action = [play] {
             SceneDef scene = play->load();
-            if (scene.info.purpose == "benchmark")
+            if (scene.info.purpose == ScenePurpose::Benchmark)
                 logInfo("%s is a benchmark scene: %s", play->scene.c_str(),
                         scene.info.note.empty() ? "it measures, it is not meant to look like the sea" : scene.info.note.c_str());
             else if (!scene.info.note.empty())

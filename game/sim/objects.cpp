@@ -32,7 +32,7 @@ std::vector<Probe> latticeProbes(glm::vec3 size, glm::ivec3 counts) {
 // Probes with the solid's volume: a sphere is its own probe (exact Archimedes); a box is
 // a 3×3×3 lattice.
 static std::vector<Probe> probesFor(const ObjectDef& o) {
-    if (o.type == "sphere") return {Probe{glm::vec3(0.0f), o.radius}};
+    if (o.type == ObjectType::Sphere) return {Probe{glm::vec3(0.0f), o.radius}};
     return latticeProbes(o.size, glm::ivec3(3));
 }
 
@@ -48,7 +48,7 @@ float rippleCellSize(ecs::World& world) {
 }
 
 interaction::BoundingSphere boundingSphereFor(const ObjectDef& o, const interaction::BoundingSphere& paper, float cellSize) {
-    if (o.spheres != "custom") return paper;
+    if (o.spheres != SphereValues::Custom) return paper;
     interaction::BoundingSphere s = paper;
     s.radius = o.sphere_cells * cellSize;
     s.heightRatio = o.sphere_height_ratio;
@@ -92,7 +92,7 @@ ecs::Entity findObject(ecs::World& world, const std::string& name) {
 // cannonball: SHR 1, AF 0, SD −1: it pushes the water down).
 ecs::Entity spawnFloatingBody(ecs::World& world, const ObjectDef& o, uint64_t /*seed*/) {
     auto& physicsWorld = *world.resource<physics::PhysicsWorld>();
-    const bool sphere = o.type == "sphere";
+    const bool sphere = o.type == ObjectType::Sphere;
     float volume = sphere ? 4.0f / 3.0f * float(M_PI) * o.radius * o.radius * o.radius : o.size.x * o.size.y * o.size.z;
     float mass = o.density * volume;
     physics::BodyState start;
@@ -102,7 +102,7 @@ ecs::Entity spawnFloatingBody(ecs::World& world, const ObjectDef& o, uint64_t /*
     // Built-in meshes are unit shapes; a box's model is in metres, a sphere's of radius 1.
     const glm::vec3 boxScale = o.model.empty() ? o.size * 0.5f : glm::vec3(1.0f);
     Renderable look{sphere ? gfx::MeshKind::Sphere : gfx::MeshKind::Box, sphere ? glm::vec3(o.radius) : boxScale, o.color, o.model};
-    ecs::Entity e = spawnBody(world, o.type, o.name, id, probesFor(o), volume, mass, start, look);
+    ecs::Entity e = spawnBody(world, enumName(o.type), o.name, id, probesFor(o), volume, mass, start, look);
     interaction::BoundingSphere paper;
     paper.radius = sphere ? o.radius : 0.5f * std::min({o.size.x, o.size.y, o.size.z});
     paper.direction = interaction::SphereDirection::Down;  // a floating body pushes the water down

@@ -14,10 +14,25 @@
 
 namespace ob::game {
 
+/// What an [[objects]] entry is.
+enum class ObjectType : uint8_t { Sphere, Box, Ship, Cannon, FishSchool };
+constexpr std::array<const char*, 5> names(ObjectType) { return {"sphere", "box", "ship", "cannon", "fish_school"}; }
+
+/// Where a fish school swims.
+enum class SchoolShape : uint8_t { Circle, Region };
+constexpr std::array<const char*, 2> names(SchoolShape) { return {"circle", "region"}; }
+
+/// Where an object's bounding-sphere values come from.
+enum class SphereValues : uint8_t {
+    Paper,   ///< seed 001 §V's values for the type
+    Custom,  ///< the sphere_cells, sphere_height_ratio and sphere_af keys
+};
+constexpr std::array<const char*, 2> names(SphereValues) { return {"paper", "custom"}; }
+
 /// One [[objects]] entry. One flat Def for every type: a key a type does not use is ignored
 /// (the type column says who reads it).
 struct ObjectDef {
-    std::string type = "sphere";          ///< "sphere", "box", "ship", "cannon" or "fish_school"
+    ObjectType type = ObjectType::Sphere; ///< "sphere", "box", "ship", "cannon" or "fish_school"
     std::string name;                     ///< all: the name events and the follow camera use ("" = none)
     glm::vec3 position{0.0f, 2.0f, 0.0f}; ///< all: start centre, world m (fish_school: centre of its water, y ignored)
     glm::vec3 velocity{0.0f};             ///< sphere, box, ship: start velocity, m/s
@@ -41,22 +56,22 @@ struct ObjectDef {
     float sink_depth = 15.0f;             ///< cannon: a ball this far under the mean surface is removed, m, [0.1, 10000]
     // --- fish_school
     int count = 10;                       ///< fish_school: number of fish, [1, 1000000]
-    std::string shape = "circle";         ///< fish_school: swim on a "circle" (radius) or inside a "region" (size)
+    SchoolShape shape = SchoolShape::Circle; ///< fish_school: swim on a "circle" (radius) or inside a "region" (size)
     float depth = 1.5f;                   ///< fish_school: swimming depth below the mean surface, m, [0, 1000]
     float jump_height = 1.0f;             ///< fish_school: apex of a jump above the mean surface, m, [0, 100]
     float jump_interval = 3.0f;           ///< fish_school: mean time between one fish's jumps, s, [0.1, 1e6]
     float length = 0.6f;                  ///< fish_school: body length of a fish, m, [0.01, 100]
     bool draw = true;                     ///< fish_school: draw the fish (false: spheres only, as the paper's sweep)
     // --- bounding spheres (seed 001 §V)
-    std::string spheres = "paper";        ///< "paper": the type's values from seed 001 §V; "custom": the three keys below
+    SphereValues spheres = SphereValues::Paper; ///< "paper": the type's values from seed 001 §V; "custom": the three keys below
     float sphere_cells = 5.0f;            ///< custom: SR, sphere radius in ripple cells, [0.1, 512]
     float sphere_height_ratio = 1.0f;     ///< custom: SHR, [0.01, 100]
     float sphere_af = 0.0f;               ///< custom: AF (eq. 7), [-0.99, 10]
 };
 
 template <class V> void describe(V& v, ObjectDef& d) {
-    v.field("type", d.type, Choices{"sphere", "box", "ship", "cannon", "fish_school"}, "what the object is");
-    v.field("name", d.name, Choices{}, "name used by events and the follow camera");
+    v.field("type", d.type, "what the object is");
+    v.field("name", d.name, "name used by events and the follow camera");
     v.field("position", d.position, any(), "start centre, world m (fish_school: centre, y ignored)");
     v.field("velocity", d.velocity, any(), "start velocity, m/s (sphere, box, ship)");
     v.field("radius", d.radius, range(0.01, 10000), "sphere radius, m; fish_school: circle radius, m");
@@ -64,7 +79,7 @@ template <class V> void describe(V& v, ObjectDef& d) {
     v.field("density", d.density, range(1, 100000), "density, kg/m³ (sphere, box, ship)");
     v.field("hull", d.hull, range(0.1, 1000), "ship: hull beam, depth, length, m (a model is scaled from 3 × 1.5 × 10)");
     v.field("color", d.color, range(0, 1), "base colour (linear RGB)");
-    v.field("model", d.model, Choices{}, "glTF 2.0 file (.gltf/.glb) drawn instead of the built-in mesh");
+    v.field("model", d.model, "glTF 2.0 file (.gltf/.glb) drawn instead of the built-in mesh");
     v.field("player", d.player, "ship: W/S throttle, A/D rudder; cannon: arrows aim, Space fires");
     v.field("yaw_deg", d.yaw_deg, range(-360, 360), "ship heading / cannon azimuth, deg about +y (0 faces +z)");
     v.field("speed", d.speed, range(0, 100), "ship: cruise or top speed; fish_school: swimming speed, m/s");
@@ -76,13 +91,13 @@ template <class V> void describe(V& v, ObjectDef& d) {
     v.field("ball_density", d.ball_density, range(1, 100000), "cannon: cannonball density, kg/m³");
     v.field("sink_depth", d.sink_depth, range(0.1, 10000), "cannon: balls deeper than this are removed, m");
     v.field("count", d.count, range(1, 1000000), "fish_school: number of fish");
-    v.field("shape", d.shape, Choices{"circle", "region"}, "fish_school: swim on a circle (radius) or in a region (size)");
+    v.field("shape", d.shape, "fish_school: swim on a circle (radius) or in a region (size)");
     v.field("depth", d.depth, range(0, 1000), "fish_school: swimming depth, m");
     v.field("jump_height", d.jump_height, range(0, 100), "fish_school: jump apex above the mean surface, m");
     v.field("jump_interval", d.jump_interval, range(0.1, 1e6), "fish_school: mean time between a fish's jumps, s");
     v.field("length", d.length, range(0.01, 100), "fish_school: fish body length, m");
     v.field("draw", d.draw, "fish_school: draw the fish (false: spheres only)");
-    v.field("spheres", d.spheres, Choices{"paper", "custom"}, "bounding spheres: seed 001's values for the type, or custom");
+    v.field("spheres", d.spheres, "bounding spheres: seed 001's values for the type, or custom");
     v.field("sphere_cells", d.sphere_cells, range(0.1, 512), "custom spheres: SR, radius in ripple cells");
     v.field("sphere_height_ratio", d.sphere_height_ratio, range(0.01, 100), "custom spheres: SHR");
     v.field("sphere_af", d.sphere_af, range(-0.99, 10), "custom spheres: AF (eq. 7)");

@@ -1,11 +1,10 @@
 // The water's systems: the ocean and the ripple patch with its stamps.
 #include "sim/water_systems.h"
 
-#include "world/camera.h"
 #include "core/log.h"
 #include "ecs/components.h"
 #include "interaction/ripple_patch.h"
-#include "interaction/sphere_set.h"
+#include "sim/stamp_sources.h"
 #include "ocean/gerstner.h"
 #include "ocean/ocean_fft_cpu.h"
 #include "sim/splash_foam_system.h"
@@ -63,32 +62,12 @@ void interactionSystem(ecs::World& world, const ecs::Tick& tick) {
     auto* patch = world.resource<interaction::RipplePatch>();
     const OceanState* ocean = world.resource<OceanState>();
     if (!patch || !ocean) return;
-    if (patch->def().follow != "fixed") {
-        auto& rigs = world.pool<CameraRig>();
-        if (rigs.size() > 0) {
-            glm::vec3 at = patch->def().follow == "target" ? rigs.components()[0].focus
-                                                           : world.get<ecs::Transform>(rigs.entities()[0]).position;
-            patch->centerOn(glm::vec2(at.x, at.z));
-        }
-    }
-    // --- stamps, in entity then sphere order (overlaps: the later sphere wins)
-    auto& sets = world.pool<interaction::SphereSet>();
-    for (size_t i = 0; i < sets.size(); ++i) {
-        ecs::Entity e = sets.entities()[i];
-        interaction::SphereSet& set = sets.components()[i];
-        const ecs::Transform* transform = world.find<ecs::Transform>(e);
-        if (!transform) continue;
-        const ecs::Motion* motion = world.find<ecs::Motion>(e);
-        glm::vec3 velocity = motion ? motion->velocity : glm::vec3(0.0f);
-        float mass = motion ? motion->mass : 1.0f;
-        set.contacts.resize(set.spheres.size());
-        for (size_t k = 0; k < set.spheres.size(); ++k) {
-            glm::vec3 centre = transform->position + transform->rotation * set.spheres[k].offset;
-            // Table 2 measures contact against the whole surface (every layer), as rendered.
-            float surface = ocean->water->sample(centre.x, centre.z).height;
-            patch->stampSphere(set.spheres[k], set.contacts[k], centre, velocity, mass, surface);
-        }
-    }
+    // --- stamps, source, entity then sphere order (overlaps: the later sphere wins)
+    forEachSphere(world, SphereUse::Stamp, [&](const PlacedSphere& p) {
+        // Table 2 measures contact against the whole surface (every layer), as rendered.
+        const float surface = ocean->water->sample(p.centre.x, p.centre.z).height;
+        return patch->stampSphere(*p.sphere, *p.contact, p.centre, p.velocity, p.stampMass, surface);
+    });
     // --- the solver's step: eq. 1–2 (kang2008) or the exact per-mode step over dt (ewave)
     patch->step(float(tick.dt));
 }

@@ -43,7 +43,7 @@ void oceanSystem(ecs::World& world, const ecs::Tick& tick);
 /// Creates the ripple patch resource from the scene's [ripples] (nothing when disabled) and
 /// adds it to the ocean's query; stepSeconds: the simulation step (s).
 void addRipples(ecs::World& world, const interaction::RippleDef& def, float stepSeconds);
-/// Interaction phase: every SphereSet stamps the ripple patch (entity, then sphere order;
+/// Interaction phase: every stamp source's spheres stamp the ripple patch (sim/stamp_sources.h;
 /// Table 2), then the solver's step (seed 001 eq. 1–7, or the ewave step and its sources).
 void interactionSystem(ecs::World& world, const ecs::Tick& tick);
 

@@ -1,5 +1,6 @@
 // The run loop: platform, sandbox, clock, progress line, screenshot and stats.
 #include "tools/app.h"
+#include "platform/platform.h"
 
 #include "core/clock.h"
 #include "core/error.h"
@@ -103,16 +104,17 @@ static void writeStats(const std::string& path, Sandbox& sandbox, const std::str
     writeTextFile(path, j.dump(2) + "\n", "stats");
 }
 
-int runScene(const SceneDef& scene, const std::string& scenePath, const RunOptions& options) {
+// Every file the run will write can be written (before any work is done).
+static void checkOutputs(const SceneDef& scene, const RunOptions& options) {
     if (!options.screenshot.empty()) checkWritable(options.screenshot, "screenshot");
     if (!options.stats.empty()) checkWritable(options.stats, "stats");
     for (const EventDef& e : scene.events)
-        if (e.action == "screenshot") checkWritable(e.file, "event screenshot");
-    // Scripted input goes through the same queue as the window's events.
-    std::vector<platform::InputEvent> scripted;
-    if (!options.input.empty()) scripted = scriptEvents(loadInputScript(options.input));
+        if (e.action == EventAction::Screenshot) checkWritable(e.file, "event screenshot");
+}
 
-    glm::ivec2 size = options.size.x > 0 ? options.size : glm::ivec2(scene.window.width, scene.window.height);
+// A window where one is asked for and a display exists, else a headless context.
+static std::unique_ptr<platform::Platform> openPlatform(const SceneDef& scene, const std::string& scenePath, const RunOptions& options) {
+    const glm::ivec2 size = options.size.x > 0 ? options.size : glm::ivec2(scene.window.width, scene.window.height);
     std::unique_ptr<platform::Platform> platform;
     if (options.window && platform::displayAvailable()) {
         platform::WindowDef window = scene.window;
@@ -124,6 +126,15 @@ int runScene(const SceneDef& scene, const std::string& scenePath, const RunOptio
         platform = platform::createHeadlessPlatform(size);
     }
     logInfo("%s: %s", platform->name(), gfx::glRendererName());
+    return platform;
+}
+
+int runScene(const SceneDef& scene, const std::string& scenePath, const RunOptions& options) {
+    checkOutputs(scene, options);
+    // Scripted input goes through the same queue as the window's events.
+    std::vector<platform::InputEvent> scripted;
+    if (!options.input.empty()) scripted = scriptEvents(loadInputScript(options.input));
+    std::unique_ptr<platform::Platform> platform = openPlatform(scene, scenePath, options);
 
     // A fixed clock advances stepsPerFrame steps a frame (what a slow machine does in play);
     // the catch-up limit must let it.

@@ -38,7 +38,7 @@ static std::vector<float> gpuDump(const ob::ocean::OceanDef& def, double time) {
 int dumpOcean(const ob::ocean::OceanDef& def, double time, const std::string& outPath) {
     const size_t n = size_t(def.resolution);
     std::vector<float> data(n * n * ocean::OCEAN_DUMP_CHANNELS);
-    const bool gpu = def.backend == "gpu";
+    const bool gpu = def.backend == Backend::Gpu;
     if (gpu) {
         data = gpuDump(def, time);
     } else {

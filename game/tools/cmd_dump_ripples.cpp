@@ -22,7 +22,7 @@ int dumpRipples(const SceneDef& scene, int frames, const std::string& out) {
 
     // The GPU twin needs a GL context for the sandbox's life (declared first, destroyed last).
     std::unique_ptr<platform::Platform> context;
-    if (scene.ripples.backend == "gpu") context = platform::createHeadlessPlatform({16, 16});
+    if (scene.ripples.backend == Backend::Gpu) context = platform::createHeadlessPlatform({16, 16});
     Sandbox sandbox(scene);
     if (context) sandbox.attachPlatform(*context, false);
     for (int k = 0; k < frames; ++k) sandbox.step();
@@ -33,7 +33,7 @@ int dumpRipples(const SceneDef& scene, int frames, const std::string& out) {
     // Either model's height level is row-major with row = z, column = x: already the [N, N] layout.
     writeNpy(out, {size_t(patch->rows()), size_t(patch->cols())}, patch->height().data());
     logInfo("ripples: wrote %s [%d, %d] (%s, %s) after %d step(s) (cell %g m, origin (%g, %g) m)", out.c_str(), patch->rows(),
-            patch->cols(), patch->def().model.c_str(), patch->onGpu() ? "gpu" : "cpu", frames, double(patch->def().cell_size), double(patch->origin().x),
+            patch->cols(), enumName(patch->def().model), patch->onGpu() ? "gpu" : "cpu", frames, double(patch->def().cell_size), double(patch->origin().x),
             double(patch->origin().y));
     return EXIT_OK;
 }

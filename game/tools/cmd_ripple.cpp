@@ -57,10 +57,8 @@ int ewaveCommand(const RippleArgs& args) {
     if (!(args.dt > 0.0f && std::isfinite(args.dt))) throw InputError("ripple: --dt " + numberText(args.dt) + " must be > 0 s");
     if (!(args.cellSize > 0.0f && std::isfinite(args.cellSize)))
         throw InputError("ripple: --cell-size " + numberText(args.cellSize) + " must be > 0 m");
-    interaction::EWaveBoundary boundary = interaction::EWaveBoundary::Periodic;
-    if (args.boundary == "fixed") boundary = interaction::EWaveBoundary::Fixed;
-    else if (args.boundary == "absorbing") boundary = interaction::EWaveBoundary::Absorbing;
-    else if (!args.boundary.empty() && args.boundary != "periodic")
+    interaction::RippleBoundary boundary = interaction::RippleBoundary::Periodic;
+    if (!args.boundary.empty() && !enumFromName(args.boundary, boundary))
         throw InputError("ripple: --boundary " + args.boundary + ": need periodic, fixed or absorbing");
 
     // --- fields

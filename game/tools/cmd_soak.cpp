@@ -4,13 +4,11 @@
 #include "tools/cmd_soak.h"
 
 #include "tools/app.h"
-#include "behaviours/cannon.h"
-#include "behaviours/fish.h"
 #include "core/error.h"
 #include "core/log.h"
 #include "ecs/components.h"
 #include "interaction/ripple_patch.h"
-#include "interaction/sphere_set.h"
+#include "sim/stamp_sources.h"
 #include "sim/objects.h"
 #include "ocean/ocean_fft_cpu.h"
 #include "physics/physics_def.h"
@@ -149,29 +147,18 @@ SoakBounds soakBounds(Sandbox& sandbox) {
         b.seaHs = 4.0f * float(std::sqrt(seaVariance));
         for (const ocean::GerstnerWave& w : ocean->waves) b.gerstnerAmplitude += std::fabs(w.amplitude);
     }
-    // The largest stamp any source can make: an object's overlapping spheres chain through
-    // eq. 5's base (each stamps over the one before), so a set counts its spheres' sum; balls
-    // and fish are spawned later, so their templates count from the start.
-    auto scale = [](const interaction::BoundingSphere& s) { return s.radius * s.heightRatio; };
-    float stamp = 0.0f;
-    for (const interaction::SphereSet& set : world.pool<interaction::SphereSet>().components()) {
-        float sum = 0.0f;
-        for (const interaction::BoundingSphere& s : set.spheres) sum += scale(s);
-        stamp = std::max(stamp, sum);
-    }
-    for (const Cannon& c : world.pool<Cannon>().components()) stamp = std::max(stamp, scale(c.ballSphere));
-    for (const FishSchool& f : world.pool<FishSchool>().components()) stamp = std::max(stamp, scale(f.sphere));
-    b.ripple = std::max(1e-3f, RIPPLE_STAMPS * stamp);
+    // The tallest stamp any source can make (an object's overlapping spheres chain through
+    // eq. 5's base; a cannon's balls count from the start).
+    b.ripple = std::max(1e-3f, RIPPLE_STAMPS * largestStamp(world));
     b.surface = b.gerstnerAmplitude + b.ripple;
     for (float h : b.cascadeHeight) b.surface += h;
     return b;
 }
 
-void checkSoakInvariants(Sandbox& sandbox, const SoakBounds& bounds, SoakReport& report) {
+// The ripple patch: kang2008 both levels finite, ewave h finite (a non-finite v reaches h
+// in the next step), and the height bounded by the stamps' scale
+static void checkRipples(Sandbox& sandbox, const SoakBounds& bounds, SoakReport& report) {
     ecs::World& world = sandbox.world();
-
-    // --- ripple patch: kang2008 both levels finite, ewave h finite (a non-finite v reaches h
-    // in the next step), and the height bounded by the stamps' scale
     if (const auto* patch = world.resource<interaction::RipplePatch>()) {
         const bool ewave = patch->isEWave();
         const std::pair<const char*, std::span<const float>> levels[] = {{ewave ? "h" : "Vh(t)", patch->height()},
@@ -190,8 +177,11 @@ void checkSoakInvariants(Sandbox& sandbox, const SoakBounds& bounds, SoakReport&
             report.maxRipple = std::max(report.maxRipple, s.maxAbs);
         }
     }
+}
 
-    // --- ocean maps: every channel of every cascade finite, heights within 8 σ
+// The ocean maps: every channel of every cascade finite, heights within 8 σ
+static void checkOceanMaps(Sandbox& sandbox, const SoakBounds& bounds, SoakReport& report) {
+    ecs::World& world = sandbox.world();
     if (const OceanState* ocean = world.resource<OceanState>()) {
         const ocean::OceanFftCpu& fft = *ocean->cpu;
         const size_t count = size_t(fft.resolution()) * size_t(fft.resolution());
@@ -215,8 +205,11 @@ void checkSoakInvariants(Sandbox& sandbox, const SoakBounds& bounds, SoakReport&
             }
         }
     }
+}
 
-    // --- every transform and velocity finite, rotations unit
+// Every transform and velocity finite, rotations unit.
+static void checkTransforms(Sandbox& sandbox) {
+    ecs::World& world = sandbox.world();
     auto& transforms = world.pool<ecs::Transform>();
     for (size_t i = 0; i < transforms.size(); ++i) {
         const ecs::Transform& t = transforms.components()[i];
@@ -231,8 +224,11 @@ void checkSoakInvariants(Sandbox& sandbox, const SoakBounds& bounds, SoakReport&
     for (size_t i = 0; i < motions.size(); ++i)
         if (!finite3(motions.components()[i].velocity))
             fail(sandbox, "entity " + std::to_string(uint32_t(motions.entities()[i])) + ": velocity is not finite");
+}
 
-    // --- bodies: the surface under each bounded, floating ones afloat (sinking ones may sink)
+// The bodies: the surface under each bounded, floating ones afloat (sinking ones may sink)
+static void checkBodies(Sandbox& sandbox, const SoakBounds& bounds, SoakReport& report) {
+    ecs::World& world = sandbox.world();
     const OceanState* ocean = world.resource<OceanState>();
     const auto* physics = world.resource<physics::PhysicsDef>();
     auto& bodies = world.pool<Body>();
@@ -252,6 +248,13 @@ void checkSoakInvariants(Sandbox& sandbox, const SoakBounds& bounds, SoakReport&
                               fmt(-depth) + " m under the surface, more than " + fmt(limit) + " m (2 extents + Hs)");
         report.minFloatingDepth = std::min(report.minFloatingDepth, depth);
     }
+}
+
+void checkSoakInvariants(Sandbox& sandbox, const SoakBounds& bounds, SoakReport& report) {
+    checkRipples(sandbox, bounds, report);
+    checkOceanMaps(sandbox, bounds, report);
+    checkTransforms(sandbox);
+    checkBodies(sandbox, bounds, report);
 }
 
 // The soak's summary on stdout, and as JSON in options.stats when asked.

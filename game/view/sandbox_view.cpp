@@ -1,5 +1,6 @@
 // The sandbox's view: input from the platform, the frame to the renderer, the UI panels.
 #include "view/sandbox_view.h"
+#include "platform/platform.h"
 
 #include "behaviours/fish.h"
 #include "gfx/renderer.h"

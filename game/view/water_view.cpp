@@ -21,16 +21,16 @@ OceanGpu::~OceanGpu() = default;
 void attachWaterGpu(ecs::World& world) {
     // The ripple patch: auto means the GPU where there is one (software rendering: the CPU).
     if (auto* patch = world.resource<interaction::RipplePatch>()) {
-        const std::string& backend = patch->def().backend;
+        const Backend backend = patch->def().backend;
         // Auto: the CPU up to 1024² even beside a GPU, where its step (0.1 ms at 256², 0.3 ms at
         // 1024²) costs less than the GPU's stamps, step and read-back stall (2.3 ms and 4.3 ms
         // on an H200 in the default scene).
         // The same switch for both models: kang2008 RippleFieldGpu, ewave EWaveGpu.
-        const bool gpu = backend == "gpu" || (backend == "auto" && !gfx::isSoftwareRenderer() && patch->def().resolution >= 2048);
+        const bool gpu = backend == Backend::Gpu || (backend == Backend::Auto && !gfx::isSoftwareRenderer() && patch->def().resolution >= 2048);
         if (gpu && !interaction::attachGpu(*patch))
             logWarn("ripples: the ewave GPU field runs up to %d² cells; %d² runs on the CPU (FFTW)",
                     interaction::EWaveGpu::MAX_RESOLUTION, patch->def().resolution);
-        logInfo("ripples: %s, %s backend, %d² cells of %g m", patch->def().model.c_str(),
+        logInfo("ripples: %s, %s backend, %d² cells of %g m", enumName(patch->def().model),
                 patch->onGpu() ? (patch->isEWave() ? "gpu (compute shaders, float FFT)" : "gpu (compute shaders)")
                                 : (patch->isEWave() ? "cpu (FFTW)" : "cpu"), patch->def().resolution,
                 double(patch->def().cell_size));
@@ -40,7 +40,7 @@ void attachWaterGpu(ecs::World& world) {
     OceanGpu& side = world.setResource(std::make_unique<OceanGpu>());
     side.textures = std::make_unique<ocean::OceanTextures>(ocean->def.resolution, ocean->def.cascades);
     // auto: the GPU where there is one; on a software rasteriser FFTW is faster.
-    bool gpu = ocean->def.backend == "gpu" || (ocean->def.backend == "auto" && !gfx::isSoftwareRenderer());
+    bool gpu = ocean->def.backend == Backend::Gpu || (ocean->def.backend == Backend::Auto && !gfx::isSoftwareRenderer());
     if (gpu && !ocean::OceanFftGpu::available()) {
         logWarn("ocean: compute shaders unavailable, using the CPU backend");
         gpu = false;

@@ -4,6 +4,7 @@
 
 #include "core/log.h"
 #include "ecs/components.h"
+#include "interaction/ripple_patch.h"
 #include "sim/objects.h"
 #include "platform/input.h"
 #include "behaviours/ship.h"
@@ -133,16 +134,16 @@ void cameraSystem(ecs::World& world, const ecs::Tick& tick) {
         ecs::Transform& t = world.get<ecs::Transform>(rigs.entities()[i]);
         const float simDt = float(tick.time - rig.lastSimTime);  // automatic motion stops with the simulation
         rig.lastSimTime = tick.time;
-        if (rig.def.mode == "fixed" || rig.def.mode == "orbit") {
+        if (rig.def.mode == CameraMode::Fixed || rig.def.mode == CameraMode::Orbit) {
             // Rotate the eye about the vertical axis through the target (orbit: at its speed),
             // and by the player's drag and wheel.
-            const float angle = (rig.def.mode == "orbit" ? glm::radians(rig.def.orbit_speed_deg_s) * simDt : 0.0f) -
+            const float angle = (rig.def.mode == CameraMode::Orbit ? glm::radians(rig.def.orbit_speed_deg_s) * simDt : 0.0f) -
                                 drag.x * DRAG_RAD_PER_PX;
             t.position = rig.def.target + steerArm(t.position - rig.def.target, angle, drag.y * DRAG_RAD_PER_PX, zoom);
             if (!rig.underwater) t.position.y = std::max(t.position.y, waterHeight(world, t.position) + CAMERA_CLEARANCE_M);
             lookAt(rig, t.position, rig.def.target);
             rig.focus = rig.def.target;
-        } else if (rig.def.mode == "follow") {
+        } else if (rig.def.mode == CameraMode::Follow) {
             ecs::Entity target = followedObject(world, rig.def.follow);
             const ecs::Transform* object = target == ecs::Entity::None ? nullptr : world.find<ecs::Transform>(target);
             if (object) {
@@ -169,7 +170,7 @@ void cameraSystem(ecs::World& world, const ecs::Tick& tick) {
                 rig.placed = true;
                 lookAt(rig, t.position, rig.focus);
             }
-        } else if (rig.def.mode == "fly") {
+        } else if (rig.def.mode == CameraMode::Fly) {
             fly(world, rig, t, *input, dt);
         }
         t.rotation = glm::quatLookAtRH(forwardOf(rig.yaw, rig.pitch), glm::vec3(0, 1, 0));
@@ -180,29 +181,32 @@ void cycleCameraMode(ecs::World& world) {
     auto& rigs = world.pool<CameraRig>();
     if (rigs.size() == 0) return;
     CameraRig& rig = rigs.components()[0];
-    std::vector<std::string> modes;
-    if (followedObject(world, rig.def.follow) != ecs::Entity::None) modes.push_back("follow");
-    modes.insert(modes.end(), {"orbit", "fly"});
-    if (rig.startMode == "fixed") modes.push_back("fixed");
+    std::vector<CameraMode> modes;
+    if (followedObject(world, rig.def.follow) != ecs::Entity::None) modes.push_back(CameraMode::Follow);
+    modes.insert(modes.end(), {CameraMode::Orbit, CameraMode::Fly});
+    if (rig.startMode == CameraMode::Fixed) modes.push_back(CameraMode::Fixed);
     size_t at = 0;
     while (at < modes.size() && modes[at] != rig.def.mode) ++at;
-    const std::string next = modes[(at + 1) % modes.size()];
+    const CameraMode next = modes[(at + 1) % modes.size()];
     // The new mode starts where the camera is: orbit and fixed about the point looked at.
-    if (next == "orbit" || next == "fixed") {
+    if (next == CameraMode::Orbit || next == CameraMode::Fixed) {
         rig.def.target = rig.focus;
-        if (next == "orbit" && rig.def.orbit_speed_deg_s == 0.0f) rig.def.orbit_speed_deg_s = 4.0f;
+        if (next == CameraMode::Orbit && rig.def.orbit_speed_deg_s == 0.0f) rig.def.orbit_speed_deg_s = 4.0f;
     }
-    rig.underwater = rig.underwater && next == "fly";
+    rig.underwater = rig.underwater && next == CameraMode::Fly;
     rig.def.mode = next;
-    logInfo("camera: %s (C: next mode)", next.c_str());
+    logInfo("camera: %s (C: next mode)", enumName(next));
 }
 
 std::string cameraMode(ecs::World& world) {
     auto& rigs = world.pool<CameraRig>();
-    return rigs.size() > 0 ? rigs.components()[0].def.mode : "";
+    return rigs.size() > 0 ? enumName(rigs.components()[0].def.mode) : "";
 }
 
-bool cameraFlies(ecs::World& world) { return cameraMode(world) == "fly"; }
+bool cameraFlies(ecs::World& world) {
+    auto& rigs = world.pool<CameraRig>();
+    return rigs.size() > 0 && rigs.components()[0].def.mode == CameraMode::Fly;
+}
 
 gfx::CameraView cameraView(ecs::World& world, glm::ivec2 size) {
     auto& rigs = world.pool<CameraRig>();
@@ -217,6 +221,15 @@ gfx::CameraView cameraView(ecs::World& world, glm::ivec2 size) {
     view.nearM = rig.def.near_m;
     view.farM = rig.def.far_m;
     return view;
+}
+
+void patchFollowSystem(ecs::World& world, const ecs::Tick&) {
+    auto* patch = world.resource<interaction::RipplePatch>();
+    auto& rigs = world.pool<CameraRig>();
+    if (!patch || patch->def().follow == interaction::RippleFollow::Fixed || rigs.size() == 0) return;
+    const glm::vec3 at = patch->def().follow == interaction::RippleFollow::Target ? rigs.components()[0].focus
+                                                                                  : world.get<ecs::Transform>(rigs.entities()[0]).position;
+    patch->centerOn(glm::vec2(at.x, at.z));
 }
 
 } // namespace ob::game

@@ -10,9 +10,18 @@
 
 namespace ob::game {
 
+/// How the camera moves (C cycles through them in a window).
+enum class CameraMode : uint8_t {
+    Fixed,   ///< stays at its position, looking at its target
+    Orbit,   ///< circles the target
+    Fly,     ///< flown by the player (WASD QE, right drag looks)
+    Follow,  ///< behind a ship
+};
+constexpr std::array<const char*, 4> names(CameraMode) { return {"fixed", "orbit", "fly", "follow"}; }
+
 /// The scene camera.
 struct CameraDef {
-    std::string mode = "orbit";            ///< "fixed", "orbit" (circles the target), "fly" (player) or "follow" (behind a ship)
+    CameraMode mode = CameraMode::Orbit;   ///< "fixed", "orbit" (circles the target), "fly" (player) or "follow" (behind a ship)
     glm::vec3 position{0.0f, 6.0f, -40.0f};///< start eye position (world m)
     glm::vec3 target{0.0f, 0.0f, 0.0f};    ///< point looked at (world m)
     float fov_deg = 60.0f;                 ///< vertical field of view (degrees), [10, 120]
@@ -26,8 +35,7 @@ struct CameraDef {
 };
 
 template <class V> void describe(V& v, CameraDef& d) {
-    v.field("mode", d.mode, Choices{"fixed", "orbit", "fly", "follow"},
-            "fixed, orbit the target, fly (WASD QE, right drag looks), or follow a ship; C cycles");
+    v.field("mode", d.mode, "fixed, orbit the target, fly (WASD QE, right drag looks), or follow a ship; C cycles");
     v.field("position", d.position, any(), "start eye position (world m)");
     v.field("target", d.target, any(), "point looked at (world m)");
     v.field("fov_deg", d.fov_deg, range(10, 120), "vertical field of view (degrees)");
@@ -35,7 +43,7 @@ template <class V> void describe(V& v, CameraDef& d) {
     v.field("far_m", d.far_m, range(10, 1e6), "far clip distance (m)");
     v.field("orbit_speed_deg_s", d.orbit_speed_deg_s, range(-360, 360), "orbit mode: angular speed (deg/s)");
     v.field("fly_speed_m_s", d.fly_speed_m_s, range(0.1, 1000), "fly mode: speed (m/s)");
-    v.field("follow", d.follow, Choices{}, "follow mode: object name (\"\" = the player's ship)");
+    v.field("follow", d.follow, "follow mode: object name (\"\" = the player's ship)");
     v.field("follow_distance_m", d.follow_distance_m, range(1, 10000), "follow mode: distance behind (m)");
     v.field("follow_height_m", d.follow_height_m, range(-100, 10000), "follow mode: height above (m)");
 }
@@ -50,7 +58,7 @@ constexpr float DIVE_HOLD_S = 0.6f;
 /// Camera state on the camera entity (with a Transform).
 struct CameraRig {
     CameraDef def;
-    std::string startMode;  ///< the scene's mode (C cycles through it when it is "fixed")
+    CameraMode startMode = CameraMode::Orbit;  ///< the scene's mode (C cycles through it when it is "fixed")
     float yaw = 0.0f;    ///< radians about +y; 0 looks along +z
     float pitch = 0.0f;  ///< radians above the horizon
     glm::vec3 focus{0.0f};  ///< the point looked at (world m): the target, or the followed object
@@ -78,6 +86,9 @@ void cameraSystem(ecs::World& world, const ecs::Tick& tick);
 void cycleCameraMode(ecs::World& world);
 /// Whether the camera flies (W/S/A/D/Q/E move it, not the ship).
 bool cameraFlies(ecs::World& world);
+/// Interaction phase, before the ripples: a patch that follows the camera or the point it
+/// looks at is centred under it ([ripples] follow).
+void patchFollowSystem(ecs::World& world, const ecs::Tick& tick);
 /// The camera's mode now ("" without a camera).
 std::string cameraMode(ecs::World& world);
 /// The object the follow mode tracks (None when there is none).

@@ -75,7 +75,7 @@ void spawnRequestsSystem(ecs::World& world, const ecs::Tick& tick) {
     for (; controls->spawnFish > 0; --controls->spawnFish) {
         const ControlsDef& def = controls->def;
         ObjectDef fish;
-        fish.type = "fish_school";
+        fish.type = ObjectType::FishSchool;
         fish.position = focus;
         fish.radius = def.fish_radius;
         fish.count = def.fish_count;

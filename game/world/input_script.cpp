@@ -30,18 +30,16 @@ std::vector<platform::InputEvent> scriptEvents(const InputScriptDef& script) {
     using T = InputEvent::Type;
     std::vector<InputEvent> events;
     for (const PressDef& p : script.press) {
-        platform::Key key = platform::Key::W;
-        for (size_t k = 0; k < platform::KEY_COUNT; ++k)
-            if (p.key == platform::keyName(platform::Key(k))) key = platform::Key(k);
-        events.push_back({T::KeyDown, double(p.at), key});
-        events.push_back({T::KeyUp, double(p.at) + double(p.hold), key});
+        events.push_back({T::KeyDown, double(p.at), p.key});
+        events.push_back({T::KeyUp, double(p.at) + double(p.hold), p.key});
     }
     for (const MouseDef& m : script.mouse) {
-        const auto button = m.button == "right" ? platform::MouseButton::Right : platform::MouseButton::Left;
+        const auto button = m.button == ScriptButton::Right ? platform::MouseButton::Right : platform::MouseButton::Left;
+        const bool held = m.button != ScriptButton::None;
         if (m.scroll != 0.0f) events.push_back({T::Scroll, double(m.at), platform::Key::W, button, glm::vec2(0.0f, m.scroll)});
-        if (m.button != "none") events.push_back({T::ButtonDown, double(m.at), platform::Key::W, button});
+        if (held) events.push_back({T::ButtonDown, double(m.at), platform::Key::W, button});
         if (m.drag != glm::vec2(0.0f)) events.push_back({T::Move, double(m.at) + 0.5 * double(m.hold), platform::Key::W, button, m.drag});
-        if (m.button != "none") events.push_back({T::ButtonUp, double(m.at) + double(m.hold), platform::Key::W, button});
+        if (held) events.push_back({T::ButtonUp, double(m.at) + double(m.hold), platform::Key::W, button});
     }
     // Stable: what falls at one time keeps its order (a tap's down before its up).
     std::stable_sort(events.begin(), events.end(), [](const InputEvent& a, const InputEvent& b) { return a.time < b.time; });

@@ -13,24 +13,25 @@ namespace ob::game {
 /// One [[press]]: `key` goes down at `at` and up `hold` seconds later.
 struct PressDef {
     float at = 0.0f;           ///< clock time of the press (s): simulated in `run`, wall in `play`, [0, 1e6]
-    std::string key = "space"; ///< the key (platform::keyName)
+    platform::Key key = platform::Key::Space;  ///< the key
     float hold = 0.05f;        ///< seconds held, [0, 1e6] (0: down and up at once, a tap)
 };
 
 template <class V> void describe(V& v, PressDef& d) {
     v.field("at", d.at, range(0, 1e6), "clock time of the press (s)");
-    v.field("key", d.key,
-            Choices{"w", "a", "s", "d", "q", "e", "space", "shift", "escape", "up", "down", "left", "right", "f1", "p", "n",
-                    "f", "f12", "h", "c"},
-            "the key pressed");
+    v.field("key", d.key, "the key pressed");
     v.field("hold", d.hold, range(0, 1e6), "seconds held (0: a tap)");
 }
+
+/// The button a [[mouse]] entry holds.
+enum class ScriptButton : uint8_t { Left, Right, None };
+constexpr std::array<const char*, 3> names(ScriptButton) { return {"left", "right", "none"}; }
 
 /// One [[mouse]]: a button held for `hold` seconds (optional), the cursor dragged by `drag`
 /// pixels halfway through, the wheel turned by `scroll` steps at `at`.
 struct MouseDef {
     float at = 0.0f;              ///< clock time (s), [0, 1e6]
-    std::string button = "left";  ///< "left", "right" or "none"
+    ScriptButton button = ScriptButton::Left;  ///< "left", "right" or "none"
     float hold = 0.05f;           ///< seconds the button is held, [0, 1e6]
     glm::vec2 drag{0.0f};         ///< cursor motion (px, +x right, +y down), at at + hold/2
     float scroll = 0.0f;          ///< wheel steps (+: away from the user), at `at`
@@ -38,7 +39,7 @@ struct MouseDef {
 
 template <class V> void describe(V& v, MouseDef& d) {
     v.field("at", d.at, range(0, 1e6), "clock time (s)");
-    v.field("button", d.button, Choices{"left", "right", "none"}, "button held");
+    v.field("button", d.button, "button held");
     v.field("hold", d.hold, range(0, 1e6), "seconds the button is held");
     v.field("drag", d.drag, any(), "cursor motion (px), halfway through the hold");
     v.field("scroll", d.scroll, range(-1000, 1000), "wheel steps");

@@ -14,6 +14,7 @@
 #include "world/script.h"
 #include "behaviours/ship.h"
 #include "sim/splash_foam_system.h"
+#include "sim/stamp_sources.h"
 #include "water/composite_water.h"
 #include "sim/water_systems.h"
 
@@ -47,7 +48,7 @@ const ecs::SystemEntry SYSTEMS[] = {
     {Phase::Script, Rate::Step, "cannons", cannonSystem},
     {Phase::Script, Rate::Step, "fish", fishSystem},
     {Phase::Physics, Rate::Step, "bodies", physicsSystem},
-    {Phase::Interaction, Rate::Step, "fish stamps", fishStampSystem},
+    {Phase::Interaction, Rate::Step, "patch follows", patchFollowSystem},
     {Phase::Interaction, Rate::Step, "ripples", interactionSystem},
     {Phase::Interaction, Rate::Step, "splashes and foam", splashFoamSystem},
     {Phase::Ocean, Rate::Step, "ocean", oceanSystem},
@@ -64,6 +65,7 @@ Sandbox::Sandbox(const SceneDef& scene) : m_scene(scene), m_schedule(scene.sim) 
     addOcean(m_world, m_scene.ocean, m_scene.gerstner);
     addRipples(m_world, m_scene.ripples, float(m_schedule.stepSeconds()));
     addSplashFoam(m_world, m_scene.splash, m_scene.foam, m_scene.sim.seed);
+    for (const StampSource& source : {bodySource(), cannonSource(), fishSource()}) addStampSource(m_world, source);
     spawnObjects(m_world, m_scene.physics, m_scene.objects, m_scene.sim.seed);
     addScript(m_world, m_scene);
 }
@@ -85,7 +87,7 @@ void Sandbox::setCameraPose(const CameraPose& pose, bool keepMode) {
     if (rigs.size() == 0) return;
     CameraRig& rig = rigs.components()[0];
     const CameraDef def = rig.def;
-    const std::string startMode = rig.startMode;
+    const CameraMode startMode = rig.startMode;
     rig = pose.rig;
     rig.lastSimTime = 0.0;  // the new world's clock starts again
     if (!keepMode) {

@@ -14,6 +14,10 @@
 #include <utility>
 #include <vector>
 
+namespace ob::platform {
+class Platform;
+}
+
 namespace ob::game {
 
 /// What draws the world and brings the player's input in (view/sandbox_view.cpp: the

@@ -68,14 +68,13 @@ static void checkObjectKeys(const ObjectDef& o, const std::string& at, const Tom
     KeyLister lister;
     ObjectDef probe;
     describe(lister, probe);
-    const ObjectType* type = findObjectType(o.type);
-    if (!type) return;  // the type's own Choices already reported it
+    const ObjectSpawner& spawner = objectSpawner(o.type);
     for (const char* key : lister.keys) {
         const std::string path = at + "." + key;
-        if (objectTypeReads(*type, key) || doc.where(path, "").empty()) continue;
+        if (objectTypeReads(spawner, key) || doc.where(path, "").empty()) continue;
         std::string reads;
-        for (std::string_view k : type->keys) reads += (reads.empty() ? "" : ", ") + std::string(k);
-        errors.push_back(doc.where(path, source) + ": " + path + ": a " + o.type + " has no '" + key + "' (it reads " + reads +
+        for (std::string_view k : spawner.keys) reads += (reads.empty() ? "" : ", ") + std::string(k);
+        errors.push_back(doc.where(path, source) + ": " + path + ": a " + enumName(o.type) + " has no '" + key + "' (it reads " + reads +
                          " besides type, name, position, color, model and the bounding sphere's keys)");
     }
 }
@@ -91,7 +90,7 @@ static SceneDef readScene(TomlDocument& doc, const std::string& source, const st
     if (errors.empty()) {
         for (const std::string& e : ocean::validate(scene.gerstner, &scene.ocean)) errors.push_back(source + ": " + e);
         for (const std::string& e : validateEvents(scene, source)) errors.push_back(e);
-        if (scene.ripples.model == "kang2008" && scene.ripples.boundary == "periodic")
+        if (scene.ripples.model == interaction::RippleModel::Kang2008 && scene.ripples.boundary == interaction::RippleBoundary::Periodic)
             errors.push_back(doc.where("ripples.boundary", source) +
                              ": ripples.boundary: \"periodic\" needs ripples.model = \"ewave\" (kang2008 has \"fixed\" "
                              "or \"absorbing\")");
@@ -99,7 +98,7 @@ static SceneDef readScene(TomlDocument& doc, const std::string& source, const st
         for (size_t i = 0; i < scene.objects.size(); ++i)
             checkObjectKeys(scene.objects[i], "objects[" + std::to_string(i) + "]", doc, source, errors);
         for (size_t i = 0; i < scene.events.size(); ++i)
-            if (scene.events[i].action == "spawn")
+            if (scene.events[i].action == EventAction::Spawn)
                 checkObjectKeys(scene.events[i].object, "events[" + std::to_string(i) + "].object", doc, source, errors);
     }
     if (!errors.empty()) {

@@ -9,7 +9,7 @@
 #include "interaction/ripple_def.h"
 #include "ocean/gerstner.h"
 #include "ocean/ocean_def.h"
-#include "platform/platform.h"
+#include "platform/window_def.h"
 #include "world/script.h"
 #include "splash/splash_def.h"
 
@@ -18,15 +18,19 @@
 
 namespace ob::game {
 
+/// What a scene is for.
+enum class ScenePurpose : uint8_t { Play, Benchmark };
+constexpr std::array<const char*, 2> names(ScenePurpose) { return {"play", "benchmark"}; }
+
 /// What a scene is for, section [scene].
 struct SceneInfoDef {
-    std::string purpose = "play";  ///< "play" (a sight to play) or "benchmark" (a measurement; `play` says so)
+    ScenePurpose purpose = ScenePurpose::Play;  ///< "play" (a sight to play) or "benchmark" (a measurement; `play` says so)
     std::string note;              ///< one line `play` prints when it opens the scene ("" = none)
 };
 
 template <class V> void describe(V& v, SceneInfoDef& d) {
-    v.field("purpose", d.purpose, Choices{"play", "benchmark"}, "a scene to play, or a benchmark (play says so)");
-    v.field("note", d.note, Choices{}, "one line play prints when it opens the scene");
+    v.field("purpose", d.purpose, "a scene to play, or a benchmark (play says so)");
+    v.field("note", d.note, "one line play prints when it opens the scene");
 }
 
 /// Everything a scene file can say; every section and key is optional.

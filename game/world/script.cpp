@@ -44,7 +44,8 @@ struct KeySlot {
     void field(const char*, uint64_t&, const char*) {}
     void field(const char*, glm::vec2&, Limits, const char*) {}
     void field(const char*, glm::vec3&, Limits, const char*) {}
-    void field(const char*, std::string&, Choices, const char*) {}
+    void field(const char*, std::string&, const char*) {}
+    template <NamedEnum E> void field(const char*, E&, const char*) {}
     void field(const char*, std::vector<glm::vec2>&, Limits, const char*) {}
     template <class Def> void section(const char* key, Def& def) {
         const std::string saved = prefix;
@@ -113,7 +114,7 @@ void moveCamera(ecs::World& world, const EventDef& e) {
         CameraRig& rig = rigs.components()[k];
         ecs::Transform& t = world.get<ecs::Transform>(rigs.entities()[k]);
         rig.def.mode = e.mode;
-        if (e.mode == "follow") {
+        if (e.mode == CameraMode::Follow) {
             rig.def.follow = e.target;
             rig.placed = false;
         } else {
@@ -125,12 +126,14 @@ void moveCamera(ecs::World& world, const EventDef& e) {
 }
 
 void run(ecs::World& world, ScriptState& script, const EventDef& e, size_t index) {
-    if (e.action == "fire") fireCannons(world, e.target);
-    else if (e.action == "spawn") spawnObject(world, e.object, script.seed * 7919ull + 1000000007ull + index);
-    else if (e.action == "set_speed") setSpeed(world, e.target, e.value);
-    else if (e.action == "set") setKey(world, script, e);
-    else if (e.action == "camera") moveCamera(world, e);
-    else if (e.action == "screenshot") script.screenshots.push_back(e.file);
+    switch (e.action) {
+    case EventAction::Fire: fireCannons(world, e.target); break;
+    case EventAction::Spawn: spawnObject(world, e.object, script.seed * 7919ull + 1000000007ull + index); break;
+    case EventAction::SetSpeed: setSpeed(world, e.target, e.value); break;
+    case EventAction::Set: setKey(world, script, e); break;
+    case EventAction::Camera: moveCamera(world, e); break;
+    case EventAction::Screenshot: script.screenshots.push_back(e.file); break;
+    }
     ++script.fired;
 }
 
@@ -141,11 +144,11 @@ std::vector<std::string> validateEvents(SceneDef& scene, const std::string& sour
     std::set<std::string> names;
     for (const ObjectDef& o : scene.objects) names.insert(o.name);
     for (const EventDef& e : scene.events)
-        if (e.action == "spawn") names.insert(e.object.name);
+        if (e.action == EventAction::Spawn) names.insert(e.object.name);
     for (size_t k = 0; k < scene.events.size(); ++k) {
         const EventDef& e = scene.events[k];
         const std::string where = source + ": events[" + std::to_string(k) + "].";
-        if (e.action == "set") {
+        if (e.action == EventAction::Set) {
             KeySlot slot(e.key);
             describe(slot, scene);
             if (!slot.found()) errors.push_back(where + "key: '" + e.key + "' is not a number or switch of the scene");
@@ -156,12 +159,12 @@ std::vector<std::string> validateEvents(SceneDef& scene, const std::string& sour
             else if (std::string m = checkValue(slot, e.value); !m.empty())
                 errors.push_back(where + "value: " + m);
         }
-        const bool named = e.action == "fire" || e.action == "set_speed" || (e.action == "camera" && e.mode == "follow");
+        const bool named = e.action == EventAction::Fire || e.action == EventAction::SetSpeed || (e.action == EventAction::Camera && e.mode == CameraMode::Follow);
         if (named && !e.target.empty() && !names.count(e.target))
             errors.push_back(where + "target: no object is named '" + e.target + "'");
-        if (e.action == "set_speed" && !(e.value >= 0.0f && e.value <= 100.0f))
+        if (e.action == EventAction::SetSpeed && !(e.value >= 0.0f && e.value <= 100.0f))
             errors.push_back(where + "value: a speed in [0, 100] m/s, got " + std::to_string(e.value));
-        if (e.action == "screenshot" && e.file.empty()) errors.push_back(where + "file: a screenshot needs a file name");
+        if (e.action == EventAction::Screenshot && e.file.empty()) errors.push_back(where + "file: a screenshot needs a file name");
     }
     return errors;
 }

@@ -4,6 +4,7 @@
 #include "core/schema.h"
 #include "ecs/schedule.h"
 #include "sim/objects.h"
+#include "world/camera.h"
 
 #include <string>
 #include <vector>
@@ -12,16 +13,27 @@ namespace ob::game {
 
 struct SceneDef;
 
+/// What an event does.
+enum class EventAction : uint8_t {
+    Fire,        ///< fires a cannon (`target`) or every cannon
+    Spawn,       ///< adds `object`
+    SetSpeed,    ///< sets a ship's or fish school's speed (`target`, `value`)
+    Set,         ///< sets a live scene key (`key`, `value`)
+    Camera,      ///< moves the camera (`mode`, `position`, `look_at`, `target`)
+    Screenshot,  ///< writes the next frame to `file`
+};
+constexpr std::array<const char*, 6> names(EventAction) { return {"fire", "spawn", "set_speed", "set", "camera", "screenshot"}; }
+
 /// One [[events]] entry: `action` at `at` seconds; the other keys are read by the actions
 /// that name them.
 struct EventDef {
     float at = 0.0f;                    ///< simulated time, s, [0, 1e6]; runs in the step that starts nearest to it
-    std::string action = "fire";        ///< fire | spawn | set_speed | set | camera | screenshot
+    EventAction action = EventAction::Fire;  ///< fire | spawn | set_speed | set | camera | screenshot
     std::string target;                 ///< fire: cannon ("" = every cannon); set_speed: ship or fish school ("" = every scripted
                                         ///< ship); camera: object to follow
     std::string key;                    ///< set: a live scene key (render.*, camera.*, ripples.damping, physics drag/density keys)
     float value = 0.0f;                 ///< set_speed: m/s; set: the key's new value (switches: 0 or 1)
-    std::string mode = "orbit";         ///< camera: "fixed", "orbit", "fly" or "follow"
+    CameraMode mode = CameraMode::Orbit;  ///< camera: "fixed", "orbit", "fly" or "follow"
     glm::vec3 position{0.0f, 6.0f, -40.0f};  ///< camera: eye, world m (fixed, orbit, fly)
     glm::vec3 look_at{0.0f};            ///< camera: point looked at, world m (fixed, orbit, fly)
     std::string file = "event.png";     ///< screenshot: PNG written after the frame that follows (window or headless)
@@ -30,14 +42,14 @@ struct EventDef {
 
 template <class V> void describe(V& v, EventDef& d) {
     v.field("at", d.at, range(0, 1e6), "simulated time of the action (s)");
-    v.field("action", d.action, Choices{"fire", "spawn", "set_speed", "set", "camera", "screenshot"}, "what happens");
-    v.field("target", d.target, Choices{}, "object name: the cannon fired, ship or school sped, object followed");
-    v.field("key", d.key, Choices{}, "set: live scene key, e.g. render.exposure or ripples.damping");
+    v.field("action", d.action, "what happens");
+    v.field("target", d.target, "object name: the cannon fired, ship or school sped, object followed");
+    v.field("key", d.key, "set: live scene key, e.g. render.exposure or ripples.damping");
     v.field("value", d.value, any(), "set_speed: m/s; set: the new value");
-    v.field("mode", d.mode, Choices{"fixed", "orbit", "fly", "follow"}, "camera: mode");
+    v.field("mode", d.mode, "camera: mode");
     v.field("position", d.position, any(), "camera: eye (world m)");
     v.field("look_at", d.look_at, any(), "camera: point looked at (world m)");
-    v.field("file", d.file, Choices{}, "screenshot: PNG path");
+    v.field("file", d.file, "screenshot: PNG path");
     v.section("object", d.object);
 }
 

@@ -38,7 +38,7 @@ void BM_EWaveStep(benchmark::State& state) {
     const int n = int(state.range(0));
     ob::setWorkerCount(int(state.range(1)));
     ob::setThreadMeasuring(false);
-    EWaveField field(n, n, 0.25f, EWaveBoundary::Absorbing, 32);  // 0.25 m cells
+    EWaveField field(n, n, 0.25f, RippleBoundary::Absorbing, 32);  // 0.25 m cells
     field.setDamping(3.0f, 1e-3f);                                 // the default damping
     fillNoise(field);
     field.step(1.0f / 60.0f);  // coefficients and sponge built outside the timing
@@ -58,7 +58,7 @@ void BM_EWaveGpuStep(benchmark::State& state) {
     ob::setLogQuiet(true);
     const auto platform = ob::platform::createHeadlessPlatform({16, 16});
     const int n = int(state.range(0));
-    EWaveField field(n, n, 0.25f, EWaveBoundary::Absorbing, 32);  // 0.25 m cells
+    EWaveField field(n, n, 0.25f, RippleBoundary::Absorbing, 32);  // 0.25 m cells
     field.setDamping(3.0f, 1e-3f);                                 // the default damping
     fillNoise(field);
     EWaveGpu gpu(field);
@@ -161,7 +161,7 @@ void BM_EWaveStamp(benchmark::State& state) {
     const float sr = float(state.range(1));
     const int n = 128;
     const float cell = 0.25f;
-    EWaveField field(n, n, cell, EWaveBoundary::Fixed);
+    EWaveField field(n, n, cell, RippleBoundary::Fixed);
     BoundingSphere def;
     def.radius = sr * cell;
     def.direction = SphereDirection::Down;

@@ -46,7 +46,7 @@ Image renderFrame(const char* name, glm::ivec2 size, const gfx::RenderDef& def, 
     const int errorsBefore = gfx::glErrorCount();
     gfx::Renderer renderer(def);
     renderer.render(camera, water, objects, 0.0, size);
-    const std::string path = test::tempPath(std::string(name) + "_" + def.antialias + ".png");
+    const std::string path = test::tempPath(std::string(name) + "_" + enumName(def.antialias) + ".png");
     gfx::writeScreenshot(path, size);
     CHECK(gfx::glErrorCount() == errorsBefore);
     Image img = test::loadPng(path);
@@ -54,7 +54,7 @@ Image renderFrame(const char* name, glm::ivec2 size, const gfx::RenderDef& def, 
     return img;
 }
 
-gfx::RenderDef withAntialias(const char* mode) {
+gfx::RenderDef withAntialias(gfx::Antialias mode) {
     gfx::RenderDef def;
     def.antialias = mode;
     return def;
@@ -63,11 +63,11 @@ gfx::RenderDef withAntialias(const char* mode) {
 } // namespace
 
 TEST_CASE("the antialias key's modes: auto is msaa4 on a GPU and fxaa on a software rasteriser", "[gl][render][antialias]") {
-    CHECK(gfx::antialiasMode("off", false) == gfx::Antialias::Off);
-    CHECK(gfx::antialiasMode("fxaa", false) == gfx::Antialias::Fxaa);
-    CHECK(gfx::antialiasMode("msaa4", true) == gfx::Antialias::Msaa4);
-    CHECK(gfx::antialiasMode("auto", false) == gfx::Antialias::Msaa4);
-    CHECK(gfx::antialiasMode("auto", true) == gfx::Antialias::Fxaa);
+    CHECK(gfx::antialiasMode(gfx::Antialias::Off, false) == gfx::Antialias::Off);
+    CHECK(gfx::antialiasMode(gfx::Antialias::Fxaa, false) == gfx::Antialias::Fxaa);
+    CHECK(gfx::antialiasMode(gfx::Antialias::Msaa4, true) == gfx::Antialias::Msaa4);
+    CHECK(gfx::antialiasMode(gfx::Antialias::Auto, false) == gfx::Antialias::Msaa4);
+    CHECK(gfx::antialiasMode(gfx::Antialias::Auto, true) == gfx::Antialias::Fxaa);
 }
 
 TEST_CASE("every antialias mode, at full and half internal size, draws the frame without a GL error", "[gl][render][antialias]") {
@@ -77,9 +77,9 @@ TEST_CASE("every antialias mode, at full and half internal size, draws the frame
     gfx::ObjectDraw box;
     box.mesh = gfx::MeshKind::Box;
     box.model = glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.5f, -25.0f)), glm::vec3(3.0f, 2.5f, 1.0f));
-    for (const char* mode : {"off", "fxaa", "msaa4", "auto"})
+    for (gfx::Antialias mode : {gfx::Antialias::Off, gfx::Antialias::Fxaa, gfx::Antialias::Msaa4, gfx::Antialias::Auto})
         for (float scale : {1.0f, 0.5f}) {
-            INFO(mode << " at resolution_scale " << scale);
+            INFO(enumName(mode) << " at resolution_scale " << scale);
             gfx::RenderDef def = withAntialias(mode);
             def.resolution_scale = scale;
             Image img = renderFrame("modes", size, def, camera, gfx::WaterView{}, {box});
@@ -104,7 +104,7 @@ TEST_CASE("a black box's slanted edges against the sky: blended pixels with fxaa
 
     // From the frame without AA: the box's pixels, its outline (box pixels with a sky
     // neighbour), its brightest pixel and the dimmest sky around it.
-    gfx::RenderDef def = withAntialias("off");
+    gfx::RenderDef def = withAntialias(gfx::Antialias::Off);
     def.sun_direction = glm::vec3(0.0f, 1.0f, 0.0f);  // overhead: no light or glint on the box's face, none in view
     const Image off = renderFrame("edge", size, def, camera, gfx::WaterView{}, {box});
     auto isBox = [&](int x, int y) { return luma(off, x, y) < 0.3f; };
@@ -136,9 +136,9 @@ TEST_CASE("a black box's slanted edges against the sky: blended pixels with fxaa
         return count;
     };
     const int none = blended(off);
-    def.antialias = "fxaa";
+    def.antialias = gfx::Antialias::Fxaa;
     const int fxaa = blended(renderFrame("edge", size, def, camera, gfx::WaterView{}, {box}));
-    def.antialias = "msaa4";
+    def.antialias = gfx::Antialias::Msaa4;
     const int msaa = blended(renderFrame("edge", size, def, camera, gfx::WaterView{}, {box}));
     INFO("blended pixels: off " << none << ", fxaa " << fxaa << ", msaa4 " << msaa);
     CHECK(none <= outline / 50);
@@ -160,7 +160,7 @@ TEST_CASE("on long waves a hull's image in the water starts at its waterline in 
     hull.mesh = gfx::MeshKind::Box;
     hull.color = glm::vec3(0.9f, 0.05f, 0.03f);
     hull.model = glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.5f, 0.0f)), glm::vec3(6.0f, 2.0f, 1.5f));
-    gfx::RenderDef def = withAntialias("off");
+    gfx::RenderDef def = withAntialias(gfx::Antialias::Off);
     def.glitter = 0.0f;           // no sun glint to mistake for the sky
     def.grid_resolution = 256;    // the drawn surface follows the wave to a few mm
     const Image img = renderFrame("waterline", size, def, camera, water, {hull});

@@ -21,7 +21,7 @@ TEST_CASE("dump ocean writes cascade 0's maps as [N, N, 5] float32 (the layout: 
     ob::ocean::OceanDef def;
     def.resolution = 16;
     def.cascades = 1;
-    def.backend = "cpu";
+    def.backend = ob::Backend::Cpu;
     const std::string path = ob::test::tempPath("ocean.npy");
     REQUIRE(ob::game::dumpOcean(def, 2.0, path) == ob::EXIT_OK);
     const ob::NpyArray a = ob::readNpy(path);
@@ -36,7 +36,7 @@ TEST_CASE("dump ocean writes cascade 0's maps as [N, N, 5] float32 (the layout: 
 TEST_CASE("dump ripples writes the patch's Vh(t) after K steps as [N, N] float32, and refuses a scene without ripples",
           "[ripple][cli]") {
     ob::game::SceneDef scene;
-    scene.ripples.model = "kang2008";
+    scene.ripples.model = RippleModel::Kang2008;
     scene.ripples.resolution = 32;
     scene.ocean.resolution = 16;
     const std::string out = ob::test::tempPath("ripples.npy");

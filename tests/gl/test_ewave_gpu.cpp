@@ -84,14 +84,14 @@ TEST_CASE("GPU ewave steps equal EWaveField::step within 1e-5 log2 N of the fiel
     const int errorsBefore = gfx::glErrorCount();
     struct Case {
         int n;
-        EWaveBoundary boundary;
+        RippleBoundary boundary;
         float decayTime, viscosity;
         bool sources;
     };
     const Case cases[] = {
-        {64, EWaveBoundary::Periodic, 0.0f, 0.0f, false}, {64, EWaveBoundary::Fixed, 3.0f, 1e-3f, true},
-        {64, EWaveBoundary::Absorbing, 0.0f, 0.0f, true}, {256, EWaveBoundary::Periodic, 3.0f, 1e-3f, true},
-        {256, EWaveBoundary::Fixed, 0.0f, 0.0f, false},   {256, EWaveBoundary::Absorbing, 3.0f, 1e-3f, true},
+        {64, RippleBoundary::Periodic, 0.0f, 0.0f, false}, {64, RippleBoundary::Fixed, 3.0f, 1e-3f, true},
+        {64, RippleBoundary::Absorbing, 0.0f, 0.0f, true}, {256, RippleBoundary::Periodic, 3.0f, 1e-3f, true},
+        {256, RippleBoundary::Fixed, 0.0f, 0.0f, false},   {256, RippleBoundary::Absorbing, 3.0f, 1e-3f, true},
     };
     const float dt = 1.0f / 60.0f, cell = 0.25f;
     unsigned seed = 7;
@@ -134,7 +134,7 @@ TEST_CASE("GPU ewave steps equal EWaveField::step within 1e-5 log2 N of the fiel
         double peak = 0.0;
         for (double h : cpu.heightState()) peak = std::max(peak, std::abs(h));
         CHECK(peak > 1e-3);
-        if (c.boundary == EWaveBoundary::Fixed)
+        if (c.boundary == RippleBoundary::Fixed)
             for (int i = 0; i < c.n; ++i) REQUIRE(mirror.heightAt(i, 0) == 0.0f);
     }
     CHECK(gfx::glErrorCount() == errorsBefore);
@@ -168,7 +168,7 @@ TEST_CASE("GPU ewave: a single Fourier mode cos(K.X) on a periodic field evolves
     const float dt = 1.0f / 60.0f;
     const double amplitude = 0.05;
     for (const Case& c : cases) {
-        EWaveField field(n, n, c.cell, EWaveBoundary::Periodic);
+        EWaveField field(n, n, c.cell, RippleBoundary::Periodic);
         field.setDamping(c.decayTime, c.viscosity);
         const double l = double(n) * c.cell;
         const double kx = 2.0 * std::numbers::pi * c.mx / l, kz = 2.0 * std::numbers::pi * c.mz / l;
@@ -203,10 +203,10 @@ TEST_CASE("RipplePatch on the ewave GPU twin: written state (fieldEdited) and sc
     auto context = glContext();
     const int errorsBefore = gfx::glErrorCount();
     RippleDef def;
-    def.model = "ewave";
+    def.model = interaction::RippleModel::EWave;
     def.resolution = 64;
     def.cell_size = 0.25f;
-    def.boundary = "absorbing";
+    def.boundary = interaction::RippleBoundary::Absorbing;
     def.sponge_width = 8;
     RipplePatch cpu(def), gpu(def);
     REQUIRE(attachGpu(gpu));

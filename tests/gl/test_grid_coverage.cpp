@@ -219,7 +219,7 @@ gfx::RenderDef coverageRenderDef() {
     gfx::RenderDef def;
     def.reflections = false;  // coverage does not depend on them; the frames are cheaper
     def.refractions = false;
-    def.antialias = "off";    // drawn straight into the default framebuffer, whose depth is read
+    def.antialias = gfx::Antialias::Off;    // drawn straight into the default framebuffer, whose depth is read
     return def;
 }
 

@@ -199,7 +199,7 @@ TEST_CASE("splash drops above flat water: drawn in the frame where they are, mir
     const int errorsBefore = gfx::glErrorCount();
     gfx::RenderDef def;
     def.rtt_scale = 0.5f;
-    def.antialias = "off";
+    def.antialias = gfx::Antialias::Off;
     gfx::Renderer renderer(def);
     gfx::CameraView camera;
     camera.position = glm::vec3(0.0f, 6.0f, 0.0f);

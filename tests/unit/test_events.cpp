@@ -98,12 +98,12 @@ TEST_CASE("timeline: events run in the step nearest their time and act on the ob
     CHECK(sandbox.scene().render.exposure == 2.5f);
     stepTo(2.6);
     const auto& rig = world.pool<game::CameraRig>().components()[0];
-    CHECK(rig.def.mode == "fixed");
+    CHECK(rig.def.mode == game::CameraMode::Fixed);
     CHECK(world.get<ecs::Transform>(world.pool<game::CameraRig>().entities()[0]).position == glm::vec3(10, 3, 0));
     stepTo(3.1);
     // The camera moves once per frame (the render phase), not per step: one frame's update.
     game::cameraSystem(world, ecs::Tick{sandbox.schedule().simTime(), 1.0 / 60.0, sandbox.schedule().steps(), 0.0});
-    CHECK(rig.def.mode == "follow");
+    CHECK(rig.def.mode == game::CameraMode::Follow);
     CHECK(rig.focus.z > world.get<ecs::Transform>(boat).position.z);  // looks ahead of the boat
     CHECK(world.resource<game::ScriptState>()->fired == 7);
     // The boat took up its new speed (3 m/s, within the engine's settling).

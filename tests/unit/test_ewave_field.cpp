@@ -15,7 +15,7 @@
 #include <numbers>
 #include <vector>
 
-using ob::interaction::EWaveBoundary;
+using ob::interaction::RippleBoundary;
 using ob::interaction::EWaveField;
 
 namespace {
@@ -67,7 +67,7 @@ void setMode(EWaveField& f, int mx, int mz) {
 TEST_CASE("ewave: one Fourier mode evolves as cos(K·X)·cos(ωt) from the longest to the Nyquist mode", "[ewave]") {
     const int n = 32;
     for (double cell : {0.01, 0.1, 1.0, 10.0}) {
-        EWaveField f(n, n, float(cell), EWaveBoundary::Periodic);
+        EWaveField f(n, n, float(cell), RippleBoundary::Periodic);
         for (double hz : {30.0, 60.0, 240.0}) {
             const int steps = 40;
             const float dt = float(1.0 / hz);
@@ -95,7 +95,7 @@ TEST_CASE("ewave: one Fourier mode evolves as cos(K·X)·cos(ωt) from the longe
 
 TEST_CASE("ewave: without damping the discrete energy is constant over 10,000 steps", "[ewave]") {
     const int n = 64;
-    EWaveField f(n, n, 0.25f, EWaveBoundary::Periodic);
+    EWaveField f(n, n, 0.25f, RippleBoundary::Periodic);
     // Two Gaussian bumps in h (σ 3 and 2 cells) and a pair of opposite ones in v (no mean: a
     // mean v would raise the whole level forever): many modes at once.
     for (int z = 0; z < n; ++z)
@@ -117,7 +117,7 @@ TEST_CASE("ewave: without damping the discrete energy is constant over 10,000 st
 TEST_CASE("ewave: with damping the energy decays as exp(−2t/τ − 4νk²t)", "[ewave]") {
     const int n = 64;
     SECTION("decay time τ: every mode's energy falls as exp(−2t/τ)") {
-        EWaveField f(n, n, 0.25f, EWaveBoundary::Periodic);
+        EWaveField f(n, n, 0.25f, RippleBoundary::Periodic);
         f.setDamping(2.0f, 0.0f);
         for (int z = 0; z < n; ++z)
             for (int x = 0; x < n; ++x)
@@ -130,7 +130,7 @@ TEST_CASE("ewave: with damping the energy decays as exp(−2t/τ − 4νk²t)", 
     }
     SECTION("viscosity ν: a mode of wavenumber k falls as exp(−4νk²t), at any step rate") {
         for (double hz : {30.0, 240.0}) {
-            EWaveField f(n, n, 0.25f, EWaveBoundary::Periodic);
+            EWaveField f(n, n, 0.25f, RippleBoundary::Periodic);
             f.setDamping(0.0f, 2e-3f);
             setMode(f, 8, 0);
             const double k = 2 * PI / (n * 0.25) * 8;
@@ -153,7 +153,7 @@ TEST_CASE("ewave: a drop's ring train has the Cauchy–Poisson wavenumber k = g�
     // outside the absorbing band.
     const int n = 512;
     const double cell = 0.02, sigma = 0.03;
-    EWaveField f(n, n, float(cell), EWaveBoundary::Absorbing, 24);
+    EWaveField f(n, n, float(cell), RippleBoundary::Absorbing, 24);
     const int c = n / 2;
     for (int z = 0; z < n; ++z)
         for (int x = 0; x < n; ++x) {
@@ -204,7 +204,7 @@ TEST_CASE("ewave: scrolling moves h and v by whole cells, and the absorbing band
         // the rings have crossed the band (0.25 m cells, 128², 30 s).
         double remaining[2];
         int idx = 0;
-        for (EWaveBoundary b : {EWaveBoundary::Periodic, EWaveBoundary::Absorbing}) {
+        for (RippleBoundary b : {RippleBoundary::Periodic, RippleBoundary::Absorbing}) {
             EWaveField f(128, 128, 0.25f, b, 24);
             for (int z = 0; z < 128; ++z)
                 for (int x = 0; x < 128; ++x)

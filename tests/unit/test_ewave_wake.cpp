@@ -36,7 +36,7 @@ struct Wake {
 // part of the field). The angle is atan(b): the intercept a absorbs the source's size.
 Wake runWake(double speed, double seconds, int rows, int cols, double hz, double dCap) {
     const float cell = 0.25f, dt = float(1.0 / hz);
-    EWaveField field(rows, cols, cell, EWaveBoundary::Absorbing, 32);
+    EWaveField field(rows, cols, cell, RippleBoundary::Absorbing, 32);
     BoundingSphere sphere;
     sphere.radius = 0.5f;
     sphere.direction = SphereDirection::Down;

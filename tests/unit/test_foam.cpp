@@ -241,7 +241,7 @@ TEST_CASE("whitecaps, steep ripples and landed drops feed foam by their laws", "
     }
     SECTION("ripples: ripple_weight·(|∇h| − s_0)·dt where the ripples are steep") {
         interaction::RippleDef rd;
-        rd.model = "kang2008";  // its field is written directly here
+        rd.model = interaction::RippleModel::Kang2008;  // its field is written directly here
         rd.resolution = 64;
         rd.cell_size = 0.25f;
         interaction::RipplePatch patch(rd);

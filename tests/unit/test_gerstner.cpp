@@ -340,7 +340,7 @@ TEST_CASE("Gerstner: generated waves carry the Phillips variance of their band, 
 
 TEST_CASE("Gerstner: generated waves from JONSWAP carry ∫S(ω)dω of their band and travel downwind", "[gerstner]") {
     OceanDef ocean;
-    ocean.spectrum = "jonswap";
+    ocean.spectrum = SpectrumKind::Jonswap;
     ocean.wind_speed = 15.0f;
     ocean.patch_size = 40.0f;  // the band reaches past the JONSWAP peak (λp ≈ 79 m)
     GerstnerDef def;

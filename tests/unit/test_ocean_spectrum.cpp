@@ -117,7 +117,7 @@ TEST_CASE("Phillips: the sea's variance Σ 2·Ph equals the continuous integral 
 
 TEST_CASE("JONSWAP: S(ω) follows Hasselmann's formulas and peaks at ωp", "[ocean][spectrum]") {
     OceanDef def;
-    def.spectrum = "jonswap";
+    def.spectrum = SpectrumKind::Jonswap;
     def.wind_speed = 10.0f;
     def.fetch = 100000.0f;
     const SpectrumParams p = spectrumParams(def);
@@ -136,7 +136,7 @@ TEST_CASE("JONSWAP: S(ω) follows Hasselmann's formulas and peaks at ωp", "[oce
 
 TEST_CASE("JONSWAP: the wavenumber spectrum (Jacobian dω/dk, cos² spreading) keeps ∫S(ω)dω", "[ocean][spectrum]") {
     OceanDef def;
-    def.spectrum = "jonswap";
+    def.spectrum = SpectrumKind::Jonswap;
     const SpectrumParams p = spectrumParams(def);
     // ∫S(ω)dω by Simpson's rule.
     double expected = 0;
@@ -159,7 +159,7 @@ TEST_CASE("JONSWAP: the wavenumber spectrum (Jacobian dω/dk, cos² spreading) k
 
 TEST_CASE("JONSWAP: waves travel downwind only and none perpendicular to the wind", "[ocean][spectrum]") {
     OceanDef def;
-    def.spectrum = "jonswap";
+    def.spectrum = SpectrumKind::Jonswap;
     def.wind_direction = {0.0f, 1.0f};
     const SpectrumParams p = spectrumParams(def);
     const double dk = 2 * PI / 250.0;

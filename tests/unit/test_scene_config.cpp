@@ -63,22 +63,22 @@ TEST_CASE("an empty or three-line scene is valid and defaults fill the rest", "[
     SceneDef defaults;
     SceneDef s = game::parseScene("[camera]\nfov_deg = 45\nmode = \"fixed\"\n", "short.toml");
     CHECK(s.camera.fov_deg == 45.0f);
-    CHECK(s.camera.mode == "fixed");
+    CHECK(s.camera.mode == game::CameraMode::Fixed);
     CHECK(s.window.width == defaults.window.width);
     CHECK(s.sim.step_hz == defaults.sim.step_hz);
-    CHECK(game::parseScene("", "empty.toml").render.fresnel == "schlick");
+    CHECK(game::parseScene("", "empty.toml").render.fresnel == gfx::Fresnel::Schlick);
 }
 
 TEST_CASE("overrides (--set) change any key with TOML values, a bare word is a string", "[config]") {
     SceneDef s = game::parseScene("[render]\nfresnel = \"schlick\"\n", "x.toml",
                                   {"render.fresnel=exact", "camera.position=[1, 2, 3]", "sim.step_hz=120", "window.vsync=false",
                                    "render.exposure=2"});
-    CHECK(s.render.fresnel == "exact");
+    CHECK(s.render.fresnel == gfx::Fresnel::Exact);
     CHECK(s.camera.position == glm::vec3(1, 2, 3));
     CHECK(s.sim.step_hz == 120.0f);
     CHECK_FALSE(s.window.vsync);
     CHECK(s.render.exposure == 2.0f);
-    CHECK(game::parseScene("", "x.toml", {"render.fresnel=\"exact\""}).render.fresnel == "exact");
+    CHECK(game::parseScene("", "x.toml", {"render.fresnel=\"exact\""}).render.fresnel == gfx::Fresnel::Exact);
 }
 
 TEST_CASE("an unknown key names file, line, column and key path", "[config]") {

@@ -33,8 +33,8 @@ TEST_CASE("a saved scene holds only the keys that differ from the defaults, nest
     scene.ripples.reference.speed = 2.5f;
     scene.camera.fov_deg = 0.1f + 44.9f;  // not exactly representable: written in its shortest round-trip form
     game::EventDef spawn;
-    spawn.action = "spawn";
-    spawn.object.type = "ship";
+    spawn.action = game::EventAction::Spawn;
+    spawn.object.type = game::ObjectType::Ship;
     spawn.object.waypoints = {{1.0f, 2.0f}, {-3.5f, 4.0f}};
     scene.events.push_back(spawn);
     const std::string text = writeToml(scene);

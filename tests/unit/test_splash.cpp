@@ -216,10 +216,10 @@ TEST_CASE("drops fly the closed form of linear drag, for any step", "[splash]") 
 
 TEST_CASE("landing drops put ε of their kinetic energy into the ripple layer", "[splash]") {
     interaction::RippleDef rd;
-    rd.model = "kang2008";  // its Vh(t) is written and read here; ewave takes the same craters into h
+    rd.model = interaction::RippleModel::Kang2008;  // its Vh(t) is written and read here; ewave takes the same craters into h
     rd.resolution = 64;
     rd.cell_size = 0.25f;
-    rd.boundary = "fixed";
+    rd.boundary = interaction::RippleBoundary::Fixed;
     constexpr double RHO = 1025.0;
     auto potential = [&](const interaction::RipplePatch& patch) {  // ½·ρ·g·Δ²·Σ Vh², J
         double sum = 0.0;

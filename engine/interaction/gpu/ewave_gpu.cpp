@@ -53,7 +53,7 @@ EWaveGpu::EWaveGpu(const EWaveField& like)
     m_fields[0] = gfx::createBuffer("ewave state w = h - i v (or spectrum)", bytes(cells, 2 * sizeof(float)));
     m_fields[1] = gfx::createBuffer("ewave state w = h - i v (or spectrum)", bytes(cells, 2 * sizeof(float)));
     m_rotation = gfx::createBuffer("ewave mode rotation (a, b, c)", bytes(quarter * quarter, sizeof(Rotation)));
-    m_sponge = gfx::createBuffer("ewave sponge factors", bytes(m_boundary == EWaveBoundary::Absorbing ? cells : 1, sizeof(float)));
+    m_sponge = gfx::createBuffer("ewave sponge factors", bytes(m_boundary == RippleBoundary::Absorbing ? cells : 1, sizeof(float)));
     // The ocean's twiddles: exp(+2πi·k/N) rounded from double.
     std::vector<float> twiddles(n);
     for (size_t k = 0; k < n / 2; ++k) {
@@ -94,7 +94,7 @@ void EWaveGpu::prepare(float dt) {
         }
     }
     glNamedBufferSubData(m_rotation.id(), 0, bytes(rotation.size(), sizeof(Rotation)), rotation.data());
-    if (m_boundary == EWaveBoundary::Absorbing) {
+    if (m_boundary == RippleBoundary::Absorbing) {
         const std::vector<float> sponge = EWaveField::spongeFactors(m_n, m_n, m_spongeWidth, dt);
         glNamedBufferSubData(m_sponge.id(), 0, bytes(sponge.size(), sizeof(float)), sponge.data());
     }
@@ -129,8 +129,8 @@ void EWaveGpu::step(float dt) {
     // --- back: w' = h' − i·v', in place
     transform(m_fields[1]);
     // --- the boundary in real space
-    if (m_boundary != EWaveBoundary::Periodic) {
-        glProgramUniform1i(m_step.id(), MODE_LOCATION, m_boundary == EWaveBoundary::Fixed ? MODE_RING : MODE_SPONGE);
+    if (m_boundary != RippleBoundary::Periodic) {
+        glProgramUniform1i(m_step.id(), MODE_LOCATION, m_boundary == RippleBoundary::Fixed ? MODE_RING : MODE_SPONGE);
         glUseProgram(m_step.id());
         glDispatchCompute(m_groups, m_groups, 1);
     }

@@ -60,7 +60,7 @@ public:
     /// N, cells per side.
     int resolution() const { return m_n; }
     /// The boundary in use.
-    EWaveBoundary boundary() const { return m_boundary; }
+    RippleBoundary boundary() const { return m_boundary; }
 
 private:
     void prepare(float dt);
@@ -68,7 +68,7 @@ private:
 
     int m_n = 0, m_log2n = 0;
     float m_cellSize;
-    EWaveBoundary m_boundary;
+    RippleBoundary m_boundary;
     int m_spongeWidth;
     float m_decayTime = 0.0f, m_viscosity = 0.0f;
     float m_preparedDt = -1.0f;  // dt of m_rotation and m_sponge
