@@ -69,6 +69,9 @@ using Words = std::span<const char* const>;
 ///   template <NamedEnum E> void field(const char* key, E& value, const char* doc);  // one of E's words
 ///   void field(const char* key, std::vector<glm::vec2>& points, Limits, const char* doc);  // [[x, z], ...]
 ///   template <class Def> void section(const char* key, Def& def);
+///   template <class Def> void fields(Def& def);  // another Def's keys in this table (an object type's settings)
 ///   template <class Item> void list(const char* key, std::vector<Item>& items, const char* doc);
+/// and, optionally (the loader has it):
+///   void refuse(const char* key, const std::string& why);  // a key this Def does not read as it stands
 
 } // namespace ob

@@ -406,6 +406,10 @@ void TomlReader::field(const char* key, std::string& value, const char*) {
     if (auto str = readString(*m_state, key)) value = str->get();
 }
 
+void TomlReader::refuse(const char* key, const std::string& why) {
+    if (const toml::node* node = m_state->lookup(key)) m_state->error(*node, key, why);
+}
+
 void TomlReader::choice(const char* key, Words words, std::size_t& index) {
     auto str = readString(*m_state, key);
     if (!str) return;

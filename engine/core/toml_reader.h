@@ -50,8 +50,14 @@ public:
     }
     /// One of `words` (an enum's), read as its index.
     void choice(const char* key, Words words, std::size_t& index);
+    /// A key the Def does not read in its present state (another object type's): set in the
+    /// file, it is the error `why`.
+    void refuse(const char* key, const std::string& why);
     /// A list of 2D points, `[[x, z], ...]` (may be empty).
     void field(const char* key, std::vector<glm::vec2>& points, Limits limits, const char* doc);
+
+    /// Reads another Def's keys from this table.
+    template <class Def> void fields(Def& def) { describe(*this, def); }
 
     /// Reads sub-table `key` (absent: defaults stay) into `def` by its describe().
     template <class Def>

@@ -59,6 +59,16 @@ public:
     void field(const char* key, std::string& v, const char*) { add(key, tomlValue(v)); }
     template <NamedEnum E> void field(const char* key, E& v, const char*) { add(key, tomlValue(std::string(enumName(v)))); }
     void field(const char* key, std::vector<glm::vec2>& v, Limits, const char*) { add(key, tomlValue(v)); }
+    /// Another Def's keys in this table, those that differ from its own defaults.
+    template <class Def> void fields(Def& def) {
+        TomlNode mine, defaults;
+        TomlCollector c(mine), d(defaults);
+        describe(c, def);
+        Def fresh{};
+        describe(d, fresh);
+        pruneDefaults(mine, defaults);
+        m_node.keys.insert(m_node.keys.end(), mine.keys.begin(), mine.keys.end());
+    }
     template <class Def> void section(const char* key, Def& def) {
         TomlNode child;
         TomlCollector c(child);

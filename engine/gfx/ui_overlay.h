@@ -39,6 +39,8 @@ public:
     /// A combo box over `words` (an enum's).
     void choice(const char* key, Words words, std::size_t& index, const char* doc);
     void field(const char* key, std::vector<glm::vec2>& points, Limits limits, const char* doc);
+    /// Another Def's keys, in this section.
+    template <class Def> void fields(Def& def) { describe(*this, def); }
     /// A collapsible header per section.
     template <class Def>
     void section(const char* key, Def& def) {

@@ -66,20 +66,20 @@ ecs::Entity spawnCannon(ecs::World& world, const ObjectDef& o) {
         world.add<Renderable>(pillar, {gfx::MeshKind::Box, glm::vec3(0.8f, 0.5f * (top - bottom), 0.8f), PILLAR_COLOR, ""});
     }
     ecs::Entity e = world.create();
-    world.add<ecs::Transform>(e, {o.position, aimRotation(o.yaw_deg, o.elevation_deg)});
+    world.add<ecs::Transform>(e, {o.position, aimRotation(o.cannon.yaw_deg, o.cannon.elevation_deg)});
     // A model is in metres with its pivot at the origin; the built-in box is the barrel.
     const glm::vec3 scale = o.model.empty() ? glm::vec3(0.22f, 0.22f, 0.5f * CANNON_BARREL) : glm::vec3(1.0f);
     world.add<Renderable>(e, {gfx::MeshKind::Box, scale, o.color, o.model});
     world.add<ObjectTag>(e, {"cannon", o.name});
     Cannon cannon;
-    cannon.player = o.player;
-    cannon.yawDeg = o.yaw_deg;
-    cannon.elevationDeg = o.elevation_deg;
-    cannon.muzzleSpeed = o.muzzle_speed;
-    cannon.rate = o.rate;
-    cannon.ballRadius = o.ball_radius;
-    cannon.ballDensity = o.ball_density;
-    cannon.sinkDepth = o.sink_depth;
+    cannon.player = o.cannon.player;
+    cannon.yawDeg = o.cannon.yaw_deg;
+    cannon.elevationDeg = o.cannon.elevation_deg;
+    cannon.muzzleSpeed = o.cannon.muzzle_speed;
+    cannon.rate = o.cannon.rate;
+    cannon.ballRadius = o.cannon.ball_radius;
+    cannon.ballDensity = o.cannon.ball_density;
+    cannon.sinkDepth = o.cannon.sink_depth;
     const float cell = rippleCellSize(world);
     cannon.ballSphere = boundingSphereFor(o, paperBallSphere(cell), cell);
     world.add<Cannon>(e, cannon);

@@ -36,23 +36,23 @@ interaction::BoundingSphere paperFishSphere(float length) {
 
 ecs::Entity spawnFishSchool(ecs::World& world, const ObjectDef& o, uint64_t seed) {
     FishSchool s;
-    s.region = o.shape == SchoolShape::Region;
+    s.region = o.school.shape == SchoolShape::Region;
     s.centre = glm::vec2(o.position.x, o.position.z);
-    s.radius = o.radius;
-    s.halfSize = 0.5f * glm::vec2(o.size.x, o.size.z);
-    s.speed = o.speed;
-    s.depth = o.depth;
-    s.jumpHeight = o.jump_height;
-    s.jumpInterval = o.jump_interval;
-    s.length = o.length;
-    s.draw = o.draw;
+    s.radius = o.school.radius;
+    s.halfSize = 0.5f * glm::vec2(o.school.size.x, o.school.size.z);
+    s.speed = o.school.speed;
+    s.depth = o.school.depth;
+    s.jumpHeight = o.school.jump_height;
+    s.jumpInterval = o.school.jump_interval;
+    s.length = o.school.length;
+    s.draw = o.school.draw;
     s.color = o.color;
     s.model = o.model;
-    s.sphere = boundingSphereFor(o, paperFishSphere(o.length), rippleCellSize(world));
+    s.sphere = boundingSphereFor(o, paperFishSphere(o.school.length), rippleCellSize(world));
     s.sphere.direction = interaction::SphereDirection::Auto;  // SD follows the vertical motion in either case
     s.rng = seed * 0x2545F4914F6CDD1Dull + 0x9E3779B97F4A7C15ull;
 
-    const size_t n = size_t(o.count);
+    const size_t n = size_t(o.school.count);
     s.position.resize(n);
     s.velocity.resize(n);
     s.lane.resize(n);

@@ -48,35 +48,35 @@ interaction::BoundingSphere paperShipSphere(float cellSize) {
 
 ecs::Entity spawnShip(ecs::World& world, const ObjectDef& o) {
     auto& physicsWorld = *world.resource<physics::PhysicsWorld>();
-    const float volume = o.hull.x * o.hull.y * o.hull.z;
-    const float mass = o.density * volume;
+    const float volume = o.ship.hull.x * o.ship.hull.y * o.ship.hull.z;
+    const float mass = o.ship.density * volume;
     physics::BodyState start;
     start.position = o.position;
-    start.rotation = glm::angleAxis(glm::radians(o.yaw_deg), glm::vec3(0, 1, 0));
-    start.linearVelocity = o.velocity;
-    physics::BodyId id = physicsWorld.addBox(o.hull * 0.5f, mass, start);
+    start.rotation = glm::angleAxis(glm::radians(o.ship.yaw_deg), glm::vec3(0, 1, 0));
+    start.linearVelocity = o.ship.velocity;
+    physics::BodyId id = physicsWorld.addBox(o.ship.hull * 0.5f, mass, start);
     // A model is in metres (the hull box is its hull); the built-in unit box is scaled to the hull.
-    Renderable look{gfx::MeshKind::Box, o.model.empty() ? o.hull * 0.5f : o.hull / ObjectDef{}.hull, o.color, o.model};
-    ecs::Entity e = spawnBody(world, "ship", o.name, id, latticeProbes(o.hull, PROBES), volume, mass, start, look);
+    Renderable look{gfx::MeshKind::Box, o.model.empty() ? o.ship.hull * 0.5f : o.ship.hull / ShipDef{}.hull, o.color, o.model};
+    ecs::Entity e = spawnBody(world, "ship", o.name, id, latticeProbes(o.ship.hull, PROBES), volume, mass, start, look);
     world.get<Body>(e).horizontalDrag = 0.0f;  // the hull model below resists horizontal motion
 
     // Six spheres on the keel line at the still-water line (draft = hull depth · density ratio),
     // so they always cross the surface (seed 001: "always in contact").
-    const float draft = o.hull.y * std::min(o.density / physicsDef(world).water_density, 1.0f);
+    const float draft = o.ship.hull.y * std::min(o.ship.density / physicsDef(world).water_density, 1.0f);
     interaction::BoundingSphere sphere = boundingSphereFor(o, paperShipSphere(rippleCellSize(world)), rippleCellSize(world));
     interaction::SphereSet set;
     set.hull = true;
     for (int k = 0; k < SHIP_SPHERES; ++k) {
-        sphere.offset = glm::vec3(0.0f, draft - 0.5f * o.hull.y, (float(k) + 0.5f) * o.hull.z / SHIP_SPHERES - 0.5f * o.hull.z);
+        sphere.offset = glm::vec3(0.0f, draft - 0.5f * o.ship.hull.y, (float(k) + 0.5f) * o.ship.hull.z / SHIP_SPHERES - 0.5f * o.ship.hull.z);
         set.spheres.push_back(sphere);
     }
     world.add<interaction::SphereSet>(e, std::move(set));
 
     Ship ship;
-    ship.hull = o.hull;
-    ship.player = o.player;
-    ship.speed = o.speed;
-    ship.waypoints = o.waypoints;
+    ship.hull = o.ship.hull;
+    ship.player = o.ship.player;
+    ship.speed = o.ship.speed;
+    ship.waypoints = o.ship.waypoints;
     world.add<Ship>(e, std::move(ship));
     return e;
 }

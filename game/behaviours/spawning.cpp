@@ -5,7 +5,6 @@
 #include "behaviours/fish.h"
 #include "behaviours/ship.h"
 
-#include <algorithm>
 #include <cassert>
 #include <memory>
 
@@ -13,23 +12,15 @@ namespace ob::game {
 
 const ObjectSpawner& objectSpawner(ObjectType type) {
     static const ObjectSpawner SPAWNERS[] = {
-        {ObjectType::Sphere, spawnFloatingBody, {"velocity", "radius", "density"}},
-        {ObjectType::Box, spawnFloatingBody, {"velocity", "size", "density"}},
-        {ObjectType::Ship, [](ecs::World& w, const ObjectDef& o, uint64_t) { return spawnShip(w, o); },
-         {"velocity", "density", "hull", "player", "yaw_deg", "speed", "waypoints"}},
-        {ObjectType::Cannon, [](ecs::World& w, const ObjectDef& o, uint64_t) { return spawnCannon(w, o); },
-         {"player", "yaw_deg", "elevation_deg", "muzzle_speed", "rate", "ball_radius", "ball_density", "sink_depth"}},
-        {ObjectType::FishSchool, spawnFishSchool,
-         {"radius", "size", "speed", "count", "shape", "depth", "jump_height", "jump_interval", "length", "draw"}},
+        {ObjectType::Sphere, spawnFloatingBody},
+        {ObjectType::Box, spawnFloatingBody},
+        {ObjectType::Ship, [](ecs::World& w, const ObjectDef& o, uint64_t) { return spawnShip(w, o); }},
+        {ObjectType::Cannon, [](ecs::World& w, const ObjectDef& o, uint64_t) { return spawnCannon(w, o); }},
+        {ObjectType::FishSchool, spawnFishSchool},
     };
     static_assert(std::size(SPAWNERS) == enumNames<ObjectType>.size(), "one spawner per object type");
     assert(SPAWNERS[size_t(type)].type == type);
     return SPAWNERS[size_t(type)];
-}
-
-bool objectTypeReads(const ObjectSpawner& type, std::string_view key) {
-    return std::find(std::begin(OBJECT_COMMON_KEYS), std::end(OBJECT_COMMON_KEYS), key) != std::end(OBJECT_COMMON_KEYS) ||
-           std::find(type.keys.begin(), type.keys.end(), key) != type.keys.end();
 }
 
 ecs::Entity spawnObject(ecs::World& world, const ObjectDef& o, uint64_t seed) {

@@ -1,5 +1,5 @@
-// Spawning by table (the behaviours and sim/objects' floating bodies): each [[objects]] type, how it enters the world and the keys of
-// ObjectDef it reads. A key its type does not read is a scene error naming the type.
+// Spawning by table (the behaviours and sim/objects' floating bodies): how each [[objects]]
+// type enters the world. (The keys each type reads are its settings struct, sim/objects.h.)
 #pragma once
 #include "ecs/world.h"
 #include "physics/physics_def.h"
@@ -15,19 +15,10 @@ namespace ob::game {
 struct ObjectSpawner {
     ObjectType type;
     ecs::Entity (*spawn)(ecs::World&, const ObjectDef&, uint64_t seed);
-    std::vector<std::string_view> keys;                          ///< what it reads besides OBJECT_COMMON_KEYS
 };
-
-/// The keys every type reads (the bounding sphere's: the body's, a ship's hull, a cannon's
-/// balls, each fish).
-inline constexpr std::string_view OBJECT_COMMON_KEYS[] = {"type",   "name",         "position",            "color",
-                                                          "model",  "spheres",      "sphere_cells",        "sphere_height_ratio",
-                                                          "sphere_af"};
 
 /// The spawner of `type`.
 const ObjectSpawner& objectSpawner(ObjectType type);
-/// Whether an object of the spawner's type reads `key` (a key of ObjectDef).
-bool objectTypeReads(const ObjectSpawner& type, std::string_view key);
 
 /// Creates the physics resource and every object of the scene (spawnObject, in order).
 void spawnObjects(ecs::World& world, const physics::PhysicsDef& def, const std::vector<ObjectDef>& objects, uint64_t seed);

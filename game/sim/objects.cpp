@@ -32,8 +32,43 @@ std::vector<Probe> latticeProbes(glm::vec3 size, glm::ivec3 counts) {
 // Probes with the solid's volume: a sphere is its own probe (exact Archimedes); a box is
 // a 3×3×3 lattice.
 static std::vector<Probe> probesFor(const ObjectDef& o) {
-    if (o.type == ObjectType::Sphere) return {Probe{glm::vec3(0.0f), o.radius}};
-    return latticeProbes(o.size, glm::ivec3(3));
+    if (o.type == ObjectType::Sphere) return {Probe{glm::vec3(0.0f), o.sphere.radius}};
+    return latticeProbes(o.box.size, glm::ivec3(3));
+}
+
+namespace {
+
+// The keys a describe() visits, in order.
+struct KeyLister {
+    std::vector<std::string> keys;
+    template <class T, class... Rest> void field(const char* key, T&, Rest&&...) { keys.push_back(key); }
+};
+
+template <class Def> std::vector<std::string> keysOf() {
+    KeyLister lister;
+    Def def;
+    describe(lister, def);
+    return lister.keys;
+}
+
+} // namespace
+
+std::vector<std::pair<std::string, std::string>> keysNotReadBy(ObjectType type) {
+    const std::vector<std::string> typeKeys[] = {keysOf<SphereBodyDef>(), keysOf<BoxBodyDef>(), keysOf<ShipDef>(),
+                                                 keysOf<CannonDef>(), keysOf<FishSchoolDef>()};
+    static_assert(std::size(typeKeys) == enumNames<ObjectType>.size(), "one settings struct per object type");
+    const std::vector<std::string>& own = typeKeys[size_t(type)];
+    std::string reads;
+    for (const std::string& k : own) reads += (reads.empty() ? "" : ", ") + k;
+    std::vector<std::pair<std::string, std::string>> refused;
+    for (const std::vector<std::string>& keys : typeKeys)
+        for (const std::string& key : keys) {
+            const auto same = [&](const auto& r) { return r.first == key; };
+            if (std::find(own.begin(), own.end(), key) != own.end() || std::any_of(refused.begin(), refused.end(), same)) continue;
+            refused.push_back({key, std::string("a ") + enumName(type) + " has no '" + key + "' (it reads " + reads +
+                                        " besides type, name, position, color, model and the bounding sphere's keys)"});
+        }
+    return refused;
 }
 
 const physics::PhysicsDef& physicsDef(ecs::World& world) {
@@ -93,18 +128,20 @@ ecs::Entity findObject(ecs::World& world, const std::string& name) {
 ecs::Entity spawnFloatingBody(ecs::World& world, const ObjectDef& o, uint64_t /*seed*/) {
     auto& physicsWorld = *world.resource<physics::PhysicsWorld>();
     const bool sphere = o.type == ObjectType::Sphere;
-    float volume = sphere ? 4.0f / 3.0f * float(M_PI) * o.radius * o.radius * o.radius : o.size.x * o.size.y * o.size.z;
-    float mass = o.density * volume;
+    const float radius = o.sphere.radius;
+    const glm::vec3 size = o.box.size;
+    float volume = sphere ? 4.0f / 3.0f * float(M_PI) * radius * radius * radius : size.x * size.y * size.z;
+    float mass = (sphere ? o.sphere.density : o.box.density) * volume;
     physics::BodyState start;
     start.position = o.position;
-    start.linearVelocity = o.velocity;
-    physics::BodyId id = sphere ? physicsWorld.addSphere(o.radius, mass, start) : physicsWorld.addBox(o.size * 0.5f, mass, start);
+    start.linearVelocity = sphere ? o.sphere.velocity : o.box.velocity;
+    physics::BodyId id = sphere ? physicsWorld.addSphere(radius, mass, start) : physicsWorld.addBox(size * 0.5f, mass, start);
     // Built-in meshes are unit shapes; a box's model is in metres, a sphere's of radius 1.
-    const glm::vec3 boxScale = o.model.empty() ? o.size * 0.5f : glm::vec3(1.0f);
-    Renderable look{sphere ? gfx::MeshKind::Sphere : gfx::MeshKind::Box, sphere ? glm::vec3(o.radius) : boxScale, o.color, o.model};
+    const glm::vec3 boxScale = o.model.empty() ? size * 0.5f : glm::vec3(1.0f);
+    Renderable look{sphere ? gfx::MeshKind::Sphere : gfx::MeshKind::Box, sphere ? glm::vec3(radius) : boxScale, o.color, o.model};
     ecs::Entity e = spawnBody(world, enumName(o.type), o.name, id, probesFor(o), volume, mass, start, look);
     interaction::BoundingSphere paper;
-    paper.radius = sphere ? o.radius : 0.5f * std::min({o.size.x, o.size.y, o.size.z});
+    paper.radius = sphere ? radius : 0.5f * std::min({size.x, size.y, size.z});
     paper.direction = interaction::SphereDirection::Down;  // a floating body pushes the water down
     paper.heightRatio = 1.0f;
     paper.accelerationFactor = 0.0f;

@@ -29,78 +29,147 @@ enum class SphereValues : uint8_t {
 };
 constexpr std::array<const char*, 2> names(SphereValues) { return {"paper", "custom"}; }
 
-/// One [[objects]] entry. One flat Def for every type: a key a type does not use is ignored
-/// (the type column says who reads it).
+/// [[objects]] type "sphere": a floating solid sphere.
+struct SphereBodyDef {
+    glm::vec3 velocity{0.0f};  ///< start velocity, m/s
+    float radius = 0.5f;       ///< m, [0.01, 10000]
+    float density = 500.0f;    ///< kg/m³, [1, 100000] (water: 1025; below floats)
+};
+
+template <class V> void describe(V& v, SphereBodyDef& d) {
+    v.field("velocity", d.velocity, any(), "start velocity, m/s");
+    v.field("radius", d.radius, range(0.01, 10000), "sphere radius, m");
+    v.field("density", d.density, range(1, 100000), "density, kg/m³ (water 1025)");
+}
+
+/// [[objects]] type "box": a floating box.
+struct BoxBodyDef {
+    glm::vec3 velocity{0.0f};          ///< start velocity, m/s
+    glm::vec3 size{1.0f, 1.0f, 1.0f};  ///< edge lengths [x, y, z], m, [0.01, 10000]
+    float density = 500.0f;            ///< kg/m³, [1, 100000] (water: 1025; below floats)
+};
+
+template <class V> void describe(V& v, BoxBodyDef& d) {
+    v.field("velocity", d.velocity, any(), "start velocity, m/s");
+    v.field("size", d.size, range(0.01, 10000), "box edge lengths, m");
+    v.field("density", d.density, range(1, 100000), "density, kg/m³ (water 1025)");
+}
+
+/// [[objects]] type "ship": a box hull driven by a pilot (the player or its waypoints).
+struct ShipDef {
+    glm::vec3 velocity{0.0f};           ///< start velocity, m/s
+    float density = 500.0f;             ///< kg/m³ of the hull box, [1, 100000]: its draft is depth × density / water's
+    glm::vec3 hull{3.0f, 1.5f, 10.0f};  ///< hull box: beam x, depth y, length z (bow +z), m, [0.1, 1000]; a model is scaled from this default
+    bool player = false;                ///< steered with W/S (throttle) A/D (rudder)
+    float yaw_deg = 0.0f;               ///< start heading, deg about +y, 0 faces +z, 90 faces +x, [-360, 360]
+    float speed = 5.0f;                 ///< cruise (scripted) or top (player) speed, m/s, [0, 100]
+    std::vector<glm::vec2> waypoints;   ///< scripted: [x, z] points visited in order, looping (none: holds its heading)
+};
+
+template <class V> void describe(V& v, ShipDef& d) {
+    v.field("velocity", d.velocity, any(), "start velocity, m/s");
+    v.field("density", d.density, range(1, 100000), "hull density, kg/m³ (draft = depth × density / water's)");
+    v.field("hull", d.hull, range(0.1, 1000), "hull beam, depth, length, m (a model is scaled from 3 × 1.5 × 10)");
+    v.field("player", d.player, "W/S throttle, A/D rudder");
+    v.field("yaw_deg", d.yaw_deg, range(-360, 360), "heading, deg about +y (0 faces +z)");
+    v.field("speed", d.speed, range(0, 100), "cruise or top speed, m/s");
+    v.field("waypoints", d.waypoints, any(), "scripted: [[x, z], ...] visited in order, looping, m");
+}
+
+/// [[objects]] type "cannon": fires iron balls (seed 001 §V-1).
+struct CannonDef {
+    bool player = false;          ///< aimed with the arrows, fires with Space
+    float yaw_deg = 0.0f;         ///< aim azimuth, deg about +y, 0 faces +z, 90 faces +x, [-360, 360]
+    float elevation_deg = 30.0f;  ///< barrel above the horizon, deg, [-10, 89]
+    float muzzle_speed = 25.0f;   ///< ball speed leaving the barrel, m/s, [1, 1000]
+    float rate = 0.0f;            ///< shots per second on its own, [0, 100] (0: only on events and the fire key)
+    float ball_radius = 0.25f;    ///< cannonball radius, m, [0.01, 10]
+    float ball_density = 7800.0f; ///< cannonball density, kg/m³ (iron), [1, 100000]
+    float sink_depth = 15.0f;     ///< a ball this far under the mean surface is removed, m, [0.1, 10000]
+};
+
+template <class V> void describe(V& v, CannonDef& d) {
+    v.field("player", d.player, "arrows aim, Space fires");
+    v.field("yaw_deg", d.yaw_deg, range(-360, 360), "aim azimuth, deg about +y (0 faces +z)");
+    v.field("elevation_deg", d.elevation_deg, range(-10, 89), "barrel elevation, deg");
+    v.field("muzzle_speed", d.muzzle_speed, range(1, 1000), "muzzle speed, m/s");
+    v.field("rate", d.rate, range(0, 100), "shots per second on its own (0: events and the fire key only)");
+    v.field("ball_radius", d.ball_radius, range(0.01, 10), "cannonball radius, m");
+    v.field("ball_density", d.ball_density, range(1, 100000), "cannonball density, kg/m³");
+    v.field("sink_depth", d.sink_depth, range(0.1, 10000), "balls deeper than this are removed, m");
+}
+
+/// [[objects]] type "fish_school": fish swimming and jumping (seed 001 §V-2).
+struct FishSchoolDef {
+    float radius = 0.5f;                      ///< "circle": radius of its circle, m, [0.01, 10000]
+    glm::vec3 size{1.0f, 1.0f, 1.0f};         ///< "region": [x, _, z] extent, m, [0.01, 10000]
+    float speed = 5.0f;                       ///< swimming speed, m/s, [0, 100]
+    int count = 10;                           ///< number of fish, [1, 1000000]
+    SchoolShape shape = SchoolShape::Circle;  ///< swim on a "circle" (radius) or inside a "region" (size)
+    float depth = 1.5f;                       ///< swimming depth below the mean surface, m, [0, 1000]
+    float jump_height = 1.0f;                 ///< apex of a jump above the mean surface, m, [0, 100]
+    float jump_interval = 3.0f;               ///< mean time between one fish's jumps, s, [0.1, 1e6]
+    float length = 0.6f;                      ///< body length of a fish, m, [0.01, 100]
+    bool draw = true;                         ///< draw the fish (false: spheres only, as the paper's sweep)
+};
+
+template <class V> void describe(V& v, FishSchoolDef& d) {
+    v.field("radius", d.radius, range(0.01, 10000), "circle radius, m");
+    v.field("size", d.size, range(0.01, 10000), "region: [x, _, z] extent, m");
+    v.field("speed", d.speed, range(0, 100), "swimming speed, m/s");
+    v.field("count", d.count, range(1, 1000000), "number of fish");
+    v.field("shape", d.shape, "swim on a circle (radius) or in a region (size)");
+    v.field("depth", d.depth, range(0, 1000), "swimming depth, m");
+    v.field("jump_height", d.jump_height, range(0, 100), "jump apex above the mean surface, m");
+    v.field("jump_interval", d.jump_interval, range(0.1, 1e6), "mean time between a fish's jumps, s");
+    v.field("length", d.length, range(0.01, 100), "fish body length, m");
+    v.field("draw", d.draw, "draw the fish (false: spheres only)");
+}
+
+/// One [[objects]] entry: the keys every type reads, and the settings of its type (only that
+/// struct's keys are read; another type's key is an error naming the type).
 struct ObjectDef {
     ObjectType type = ObjectType::Sphere; ///< "sphere", "box", "ship", "cannon" or "fish_school"
-    std::string name;                     ///< all: the name events and the follow camera use ("" = none)
-    glm::vec3 position{0.0f, 2.0f, 0.0f}; ///< all: start centre, world m (fish_school: centre of its water, y ignored)
-    glm::vec3 velocity{0.0f};             ///< sphere, box, ship: start velocity, m/s
-    float radius = 0.5f;                  ///< sphere: radius, m; fish_school: radius of its circle, m; [0.01, 10000]
-    glm::vec3 size{1.0f, 1.0f, 1.0f};     ///< box: edge lengths [x, y, z], m; fish_school "region": [x, _, z] extent, m
-    float density = 500.0f;               ///< sphere, box, ship: kg/m³, [1, 100000] (water: 1025; below floats)
-    glm::vec3 hull{3.0f, 1.5f, 10.0f};    ///< ship: hull box, beam x, depth y, length z (bow +z), m, [0.1, 1000]; a model is scaled from this default
-    glm::vec3 color{0.75f, 0.32f, 0.18f}; ///< all: base colour, linear RGB
-    std::string model;                    ///< all: glTF 2.0 file drawn instead of the built-in mesh ("" = built-in)
-    // --- ship, cannon
-    bool player = false;                  ///< ship: steered with W/S (throttle) A/D (rudder); cannon: aimed with the arrows, fires with Space
-    float yaw_deg = 0.0f;                 ///< ship: start heading; cannon: aim azimuth; deg about +y, 0 faces +z, 90 faces +x
-    float speed = 5.0f;                   ///< ship: cruise (scripted) or top (player) speed, m/s; fish_school: swimming speed, m/s; [0, 100]
-    std::vector<glm::vec2> waypoints;     ///< ship (scripted): [x, z] points visited in order, looping (none: holds its heading)
-    // --- cannon
-    float elevation_deg = 30.0f;          ///< cannon: barrel above the horizon, deg, [-10, 89]
-    float muzzle_speed = 25.0f;           ///< cannon: ball speed leaving the barrel, m/s, [1, 1000]
-    float rate = 0.0f;                    ///< cannon: shots per second on its own, [0, 100] (0: only on events and the fire key)
-    float ball_radius = 0.25f;            ///< cannon: cannonball radius, m, [0.01, 10]
-    float ball_density = 7800.0f;         ///< cannon: cannonball density, kg/m³ (iron), [1, 100000]
-    float sink_depth = 15.0f;             ///< cannon: a ball this far under the mean surface is removed, m, [0.1, 10000]
-    // --- fish_school
-    int count = 10;                       ///< fish_school: number of fish, [1, 1000000]
-    SchoolShape shape = SchoolShape::Circle; ///< fish_school: swim on a "circle" (radius) or inside a "region" (size)
-    float depth = 1.5f;                   ///< fish_school: swimming depth below the mean surface, m, [0, 1000]
-    float jump_height = 1.0f;             ///< fish_school: apex of a jump above the mean surface, m, [0, 100]
-    float jump_interval = 3.0f;           ///< fish_school: mean time between one fish's jumps, s, [0.1, 1e6]
-    float length = 0.6f;                  ///< fish_school: body length of a fish, m, [0.01, 100]
-    bool draw = true;                     ///< fish_school: draw the fish (false: spheres only, as the paper's sweep)
+    std::string name;                     ///< the name events and the follow camera use ("" = none)
+    glm::vec3 position{0.0f, 2.0f, 0.0f}; ///< start centre, world m (fish_school: centre of its water, y ignored)
+    glm::vec3 color{0.75f, 0.32f, 0.18f}; ///< base colour, linear RGB
+    std::string model;                    ///< glTF 2.0 file drawn instead of the built-in mesh ("" = built-in)
     // --- bounding spheres (seed 001 §V)
     SphereValues spheres = SphereValues::Paper; ///< "paper": the type's values from seed 001 §V; "custom": the three keys below
     float sphere_cells = 5.0f;            ///< custom: SR, sphere radius in ripple cells, [0.1, 512]
     float sphere_height_ratio = 1.0f;     ///< custom: SHR, [0.01, 100]
     float sphere_af = 0.0f;               ///< custom: AF (eq. 7), [-0.99, 10]
+    // --- the type's own keys
+    SphereBodyDef sphere;
+    BoxBodyDef box;
+    ShipDef ship;
+    CannonDef cannon;
+    FishSchoolDef school;
 };
+
+/// The keys of the types other than `type` that `type` does not read, each with the error a
+/// file that sets it gets ("a cannon has no 'density' (it reads ...)").
+std::vector<std::pair<std::string, std::string>> keysNotReadBy(ObjectType type);
 
 template <class V> void describe(V& v, ObjectDef& d) {
     v.field("type", d.type, "what the object is");
     v.field("name", d.name, "name used by events and the follow camera");
     v.field("position", d.position, any(), "start centre, world m (fish_school: centre, y ignored)");
-    v.field("velocity", d.velocity, any(), "start velocity, m/s (sphere, box, ship)");
-    v.field("radius", d.radius, range(0.01, 10000), "sphere radius, m; fish_school: circle radius, m");
-    v.field("size", d.size, range(0.01, 10000), "box edge lengths, m; fish_school region: [x, _, z] extent, m");
-    v.field("density", d.density, range(1, 100000), "density, kg/m³ (sphere, box, ship)");
-    v.field("hull", d.hull, range(0.1, 1000), "ship: hull beam, depth, length, m (a model is scaled from 3 × 1.5 × 10)");
     v.field("color", d.color, range(0, 1), "base colour (linear RGB)");
     v.field("model", d.model, "glTF 2.0 file (.gltf/.glb) drawn instead of the built-in mesh");
-    v.field("player", d.player, "ship: W/S throttle, A/D rudder; cannon: arrows aim, Space fires");
-    v.field("yaw_deg", d.yaw_deg, range(-360, 360), "ship heading / cannon azimuth, deg about +y (0 faces +z)");
-    v.field("speed", d.speed, range(0, 100), "ship: cruise or top speed; fish_school: swimming speed, m/s");
-    v.field("waypoints", d.waypoints, any(), "ship (scripted): [[x, z], ...] visited in order, looping, m");
-    v.field("elevation_deg", d.elevation_deg, range(-10, 89), "cannon: barrel elevation, deg");
-    v.field("muzzle_speed", d.muzzle_speed, range(1, 1000), "cannon: muzzle speed, m/s");
-    v.field("rate", d.rate, range(0, 100), "cannon: shots per second on its own (0: events and the fire key only)");
-    v.field("ball_radius", d.ball_radius, range(0.01, 10), "cannon: cannonball radius, m");
-    v.field("ball_density", d.ball_density, range(1, 100000), "cannon: cannonball density, kg/m³");
-    v.field("sink_depth", d.sink_depth, range(0.1, 10000), "cannon: balls deeper than this are removed, m");
-    v.field("count", d.count, range(1, 1000000), "fish_school: number of fish");
-    v.field("shape", d.shape, "fish_school: swim on a circle (radius) or in a region (size)");
-    v.field("depth", d.depth, range(0, 1000), "fish_school: swimming depth, m");
-    v.field("jump_height", d.jump_height, range(0, 100), "fish_school: jump apex above the mean surface, m");
-    v.field("jump_interval", d.jump_interval, range(0.1, 1e6), "fish_school: mean time between a fish's jumps, s");
-    v.field("length", d.length, range(0.01, 100), "fish_school: fish body length, m");
-    v.field("draw", d.draw, "fish_school: draw the fish (false: spheres only)");
     v.field("spheres", d.spheres, "bounding spheres: seed 001's values for the type, or custom");
     v.field("sphere_cells", d.sphere_cells, range(0.1, 512), "custom spheres: SR, radius in ripple cells");
     v.field("sphere_height_ratio", d.sphere_height_ratio, range(0.01, 100), "custom spheres: SHR");
     v.field("sphere_af", d.sphere_af, range(-0.99, 10), "custom spheres: AF (eq. 7)");
+    switch (d.type) {  // a reader has read `type` by now
+    case ObjectType::Sphere: v.fields(d.sphere); break;
+    case ObjectType::Box: v.fields(d.box); break;
+    case ObjectType::Ship: v.fields(d.ship); break;
+    case ObjectType::Cannon: v.fields(d.cannon); break;
+    case ObjectType::FishSchool: v.fields(d.school); break;
+    }
+    if constexpr (requires { v.refuse("", std::string()); })
+        for (const auto& [key, why] : keysNotReadBy(d.type)) v.refuse(key.c_str(), why);
 }
 
 /// What kind of object an entity is, and its scene name (every spawned object has one).

@@ -77,11 +77,11 @@ void spawnRequestsSystem(ecs::World& world, const ecs::Tick& tick) {
         ObjectDef fish;
         fish.type = ObjectType::FishSchool;
         fish.position = focus;
-        fish.radius = def.fish_radius;
-        fish.count = def.fish_count;
-        fish.speed = def.fish_speed;
-        fish.jump_interval = def.fish_jump_interval;
-        fish.length = def.fish_length;
+        fish.school.radius = def.fish_radius;
+        fish.school.count = def.fish_count;
+        fish.school.speed = def.fish_speed;
+        fish.school.jump_interval = def.fish_jump_interval;
+        fish.school.length = def.fish_length;
         fish.color = def.fish_color;
         spawnObject(world, fish, tick.step * 31ull + uint64_t(controls->spawnFish));
         logInfo("fish school spawned at (%.0f, %.0f)", double(focus.x), double(focus.z));

@@ -6,7 +6,6 @@
 #include "core/file_write.h"
 #include "core/toml_writer.h"
 #include "core/toml_reader.h"
-#include "behaviours/spawning.h"
 
 #include <filesystem>
 
@@ -55,30 +54,6 @@ static void checkModels(SceneDef& scene, const TomlDocument& doc, const std::str
     }
 }
 
-// The keys a describe() visits, in order.
-struct KeyLister {
-    std::vector<const char*> keys;
-    template <class T, class... Rest> void field(const char* key, T&, Rest&&...) { keys.push_back(key); }
-};
-
-// Every key an object table holds must be one its type reads (behaviours/spawning.cpp): a cannon's
-// `density` or a ship's `radius` would otherwise be accepted and silently ignored.
-static void checkObjectKeys(const ObjectDef& o, const std::string& at, const TomlDocument& doc, const std::string& source,
-                            std::vector<std::string>& errors) {
-    KeyLister lister;
-    ObjectDef probe;
-    describe(lister, probe);
-    const ObjectSpawner& spawner = objectSpawner(o.type);
-    for (const char* key : lister.keys) {
-        const std::string path = at + "." + key;
-        if (objectTypeReads(spawner, key) || doc.where(path, "").empty()) continue;
-        std::string reads;
-        for (std::string_view k : spawner.keys) reads += (reads.empty() ? "" : ", ") + std::string(k);
-        errors.push_back(doc.where(path, source) + ": " + path + ": a " + enumName(o.type) + " has no '" + key + "' (it reads " + reads +
-                         " besides type, name, position, color, model and the bounding sphere's keys)");
-    }
-}
-
 static SceneDef readScene(TomlDocument& doc, const std::string& source, const std::string& sceneDir,
                           std::vector<std::string>& errors, const std::vector<std::string>& overrides) {
     for (const std::string& o : overrides) doc.applyOverride(o, errors);
@@ -95,11 +70,6 @@ static SceneDef readScene(TomlDocument& doc, const std::string& source, const st
                              ": ripples.boundary: \"periodic\" needs ripples.model = \"ewave\" (kang2008 has \"fixed\" "
                              "or \"absorbing\")");
         checkModels(scene, doc, source, sceneDir, errors);
-        for (size_t i = 0; i < scene.objects.size(); ++i)
-            checkObjectKeys(scene.objects[i], "objects[" + std::to_string(i) + "]", doc, source, errors);
-        for (size_t i = 0; i < scene.events.size(); ++i)
-            if (scene.events[i].action == EventAction::Spawn)
-                checkObjectKeys(scene.events[i].object, "events[" + std::to_string(i) + "].object", doc, source, errors);
     }
     if (!errors.empty()) {
         std::string message;

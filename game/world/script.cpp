@@ -54,6 +54,7 @@ struct KeySlot {
         prefix = saved;
     }
     template <class Item> void list(const char*, std::vector<Item>&, const char*) {}
+    template <class Def> void fields(Def&) {}
     bool found() const { return f || i || b; }
 };
 

@@ -223,8 +223,8 @@ TEST_CASE("overrides (--set) reach into [[objects]] by index: objects[1].count=N
     const std::string text = "[[objects]]\ntype = \"ship\"\n[[objects]]\ntype = \"fish_school\"\ncount = 3\n";
     SceneDef s = game::parseScene(text, "x.toml", {"objects[1].count=1000", "objects[0].speed=2.5", "objects[1].position=[1, 0, 2]"});
     REQUIRE(s.objects.size() == 2);
-    CHECK(s.objects[1].count == 1000);
-    CHECK(s.objects[0].speed == 2.5f);
+    CHECK(s.objects[1].school.count == 1000);
+    CHECK(s.objects[0].ship.speed == 2.5f);
     CHECK(s.objects[1].position == glm::vec3(1, 0, 2));
     CHECK(sceneError(text, {"objects[2].count=1"}) == "--set objects[2].count=1: 'objects' has no element [2]");
     // An index beyond size_t (found by fuzz_scene: std::stoul threw out_of_range) is no element either.

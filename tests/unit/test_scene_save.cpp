@@ -19,7 +19,7 @@ TEST_CASE("every shipped scene written back as TOML reads back as the same scene
         for (size_t i = 0; i < scene.objects.size(); ++i) {
             CHECK(again.objects[i].type == scene.objects[i].type);
             CHECK(again.objects[i].position == scene.objects[i].position);
-            CHECK(again.objects[i].waypoints == scene.objects[i].waypoints);
+            CHECK(again.objects[i].ship.waypoints == scene.objects[i].ship.waypoints);
         }
         CHECK(again.events.size() == scene.events.size());
         CHECK(again.ripples.damping == scene.ripples.damping);
@@ -35,7 +35,7 @@ TEST_CASE("a saved scene holds only the keys that differ from the defaults, nest
     game::EventDef spawn;
     spawn.action = game::EventAction::Spawn;
     spawn.object.type = game::ObjectType::Ship;
-    spawn.object.waypoints = {{1.0f, 2.0f}, {-3.5f, 4.0f}};
+    spawn.object.ship.waypoints = {{1.0f, 2.0f}, {-3.5f, 4.0f}};
     scene.events.push_back(spawn);
     const std::string text = writeToml(scene);
     CHECK(text.find("[ripples.reference]\nspeed = 2.5\n") != std::string::npos);
@@ -45,6 +45,6 @@ TEST_CASE("a saved scene holds only the keys that differ from the defaults, nest
     CHECK(again.camera.fov_deg == scene.camera.fov_deg);
     CHECK(again.ripples.reference.speed == 2.5f);
     REQUIRE(again.events.size() == 1);
-    CHECK(again.events[0].object.waypoints == spawn.object.waypoints);
+    CHECK(again.events[0].object.ship.waypoints == spawn.object.ship.waypoints);
     CHECK(again.render.exposure == scene.render.exposure);  // untouched keys keep their defaults
 }

@@ -67,7 +67,7 @@ Wake sail(float speed, float seconds) {
     }
     const ecs::Entity ship = sandbox.world().pool<game::Ship>().entities()[0];
     const glm::vec3 centre = sandbox.world().get<ecs::Transform>(ship).position;
-    const float stern = centre.z - 0.5f * game::ObjectDef{}.hull.z;
+    const float stern = centre.z - 0.5f * game::ShipDef{}.hull.z;
     // Threshold: 5% of the spheres' stamp depth SR·SHR·Δ (7 · 0.2 · 0.2 m).
     const float threshold = 0.05f * 7.0f * 0.2f * 0.2f;
     Wake w;
@@ -80,7 +80,7 @@ Wake sail(float speed, float seconds) {
         }
         if (a > threshold) w.length = d;
     }
-    for (float z = stern; z <= stern + game::ObjectDef{}.hull.z; z += 0.1f) w.depth = std::min(w.depth, patch->heightAt({0.0f, z}));
+    for (float z = stern; z <= stern + game::ShipDef{}.hull.z; z += 0.1f) w.depth = std::min(w.depth, patch->heightAt({0.0f, z}));
     auto now = patch->field().current();
     for (size_t i = 0; i < now.size(); ++i) w.change = std::max(w.change, std::abs(now[i] - before[i]));
     REQUIRE(std::abs(sandbox.world().get<ecs::Motion>(ship).velocity.z - speed) < 0.05f * speed + 0.01f);  // held its speed
