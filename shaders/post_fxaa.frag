@@ -2,11 +2,10 @@
 // Fast approximate anti-aliasing of the finished (tone-mapped) frame, after Lottes' FXAA 3.11
 // "quality" scheme: find the pixels on a luma edge, the edge's direction and its two ends
 // along it, and blend each pixel toward its neighbour across the edge by how far it sits
-// from the nearer end; a sub-pixel term softens single-pixel features. One pass at the
-// output size: when the frame was drawn smaller, the same lookups scale it up (bilinear),
-// the edge found at the source pixel under the output one, and the pixels off the edges
-// sharpened (after AMD's contrast-adaptive sharpening, on luma) so the bilinear upscale does
-// not look blurred.
+// from the nearer end; a sub-pixel term softens single-pixel features. Drawn at the source's
+// size. A frame drawn smaller (render.resolution_scale < 1) is scaled up after this pass by a
+// bilinear blit, so here its pixels off the edges are sharpened first (after AMD's
+// contrast-adaptive sharpening, on luma) so the scaled-up frame does not look blurred.
 in vec2 v_ndc;
 layout(binding = 0) uniform sampler2D u_source;  // rgb display-encoded colour, a its luma; linear filtered
 layout(location = 0) uniform vec2 u_texel;       // 1 / source size (uv per source pixel)
@@ -24,10 +23,10 @@ const float WALK[WALK_STEPS] = float[](1.0, 1.5, 2.0, 4.0, 12.0);
 
 float lumaAt(vec2 uv) { return textureLod(u_source, uv, 0.0).a; }
 
-// The colour c scaled up at a source pixel whose luma is m and its cross n, s, e, w: its luma
-// pushed away from the cross's mean by a negative-lobe filter, (L + k·Σcross) / (1 + 4k), k =
-// −sharpness·amp/5, where amp shrinks as the cross nears black or white (no clipped halos);
-// the luma's change is added to every channel, so the hue stays.
+// The colour c of a pixel whose luma is m and its cross n, s, e, w: its luma pushed away from
+// the cross's mean by a negative-lobe filter, (L + k·Σcross) / (1 + 4k), k = −sharpness·amp/5,
+// where amp shrinks as the cross nears black or white (no clipped halos); the luma's change is
+// added to every channel, so the hue stays.
 vec3 sharpen(vec3 c, float m, float n, float s, float e, float w) {
     float lo = min(min(min(n, s), min(e, w)), m), hi = max(max(max(n, s), max(e, w)), m);
     float amp = sqrt(clamp(min(lo, 1.0 - hi) / max(hi, 1e-4), 0.0, 1.0));
@@ -48,7 +47,7 @@ void main() {
     float brightest = max(max(max(n, s), max(e, w)), m);
     float range = brightest - min(min(min(n, s), min(e, w)), m);
     if (range < max(EDGE_MIN, EDGE_RELATIVE * brightest)) {
-        // Off the edges: the bilinear colour, sharpened when scaling up.
+        // Off the edges: as drawn, sharpened when it is to be scaled up.
         o_color = vec4(sharpen(textureLod(u_source, uv, 0.0).rgb, m, n, s, e, w), 1.0);
         return;
     }

@@ -208,6 +208,9 @@ void Renderer::resizeTargets(glm::ivec2 internal) {
     const bool offscreen = m_def.resolution_scale < 1.0f || m_antialias != Antialias::Off;
     if (!offscreen) m_internal = {};
     if (offscreen && m_internal.size != internal) m_internal = createRenderTarget("internal frame", internal, 1, GL_RGBA8);
+    const bool upscaled = m_antialias == Antialias::Fxaa && m_def.resolution_scale < 1.0f;
+    if (!upscaled) m_antialiased = {};
+    if (upscaled && m_antialiased.size != internal) m_antialiased = createRenderTarget("anti-aliased frame", internal, 1, GL_RGBA8);
 }
 
 void Renderer::render(const CameraView& camera, const WaterView& water, const std::vector<ObjectDraw>& objects, double time,
@@ -398,28 +401,32 @@ void Renderer::skyPass() {
     glPopDebugGroup();
 }
 
-// The internal frame to the framebuffer: the samples resolved (msaa4), then FXAA, which
-// also scales up (sharpened off the edges), or a blit (bilinear when scaling up).
+// The internal frame to the framebuffer: the samples resolved (msaa4) or FXAA (sharpened off
+// the edges when it is to be scaled up), at the internal size; then a blit, bilinear when it
+// scales up. FXAA before the scaling costs its lookups per internal pixel only.
 void Renderer::postPass(glm::ivec2 size) {
     glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, POST_PASS, -1, "post");
     m_passTimers[POST_PASS].begin();
     if (m_antialias == Antialias::Msaa4) resolveTarget(m_multisampled, m_internal, false);
     const glm::ivec2 internal = m_internal.size;
+    const RenderTarget* last = &m_internal;
     if (m_antialias == Antialias::Fxaa) {
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
-        glViewport(0, 0, size.x, size.y);
+        const bool upscaled = internal != size;
+        glBindFramebuffer(GL_FRAMEBUFFER, upscaled ? m_antialiased.framebuffer.id() : 0);
+        glViewport(0, 0, internal.x, internal.y);
         glDisable(GL_DEPTH_TEST);
         glBindTextureUnit(FXAA_SOURCE_UNIT, m_internal.color.id());
         glProgramUniform2f(m_fxaaProgram.id(), 0, 1.0f / float(internal.x), 1.0f / float(internal.y));
-        glProgramUniform1f(m_fxaaProgram.id(), 1, internal == size ? 0.0f : m_def.upscale_sharpness);
+        glProgramUniform1f(m_fxaaProgram.id(), 1, upscaled ? m_def.upscale_sharpness : 0.0f);
         glUseProgram(m_fxaaProgram.id());
         glBindVertexArray(m_emptyVao.id());
         glDrawArrays(GL_TRIANGLES, 0, 3);
         glBindTextureUnit(FXAA_SOURCE_UNIT, 0);  // drawn into again next frame
-    } else {
-        glBlitNamedFramebuffer(m_internal.framebuffer.id(), 0, 0, 0, internal.x, internal.y, 0, 0, size.x, size.y,
-                               GL_COLOR_BUFFER_BIT, internal == size ? GL_NEAREST : GL_LINEAR);
+        last = upscaled ? &m_antialiased : nullptr;
     }
+    if (last)
+        glBlitNamedFramebuffer(last->framebuffer.id(), 0, 0, 0, internal.x, internal.y, 0, 0, size.x, size.y,
+                               GL_COLOR_BUFFER_BIT, internal == size ? GL_NEAREST : GL_LINEAR);
     m_passTimers[POST_PASS].end();
     glPopDebugGroup();
 }
