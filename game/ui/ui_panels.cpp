@@ -5,7 +5,6 @@
 #include "world/camera.h"
 #include "behaviours/cannon.h"
 #include "world/controls.h"
-#include "view/sandbox_view.h"
 #include "world/sandbox.h"
 #include "core/error.h"
 #include "ecs/components.h"
@@ -103,16 +102,16 @@ static void playerPanel(ecs::World& world) {
     for (const std::string& line : keyHelp(world)) ImGui::TextDisabled("%s", line.c_str());
 }
 
-void drawPanels(ecs::World& world, SceneDef& scene, const ecs::FrameTimer& timer, std::optional<SceneDef>& restart) {
+void drawPanels(ecs::World& world, SceneDef& scene, const ecs::FrameTimer& timer, std::optional<float> dynamicScale,
+                std::optional<SceneDef>& restart) {
     if (const auto* controls = world.resource<WindowControls>(); controls && !controls->showOverlay) return;
     ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
     ImGui::Begin("oceanbox");
     const auto& frames = timer.frameSamples();
     double frameMs = frames.empty() ? 0.0 : frames.back();
     ImGui::Text("frame %.2f ms (%.0f fps)", frameMs, frameMs > 0 ? 1000.0 / frameMs : 0.0);
-    if (const auto* dynamic = world.resource<DynamicScale>(); dynamic && dynamic->control && scene.render.target_fps > 0.0f)
-        ImGui::Text("resolution scale %.2f (dynamic, holding %.0f fps)", double(dynamic->control->scale()),
-                    double(scene.render.target_fps));
+    if (dynamicScale)
+        ImGui::Text("resolution scale %.2f (dynamic, holding %.0f fps)", double(*dynamicScale), double(scene.render.target_fps));
     else
         ImGui::Text("resolution scale %.2f", double(scene.render.resolution_scale));
     if (ImGui::BeginTable("phases", 3)) {

@@ -10,9 +10,11 @@
 
 namespace ob::game {
 
-/// Draws the panels (inside an ImGui frame). [render] keys apply live; the other sections
-/// are edited on a copy that "restart with these settings" hands to `restart` once valid.
-void drawPanels(ecs::World& world, SceneDef& scene, const ecs::FrameTimer& timer, std::optional<SceneDef>& restart);
+/// Draws the panels (inside an ImGui frame); `dynamicScale`: the resolution scale dynamic
+/// resolution holds now, when it is on. [render] keys apply live; the other sections are
+/// edited on a copy that "restart with these settings" hands to `restart` once valid.
+void drawPanels(ecs::World& world, SceneDef& scene, const ecs::FrameTimer& timer, std::optional<float> dynamicScale,
+                std::optional<SceneDef>& restart);
 
 /// The keys and mouse actions that do something in this world now (the overlay's help).
 std::vector<std::string> keyHelp(ecs::World& world);

@@ -87,7 +87,10 @@ void SandboxView::render(ecs::World& world, const ecs::Tick& tick) {
     if (!passes.empty()) m_timer.setGpu(ecs::Phase::Render, gpuMs);
     if (m_ui) {
         m_ui->begin();
-        drawPanels(world, m_scene, m_timer, m_restart);
+        std::optional<float> dynamicScale;
+        if (const auto* dynamic = world.resource<DynamicScale>(); dynamic && dynamic->control && m_scene.render.target_fps > 0.0f)
+            dynamicScale = dynamic->control->scale();
+        drawPanels(world, m_scene, m_timer, dynamicScale, m_restart);
         m_ui->end();
     }
 }

@@ -19,7 +19,7 @@ namespace ob::game {
 OceanGpu::~OceanGpu() = default;
 
 void attachWaterGpu(ecs::World& world) {
-    // The ripple patch: auto means the GPU where there is one (software rendering: the CPU).
+    // The ripple patch: on the GPU when asked, or by auto from 2048² on a hardware GPU.
     if (auto* patch = world.resource<interaction::RipplePatch>()) {
         const Backend backend = patch->def().backend;
         // Auto: the CPU up to 1024² even beside a GPU, where its step (0.1 ms at 256², 0.3 ms at
