@@ -54,8 +54,8 @@ template <NamedEnum E> bool enumFromName(std::string_view word, E& value) {
     return false;
 }
 
-/// An enum's words as visitors take them (their `choice(key, words, index, doc)` members do
-/// the work once for every enum).
+/// An enum's words as visitors take them (a visitor's non-template `choice` member does the
+/// work once for every enum).
 using Words = std::span<const char* const>;
 
 /// The visitor interface a describe() function is written against (documentation only:
