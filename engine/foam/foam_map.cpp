@@ -4,6 +4,7 @@
 #include "core/hash.h"
 #include "core/parallel.h"
 #include "core/simd.h"
+#include "core/thread_choice.h"
 #include "interaction/ripple_patch.h"
 #include "splash/splash_particles.h"
 #include "water/composite_water.h"
@@ -13,6 +14,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <string>
 #include <numbers>
 
 namespace ob::foam {
@@ -21,6 +23,8 @@ namespace {
 
 // Rows per parallelFor chunk: 512² is 32 chunks of 16 rows, ~8 µs each.
 constexpr int ROW_CHUNK = 16;
+// Maps from this side on have the sweep's threads measured (smaller ones split as they come).
+constexpr int PARALLEL_MIN_RESOLUTION = 256;
 
 // A step's coverage below COVERAGE_FLOOR ends as 0: nothing to see (an 8-bit texture's step is
 // 4e-3), and the tails that resampling spreads would otherwise sink into subnormal floats,
@@ -112,6 +116,20 @@ FoamMap::FoamMap(const FoamDef& def, float extent, glm::vec2 centre)
     : m_def(def), m_n(def.resolution), m_cell(extent / float(def.resolution)),
       m_f(size_t(def.resolution) * size_t(def.resolution), 0.0f), m_next(m_f.size(), 0.0f) {
     m_originCell = glm::ivec2(int(std::lround(centre.x / m_cell)), int(std::lround(centre.y / m_cell))) - glm::ivec2(m_n / 2);
+    if (m_n >= PARALLEL_MIN_RESOLUTION) chooseThreads();
+}
+
+// One thread or all for the sweep, measured on this map while it is still 0 and still (a sweep
+// of zeros costs what any sweep costs and leaves zeros), kept per size.
+void FoamMap::chooseThreads() {
+    setVelocityNodes(std::vector<glm::vec2>(size_t(flowNodes()) * size_t(flowNodes()), glm::vec2(0.0f)));
+    const std::string size = std::to_string(m_n) + "x" + std::to_string(m_n);
+    m_sweepThreads = measuredThreads("foam sweep " + size, workerCount(), [&](int n) {
+        m_sweepThreads = n;
+        sweep(nullptr, 1.0f / 60.0f);
+    });
+    m_nodes.clear();
+    m_flow = Flow::Still;
 }
 
 void FoamMap::setDef(const FoamDef& def) {
@@ -308,15 +326,25 @@ OB_VECTOR_KERNEL static void upsampleRowKernel(float* __restrict out, const floa
     for (int i = 0; i < n; ++i) out[i] = w[c0[i]] * (1 - t[i]) + w[c0[i] + 1] * t[i];
 }
 
-// |∇h| by central differences at the interior cells [1, cols − 1) of the ripple row `mid`
-// (its neighbours one row up and down at ∓cols), per metre via inv2d = 1/(2Δ).
-OB_VECTOR_KERNEL static void slopeRippleRow(float* __restrict out, const float* __restrict mid, int cols, float inv2d) {
+// |∇h|² by central differences at the interior cells [1, cols − 1) of the ripple row `mid`
+// (its neighbours one row up and down at ∓cols), per metre via inv2d = 1/(2Δ). Returns nonzero
+// when some |∇h|² exceeds steep (the row then needs its square roots, slopeRoots).
+OB_VECTOR_KERNEL static int slopeSquaredRow(float* __restrict out, const float* __restrict mid, int cols, float inv2d,
+                                            float steep) {
     const float* up = mid - cols;
     const float* down = mid + cols;
+    int any = 0;
     for (int x = 1; x < cols - 1; ++x) {
         const float sx = (mid[x + 1] - mid[x - 1]) * inv2d, sz = (down[x] - up[x]) * inv2d;
-        out[x] = std::sqrt(sx * sx + sz * sz);
+        const float g2 = sx * sx + sz * sz;
+        any |= int(g2 > steep);
+        out[x] = g2;
     }
+    return any;
+}
+
+OB_VECTOR_KERNEL static void slopeRoots(float* __restrict v, int cols) {
+    for (int x = 1; x < cols - 1; ++x) v[x] = std::sqrt(v[x]);
 }
 
 // The tables of sources (a) and (b) for one call: where each foam column and row falls in the
@@ -350,7 +378,8 @@ struct FoamMap::Sources {
 struct FoamMap::RowCache {
     int tileRow[2] = {-1, -1};
     std::vector<float> upsampled[2], windowRow;
-    int slopeRow = -1;  // the ripple row rippleSlope holds
+    int slopeRow = -1;   // the ripple row rippleSlope holds
+    bool steep = false;  // some |∇h| in it above the threshold (else it adds nothing)
     std::vector<float> rippleSlope, gathered;
 
     // Tile row r read at every foam column (one of the two buffers, not `keep`).
@@ -367,10 +396,27 @@ struct FoamMap::RowCache {
         return upsampled[slot].data();
     }
 
+    // Whether ripple row z has a cell steeper than the threshold; its |∇h| in rippleSlope (and
+    // gathered at the foam's columns) if so. Once per ripple row.
+    bool steepRow(const Sources& s, int z, int n) {
+        if (z == slopeRow) return steep;
+        rippleSlope.resize(size_t(s.cols));
+        slopeRow = z;
+        steep = slopeSquaredRow(rippleSlope.data(), s.height + size_t(z) * size_t(s.cols), s.cols, s.inv2d,
+                                s.slope0 * s.slope0) != 0;
+        if (!steep) return false;
+        slopeRoots(rippleSlope.data(), s.cols);
+        if (!s.contiguous) {
+            gathered.resize(size_t(n));
+            for (int i = s.iLo; i < s.iHi; ++i) gathered[size_t(i)] = rippleSlope[size_t(s.rx[size_t(i)])];
+        }
+        return true;
+    }
+
     // Foam row j with the sources' S·dt added (a clamp at 1 after each): out[i] from in[i], n
     // cells (in == out: in place). Returns false (out untouched) when no source reaches the row.
     bool add(const Sources& s, int j, const float* in, float* out, int n) {
-        const bool ripples = s.height && j >= s.jLo && j < s.jHi;
+        const bool ripples = s.height && j >= s.jLo && j < s.jHi && steepRow(s, s.rz[size_t(j)], n);
         if (!s.jacobian && !ripples) return false;
         const Wrapped r = s.jacobian ? wrap((s.originZ + float(j) * s.cell) * s.toTile, s.n) : Wrapped{0, 0, 0.0f};
         const bool whitecaps = s.jacobian && std::min(s.rowMin[size_t(r.i0)], s.rowMin[size_t(r.i1)]) < s.j0;
@@ -386,16 +432,6 @@ struct FoamMap::RowCache {
         }
         float* f = out;
         if (ripples) {
-            const int z = s.rz[size_t(j)];
-            if (z != slopeRow) {  // |∇h| along the whole ripple row, once per ripple row
-                rippleSlope.resize(size_t(s.cols));
-                slopeRippleRow(rippleSlope.data(), s.height + size_t(z) * size_t(s.cols), s.cols, s.inv2d);
-                slopeRow = z;
-                if (!s.contiguous) {
-                    gathered.resize(size_t(n));
-                    for (int i = s.iLo; i < s.iHi; ++i) gathered[size_t(i)] = rippleSlope[size_t(s.rx[size_t(i)])];
-                }
-            }
             const float* slope =
                 s.contiguous ? rippleSlope.data() + s.rx[size_t(s.iLo)] : gathered.data() + s.iLo;  // at column iLo
             addExcessKernel(f + s.iLo, slope, s.iHi - s.iLo, s.slope0, s.rippleRate);
@@ -670,8 +706,9 @@ void FoamMap::sweep(const Sources* s, float dt) {
     const size_t row = size_t(n);
 
     // --- the node rows along x: [l][component][cell]
+    const int threads = std::min(workerCount(), m_sweepThreads);
     m_nodeRows.resize(size_t(m) * 2 * row);
-    parallelFor(0, m, 8, [&](int lo, int hi) {
+    parallelFor(0, m, threads > 1 ? 8 : m, [&](int lo, int hi) {
         std::vector<float> scratch(static_cast<size_t>(m));
         for (int l = lo; l < hi; ++l)
             for (int c = 0; c < 2; ++c) {
@@ -687,7 +724,7 @@ void FoamMap::sweep(const Sources* s, float dt) {
     };
 
     // --- the chunks and copies of the rows around them
-    const int chunks = std::clamp(workerCount(), 1, std::max(1, n / ROW_CHUNK));
+    const int chunks = std::clamp(threads, 1, std::max(1, n / ROW_CHUNK));
     const auto chunkStart = [&](int c) { return int(int64_t(n) * c / chunks); };
     m_halo.resize(size_t(chunks) * 2 * row);
     for (int c = 1; c < chunks; ++c) {  // rows b − 1 and b around boundary b

@@ -26,8 +26,9 @@
 // re-evaluates a K-th of its node rows a step (K = flow_refresh_steps) and extrapolates each
 // node linearly in time from its last two values (error ≤ max|∂²u/∂t²|·(T + s)·s/2, T = K·dt
 // between the values, s < T the age).
-// Rows are split over the worker pool; each cell's value depends only on the previous map, so
-// the bits do not depend on the worker count.
+// Rows are split over the worker pool (the sweep's from 256² only where this machine measured
+// it faster: core/thread_choice.h); each cell's value depends only on the previous map, so the
+// bits do not depend on the worker count.
 #pragma once
 #include "foam/foam_def.h"
 
@@ -163,6 +164,7 @@ private:
     bool sweepFits(float dt) const;
     void sweep(const Sources* s, float dt);
     void splitStep(float dt);
+    void chooseThreads();
 
     FoamDef m_def;
     int m_n;
@@ -177,6 +179,7 @@ private:
     float m_nodesMax = 0.0f;        // Flow::Nodes: the largest |u_x|, |u_z| of a node, m/s
     std::vector<float> m_nodeRows;  // sweep: the node rows expanded along x, [l][component][cell]
     std::vector<float> m_halo;      // sweep: copies of the rows around its chunks' boundaries
+    int m_sweepThreads = 1 << 30;   // sweep: 1, or every worker (measured: chooseThreads)
     std::vector<FlowNode> m_grid;   // update()'s velocity grid (flowNodes()² row-major)
     glm::ivec2 m_gridOrigin{0, 0};  // its flowNodeOrigin()
     int m_gridStride = 0;           // its flowStride(); 0: none yet
