@@ -260,8 +260,8 @@ void FoamMap::setVelocityNodes(std::span<const glm::vec2> nodes) {
 void FoamMap::nodeRow(int j, int component, float* out, float* scratch) const {
     const int m = flowNodes(), s = flowStride();
     const float inv = 1.0f / float(s);  // exact: s is a power of two
-    // The map's cell (0, 0) sits q = (qx, qz) cells past node (0, 0), 0 ≤ q < s (the nodes
-    // were set for the map where it stands: m_nodesOrigin = flowNodeOrigin()).
+    // The map's cell (0, 0) sits q = (qx, qz) cells past node (0, 0), 0 ≤ q < s (the nodes are
+    // kept for the map where it stands: centerOn moves them, m_nodesOrigin = flowNodeOrigin()).
     const glm::ivec2 q = m_originCell - m_nodesOrigin * s;
     assert(q.x >= 0 && q.y >= 0 && q.x < s && q.y < s);
     const int p = j + q.y;
