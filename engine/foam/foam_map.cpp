@@ -56,10 +56,10 @@ inline float lerpRow(const float* row, int n, float g) {
 
 // One cell of a pass along an axis: the water moves c cells along it this step; for |c| ≤ 1
 // the departure point lies between the cell and its upstream neighbour (before: the one at
-// −1, after: at +1): mid + max(c, 0)·(before − mid) + max(−c, 0)·(after − mid).
+// −1 when c > 0, after: at +1 when c < 0): mid + |c|·(upstream − mid).
 inline float passCell(float mid, float before, float after, float c) {
-    const float cp = c > 0.0f ? c : 0.0f, cm = c < 0.0f ? -c : 0.0f;
-    return mid + cp * (before - mid) + cm * (after - mid);
+    const float upstream = c > 0.0f ? before : after;
+    return mid + std::abs(c) * (upstream - mid);
 }
 
 // Per-cell flow, pass 1, the cells [lo, hi) of a row (neighbours inside it), c = ux·back.
