@@ -33,9 +33,9 @@
 #include "foam/foam_def.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <span>
 #include <vector>
-#include <cstdint>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
@@ -54,8 +54,9 @@ class CompositeWater;
 
 namespace ob::foam {
 
-/// How far update() lets the velocity grid's rest points miss (|α + D(α) − x|, metres): the
-/// velocity moves by |∂u/∂α| times it, Σ k·a·ω·1 cm ≲ 3 mm/s on the default sea's waves.
+/// How far update() lets the velocity grid's rest points miss (|α + D(α) − x|, metres): a
+/// node's velocity is then a particle's up to 1 cm away, off by |∂u/∂x| times it at most
+/// (a Gerstner wave: k·a·ω/(1 − k·a), 1 mm/s for a = 1 m, λ = 64 m).
 constexpr float FLOW_REST_TOLERANCE = 0.01f;
 
 /// How a landed drop's whitened disc relates to its radius (disc radius = this × r).
@@ -136,8 +137,8 @@ public:
     /// addWhitecaps, addRipples), the velocity grid from in.water (a K-th of its node rows
     /// evaluated, the others extrapolated linearly in time, K = flow_refresh_steps; every node
     /// on the first call, after the time went back or jumped by over 0.5 s, and where the map
-    /// scrolled onto new ones), then step(dt). With K = 1 the same bits as those calls with
-    /// horizontalVelocityBatch at flowNodePositions() and setVelocityNodes in between.
+    /// scrolled onto new ones, twice), then step(dt). Without a water, the same bits as
+    /// addWhitecaps, addRipples, then step.
     void update(const FoamInputs& in, float dt);
 
     const FoamDef& def() const { return m_def; }

@@ -101,8 +101,8 @@ public:
     void horizontalVelocityBatch(std::span<const glm::vec2> points, std::span<glm::vec2> out) const;
     /// The same from a guess of each point's rest point (rest[i]: in, the guess; out, the rest
     /// point used), accepted once |α + D(α) − x| ≤ tolerance (metres; at least the settings'):
-    /// a point's velocity moves by at most |∂u/∂α|·tolerance (Gerstner: Σ k·a·ω·tolerance).
-    /// A guess from the last step's rest point needs fewer evaluations than the point itself.
+    /// the velocity is then a particle's up to `tolerance` from the point, off by |∂u/∂x| times
+    /// it at most. A guess from a recent step's rest point needs fewer evaluations than the point.
     void horizontalVelocityBatch(std::span<const glm::vec2> points, std::span<glm::vec2> out, std::span<glm::vec2> rest,
                                  float tolerance) const;
 
