@@ -11,6 +11,7 @@ struct FoamDef {
     int resolution = 256;           ///< cells per side of the map's square; power of two in [16, 4096]
     float extent_m = 0.0f;          ///< side of the map's square, metres, [0, 1e5]; 0 = the ripple patch's side (N·Δ)
     int flow_resolution = 32;       ///< intervals per side of the grid the surface velocity is evaluated on (bilinear between); power of two in [1, 4096], at most resolution (more counts as resolution)
+    int flow_refresh_steps = 4;     ///< K: update() re-evaluates each node row of the velocity grid every K steps (in turn, a K-th a step) and carries it between by linear extrapolation in time from its last two values; 1 = every node every step, [1, 64]
     float decay_s = 6.0f;           ///< τ: with no sources coverage falls as exp(−t/τ), s, [0.01, 1e4]
     float whitecap_weight = 2.0f;   ///< coverage per second per unit of Jacobian below whitecap_jacobian, 1/s, [0, 1000]
     float whitecap_jacobian = 0.5f; ///< the ocean's Jacobian J below which whitecaps feed foam, [-10, 10]
@@ -25,6 +26,7 @@ template <class V> void describe(V& v, FoamDef& d) {
     v.field("resolution", d.resolution, powerOfTwo(16, 4096), "cells per side of the map");
     v.field("extent_m", d.extent_m, range(0, 1e5), "side of the map's square (m); 0 = the ripple patch's side");
     v.field("flow_resolution", d.flow_resolution, powerOfTwo(1, 4096), "intervals per side of the surface-velocity grid (bilinear between)");
+    v.field("flow_refresh_steps", d.flow_refresh_steps, range(1, 64), "steps between evaluations of a velocity node (extrapolated linearly in time between)");
     v.field("decay_s", d.decay_s, range(0.01, 1e4), "decay time τ of exp(−t/τ) (s)");
     v.field("whitecap_weight", d.whitecap_weight, range(0, 1000), "whitecap source per unit of Jacobian below the threshold (1/s)");
     v.field("whitecap_jacobian", d.whitecap_jacobian, range(-10, 10), "Jacobian below which whitecaps make foam");

@@ -20,13 +20,20 @@
 //                    wake_weight·sqrt(1 − (y/R)²) (before decay and the clamp), nothing ahead of it
 // The map scrolls in whole cells (centerOn), like the ripple patch, so foam stays put in the world.
 // The per-cell velocity is either the caller's (velocityX/Z) or bilinear between the nodes of a
-// coarse grid (setVelocityNodes; the surface's velocity varies over a wavelength, not a cell).
-// Rows are split over the worker pool; each cell's value depends only on the previous map, so
-// the bits do not depend on the worker count.
+// coarse grid fixed in the world (setVelocityNodes, or update() from the water; the surface's
+// velocity varies over a wavelength, not a cell). update() is the whole step in one sweep over
+// the map: sources (a), (b), then the step, rows of both formed as it goes; its velocity grid
+// re-evaluates a K-th of its node rows a step (K = flow_refresh_steps) and extrapolates each
+// node linearly in time from its last two values (error ≤ max|∂²u/∂t²|·(T + s)·s/2, T = K·dt
+// between the values, s < T the age).
+// Rows are split over the worker pool (the sweep's from 256² only where this machine measured
+// it faster: core/thread_choice.h); each cell's value depends only on the previous map, so the
+// bits do not depend on the worker count.
 #pragma once
 #include "foam/foam_def.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <span>
 #include <vector>
 #include <glm/vec2.hpp>
@@ -41,11 +48,28 @@ class RipplePatch;
 namespace ob::splash {
 struct Landing;
 }
+namespace ob::water {
+class CompositeWater;
+}
 
 namespace ob::foam {
 
+/// How far update() lets the velocity grid's rest points miss (|α + D(α) − x|, metres): a
+/// node's velocity is then a particle's up to 1 cm away, off by |∂u/∂x| times it at most
+/// (a Gerstner wave: k·a·ω/(1 − k·a), 1 mm/s for a = 1 m, λ = 64 m).
+constexpr float FLOW_REST_TOLERANCE = 0.01f;
+
 /// How a landed drop's whitened disc relates to its radius (disc radius = this × r).
 constexpr float DROP_FOAM_RADIUS_FACTOR = 10.0f;
+
+/// What one whole foam update reads (FoamMap::update); each part may be absent.
+struct FoamInputs {
+    std::span<const float> jacobian;  ///< (a) an ocean cascade's Jacobian, n×n floats row-major [j][i] at X = (i, j)·tile/n; empty: no whitecaps
+    int jacobianN = 0;                ///< n
+    float jacobianTile = 0.0f;        ///< tile, m
+    const interaction::RipplePatch* ripples = nullptr;  ///< (b) steep ripples of its Vh(t); null: none
+    const water::CompositeWater* water = nullptr;       ///< the surface velocity at its time(); null: the velocity set last
+};
 
 /// The foam coverage map (see the laws above).
 class FoamMap {
@@ -78,17 +102,24 @@ public:
     /// Per-cell velocity, m/s (row-major like coverage()); calling these switches the map to it.
     std::span<float> velocityX();
     std::span<float> velocityZ();
-    /// Cells between two nodes of the velocity grid: resolution / min(flow_resolution, resolution).
+    /// Cells between two nodes of the velocity grid, s: resolution / min(flow_resolution, resolution).
     int flowStride() const { return m_n / std::min(m_def.flow_resolution, m_n); }
-    /// Nodes per side of the velocity grid, N / flowStride() + 1: node (k, l) sits on cell
-    /// (k, l)·flowStride()'s centre (the last one a cell beyond the map's edge).
-    int flowNodes() const { return m_n / flowStride() + 1; }
+    /// Nodes per side of the velocity grid, N / s + 2. The grid is fixed in the world: its nodes
+    /// sit on the centres of the world cells whose indices are multiples of s, node (0, 0) on the
+    /// last one at or before the map's cell (0, 0) (flowNodeOrigin()), so N / s + 2 cover the
+    /// map wherever it scrolls and a node keeps its place when it does.
+    int flowNodes() const { return m_n / flowStride() + 2; }
+    /// World cell index of node (0, 0), over s: ⌊cell (0, 0)'s world index / s⌋.
+    glm::ivec2 flowNodeOrigin() const;
     /// World (x, z) of every node, row-major (index l·flowNodes() + k).
     std::vector<glm::vec2> flowNodePositions() const;
     /// Sets the per-cell velocity bilinear between the nodes' (m/s, world x and z; row-major
-    /// like flowNodePositions()); the weights are exact binary fractions (power-of-two stride).
-    /// step() forms each row's velocities as it goes (velocityX/Z() switch back to their arrays).
+    /// like flowNodePositions(), for the map where it stands now); the weights are exact binary
+    /// fractions (power-of-two stride). step() forms each row's velocities as it goes
+    /// (velocityX/Z() switch back to their arrays).
     void setVelocityNodes(std::span<const glm::vec2> nodes);
+    /// The nodes' velocity the next step uses (m/s; set, or update()'s extrapolation; empty before either).
+    std::span<const glm::vec2> velocityNodes() const { return m_nodes; }
 
     // --- sources (laws (a)–(d) above), each clamped to coverage 1
     /// (a) Jacobian of an ocean cascade: n×n floats row-major [j][i] at X = (i, j)·tile/n (m).
@@ -102,6 +133,13 @@ public:
 
     /// Advects by the velocity and decays over dt seconds.
     void step(float dt);
+    /// One whole update over dt in one sweep over the map: sources (a) and (b) from `in` (as
+    /// addWhitecaps, addRipples), the velocity grid from in.water (a K-th of its node rows
+    /// evaluated, the others extrapolated linearly in time, K = flow_refresh_steps; every node
+    /// on the first call, after the time went back or jumped by over 0.5 s, and where the map
+    /// scrolled onto new ones, twice), then step(dt). Without a water, the same bits as
+    /// addWhitecaps, addRipples, then step.
+    void update(const FoamInputs& in, float dt);
 
     const FoamDef& def() const { return m_def; }
     /// Changes the weights and decay from the next call on (resolution stays).
@@ -111,8 +149,23 @@ public:
 
 private:
     enum class Flow { Still, Uniform, Field, Nodes };
+    struct Sources;   // the per-call tables of sources (a) and (b) (foam_map.cpp)
+    struct RowCache;  // a worker's rows of them
+    struct FlowNode {  // a node of update()'s velocity grid: u(t) ≈ u + (t − time)·rate
+        glm::vec2 u{0.0f}, rate{0.0f};  // m/s, m/s²
+        glm::vec2 rest{0.0f};           // the rest point of the particle above it then, world m
+        double time = 0.0;              // s, of its last evaluation
+        int evaluations = 0;            // since it came onto the grid (a slope from the second on)
+    };
     void add(int i, int j, float amount);
     void nodeRow(int j, int component, float* out, float* scratch) const;
+    Sources sources(const FoamInputs& in, float dt) const;
+    void addSources(const Sources& s);
+    void refreshFlow(const water::CompositeWater& water);
+    bool sweepFits(float dt) const;
+    void sweep(const Sources* s, float dt);
+    void splitStep(float dt);
+    void chooseThreads();
 
     FoamDef m_def;
     int m_n;
@@ -123,6 +176,16 @@ private:
     glm::vec2 m_uniform{0.0f};
     std::vector<float> m_ux, m_uz;  // Flow::Field, m/s
     std::vector<glm::vec2> m_nodes; // Flow::Nodes, m/s (flowNodes()² row-major)
+    glm::ivec2 m_nodesOrigin{0, 0}; // Flow::Nodes: flowNodeOrigin() when they were set
+    float m_nodesMax = 0.0f;        // Flow::Nodes: the largest |u_x|, |u_z| of a node, m/s
+    std::vector<float> m_nodeRows;  // sweep: the node rows expanded along x, [l][component][cell]
+    std::vector<float> m_halo;      // sweep: copies of the rows around its chunks' boundaries
+    int m_sweepThreads = 1 << 30;   // sweep: 1, or every worker (measured: chooseThreads)
+    std::vector<FlowNode> m_grid;   // update()'s velocity grid (flowNodes()² row-major)
+    glm::ivec2 m_gridOrigin{0, 0};  // its flowNodeOrigin()
+    int m_gridStride = 0;           // its flowStride(); 0: none yet
+    double m_gridTime = 0.0;        // the water's time at the last update(), s
+    uint64_t m_updates = 0;         // update() calls with a water: picks the node rows to evaluate
     std::vector<float> m_split;     // Flow::Field, Nodes: the coverage after the x pass (see step)
     std::vector<float> m_zeros;     // Flow::Field, Nodes: a row of zeros, the rows beyond the map's edges
 };

@@ -198,11 +198,12 @@ CompositeWater::FftTerms CompositeWater::fftTerms(float alpha, float beta) const
 
 // Residual of rest point `rest` for target (x, z); returns true when within tolerance, else
 // (if move) moves rest one Newton or fixed-point step.
-bool CompositeWater::step(const Eval& e, float x, float z, glm::vec2& rest, float& residual) const {
+bool CompositeWater::step(const Eval& e, float x, float z, glm::vec2& rest, float& residual, float looser) const {
     const float rx = rest.x + e.g.dx + e.f.dx - x;
     const float rz = rest.y + e.g.dz + e.f.dz - z;
     residual = std::sqrt(rx * rx + rz * rz);
-    const float tolerance = std::max(m_settings.tolerance, RELATIVE_TOLERANCE * std::max(std::abs(x), std::abs(z)));
+    const float tolerance =
+        std::max({m_settings.tolerance, looser, RELATIVE_TOLERANCE * std::max(std::abs(x), std::abs(z))});
     if (residual <= tolerance) return true;
     if (m_settings.inversion == CompositeSettings::Inversion::Newton) {
         // J = ∂(x, z)/∂(α, β) of the surface as sampled: [[axx, axz], [azx, azz]].
@@ -296,7 +297,8 @@ WaterSample CompositeWater::sample(float x, float z, WaterLayers layers) const {
 // Inverts the displacement at every point, 64 at a time, the Gerstner sums vectorised over the
 // points still moving; calls finish(index, eval at the rest point, rest α, β) once per point.
 template <class Finish>
-void CompositeWater::invertBatch(std::span<const glm::vec2> points, Finish&& finish) const {
+void CompositeWater::invertBatch(std::span<const glm::vec2> points, Finish&& finish, const glm::vec2* guess,
+                                 float tolerance) const {
     float alpha[BATCH], beta[BATCH];
     glm::vec2 rest[BATCH];
     size_t active[BATCH];
@@ -305,7 +307,7 @@ void CompositeWater::invertBatch(std::span<const glm::vec2> points, Finish&& fin
         const size_t n = std::min(BATCH, points.size() - base);
         size_t live = n;
         for (size_t i = 0; i < n; ++i) {
-            rest[i] = points[base + i];
+            rest[i] = guess ? guess[base + i] : points[base + i];
             active[i] = i;
         }
         // Every round evaluates the points still moving, Gerstner sums vectorised over them.
@@ -323,7 +325,7 @@ void CompositeWater::invertBatch(std::span<const glm::vec2> points, Finish&& fin
                 addDisplacement(alpha[k], beta[k], e.f);
                 glm::vec2 moved = rest[i];
                 float residual;
-                if (step(e, target.x, target.y, moved, residual) || it >= m_settings.maxIterations) {
+                if (step(e, target.x, target.y, moved, residual, tolerance) || it >= m_settings.maxIterations) {
                     finish(base + i, e, alpha[k], beta[k]);
                 } else {
                     rest[i] = moved;
@@ -344,7 +346,13 @@ void CompositeWater::sampleBatch(std::span<const glm::vec2> points, std::span<Wa
 }
 
 void CompositeWater::horizontalVelocityBatch(std::span<const glm::vec2> points, std::span<glm::vec2> out) const {
+    horizontalVelocityBatch(points, out, {}, 0.0f);
+}
+
+void CompositeWater::horizontalVelocityBatch(std::span<const glm::vec2> points, std::span<glm::vec2> out,
+                                             std::span<glm::vec2> rest, float tolerance) const {
     assert(points.size() == out.size());
+    assert(rest.empty() || rest.size() == points.size());
     const bool rates = m_fft && m_frameCount >= 2;
     const float lambda = m_fft ? m_fft->lambda() : 0.0f;
     // Blocks of BATCH points over the pool: every point is independent, so any split gives the same bits.
@@ -359,7 +367,8 @@ void CompositeWater::horizontalVelocityBatch(std::span<const glm::vec2> points, 
                     u += lambda * glm::vec2(b.value(cas.rate.data(), 4, 1), b.value(cas.rate.data(), 4, 2));
                 }
             out[begin + i] = u;
-        });
+            if (!rest.empty()) rest[begin + i] = glm::vec2(alpha, beta);
+        }, rest.empty() ? nullptr : rest.data() + begin, tolerance);
     });
 }
 

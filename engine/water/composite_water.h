@@ -99,6 +99,12 @@ public:
     /// vertical velocity; 0 until two updates). The ripple layer is a height field: no part.
     /// out.size() must equal points.size().
     void horizontalVelocityBatch(std::span<const glm::vec2> points, std::span<glm::vec2> out) const;
+    /// The same from a guess of each point's rest point (rest[i]: in, the guess; out, the rest
+    /// point used), accepted once |α + D(α) − x| ≤ tolerance (metres; at least the settings'):
+    /// the velocity is then a particle's up to `tolerance` from the point, off by |∂u/∂x| times
+    /// it at most. A guess from a recent step's rest point needs fewer evaluations than the point.
+    void horizontalVelocityBatch(std::span<const glm::vec2> points, std::span<glm::vec2> out, std::span<glm::vec2> rest,
+                                 float tolerance) const;
 
     /// The rest point under world (x, z) and how the inversion went.
     RestPoint restPoint(float x, float z) const;
@@ -138,10 +144,12 @@ private:
     struct Bilinear;
     void addDisplacement(float alpha, float beta, FftTerms& t) const;
     void addSurface(float alpha, float beta, FftTerms& t) const;
-    bool step(const Eval& e, float x, float z, glm::vec2& rest, float& residual) const;
+    bool step(const Eval& e, float x, float z, glm::vec2& rest, float& residual, float tolerance = 0.0f) const;
     WaterSample finish(const Eval& e, float x, float z, bool ripples = true) const;
     void recordFrame();
-    template <class Finish> void invertBatch(std::span<const glm::vec2> points, Finish&& finish) const;
+    template <class Finish>
+    void invertBatch(std::span<const glm::vec2> points, Finish&& finish, const glm::vec2* guess = nullptr,
+                     float tolerance = 0.0f) const;
 
     ocean::GerstnerField m_gerstner;
     const ocean::OceanFftCpu* m_fft = nullptr;

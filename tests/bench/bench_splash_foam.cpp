@@ -18,6 +18,7 @@
 
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
+#include <memory>
 #include <random>
 #include <vector>
 
@@ -177,6 +178,121 @@ void BM_FoamSources(benchmark::State& state) {
 BENCHMARK(BM_FoamSources)
     ->ArgNames({"N", "source", "workers"})
     ->ArgsProduct({{256, 512}, {0, 1, 2}, {1, 2}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+// The whole per-step foam update of the default and ship scenes, as the sandbox makes it: a 512²
+// map over 102.4 m on the default scene's sea (8 Gerstner waves, two 256² cascades), a 256²
+// ripple patch of 0.2 m cells with steep ripples, a ship's 6 hull spheres' wake; whitecaps
+// from the first cascade's Jacobian, steep ripples, the velocity grid (32² intervals), the
+// step. The ocean advances by one step between updates (not timed). Args: workers.
+struct FoamScene {
+    ob::ocean::OceanDef od;
+    std::vector<ob::ocean::GerstnerWave> waves;
+    std::unique_ptr<ob::ocean::OceanFftCpu> fft;
+    std::unique_ptr<ob::water::CompositeWater> water;
+    std::unique_ptr<ob::interaction::RipplePatch> patch;
+    std::unique_ptr<ob::foam::FoamMap> map;
+    double t = 10.0;
+    FoamScene() {
+        od.resolution = 256;
+        od.patch_size = 250.0f;
+        od.wind_speed = 16.0f;
+        od.wind_direction = {1.0f, 0.6f};
+        od.choppiness = 1.2f;
+        od.cascades = 2;
+        ob::ocean::GerstnerDef gd;
+        gd.count = 8;
+        gd.seed = 7;
+        waves = ob::ocean::resolveWaves(gd, od);
+        fft = std::make_unique<ob::ocean::OceanFftCpu>(od, 1);
+        water = std::make_unique<ob::water::CompositeWater>(waves, od.gravity, fft.get());
+        ob::water::primeAt(fft.get(), *water, t);
+        ob::interaction::RippleDef rd;
+        rd.model = "kang2008";  // its field is written directly here
+        rd.resolution = 256;
+        rd.cell_size = 0.2f;
+        patch = std::make_unique<ob::interaction::RipplePatch>(rd);
+        std::span<float> h = patch->field().current();
+        for (int z = 0; z < 256; ++z)
+            for (int x = 0; x < 256; ++x) h[size_t(z) * 256 + size_t(x)] = 0.05f * std::sin(float(x) * 0.9f) * std::cos(float(z) * 0.7f);
+        ob::foam::FoamDef def;
+        def.resolution = 512;
+        const glm::vec2 centre = patch->origin() + glm::vec2(0.5f * 256.0f * 0.2f);
+        map = std::make_unique<ob::foam::FoamMap>(def, 102.4f, centre);
+    }
+    void advance() {
+        t += DT;
+        fft->update(t);
+        water->update(t);
+    }
+    void wake() {
+        for (int s = 0; s < 6; ++s) map->addWake(glm::vec3(float(s) * 1.5f, 0.0f, 0.0f), glm::vec3(6.0f, 0.0f, 0.0f), 1.75f, DT);
+    }
+};
+
+void BM_FoamUpdateCalls(benchmark::State& state) {
+    ob::setWorkerCount(int(state.range(0)));
+    FoamScene scene;
+    ob::foam::FoamMap& map = *scene.map;
+    const int n = scene.fft->resolution();
+    std::vector<glm::vec2> nodes, velocity;
+    const auto update = [&] {
+        scene.wake();
+        map.addWhitecaps(std::span(scene.fft->channel(0, ob::ocean::OceanChannel::Jacobian), size_t(n) * size_t(n)), n,
+                         float(scene.fft->patchSize(0)), DT);
+        map.addRipples(*scene.patch, DT);
+        nodes = map.flowNodePositions();
+        velocity.resize(nodes.size());
+        scene.water->horizontalVelocityBatch(nodes, velocity);
+        map.setVelocityNodes(velocity);
+        map.step(DT);
+    };
+    update();  // warm-up: starts the pool's workers
+    for (auto _ : state) {
+        state.PauseTiming();
+        scene.advance();
+        state.ResumeTiming();
+        update();
+        benchmark::DoNotOptimize(map.coverage().data());
+    }
+    ob::setWorkerCount(0);
+}
+BENCHMARK(BM_FoamUpdateCalls)->ArgNames({"workers"})->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The same update in one call, FoamMap::update (one sweep; a K-th of the velocity grid's node
+// rows evaluated a step, K = flow_refresh_steps). Args: workers, K.
+void BM_FoamUpdate(benchmark::State& state) {
+    ob::setWorkerCount(int(state.range(0)));
+    FoamScene scene;
+    ob::foam::FoamMap& map = *scene.map;
+    ob::foam::FoamDef def = map.def();
+    def.flow_refresh_steps = int(state.range(1));
+    map.setDef(def);
+    const int n = scene.fft->resolution();
+    const auto update = [&] {
+        scene.wake();
+        ob::foam::FoamInputs in;
+        in.jacobian = std::span(scene.fft->channel(0, ob::ocean::OceanChannel::Jacobian), size_t(n) * size_t(n));
+        in.jacobianN = n;
+        in.jacobianTile = float(scene.fft->patchSize(0));
+        in.ripples = scene.patch.get();
+        in.water = scene.water.get();
+        map.update(in, DT);
+    };
+    update();  // warm-up: starts the pool's workers, evaluates every node once
+    for (auto _ : state) {
+        state.PauseTiming();
+        scene.advance();
+        state.ResumeTiming();
+        update();
+        benchmark::DoNotOptimize(map.coverage().data());
+    }
+    ob::setWorkerCount(0);
+}
+BENCHMARK(BM_FoamUpdate)
+    ->ArgNames({"workers", "K"})
+    ->ArgsProduct({{1, 2}, {1, 2, 4, 8}})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 

@@ -3,6 +3,7 @@
 // laws, the world-space query and scrolling, and determinism across worker counts.
 #include "core/hash.h"
 #include "core/parallel.h"
+#include "core/thread_choice.h"
 #include "foam/foam_map.h"
 #include "interaction/ripple_patch.h"
 #include "splash/splash_particles.h"
@@ -314,4 +315,174 @@ TEST_CASE("same inputs give bit-identical foam for any worker count", "[foam][de
     const uint64_t one = run(1);
     CHECK(run(2) == one);
     CHECK(run(3) == one);
+}
+
+TEST_CASE("update()'s velocity grid, each node evaluated every K steps and extrapolated linearly between, stays within the extrapolation's error bound on a scrolling map", "[foam]") {
+    // One wave along x (λ = 64 m, a = 1 m, k·a = 0.098; trochoid x = α − a·sin(k·α − ω·t − φ)).
+    // At a fixed world point the velocity of the particle there is a·ω·cos θ, θ the phase of its
+    // rest point: |∂²u/∂t²| ≤ a·ω³·(1 + k·a)/(1 − k·a)³ and |∂u/∂x| ≤ k·a·ω/(1 − k·a). A node
+    // evaluated at t0 and t1 ≤ t0 + T (T = K·dt) and extrapolated to t1 + s, s ≤ (K − 1)·dt, misses
+    // by at most |∂²u/∂t²|·(T + s)·s/2 (the remainder of the linear interpolant through t0, t1);
+    // each evaluation may take the particle up to FLOW_REST_TOLERANCE from the node, an error of
+    // |∂u/∂x| times it that the extrapolation carries with weight up to 1 + 2·s/T. The map
+    // scrolls every step (0.2 m/s along x, 0.1 m/s along z: onto new node rows and columns).
+    const float k = 2.0f * std::numbers::pi_v<float> / 64.0f, a = 1.0f, phase = 0.3f;
+    const double ka = k * a, omega = std::sqrt(9.81 * double(k)), period = 2.0 * std::numbers::pi / omega;
+    const std::vector<ocean::GerstnerWave> waves{{k, 0.0f, a, phase}};
+    water::CompositeWater water(waves, 9.81f);
+    const double uttMax = a * omega * omega * omega * (1 + ka) / std::pow(1 - ka, 3);
+    const double uxMax = ka * omega / (1 - ka);
+    double worstOf[9] = {};
+    for (int K : {1, 4, 8}) {
+        FoamDef def = smallDef(256);
+        def.flow_resolution = 16;  // nodes every 16 cells: 4 m
+        def.flow_refresh_steps = K;
+        FoamMap map(def, 64.0f);  // Δ = 0.25 m
+        foam::FoamInputs in;
+        in.water = &water;
+        const int steps = int(std::lround(period / DT));
+        double worst = 0.0;
+        for (int s = 0; s < steps; ++s) {
+            const double t = s * double(DT);
+            water.update(t);
+            map.centerOn(glm::vec2(float(0.2 * t), float(0.1 * t)) + glm::vec2(0.1f));
+            map.update(in, DT);
+            if (s < K) continue;  // every node has two evaluations from step K − 1 on
+            const std::vector<glm::vec2> nodes = map.flowNodePositions();
+            std::vector<glm::vec2> exact(nodes.size());
+            water.horizontalVelocityBatch(nodes, exact);
+            const std::span<const glm::vec2> used = map.velocityNodes();
+            REQUIRE(used.size() == exact.size());
+            for (size_t c = 0; c < exact.size(); ++c) {
+                const glm::vec2 d = used[c] - exact[c];
+                worst = std::max(worst, std::sqrt(double(d.x) * d.x + double(d.y) * d.y));
+            }
+        }
+        const double T = K * double(DT), sMax = (K - 1) * double(DT);
+        const double extrapolation = uttMax * (T + sMax) * sMax / 2;
+        const double rest = (1 + 2 * sMax / T) * uxMax * foam::FLOW_REST_TOLERANCE;
+        INFO("K " << K << ": worst |u − exact| " << worst << " m/s; bound " << extrapolation << " (extrapolation) + " << rest
+                  << " (rest points) of a·ω = " << a * omega << " m/s");
+        CHECK(worst <= extrapolation + rest + 1e-4);
+        worstOf[K] = worst;
+    }
+    // The error is the extrapolation's: it grows as (T + s)·s, 21·dt² for K = 4, 105·dt² for K = 8.
+    INFO("worst: K = 1 " << worstOf[1] << ", K = 4 " << worstOf[4] << ", K = 8 " << worstOf[8] << " m/s");
+    CHECK(worstOf[8] > 2.5 * worstOf[4]);
+    // and reaches a good part of the bound's a·ω³ (where |∂²u/∂t²| is largest) for K = 8
+    CHECK(worstOf[8] > 0.4 * a * omega * omega * omega * (8 + 7) * 7 * double(DT) * double(DT) / 2);
+}
+
+TEST_CASE("update() in one sweep gives the bits of addWhitecaps, addRipples, then step", "[foam]") {
+    // Whitecaps over half the tile, a ramp of steep ripples, a blob moved by a velocity grid;
+    // ripple cells the size of the foam's (read in place) and half of it (gathered).
+    for (float rippleCell : {0.25f, 0.125f}) {
+        FoamDef def = smallDef(128);
+        def.flow_resolution = 8;
+        const int n = 64;
+        const float tile = 20.0f;
+        std::vector<float> jac(size_t(n) * n);
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i) jac[size_t(j) * n + size_t(i)] = 0.6f + 0.5f * std::sin(0.3f * float(i)) * std::cos(0.2f * float(j));
+        interaction::RippleDef rd;
+        rd.model = "kang2008";  // its field is written directly here
+        rd.resolution = 64;
+        rd.cell_size = rippleCell;
+        interaction::RipplePatch patch(rd);
+        std::span<float> h = patch.field().current();
+        for (int z = 0; z < 64; ++z)
+            for (int x = 0; x < 64; ++x) h[size_t(z) * 64 + size_t(x)] = 0.8f * rippleCell * float(x % 9) * std::sin(0.4f * float(z));
+        FoamMap calls(def, 32.0f, glm::vec2(1.3f, -0.6f)), swept(def, 32.0f, glm::vec2(1.3f, -0.6f));
+        for (FoamMap* map : {&calls, &swept}) {
+            blob(*map, 2.0f, -1.0f, 2.0f);
+            std::vector<glm::vec2> nodes = map->flowNodePositions();
+            for (glm::vec2& v : nodes) v = glm::vec2(1.5f * std::sin(v.y * 0.3f), 1.2f * std::cos(v.x * 0.2f));
+            map->setVelocityNodes(nodes);
+        }
+        foam::FoamInputs in;
+        in.jacobian = jac;
+        in.jacobianN = n;
+        in.jacobianTile = tile;
+        in.ripples = &patch;
+        for (int s = 0; s < 20; ++s) {
+            calls.addWhitecaps(jac, n, tile, DT);
+            calls.addRipples(patch, DT);
+            calls.step(DT);
+            swept.update(in, DT);
+        }
+        INFO("ripple cell " << rippleCell << " m; mean coverage " << calls.mean());
+        CHECK(calls.mean() > 0.01);
+        CHECK(std::equal(calls.coverage().begin(), calls.coverage().end(), swept.coverage().begin()));
+    }
+}
+
+TEST_CASE("update() gives bit-identical foam for any worker count, scrolling, with every source and the water's velocity", "[foam][determinism]") {
+    const std::vector<ocean::GerstnerWave> waves{{0.2f, 0.3f, 0.5f, 0.1f}, {0.5f, -1.1f, 0.1f, 2.0f}};
+    auto run = [&](int workers) {
+        setWorkerCount(workers);
+        water::CompositeWater water(waves, 9.81f);
+        FoamDef def = smallDef(256);
+        FoamMap map(def, 64.0f);
+        blob(map, 0.0f, 0.0f, 3.0f);
+        const int n = 32;
+        std::vector<float> jac(size_t(n) * n);
+        for (size_t c = 0; c < jac.size(); ++c) jac[c] = 0.5f + 0.4f * std::sin(float(c) * 0.37f);
+        interaction::RippleDef rd;
+        rd.model = "kang2008";
+        rd.resolution = 64;
+        interaction::RipplePatch patch(rd);
+        std::span<float> height = patch.field().current();
+        for (size_t c = 0; c < height.size(); ++c) height[c] = 0.2f * std::sin(float(c) * 1.3f);
+        foam::FoamInputs in;
+        in.jacobian = jac;
+        in.jacobianN = n;
+        in.jacobianTile = 40.0f;
+        in.ripples = &patch;
+        in.water = &water;
+        for (int s = 0; s < 90; ++s) {
+            water.update(s * double(DT));
+            map.centerOn(glm::vec2(0.3f * float(s), -0.2f * float(s)));
+            map.addWake(glm::vec3(0.3f * float(s), 0.0f, -0.2f * float(s)), glm::vec3(18.0f, 0.0f, -12.0f), 1.0f, DT);
+            map.update(in, DT);
+        }
+        setWorkerCount(0);
+        StateHasher h;
+        map.hash(h);
+        return h.value();
+    };
+    setThreadMeasuring(false);  // every worker count splits, whatever this machine measured
+    const uint64_t one = run(1);
+    CHECK(run(2) == one);
+    CHECK(run(3) == one);
+    setThreadMeasuring(true);
+}
+
+TEST_CASE("a constant velocity grid moves a blob like the uniform path, in one sweep and where it crosses more than a cell a step", "[foam]") {
+    // For a uniform u the split passes are the uniform path's bilinear stencil (equal to rounding),
+    // whether the sweep takes them (0.08 and 0.04 cells a step) or the two passes over the map
+    // (0.5 s steps: 2.6 and 1.4 cells); the map scrolls between steps (the nodes keep their place).
+    const glm::vec2 v(1.3f, -0.7f);
+    for (float dt : {DT, 0.5f}) {
+        FoamDef def = smallDef(128);
+        def.decay_s = 1e4f;
+        def.flow_resolution = 16;
+        FoamMap uniform(def, 32.0f), grid(def, 32.0f);
+        for (FoamMap* map : {&uniform, &grid}) blob(*map, -2.0f, 2.0f, 0.6f);
+        uniform.setUniformVelocity(v);
+        grid.setVelocityNodes(std::vector<glm::vec2>(grid.flowNodePositions().size(), v));
+        const int steps = int(std::lround(3.0f / dt));
+        for (int s = 0; s < steps; ++s) {
+            const glm::vec2 centre = glm::vec2(0.6f, -0.4f) * (float(s) * dt);  // 0.25 m cells: scrolls every few steps
+            uniform.centerOn(centre);
+            grid.centerOn(centre);
+            uniform.step(dt);
+            grid.step(dt);
+        }
+        double worst = 0.0;
+        for (size_t c = 0; c < uniform.coverage().size(); ++c)
+            worst = std::max(worst, double(std::abs(uniform.coverage()[c] - grid.coverage()[c])));
+        INFO("dt " << dt << " s: worst difference " << worst << ", mean " << uniform.mean());
+        CHECK(uniform.mean() > 0.001);
+        CHECK(worst < 1e-5);
+    }
 }
