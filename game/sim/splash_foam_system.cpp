@@ -31,7 +31,6 @@ struct SplashFoamState {
         uint64_t seen = 0;  ///< the last step its entity was met (others are removed: ids are reused)
     };
     std::unordered_map<uint32_t, Trackers> crossings;
-    std::vector<glm::vec2> flowNodes, flowVelocity;  ///< the foam's velocity grid (world x, z; m/s)
 };
 
 } // namespace
@@ -105,19 +104,13 @@ void emitFromSources(ecs::World& world, SplashFoamState& state, const water::Wat
 
 // Foam: whitecaps (first cascade's Jacobian), steep ripples, then transport with the
 // surface's horizontal velocity (the particles' orbital motion, Gerstner and cascades, on the
-// map's coarse velocity grid) and decay.
-void stepFoam(SplashFoamState& state, const OceanState& ocean, const interaction::RipplePatch* patch, float dt) {
-    foam::FoamMap& foam = *state.foam;
+// map's coarse velocity grid) and decay, in one sweep.
+void stepFoam(foam::FoamMap& foam, const OceanState& ocean, const interaction::RipplePatch* patch, float dt) {
     const ocean::OceanFftCpu& fft = *ocean.cpu;
     const int n = fft.resolution();
-    foam.addWhitecaps(std::span(fft.channel(0, ocean::OceanChannel::Jacobian), size_t(n) * size_t(n)), n,
-                      float(fft.patchSize(0)), dt);
-    if (patch) foam.addRipples(*patch, dt);
-    state.flowNodes = foam.flowNodePositions();
-    state.flowVelocity.resize(state.flowNodes.size());
-    ocean.water->horizontalVelocityBatch(state.flowNodes, state.flowVelocity);
-    foam.setVelocityNodes(state.flowVelocity);
-    foam.step(dt);
+    foam.update({std::span(fft.channel(0, ocean::OceanChannel::Jacobian), size_t(n) * size_t(n)), n, float(fft.patchSize(0)),
+                 patch, ocean.water.get()},
+                dt);
 }
 
 } // namespace
@@ -136,7 +129,7 @@ void splashFoamSystem(ecs::World& world, const ecs::Tick& tick) {
         if (patch) splash::stampLandings(*patch, drops->landings(), drops->def().ripple_energy);
         if (foam) foam->addLandings(drops->landings());
     }
-    if (foam) stepFoam(*state, *ocean, patch, dt);
+    if (foam) stepFoam(*foam, *ocean, patch, dt);
 }
 
 const splash::SplashParticles* splashParticles(ecs::World& world) {

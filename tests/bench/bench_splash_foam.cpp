@@ -209,7 +209,7 @@ struct FoamScene {
         water = std::make_unique<ob::water::CompositeWater>(waves, od.gravity, fft.get());
         ob::water::primeAt(fft.get(), *water, t);
         ob::interaction::RippleDef rd;
-        rd.model = "kang2008";  // its field is written directly here
+        rd.model = ob::interaction::RippleModel::Kang2008;  // its field is written directly here
         rd.resolution = 256;
         rd.cell_size = 0.2f;
         patch = std::make_unique<ob::interaction::RipplePatch>(rd);

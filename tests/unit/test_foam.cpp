@@ -385,7 +385,7 @@ TEST_CASE("update() in one sweep gives the bits of addWhitecaps, addRipples, the
         for (int j = 0; j < n; ++j)
             for (int i = 0; i < n; ++i) jac[size_t(j) * n + size_t(i)] = 0.6f + 0.5f * std::sin(0.3f * float(i)) * std::cos(0.2f * float(j));
         interaction::RippleDef rd;
-        rd.model = "kang2008";  // its field is written directly here
+        rd.model = interaction::RippleModel::Kang2008;  // its field is written directly here
         rd.resolution = 64;
         rd.cell_size = rippleCell;
         interaction::RipplePatch patch(rd);
@@ -428,7 +428,7 @@ TEST_CASE("update() gives bit-identical foam for any worker count, scrolling, wi
         std::vector<float> jac(size_t(n) * n);
         for (size_t c = 0; c < jac.size(); ++c) jac[c] = 0.5f + 0.4f * std::sin(float(c) * 0.37f);
         interaction::RippleDef rd;
-        rd.model = "kang2008";
+        rd.model = interaction::RippleModel::Kang2008;
         rd.resolution = 64;
         interaction::RipplePatch patch(rd);
         std::span<float> height = patch.field().current();
