@@ -33,17 +33,6 @@ struct SplashFoamState {
     std::unordered_map<uint32_t, Trackers> crossings;
 };
 
-} // namespace
-
-void addSplashFoam(ecs::World& world, const splash::SplashDef& splash, const foam::FoamDef& foam, uint64_t seed) {
-    if (!splash.enabled && !foam.enabled) return;
-    auto state = std::make_unique<SplashFoamState>();
-    if (splash.enabled) state->particles = std::make_unique<splash::SplashParticles>(splash, seed);
-    state->foamDef = foam;
-    world.setResource(std::move(state));
-}
-
-namespace {
 
 // Creates the foam map on the first step with a ripple patch, and keeps it centred on it.
 foam::FoamMap* placeFoam(SplashFoamState& state, const interaction::RipplePatch* patch) {
@@ -114,6 +103,14 @@ void stepFoam(foam::FoamMap& foam, const OceanState& ocean, const interaction::R
 }
 
 } // namespace
+
+void addSplashFoam(ecs::World& world, const splash::SplashDef& splash, const foam::FoamDef& foam, uint64_t seed) {
+    if (!splash.enabled && !foam.enabled) return;
+    auto state = std::make_unique<SplashFoamState>();
+    if (splash.enabled) state->particles = std::make_unique<splash::SplashParticles>(splash, seed);
+    state->foamDef = foam;
+    world.setResource(std::move(state));
+}
 
 void splashFoamSystem(ecs::World& world, const ecs::Tick& tick) {
     auto* state = world.resource<SplashFoamState>();
