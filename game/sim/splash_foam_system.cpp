@@ -33,7 +33,6 @@ struct SplashFoamState {
     std::unordered_map<uint32_t, Trackers> crossings;
 };
 
-
 // Creates the foam map on the first step with a ripple patch, and keeps it centred on it.
 foam::FoamMap* placeFoam(SplashFoamState& state, const interaction::RipplePatch* patch) {
     if (!patch) return state.foam.get();
