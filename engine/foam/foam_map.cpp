@@ -546,11 +546,18 @@ void FoamMap::addLandings(std::span<const splash::Landing> landings) {
     if (m_def.splash_weight <= 0.0f) return;
     const float perArea = m_def.splash_weight * std::numbers::pi_v<float> * DROP_FOAM_RADIUS_FACTOR * DROP_FOAM_RADIUS_FACTOR /
                           (m_cell * m_cell);
+    // Spread over the four cells around the landing by its bilinear weights (the amount kept;
+    // one cell would print each drop as a cell-sized square).
     for (const splash::Landing& l : landings) {
         const glm::vec2 g = toGrid(glm::vec2(l.position.x, l.position.z));
-        const long i = std::lround(g.x), j = std::lround(g.y);
-        if (i < 0 || j < 0 || i >= m_n || j >= m_n) continue;
-        add(int(i), int(j), perArea * l.radius * l.radius);
+        const glm::vec2 base(std::floor(g.x), std::floor(g.y)), w = g - base;
+        const float amount = perArea * l.radius * l.radius;
+        for (int dj = 0; dj < 2; ++dj)
+            for (int di = 0; di < 2; ++di) {
+                const int i = int(base.x) + di, j = int(base.y) + dj;
+                const float weight = (di ? w.x : 1.0f - w.x) * (dj ? w.y : 1.0f - w.y);
+                if (i >= 0 && j >= 0 && i < m_n && j < m_n && weight > 0.0f) add(i, j, amount * weight);
+            }
     }
 }
 

@@ -126,7 +126,7 @@ public:
     void addWhitecaps(std::span<const float> jacobian, int n, float tile, float dt);
     /// (b) steep ripples of the patch's Vh(t).
     void addRipples(const interaction::RipplePatch& patch, float dt);
-    /// (c) landed splash drops.
+    /// (c) landed splash drops, each spread over the four cells around it (bilinear weights).
     void addLandings(std::span<const splash::Landing> landings);
     /// (d) one hull sphere: centre (m), velocity (m/s; its horizontal part counts), radius (m).
     void addWake(const glm::vec3& centre, const glm::vec3& velocity, float radius, float dt);

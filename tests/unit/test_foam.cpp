@@ -270,6 +270,19 @@ TEST_CASE("whitecaps, steep ripples and landed drops feed foam by their laws", "
         for (int k = 0; k < 100; ++k) map.addLandings(std::span(&l, 1));
         CHECK(map.sample(1.0f, -2.0f) == 1.0f);  // clamped at full coverage
     }
+    SECTION("drops between cell centres: the amount spread over the four cells around, by bilinear weights") {
+        FoamMap map(def, 16.0f);
+        splash::Landing l;
+        l.position = glm::vec3(1.0f + 0.25f * 0.25f, 0.0f, -2.0f + 0.75f * 0.25f);  // a quarter and three quarters of a cell on
+        l.radius = 0.004f;
+        map.addLandings(std::span(&l, 1));
+        const float expected = def.splash_weight * float(M_PI) * 0.04f * 0.04f / (0.25f * 0.25f);
+        float total = 0.0f;
+        for (float c : map.coverage()) total += c;
+        CHECK(total == Approx(expected).epsilon(1e-5));
+        CHECK(map.sample(1.0f, -2.0f) == Approx(expected * 0.75f * 0.25f).epsilon(1e-5));
+        CHECK(map.sample(1.25f, -1.75f) == Approx(expected * 0.25f * 0.75f).epsilon(1e-5));
+    }
 }
 
 TEST_CASE("the foam query is world-space: bilinear, 0 outside, unchanged by scrolling the map", "[foam]") {
