@@ -112,13 +112,8 @@ BENCHMARK(BM_FoamStep)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
-// The foam's velocity over the default scene's sea (8 Gerstner waves, two 256² cascades of
-// 250 m and 95 m) at the (F + 1)² nodes of the velocity grid of a map 102.4 m across:
-// CompositeWater::horizontalVelocityBatch (rest points by Newton, then the particles'
-// velocities). Args: N, F, workers.
-void BM_FoamVelocity(benchmark::State& state) {
-    const int n = int(state.range(0));
-    ob::setWorkerCount(int(state.range(2)));
+// The default scene's kind of sea: two 256² cascades of 250 m and 95 m in a 16 m/s wind.
+ob::ocean::OceanDef defaultSceneSea() {
     ob::ocean::OceanDef od;
     od.resolution = 256;
     od.patch_size = 250.0f;
@@ -126,10 +121,26 @@ void BM_FoamVelocity(benchmark::State& state) {
     od.wind_direction = {1.0f, 0.6f};
     od.choppiness = 1.2f;
     od.cascades = 2;
+    return od;
+}
+
+// Its 8 Gerstner waves.
+std::vector<ob::ocean::GerstnerWave> defaultSceneSwell(const ob::ocean::OceanDef& od) {
     ob::ocean::GerstnerDef gd;
     gd.count = 8;
     gd.seed = 7;
-    const std::vector<ob::ocean::GerstnerWave> waves = ob::ocean::resolveWaves(gd, od);
+    return ob::ocean::resolveWaves(gd, od);
+}
+
+// The foam's velocity over the default scene's sea (8 Gerstner waves, two 256² cascades of
+// 250 m and 95 m) at the (F + 1)² nodes of the velocity grid of a map 102.4 m across:
+// CompositeWater::horizontalVelocityBatch (rest points by Newton, then the particles'
+// velocities). Args: N, F, workers.
+void BM_FoamVelocity(benchmark::State& state) {
+    const int n = int(state.range(0));
+    ob::setWorkerCount(int(state.range(2)));
+    const ob::ocean::OceanDef od = defaultSceneSea();
+    const std::vector<ob::ocean::GerstnerWave> waves = defaultSceneSwell(od);
     ob::ocean::OceanFftCpu fft(od, 1);
     ob::water::CompositeWater water(waves, od.gravity, &fft);
     ob::water::primeAt(&fft, water, 10.0);
@@ -194,17 +205,7 @@ struct FoamScene {
     std::unique_ptr<ob::interaction::RipplePatch> patch;
     std::unique_ptr<ob::foam::FoamMap> map;
     double t = 10.0;
-    FoamScene() {
-        od.resolution = 256;
-        od.patch_size = 250.0f;
-        od.wind_speed = 16.0f;
-        od.wind_direction = {1.0f, 0.6f};
-        od.choppiness = 1.2f;
-        od.cascades = 2;
-        ob::ocean::GerstnerDef gd;
-        gd.count = 8;
-        gd.seed = 7;
-        waves = ob::ocean::resolveWaves(gd, od);
+    FoamScene() : od(defaultSceneSea()), waves(defaultSceneSwell(od)) {
         fft = std::make_unique<ob::ocean::OceanFftCpu>(od, 1);
         water = std::make_unique<ob::water::CompositeWater>(waves, od.gravity, fft.get());
         ob::water::primeAt(fft.get(), *water, t);
