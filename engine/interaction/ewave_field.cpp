@@ -51,24 +51,33 @@ OB_VECTOR_KERNEL void toFloatKernel(float* __restrict out, const double* __restr
     for (size_t i = 0; i < n; ++i) out[i] = float(f[i]);
 }
 
-// One field's change per mode, in double: out = ch·ĥ + cv·v̂ with (ch, cv) = coef[2m], coef[2m + 1].
-OB_VECTOR_KERNEL void changeKernel(float* __restrict out, const float* __restrict hs, const float* __restrict vs,
-                                   const double* __restrict coef, size_t modes) {
-    for (size_t m = 0; m < modes; ++m) {
-        const double ch = coef[2 * m], cv = coef[2 * m + 1];
-        out[2 * m] = float(ch * double(hs[2 * m]) + cv * double(vs[2 * m]));
-        out[2 * m + 1] = float(ch * double(hs[2 * m + 1]) + cv * double(vs[2 * m + 1]));
+// Both fields' change over n modes, in place, in double: with (a − 1, b, c) = coef[3m..3m + 2],
+// ĥ ← (a − 1)·ĥ + b·v̂ and v̂ ← c·ĥ + (a − 1)·v̂, for the real and imaginary parts alike.
+OB_VECTOR_KERNEL void changeKernel(float* __restrict hs, float* __restrict vs, const double* __restrict coef, int n) {
+    for (int m = 0; m < n; ++m) {
+        const double am1 = coef[3 * m], b = coef[3 * m + 1], c = coef[3 * m + 2];
+        for (int p = 0; p < 2; ++p) {
+            const double h = hs[2 * m + p], v = vs[2 * m + p];
+            hs[2 * m + p] = float(am1 * h + b * v);
+            vs[2 * m + p] = float(c * h + am1 * v);
+        }
     }
 }
 
-// f += change.
-OB_VECTOR_KERNEL void addKernel(double* __restrict f, const float* __restrict change, int n) {
-    for (int i = 0; i < n; ++i) f[i] += double(change[i]);
+// f += change, then its float copy (before the boundary: the caller redoes the band's).
+OB_VECTOR_KERNEL void addKernel(double* __restrict f, float* __restrict copy, const float* __restrict change, int n) {
+    for (int i = 0; i < n; ++i) {
+        f[i] += double(change[i]);
+        copy[i] = float(f[i]);
+    }
 }
 
-// f *= factor (the sponge).
-OB_VECTOR_KERNEL void scaleKernel(double* __restrict f, const float* __restrict factor, int n) {
-    for (int i = 0; i < n; ++i) f[i] *= double(factor[i]);
+// f *= factor (the sponge), and its float copy.
+OB_VECTOR_KERNEL void scaleKernel(double* __restrict f, float* __restrict copy, const float* __restrict factor, int n) {
+    for (int i = 0; i < n; ++i) {
+        f[i] *= double(factor[i]);
+        copy[i] = float(f[i]);
+    }
 }
 
 } // namespace
@@ -82,25 +91,24 @@ EWaveField::EWaveField(int rows, int cols, float cellSize, RippleBoundary bounda
     m_h = allocReal(m_cells);
     m_v = allocReal(m_cells);
     for (int t = 0; t < 2; ++t) {
-        m_real[t] = allocFloat(m_cells);
+        m_float[t] = allocFloat(m_cells);
         m_spec[t] = allocFloat(2 * m_modes);
-        m_change[t] = allocFloat(2 * m_modes);
+        m_change[t] = allocFloat(m_cells);
     }
-    // Planning may overwrite the arrays (FFTW_MEASURE): they hold nothing yet.
-    // The forward transform may overwrite its input: m_real holds a float copy of the state.
+    // Planning may overwrite the arrays (FFTW_MEASURE): they hold nothing yet. The forward
+    // transform keeps its input (r2c's default): it reads the float copies of the state.
     m_forward = ocean::planWithWisdom([&](unsigned flags) {
-        return fftwf_plan_dft_r2c_2d(rows, cols, m_real[0], reinterpret_cast<fftwf_complex*>(m_spec[0]),
-                                     flags | FFTW_DESTROY_INPUT);
+        return fftwf_plan_dft_r2c_2d(rows, cols, m_float[0], reinterpret_cast<fftwf_complex*>(m_spec[0]), flags);
     });
     m_backward = ocean::planWithWisdom([&](unsigned flags) {
-        return fftwf_plan_dft_c2r_2d(rows, cols, reinterpret_cast<fftwf_complex*>(m_change[0]), m_real[0], flags);
+        return fftwf_plan_dft_c2r_2d(rows, cols, reinterpret_cast<fftwf_complex*>(m_spec[0]), m_change[0], flags);
     });
     if (!m_forward || !m_backward)
         throw RuntimeError("FFTW could not plan a " + std::to_string(rows) + "×" + std::to_string(cols) + " transform");
-    m_hFloat.assign(m_cells, 0.0f);
+    std::memset(m_float[0], 0, m_cells * sizeof(float));  // planning wrote into them
+    std::memset(m_float[1], 0, m_cells * sizeof(float));
     if (boundary == RippleBoundary::Absorbing) m_spongeWidth = std::clamp(spongeWidth, 1, std::min(rows, cols) / 2);
-    m_coef[0].resize(2 * m_modes);
-    m_coef[1].resize(2 * m_modes);
+    m_coef.resize(3 * size_t(m_rows / 2 + 1) * size_t(m_specCols));
     chooseThreads();
 }
 
@@ -127,7 +135,7 @@ void EWaveField::chooseThreads() {
         m_sourceThreads = n;
         addSources(batch, 1.0f / 60.0f);
     });
-    std::fill(m_v, m_v + m_cells, 0.0);
+    clear();
 }
 
 EWaveField::~EWaveField() {
@@ -139,7 +147,7 @@ EWaveField::~EWaveField() {
     fftw_free(m_h);
     fftw_free(m_v);
     for (int t = 0; t < 2; ++t) {
-        fftwf_free(m_real[t]);
+        fftwf_free(m_float[t]);
         fftwf_free(m_spec[t]);
         fftwf_free(m_change[t]);
     }
@@ -193,27 +201,24 @@ std::vector<float> EWaveField::spongeFactors(int rows, int cols, int spongeWidth
     return sponge;
 }
 
-// Per mode (row j, column i of the r2c spectrum) the change's coefficients a − 1, b, c (the
-// rotation by ωΔt times the damping, less the identity) times FFTW's 1/(rows·cols) (a power of
-// two for power-of-two sides: exact). The sponge factors depend on Δt too: both are rebuilt
-// when Δt or the damping changes.
+// Per mode (row j ≤ rows/2, column i of the r2c spectrum; row rows − j has the same |k| and
+// reads row j's) the change's coefficients a − 1, b, c (the rotation by ωΔt times the damping,
+// less the identity) times FFTW's 1/(rows·cols) (a power of two for power-of-two sides: exact).
+// The sponge factors depend on Δt too: both are rebuilt when Δt or the damping changes.
 void EWaveField::prepare(float dt) {
     const double norm = 1.0 / (double(m_rows) * double(m_cols));
     const double twoPi = 2.0 * std::numbers::pi;
     const double lx = double(m_cols) * m_cellSize, lz = double(m_rows) * m_cellSize;
-    for (int j = 0; j < m_rows; ++j) {
-        const int jj = j <= m_rows / 2 ? j : j - m_rows;
-        const double kz = twoPi * jj / lz;
+    for (int j = 0; j <= m_rows / 2; ++j) {
+        const double kz = twoPi * j / lz;
         for (int i = 0; i < m_specCols; ++i) {
             const double kx = twoPi * i / lx;
             const double k = std::sqrt(kx * kx + kz * kz);
+            double* c = m_coef.data() + 3 * (size_t(j) * size_t(m_specCols) + size_t(i));
+            c[0] = modeStepMinusOne(k, dt, m_decayTime, m_viscosity, norm);
             const ModeStep s = modeStep(k, dt, m_decayTime, m_viscosity, norm);
-            const double am1 = modeStepMinusOne(k, dt, m_decayTime, m_viscosity, norm);
-            const size_t m = size_t(j) * size_t(m_specCols) + size_t(i);
-            m_coef[0][2 * m] = am1;  // Δĥ = (a − 1)·ĥ + b·v̂
-            m_coef[0][2 * m + 1] = s.b;
-            m_coef[1][2 * m] = s.c;  // Δv̂ = c·ĥ + (a − 1)·v̂
-            m_coef[1][2 * m + 1] = am1;
+            c[1] = s.b;
+            c[2] = s.c;
         }
     }
     m_sponge.clear();
@@ -224,78 +229,88 @@ void EWaveField::prepare(float dt) {
 void EWaveField::step(float dt) {
     assert(dt > 0.0f);
     if (dt != m_preparedDt) prepare(dt);
-    const int pairChunk = m_stepThreads > 1 ? 1 : 2;  // 2: both on the calling thread
-    // --- forward transforms of h and v, each whole on one worker
+    if (m_stale) syncHeight();
+    const int pairChunk = m_stepThreads > 1 ? 1 : 2;             // 2: both on the calling thread
+    const int rowChunk = m_stepThreads > 1 ? m_rows / 2 : m_rows;  // two row bands, or one
+    // --- 1. forward transforms of h and v, each whole on one worker
     parallelFor(0, 2, pairChunk, [&](int b, int e) {
-        for (int t = b; t < e; ++t) forward(t);
+        for (int t = b; t < e; ++t)
+            fftwf_execute_dft_r2c(m_forward, m_float[t], reinterpret_cast<fftwf_complex*>(m_spec[t]));
     });
-    // --- per field (both spectra read, its own written): the change of every mode, its inverse
-    //     transform added to the field, the boundary, h's float copy
+    // --- 2. both spectra become their changes, in row bands
+    parallelFor(0, m_rows, rowChunk, [&](int j0, int j1) { changeRows(j0, j1); });
+    // --- 3. per field: the inverse transform of its change, added to it, the boundary, its float copy
     parallelFor(0, 2, pairChunk, [&](int b, int e) {
-        for (int t = b; t < e; ++t) backward(t);
+        for (int t = b; t < e; ++t) {
+            fftwf_execute_dft_c2r(m_backward, reinterpret_cast<fftwf_complex*>(m_spec[t]), m_change[t]);
+            finishRows(t, 0, m_rows);
+        }
     });
 }
 
-// Field t (0: h, 1: v) in float, transformed into m_spec[t].
-void EWaveField::forward(int t) {
-    toFloatKernel(m_real[t], t == 0 ? m_h : m_v, m_cells);
-    fftwf_execute_dft_r2c(m_forward, m_real[t], reinterpret_cast<fftwf_complex*>(m_spec[t]));
+// Spectrum rows [j0, j1) of both fields: Δĥ = (a − 1)·ĥ + b·v̂, Δv̂ = c·ĥ + (a − 1)·v̂ in place.
+void EWaveField::changeRows(int j0, int j1) {
+    for (int j = j0; j < j1; ++j) {
+        const size_t row = size_t(j) * size_t(m_specCols);
+        const size_t coefRow = size_t(std::min(j, m_rows - j)) * size_t(m_specCols);
+        changeKernel(m_spec[0] + 2 * row, m_spec[1] + 2 * row, m_coef.data() + 3 * coefRow, m_specCols);
+    }
 }
 
-// Field t's change per mode, Δĥ = (a − 1)·ĥ + b·v̂ or Δv̂ = c·ĥ + (a − 1)·v̂ (normalised, in
-// double), its inverse transform, then added to the field.
-void EWaveField::backward(int t) {
-    changeKernel(m_change[t], m_spec[0], m_spec[1], m_coef[t].data(), m_modes);
-    fftwf_execute_dft_c2r(m_backward, reinterpret_cast<fftwf_complex*>(m_change[t]), m_real[t]);
-    finishRows(t == 0 ? m_h : m_v, m_real[t], 0, m_rows);
-}
-
-// Rows [z0, z1) of field f (m_h or m_v): the change added, then the boundary (Fixed: the outer
-// ring 0; Absorbing: the band scaled by the sponge factors), then, for h, its float copy.
-void EWaveField::finishRows(double* f, const float* change, int z0, int z1) {
+// Rows [z0, z1) of field t (0: h, 1: v): the change added, then the boundary (Fixed: the outer
+// ring 0; Absorbing: the band scaled by the sponge factors), the float copy following.
+void EWaveField::finishRows(int t, int z0, int z1) {
     const int rows = m_rows, cols = m_cols, w = m_spongeWidth;
+    double* const f = t == 0 ? m_h : m_v;
     for (int z = z0; z < z1; ++z) {
         const size_t row = size_t(z) * size_t(cols);
         double* fr = f + row;
-        addKernel(fr, change + row, cols);
+        float* copy = m_float[t] + row;
+        addKernel(fr, copy, m_change[t] + row, cols);
         switch (m_boundary) {
         case RippleBoundary::Periodic:
             break;
         case RippleBoundary::Fixed:
             if (z == 0 || z == rows - 1) {
                 std::fill(fr, fr + cols, 0.0);
+                std::fill(copy, copy + cols, 0.0f);
             } else {
-                fr[0] = 0.0;
-                fr[cols - 1] = 0.0;
+                fr[0] = fr[cols - 1] = 0.0;
+                copy[0] = copy[cols - 1] = 0.0f;
             }
             break;
         case RippleBoundary::Absorbing:
             // Only the band: rows in it whole, the other rows at their two ends.
             if (z < w || z >= rows - w) {
-                scaleKernel(fr, m_sponge.data() + row, cols);
+                scaleKernel(fr, copy, m_sponge.data() + row, cols);
             } else {
-                scaleKernel(fr, m_sponge.data() + row, w);
-                scaleKernel(fr + (cols - w), m_sponge.data() + row + size_t(cols - w), w);
+                scaleKernel(fr, copy, m_sponge.data() + row, w);
+                scaleKernel(fr + (cols - w), copy + (cols - w), m_sponge.data() + row + size_t(cols - w), w);
             }
             break;
         }
-        if (f == m_h) toFloatKernel(m_hFloat.data() + row, fr, size_t(cols));
     }
 }
 
-void EWaveField::syncHeight() { toFloatKernel(m_hFloat.data(), m_h, m_cells); }
+void EWaveField::syncHeight() {
+    toFloatKernel(m_float[0], m_h, m_cells);
+    toFloatKernel(m_float[1], m_v, m_cells);
+    m_stale = false;
+}
 
 // One source over `rows` rows of n cells from v (row stride `stride`): per row q = 1 −
-// dz²/R² (dz = dz0 + row, exact), then v[x] += amount·max(0, q − dx2[x])², 0 outside the disc.
-OB_VECTOR_KERNEL static void sourceKernel(double* __restrict v, size_t stride, int rows, double dz0, double invR2,
-                                          const double* __restrict dx2, int n, double amount) {
-    for (int r = 0; r < rows; ++r, v += stride) {
+// dz²/R² (dz = dz0 + row, exact), then v[x] += amount·max(0, q − dx2[x])², 0 outside the disc, and
+// its float copy.
+OB_VECTOR_KERNEL static void sourceKernel(double* __restrict v, float* __restrict copy, size_t stride, int rows,
+                                          double dz0, double invR2, const double* __restrict dx2, int n, double amount) {
+    for (int r = 0; r < rows; ++r, v += stride, copy += stride) {
         const double dz = dz0 + double(r);
         const double q = 1.0 - dz * dz * invR2;
         if (q <= 0.0) continue;
         for (int x = 0; x < n; ++x) {
             const double w = std::max(0.0, q - dx2[x]);  // 1 − r²/R²
             v[x] += amount * w * w;
+            copy[x] = float(v[x]);
         }
     }
 }
@@ -330,8 +345,9 @@ void EWaveField::addSources(std::span<const EWaveSource> sources, float dt) {
                 const double dx = double(x) - s.gx;
                 dx2[size_t(x - x0)] = dx * dx * invR2;
             }
-            sourceKernel(m_v + size_t(z0) * size_t(m_cols) + size_t(x0), size_t(m_cols), z1 - z0 + 1, double(z0) - s.gz, invR2,
-                         dx2.data(), x1 - x0 + 1, double(s.accel) * double(dt));
+            const size_t at = size_t(z0) * size_t(m_cols) + size_t(x0);
+            sourceKernel(m_v + at, m_float[1] + at, size_t(m_cols), z1 - z0 + 1, double(z0) - s.gz, invR2, dx2.data(),
+                         x1 - x0 + 1, double(s.accel) * double(dt));
         }
     });
 }

@@ -29,15 +29,18 @@ struct EWaveSource;
 /// and the energy drifts by 1.2e-3 over 10,000 steps (measured); on the change, which is
 /// ωΔt (≲ 0.2) of the state and a quarter turn out of phase with it, that error leaves the
 /// energy to 3e-6 over 10,000 steps (SPEC §2.5b's energy test holds 1e-5), at the cost of
-/// float transforms. height() is a float copy of h, made after each step, for the renderer,
-/// dumps and the WaterQuery.
+/// float transforms. Beside the state the field keeps its float copy, kept current by every
+/// write (step, sources, addHeight, scroll, clear), which the forward transforms read: height()
+/// is that copy of h, for the renderer, dumps and the WaterQuery.
 ///
-/// Step (dt seconds): forward real-to-complex transforms of h and v (FFTW, float, each whole
-/// on one worker, so both cores work and the bits do not depend on the split; whether two
-/// workers pay is measured per size when the field is made, measuredThreads), per mode
-///   Δĥ = (a − 1)·ĥ + b·v̂,  Δv̂ = c·ĥ + (a − 1)·v̂  (double; a, b, c of modeStep)
-/// then per field: the inverse transform of its change added to it, and the boundary in real
-/// space.
+/// Step (dt seconds), three passes over the workers (whether two workers pay is measured per
+/// size when the field is made, measuredThreads; the bits do not depend on the split):
+///   1. the forward real-to-complex transforms of the float copies of h and v (FFTW, float,
+///      each whole on one worker);
+///   2. per mode, in place, in row bands: Δĥ = (a − 1)·ĥ + b·v̂, Δv̂ = c·ĥ + (a − 1)·v̂ (double;
+///      a, b, c of modeStep, stored once for rows j and rows − j, which share |k|);
+///   3. per field: the inverse transform of its change added to it, the boundary in real space,
+///      its float copy.
 ///
 /// Damping, in physical units and independent of the step size: d = exp(−Δt/τ − 2·ν·k²·Δt),
 /// τ the e-folding time of every wave's amplitude (s; 0 = none) and ν an effective viscosity
@@ -105,16 +108,28 @@ public:
     float decayTime() const { return m_decayTime; }
     float viscosity() const { return m_viscosity; }
 
-    /// The state h, rows·cols values row-major (index z·cols + x), metres. After writing it,
-    /// call syncHeight() (or step) before reading height().
-    std::span<double> heightState() { return {m_h, m_cells}; }
+    /// The state h, rows·cols values row-major (index z·cols + x), metres.
     std::span<const double> heightState() const { return {m_h, m_cells}; }
     /// The state v = ∂h/∂t, rows·cols values row-major, m/s.
-    std::span<double> velocityState() { return {m_v, m_cells}; }
     std::span<const double> velocityState() const { return {m_v, m_cells}; }
-    /// h as floats, row-major, m: a copy made by step(), scroll(), clear() and syncHeight().
-    std::span<const float> height() const { return m_hFloat; }
-    /// Copies the state h into height().
+    /// The state to write (loaders, tests, the GPU twin's read-back). Marks the float copies for
+    /// a rebuild before the next step; call syncHeight() before reading height() in between.
+    std::span<double> editHeight() {
+        m_stale = true;
+        return {m_h, m_cells};
+    }
+    std::span<double> editVelocity() {
+        m_stale = true;
+        return {m_v, m_cells};
+    }
+    /// h += dh at cell index (z·cols + x), its float copy with it (a drop's crater).
+    void addHeight(size_t index, double dh) {
+        m_h[index] += dh;
+        m_float[0][index] = float(m_h[index]);
+    }
+    /// h as floats, row-major, m: the float copy of the state.
+    std::span<const float> height() const { return {m_float[0], m_cells}; }
+    /// Rebuilds the float copies from the state (after editHeight/editVelocity).
     void syncHeight();
     /// h at column x, row z (both in range), m.
     float heightAt(int x, int z) const { return float(m_h[size_t(z) * size_t(m_cols) + size_t(x)]); }
@@ -124,9 +139,8 @@ public:
 private:
     void chooseThreads();
     void prepare(float dt);
-    void forward(int t);
-    void backward(int t);
-    void finishRows(double* f, const float* change, int z0, int z1);
+    void changeRows(int j0, int j1);
+    void finishRows(int t, int z0, int z1);
 
     int m_rows, m_cols, m_specCols;
     size_t m_cells, m_modes;
@@ -135,18 +149,17 @@ private:
     int m_spongeWidth = 0;
     float m_decayTime = 0.0f, m_viscosity = 0.0f;
     float m_preparedDt = -1.0f;        // dt of the coefficients below (and the sponge factors)
-    int m_stepThreads = 1;             // the step's transforms on 1 or 2 workers (measured, chooseThreads)
+    int m_stepThreads = 1;             // the step's passes on 1 or 2 workers (measured, chooseThreads)
     int m_sourceThreads = 1;           // addSources' row bands on 1 or workerCount() workers (measured)
+    bool m_stale = false;              // the state was written through edit*: m_float needs a rebuild
     double* m_h = nullptr;             // fftw_alloc'd real arrays, rows·cols
     double* m_v = nullptr;
-    float* m_real[2] = {};             // per field (h, v): the state in float, then its change; rows·cols
-    float* m_spec[2] = {};             // per field: its spectrum, complex rows × (cols/2 + 1) interleaved (re, im)
-    float* m_change[2] = {};           // per field: the spectrum of its change, the same layout
-    fftwf_plan_s* m_forward = nullptr;   // r2c rows × cols, out of place (new-array execute)
+    float* m_float[2] = {};            // per field (h, v): float(state), rows·cols; the forward transforms' input
+    float* m_spec[2] = {};             // per field: its spectrum, then its change's, complex rows × (cols/2 + 1) (re, im)
+    float* m_change[2] = {};           // per field: its change in real space, rows·cols
+    fftwf_plan_s* m_forward = nullptr;   // r2c rows × cols, out of place, input kept (new-array execute)
     fftwf_plan_s* m_backward = nullptr;  // c2r, out of place (destroys its input)
-    std::vector<float> m_hFloat;        // height()
-    std::vector<double> m_coef[2];     // per field, per mode, the change's coefficients of ĥ and v̂ (h: a − 1, b;
-                                       // v: c, a − 1; modeStep's, times 1/(rows·cols))
+    std::vector<double> m_coef;        // per mode of rows 0..rows/2: a − 1, b, c (modeStep's, times 1/(rows·cols))
     std::vector<float> m_sponge;       // per cell: the factor exp(−γΔt) (Absorbing), 1 away from the band
 };
 

@@ -251,12 +251,11 @@ double stampLandings(interaction::RipplePatch& patch, std::span<const Landing> l
         const double energy = double(energyFraction) * 0.5 * double(l.mass) * s2;  // J
         const double depth = std::sqrt(2.0 * energy / (double(WATER_DENSITY) * GRAVITY * area));  // m
         const size_t at = size_t(iz) * size_t(cols) + size_t(ix);
-        if (ewave) ewave->heightState()[at] -= depth;
+        if (ewave) ewave->addHeight(at, -depth);
         else cur[at] -= float(depth);
         total += energy;
     }
     if (landings.empty()) return total;
-    if (ewave) ewave->syncHeight();
     patch.fieldEdited();
     return total;
 }

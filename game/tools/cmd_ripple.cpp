@@ -69,8 +69,8 @@ int ewaveCommand(const RippleArgs& args) {
     // --- solve
     interaction::EWaveField field(int(h.shape[0]), int(h.shape[1]), args.cellSize, boundary);
     field.setDamping(args.damping, args.viscosity);
-    std::copy(h.data.begin(), h.data.end(), field.heightState().begin());
-    if (!v.data.empty()) std::copy(v.data.begin(), v.data.end(), field.velocityState().begin());
+    std::copy(h.data.begin(), h.data.end(), field.editHeight().begin());
+    if (!v.data.empty()) std::copy(v.data.begin(), v.data.end(), field.editVelocity().begin());
     field.syncHeight();
     for (int k = 0; k < args.steps; ++k) field.step(args.dt);
 

@@ -27,8 +27,8 @@ namespace {
 void fillNoise(EWaveField& field) {
     std::mt19937 rng(1);
     std::uniform_real_distribution<double> noise(-0.1, 0.1);
-    for (double& v : field.heightState()) v = noise(rng);
-    for (double& v : field.velocityState()) v = noise(rng);
+    for (double& v : field.editHeight()) v = noise(rng);
+    for (double& v : field.editVelocity()) v = noise(rng);
 }
 
 // One step of an N×N absorbing field (0.25 m cells, 60 Hz, the default damping) holding noise.
@@ -65,7 +65,7 @@ void BM_EWaveGpuStep(benchmark::State& state) {
     gpu.upload(field);
     const auto body = [&] {
         gpu.step(1.0f / 60.0f);
-        if (state.range(1)) gpu.download(field.heightState(), field.velocityState());
+        if (state.range(1)) gpu.download(field.editHeight(), field.editVelocity());
         glFinish();
     };
     body();  // warm-up: the driver compiles each shader at its first dispatch

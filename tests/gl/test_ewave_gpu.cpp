@@ -50,8 +50,8 @@ void randomState(EWaveField& f, unsigned seed, double amplitude) {
     std::mt19937 rng(seed);
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
     const double w1 = EWaveField::omega(std::numbers::pi / (4.0 * f.cellSize()));
-    for (double& x : f.heightState()) x = amplitude * unit(rng);
-    for (double& x : f.velocityState()) x = amplitude * w1 * unit(rng);
+    for (double& x : f.editHeight()) x = amplitude * unit(rng);
+    for (double& x : f.editVelocity()) x = amplitude * w1 * unit(rng);
     f.syncHeight();
 }
 
@@ -102,8 +102,8 @@ TEST_CASE("GPU ewave steps equal EWaveField::step within 1e-5 log2 N of the fiel
         // The GPU path as RipplePatch drives it: sources added to a CPU mirror, uploaded, stepped, read back.
         EWaveField mirror(c.n, c.n, cell, c.boundary, 16);
         mirror.setDamping(c.decayTime, c.viscosity);
-        std::copy(cpu.heightState().begin(), cpu.heightState().end(), mirror.heightState().begin());
-        std::copy(cpu.velocityState().begin(), cpu.velocityState().end(), mirror.velocityState().begin());
+        std::copy(cpu.heightState().begin(), cpu.heightState().end(), mirror.editHeight().begin());
+        std::copy(cpu.velocityState().begin(), cpu.velocityState().end(), mirror.editVelocity().begin());
         EWaveGpu gpu(mirror);
         double worstH = 0.0, worstV = 0.0;
         for (int k = 1; k <= 100; ++k) {
@@ -116,7 +116,7 @@ TEST_CASE("GPU ewave steps equal EWaveField::step within 1e-5 log2 N of the fiel
             }
             cpu.step(dt);
             gpu.step(dt);
-            gpu.download(mirror.heightState(), mirror.velocityState());
+            gpu.download(mirror.editHeight(), mirror.editVelocity());
             if (k % 10 == 0) {
                 worstH = std::max(worstH, relativeError(mirror.heightState(), cpu.heightState()));
                 worstV = std::max(worstV, relativeError(mirror.velocityState(), cpu.velocityState()));
@@ -175,13 +175,13 @@ TEST_CASE("GPU ewave: a single Fourier mode cos(K.X) on a periodic field evolves
         const double k = std::hypot(kx, kz), omega = std::sqrt(9.81 * k + 7.4e-5 * k * k * k);
         auto mode = [&](int x, int z) { return std::cos(kx * x * c.cell + kz * z * c.cell); };
         for (int z = 0; z < n; ++z)
-            for (int x = 0; x < n; ++x) field.heightState()[size_t(z * n + x)] = amplitude * mode(x, z);
+            for (int x = 0; x < n; ++x) field.editHeight()[size_t(z * n + x)] = amplitude * mode(x, z);
         EWaveGpu gpu(field);
         double worst = 0.0;
         for (int s = 1; s <= steps; ++s) {
             gpu.step(dt);
             if (s % 50 != 0) continue;
-            gpu.download(field.heightState(), field.velocityState());
+            gpu.download(field.editHeight(), field.editVelocity());
             const double t = double(s) * double(dt);
             const double rate = (c.decayTime > 0.0f ? 1.0 / c.decayTime : 0.0) + 2.0 * c.viscosity * k * k;
             const double expected = amplitude * std::cos(omega * t) * std::exp(-rate * t);
@@ -217,7 +217,7 @@ TEST_CASE("RipplePatch on the ewave GPU twin: written state (fieldEdited) and sc
         if (k == 5) {
             // A smooth bump written straight into h, as splash landings do.
             for (RipplePatch* p : {&cpu, &gpu}) {
-                auto h = p->ewave()->heightState();
+                auto h = p->ewave()->editHeight();
                 for (int z = 0; z < 64; ++z)
                     for (int x = 0; x < 64; ++x)
                         h[size_t(z * 64 + x)] += 0.1 * std::exp(-((x - 30) * (x - 30) + (z - 25) * (z - 25)) / 20.0);

@@ -57,8 +57,8 @@ void setMode(EWaveField& f, int mx, int mz) {
     const int rows = f.rows(), cols = f.cols();
     for (int z = 0; z < rows; ++z)
         for (int x = 0; x < cols; ++x) {
-            f.heightState()[size_t(z) * cols + x] = float(std::cos(2 * PI * (double(mx) * x / cols + double(mz) * z / rows)));
-            f.velocityState()[size_t(z) * cols + x] = 0.0f;
+            f.editHeight()[size_t(z) * cols + x] = float(std::cos(2 * PI * (double(mx) * x / cols + double(mz) * z / rows)));
+            f.editVelocity()[size_t(z) * cols + x] = 0.0f;
         }
 }
 
@@ -101,8 +101,8 @@ TEST_CASE("ewave: without damping the discrete energy is constant over 10,000 st
     for (int z = 0; z < n; ++z)
         for (int x = 0; x < n; ++x) {
             auto g = [&](double cx, double cz, double s) { return std::exp(-((x - cx) * (x - cx) + (z - cz) * (z - cz)) / (2 * s * s)); };
-            f.heightState()[size_t(z) * n + x] = float(0.1 * g(20, 30, 3) - 0.05 * g(45, 12, 2));
-            f.velocityState()[size_t(z) * n + x] = 0.2 * (g(40, 40, 4) - g(12, 50, 4));
+            f.editHeight()[size_t(z) * n + x] = float(0.1 * g(20, 30, 3) - 0.05 * g(45, 12, 2));
+            f.editVelocity()[size_t(z) * n + x] = 0.2 * (g(40, 40, 4) - g(12, 50, 4));
         }
     const double e0 = energy(f);
     double worst = 0.0;
@@ -121,7 +121,7 @@ TEST_CASE("ewave: with damping the energy decays as exp(−2t/τ − 4νk²t)", 
         f.setDamping(2.0f, 0.0f);
         for (int z = 0; z < n; ++z)
             for (int x = 0; x < n; ++x)
-                f.heightState()[size_t(z) * n + x] = float(std::exp(-((x - 32.0) * (x - 32.0) + (z - 20.0) * (z - 20.0)) / 18.0));
+                f.editHeight()[size_t(z) * n + x] = float(std::exp(-((x - 32.0) * (x - 32.0) + (z - 20.0) * (z - 20.0)) / 18.0));
         const double e0 = energy(f);
         const int steps = 180;  // 3 s at 60 Hz
         for (int s = 0; s < steps; ++s) f.step(1.0f / 60.0f);
@@ -158,7 +158,7 @@ TEST_CASE("ewave: a drop's ring train has the Cauchy–Poisson wavenumber k = g�
     for (int z = 0; z < n; ++z)
         for (int x = 0; x < n; ++x) {
             const double r2 = (double(x - c) * (x - c) + double(z - c) * (z - c)) * cell * cell;
-            f.heightState()[size_t(z) * n + x] = float(1e-3 * std::exp(-r2 / (2 * sigma * sigma)));
+            f.editHeight()[size_t(z) * n + x] = float(1e-3 * std::exp(-r2 / (2 * sigma * sigma)));
         }
     const float dt = 1.0f / 60.0f;
     int stepped = 0;
@@ -191,8 +191,8 @@ TEST_CASE("ewave: a drop's ring train has the Cauchy–Poisson wavenumber k = g�
 TEST_CASE("ewave: scrolling moves h and v by whole cells, and the absorbing band keeps waves from wrapping", "[ewave]") {
     SECTION("scroll") {
         EWaveField f(16, 16, 0.5f);
-        f.heightState()[5 * 16 + 7] = 1.0;
-        f.velocityState()[5 * 16 + 7] = 2.0;
+        f.editHeight()[5 * 16 + 7] = 1.0;
+        f.editVelocity()[5 * 16 + 7] = 2.0;
         f.scroll(2, -1);  // the value at (x+2, z−1) moves to (x, z)
         CHECK(f.heightAt(5, 6) == 1.0f);
         CHECK(f.height()[6 * 16 + 5] == 1.0f);
@@ -208,7 +208,7 @@ TEST_CASE("ewave: scrolling moves h and v by whole cells, and the absorbing band
             EWaveField f(128, 128, 0.25f, b, 24);
             for (int z = 0; z < 128; ++z)
                 for (int x = 0; x < 128; ++x)
-                    f.heightState()[size_t(z) * 128 + x] = float(0.1 * std::exp(-((x - 64.0) * (x - 64.0) + (z - 64.0) * (z - 64.0)) / 8.0));
+                    f.editHeight()[size_t(z) * 128 + x] = float(0.1 * std::exp(-((x - 64.0) * (x - 64.0) + (z - 64.0) * (z - 64.0)) / 8.0));
             const double e0 = energy(f);
             for (int s = 0; s < 1800; ++s) f.step(1.0f / 60.0f);
             remaining[idx++] = energy(f) / e0;

@@ -51,7 +51,7 @@ public:
         if (cpuChanged || m_scrolled) m_gpu.upload(m_field);
         m_scrolled = false;
         m_gpu.step(dt);
-        m_gpu.download(m_field.heightState(), m_field.velocityState());
+        m_gpu.download(m_field.editHeight(), m_field.editVelocity());
         m_field.syncHeight();
     }
 
