@@ -230,6 +230,12 @@ void EWaveField::step(float dt) {
     assert(dt > 0.0f);
     if (dt != m_preparedDt) prepare(dt);
     if (m_stale) syncHeight();
+    if (m_vRows0 < m_vRows1) {  // rows the sources wrote
+        const size_t at = size_t(m_vRows0) * size_t(m_cols);
+        toFloatKernel(m_float[1] + at, m_v + at, size_t(m_vRows1 - m_vRows0) * size_t(m_cols));
+        m_vRows0 = m_rows;
+        m_vRows1 = 0;
+    }
     const int pairChunk = m_stepThreads > 1 ? 1 : 2;             // 2: both on the calling thread
     const int rowChunk = m_stepThreads > 1 ? m_rows / 2 : m_rows;  // two row bands, or one
     // --- 1. forward transforms of h and v, each whole on one worker
@@ -296,21 +302,21 @@ void EWaveField::syncHeight() {
     toFloatKernel(m_float[0], m_h, m_cells);
     toFloatKernel(m_float[1], m_v, m_cells);
     m_stale = false;
+    m_vRows0 = m_rows;
+    m_vRows1 = 0;
 }
 
 // One source over `rows` rows of n cells from v (row stride `stride`): per row q = 1 −
-// dz²/R² (dz = dz0 + row, exact), then v[x] += amount·max(0, q − dx2[x])², 0 outside the disc, and
-// its float copy.
-OB_VECTOR_KERNEL static void sourceKernel(double* __restrict v, float* __restrict copy, size_t stride, int rows,
-                                          double dz0, double invR2, const double* __restrict dx2, int n, double amount) {
-    for (int r = 0; r < rows; ++r, v += stride, copy += stride) {
+// dz²/R² (dz = dz0 + row, exact), then v[x] += amount·max(0, q − dx2[x])², 0 outside the disc.
+OB_VECTOR_KERNEL static void sourceKernel(double* __restrict v, size_t stride, int rows, double dz0, double invR2,
+                                          const double* __restrict dx2, int n, double amount) {
+    for (int r = 0; r < rows; ++r, v += stride) {
         const double dz = dz0 + double(r);
         const double q = 1.0 - dz * dz * invR2;
         if (q <= 0.0) continue;
         for (int x = 0; x < n; ++x) {
             const double w = std::max(0.0, q - dx2[x]);  // 1 − r²/R²
             v[x] += amount * w * w;
-            copy[x] = float(v[x]);
         }
     }
 }
@@ -328,8 +334,10 @@ void EWaveField::addSource(float gx, float gz, float radiusCells, float accel, f
 void EWaveField::addSources(std::span<const EWaveSource> sources, float dt) {
     size_t work = 0;  // cells in the sources' bounding squares
     for (const EWaveSource& s : sources) {
-        const double r = std::max(s.radiusCells, 1.0f);
+        const float r = std::max(s.radiusCells, 1.0f);
         work += size_t(2.0 * r + 1.0) * size_t(2.0 * r + 1.0);
+        m_vRows0 = std::min(m_vRows0, std::max(0, int(std::ceil(s.gz - r))));  // v's float copy is stale there
+        m_vRows1 = std::max(m_vRows1, std::min(m_rows, int(std::floor(s.gz + r)) + 1));
     }
     const int minRows = m_sourceThreads > 1 && work >= PARALLEL_MIN_SOURCE_CELLS ? std::max(1, m_rows / 16) : m_rows;
     parallelFor(0, m_rows, minRows, [&](int band0, int band1) {
@@ -345,9 +353,8 @@ void EWaveField::addSources(std::span<const EWaveSource> sources, float dt) {
                 const double dx = double(x) - s.gx;
                 dx2[size_t(x - x0)] = dx * dx * invR2;
             }
-            const size_t at = size_t(z0) * size_t(m_cols) + size_t(x0);
-            sourceKernel(m_v + at, m_float[1] + at, size_t(m_cols), z1 - z0 + 1, double(z0) - s.gz, invR2, dx2.data(),
-                         x1 - x0 + 1, double(s.accel) * double(dt));
+            sourceKernel(m_v + size_t(z0) * size_t(m_cols) + size_t(x0), size_t(m_cols), z1 - z0 + 1, double(z0) - s.gz, invR2,
+                         dx2.data(), x1 - x0 + 1, double(s.accel) * double(dt));
         }
     });
 }

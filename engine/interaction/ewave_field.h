@@ -29,9 +29,10 @@ struct EWaveSource;
 /// and the energy drifts by 1.2e-3 over 10,000 steps (measured); on the change, which is
 /// ωΔt (≲ 0.2) of the state and a quarter turn out of phase with it, that error leaves the
 /// energy to 3e-6 over 10,000 steps (SPEC §2.5b's energy test holds 1e-5), at the cost of
-/// float transforms. Beside the state the field keeps its float copy, kept current by every
-/// write (step, sources, addHeight, scroll, clear), which the forward transforms read: height()
-/// is that copy of h, for the renderer, dumps and the WaterQuery.
+/// float transforms. Beside the state the field keeps its float copy, which the forward
+/// transforms read: height() is that copy of h, for the renderer, dumps and the WaterQuery. Every
+/// write keeps it current (step, addHeight, scroll, clear) or marks it: the rows the sources
+/// wrote into v, and edit*'s whole state, are copied again before the next step.
 ///
 /// Step (dt seconds), three passes over the workers (whether two workers pay is measured per
 /// size when the field is made, measuredThreads; the bits do not depend on the split):
@@ -152,6 +153,7 @@ private:
     int m_stepThreads = 1;             // the step's passes on 1 or 2 workers (measured, chooseThreads)
     int m_sourceThreads = 1;           // addSources' row bands on 1 or workerCount() workers (measured)
     bool m_stale = false;              // the state was written through edit*: m_float needs a rebuild
+    int m_vRows0 = 0, m_vRows1 = 0;    // rows [m_vRows0, m_vRows1) of v written by sources since m_float[1] was made
     double* m_h = nullptr;             // fftw_alloc'd real arrays, rows·cols
     double* m_v = nullptr;
     float* m_float[2] = {};            // per field (h, v): float(state), rows·cols; the forward transforms' input
