@@ -80,7 +80,7 @@ void Renderer::uploadFoam(const WaterView& water, WaterUniforms& u) {
     u.foamParams = glm::vec4(0.0f);
     if (!m_def.foam || !water.foam || water.foamCells <= 0) return;
     if (m_foamCells != water.foamCells) {
-        m_foamTexture = createTexture2D("foam coverage", GL_R16F, glm::ivec2(water.foamCells));
+        m_foamTexture = createTexture2D("foam coverage", GL_R32F, glm::ivec2(water.foamCells));
         glTextureParameteri(m_foamTexture.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
         glTextureParameteri(m_foamTexture.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
         const float zero[4] = {0, 0, 0, 0};

@@ -25,15 +25,15 @@ namespace ob::game {
 
 namespace {
 
-// Runs warm-up + measured frames of a sandbox (with or without a platform to present to).
-void runFrames(Sandbox& sandbox, platform::Platform* platform, int frames, double stepHz, Progress& progress,
+// Runs warm-up + measured frames of a sandbox (rendered if a platform is attached).
+void runFrames(Sandbox& sandbox, int frames, double stepHz, Progress& progress,
                const std::string& what, int point, int points) {
     FixedStepClock clock(1.0 / stepHz);
     for (int f = 0; f < frames; ++f) {
         if (f % 5 == 0) progress.show(what + ", frame " + std::to_string(f + 1) + "/" + std::to_string(frames), point, points);
-        sandbox.frame(clock.now());
-        if (platform) platform->present();
+        sandbox.frame(clock.now());  // presents the frame before it
     }
+    sandbox.present();
     sandbox.schedule().finish();
 }
 
@@ -142,11 +142,11 @@ int benchFields(const FieldsBenchArgs& a) {
             if (platform) {
                 Sandbox sandbox(scene);
                 sandbox.attachPlatform(*platform, false);
-                runFrames(sandbox, platform.get(), a.warmup + a.frames, scene.sim.step_hz, progress, what + " rendered", point, points);
+                runFrames(sandbox, a.warmup + a.frames, scene.sim.step_hz, progress, what + " rendered", point, points);
                 record("full", timingOf(sandbox.timings(size_t(a.warmup)), "frame"));
             }
             Sandbox sandbox(scene);
-            runFrames(sandbox, nullptr, a.warmup + a.frames, scene.sim.step_hz, progress, what + " spheres only", point, points);
+            runFrames(sandbox, a.warmup + a.frames, scene.sim.step_hz, progress, what + " spheres only", point, points);
             record("spheres_only", timingOf(sandbox.timings(size_t(a.warmup)), "interaction"));
         }
     }
@@ -181,7 +181,7 @@ int benchFrame(const FrameBenchArgs& a) {
     for (const std::string& s : a.sets) dynamic = dynamic || s.rfind("render.target_fps", 0) == 0;
     if (dynamic) sandbox.enableDynamicResolution();
     Progress progress("frame");
-    runFrames(sandbox, platform.get(), a.warmup + a.frames, scene.sim.step_hz, progress, a.scene, 1, 1);
+    runFrames(sandbox, a.warmup + a.frames, scene.sim.step_hz, progress, a.scene, 1, 1);
     progress.done();
     setLogQuiet(false);
     const auto timings = sandbox.timings(size_t(a.warmup));

@@ -167,13 +167,13 @@ int runScene(const SceneDef& scene, const std::string& scenePath, const RunOptio
         if (sandbox->quitRequested()) break;
         const bool last = (options.frames > 0 && f + 1 >= options.frames) ||
                           (options.endTime > 0.0 && sandbox->schedule().simTime() >= options.endTime - 1e-9);
-        // Read back before present: the window's back buffer is undefined after a swap.
+        // Read back before present: the window's back buffer is undefined after a swap. The
+        // frame is presented by the next one's render phase, after that frame's steps.
         for (const std::string& file : sandbox->takeScreenshotRequests()) {
             gfx::writeScreenshot(file, platform->framebufferSize());
             logInfo("screenshot written to %s", file.c_str());
         }
         if (last && !options.screenshot.empty()) gfx::writeScreenshot(options.screenshot, platform->framebufferSize());
-        platform->present();
         if (progress && (f % 10 == 0 || last))
             std::fprintf(stderr, "\roceanbox: frame %ld/%ld (%3.0f%%)%s", f + 1, expected,
                          100.0 * double(f + 1) / double(std::max(expected, 1L)), last ? "\n" : "");
@@ -181,6 +181,7 @@ int runScene(const SceneDef& scene, const std::string& scenePath, const RunOptio
         // The UI's "restart with these settings": a new world on the same window.
         if (std::optional<SceneDef> edited = sandbox->takeRestartRequest()) {
             logInfo("restarting the scene with the edited settings");
+            sandbox->present();
             const std::optional<CameraPose> pose = sandbox->cameraPose();
             const bool cameraEdited = !sameCamera(sandbox->scene().camera, edited->camera);
             sandbox.reset();
@@ -190,6 +191,7 @@ int runScene(const SceneDef& scene, const std::string& scenePath, const RunOptio
             clock = makeClock(*edited);
         }
     }
+    sandbox->present();
     sandbox->schedule().finish();
     if (!bounded && !options.screenshot.empty())
         logWarn("--screenshot needs --frames N (or [sim] end_time); no screenshot written");

@@ -3,6 +3,7 @@
 #include "platform/platform.h"
 
 #include "behaviours/fish.h"
+#include "gfx/gl.h"
 #include "gfx/renderer.h"
 #include "gfx/ui_overlay.h"
 #include "sim/objects.h"
@@ -46,8 +47,16 @@ void SandboxView::pollInput(ecs::World& world, const ecs::Tick& tick) {
     }
 }
 
-// Render phase: the passes, then the UI, then present.
+void SandboxView::present() {
+    if (!m_presentPending) return;
+    m_platform.present();
+    m_presentPending = false;
+}
+
+// Render phase: the previous frame presented (its rasterisation overlapped this frame's steps),
+// then the passes and the UI, flushed so the rasteriser starts on them.
 void SandboxView::render(ecs::World& world, const ecs::Tick& tick) {
+    present();
     glm::ivec2 size = m_platform.framebufferSize();
     if (size.x <= 0 || size.y <= 0) return;  // minimised
     m_renderer->def() = m_scene.render;
@@ -93,6 +102,8 @@ void SandboxView::render(ecs::World& world, const ecs::Tick& tick) {
         drawPanels(world, m_scene, m_timer, dynamicScale, m_restart);
         m_ui->end();
     }
+    glFlush();
+    m_presentPending = true;
 }
 
 

@@ -29,6 +29,7 @@ public:
     ~SandboxView() override;
     void pollInput(ecs::World& world, const ecs::Tick& tick) override;
     void render(ecs::World& world, const ecs::Tick& tick) override;
+    void present() override;
 
 private:
     platform::Platform& m_platform;
@@ -37,6 +38,7 @@ private:
     std::optional<SceneDef>& m_restart;
     std::unique_ptr<gfx::Renderer> m_renderer;
     std::unique_ptr<gfx::UiOverlay> m_ui;
+    bool m_presentPending = false;  // a frame is drawn and not yet presented
 };
 
 } // namespace ob::game

@@ -125,6 +125,10 @@ std::vector<std::pair<std::string, double>> Sandbox::timings(size_t skipFrames) 
     return out;
 }
 
+void Sandbox::present() {
+    if (View* view = m_world.resource<View>()) view->present();
+}
+
 uint64_t Sandbox::stateHash() {
     StateHasher h;
     h.u64(m_schedule.steps());

@@ -28,8 +28,12 @@ public:
     virtual ~View() = default;
     /// Input phase, first: the platform's events into the input queue.
     virtual void pollInput(ecs::World& world, const ecs::Tick& tick) = 0;
-    /// Render phase, last: the passes, the UI, present.
+    /// Render phase, last: presents the previous frame, then this frame's passes and UI, handed
+    /// to the GL (flushed) but not presented: a software rasteriser draws it while the next
+    /// frame's steps run on the main thread.
     virtual void render(ecs::World& world, const ecs::Tick& tick) = 0;
+    /// Presents the latest rendered frame if it is not shown yet.
+    virtual void present() = 0;
 };
 
 /// Where the camera is and how the player has steered it (kept across a restart).
@@ -48,6 +52,9 @@ public:
     void attachPlatform(platform::Platform& platform, bool withUi);
     /// One frame at clock time `now` (s): input, the steps due, render.
     void frame(double now) { m_schedule.runFrame(m_world, now); }
+    /// Shows the latest frame. A frame's render shows the frame before it, so a loop of frames
+    /// calls this only at its end (or before reading back a frame after its swap).
+    void present();
     /// One simulation step without input or render.
     void step() { m_schedule.runStep(m_world); }
     /// Hash of the simulation state (bit-exact: equal hashes mean equal states): the step,
