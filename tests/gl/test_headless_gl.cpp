@@ -93,3 +93,41 @@ TEST_CASE("looking straight up shows only sky, looking down only sea", "[gl]") {
     CHECK(down.x + down.y + down.z < up.x + up.y + up.z); // water darker than the sky
     CHECK(down.z > down.x);
 }
+
+namespace {
+
+// A platform that records what it is asked (a present with the steps run by then), around a
+// headless one.
+struct RecordingPlatform final : platform::Platform {
+    std::unique_ptr<platform::Platform> inner = platform::createHeadlessPlatform({32, 24});
+    game::Sandbox* sandbox = nullptr;
+    std::vector<std::string> calls;
+    const char* name() const override { return inner->name(); }
+    bool headless() const override { return true; }
+    glm::ivec2 framebufferSize() const override { return inner->framebufferSize(); }
+    void pollEvents(std::vector<platform::InputEvent>& out) override {
+        calls.push_back("poll");
+        inner->pollEvents(out);
+    }
+    void present() override {
+        calls.push_back("present after step " + std::to_string(sandbox->schedule().steps()));
+        inner->present();
+    }
+};
+
+} // namespace
+
+TEST_CASE("a frame is presented once, after the next frame's input and steps and before its passes", "[gl]") {
+    RecordingPlatform platform;
+    game::Sandbox sandbox(game::loadScene(game::defaultScenePath(), {"ocean.resolution=32", "ripples.resolution=32"}));
+    platform.sandbox = &sandbox;
+    sandbox.attachPlatform(platform, false);
+    for (int f = 0; f < 3; ++f) sandbox.frame(f / 60.0);  // one step a frame
+    // Frame 1 presents nothing yet; frames 2 and 3 present the frame before, after their poll
+    // and their step.
+    CHECK(platform.calls == std::vector<std::string>{"poll", "poll", "present after step 2", "poll", "present after step 3"});
+    sandbox.present();
+    sandbox.present();  // nothing new to show
+    CHECK(platform.calls.size() == 6);
+    CHECK(platform.calls.back() == "present after step 3");
+}
