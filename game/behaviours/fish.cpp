@@ -4,13 +4,11 @@
 #include "core/random.h"
 #include "ecs/components.h"
 #include "interaction/ripple_patch.h"
-#include "splash/splash_particles.h"
 #include "water/composite_water.h"
 #include "sim/water_systems.h"
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 
@@ -33,6 +31,8 @@ interaction::BoundingSphere paperFishSphere(float length) {
 }
 
 } // namespace
+
+float fishMass(float length) { return FISH_CONDITION * length * length * length; }
 
 ecs::Entity spawnFishSchool(ecs::World& world, const ObjectDef& o, uint64_t seed) {
     FishSchool s;
@@ -156,8 +156,7 @@ void eachFishSphere(ecs::World& world, SphereUse use, const SphereVisitor& visit
         p.owner = uint32_t(schools.entities()[k]);
         p.count = uint32_t(s.size());
         p.sphere = &s.sphere;
-        const float r = s.sphere.radius;
-        p.crossingMass = splash::WATER_DENSITY * 4.0f / 3.0f * std::numbers::pi_v<float> * r * r * r;  // of water-like density
+        p.crossingMass = fishMass(s.length);  // the body's, not its bounding sphere's (94 kg for a 0.8 m fish)
         for (size_t i = 0; i < s.size(); ++i) {
             p.index = uint32_t(i);
             p.contact = &s.contacts[i];

@@ -49,6 +49,12 @@ struct FishSchool {
 constexpr size_t MAX_DRAWN_FISH = 4096;
 
 /// Creates a school from its [[objects]] entry (type "fish_school"); `seed` feeds its jumps.
+/// A fish's mass per cubed length, kg/m³: Fulton's condition factor K = 100·W/L³ (W in g, L in
+/// cm) is about 1 for most fish, so W = 10 kg·(L/1 m)³ (a 0.4 m fish 0.64 kg, a 0.8 m fish 5.1 kg).
+constexpr float FISH_CONDITION = 10.0f;
+/// The mass of a fish `length` metres long, kg (FISH_CONDITION·L³): what it carries through
+/// the surface when it jumps or falls back (its splash).
+float fishMass(float length);
 ecs::Entity spawnFishSchool(ecs::World& world, const ObjectDef& def, uint64_t seed);
 /// Script phase: every fish swims or flies its arc one step.
 void fishSystem(ecs::World& world, const ecs::Tick& tick);
