@@ -32,6 +32,9 @@ const vec2 DETAIL_DRIFT = vec2(0.031, 0.017);  // detail map scroll (repeats per
 const vec3 SUN_COLOR = vec3(1.0, 0.9, 0.7);
 const float FOAM_TILE = 5.0;               // m per repeat of the persistent foam's bubble pattern
 const float FOAM_EDGE = 0.08;              // softness of the pattern's threshold
+const float FOAM_DENSE = 0.85;             // the share of the surface foam at coverage 1 covers
+const float FOAM_PATTERN_LOW = 0.47;       // pow(ridges, 0.4) at 5% of the detail map's foam pattern
+const float FOAM_PATTERN_HIGH = 0.88;      // ...and at 95%
 const float FOAM_WARP = 3.0;               // foam map cells the lookup is pushed by the DU/DV field, at most
 // A tilted surface shifts an image by an angle, so the shift grows with the distance of the
 // reflected or refracted object behind the surface: none where it touches it (a hull at the
@@ -128,19 +131,24 @@ void main() {
         float whitecap = smoothstep(0.6, 0.1, jacobian);
         float splash = smoothstep(0.12, 0.45, length(ripple));
         float foam = clamp(max(whitecap, splash) * (0.35 + 0.9 * detail.b), 0.0, 1.0);
-        // Persistent foam: the bubble pattern where it exceeds 1 − coverage, so decaying foam
-        // breaks up into its brightest streaks and bubbles before it vanishes; dense foam keeps
-        // the pattern's texture in its brightness. The map is read at a point pushed up to
-        // FOAM_WARP cells by the DU/DV field, so its edges fray instead of following the cells.
+        // Persistent foam: the bubble pattern where it exceeds 1 − FOAM_DENSE·coverage, so
+        // decaying foam breaks up into its brightest streaks and bubbles before it vanishes, and
+        // even dense foam keeps open water in the pattern's darkest cells and its texture in its
+        // brightness (never a flat sheet). The map is read at a point pushed up to FOAM_WARP
+        // cells by the DU/DV field, so its edges fray instead of following the cells.
         if (u_foamParams.w > 0.0) {
             vec2 fuv = v_world.xz / FOAM_TILE;
             vec4 fine = texture(u_detail, fuv);
             float coverage = foamCoverage(v_world.xz + fine.xy * FOAM_WARP * u_foamParams.z);
-            float ridges = 0.6 * fine.b + 0.4 * texture(u_detail, fuv * 2.7 + 0.37).b;
-            float pattern = pow(ridges, 0.4);  // the sharpened ridges spread over [0, 1]
-            float threshold = 1.0 - min(coverage, 1.0);
+            float ridges = 0.5 * fine.b + 0.3 * texture(u_detail, fuv * 2.7 + 0.37).b +
+                           0.2 * texture(u_detail, fuv * 7.3 + 0.71).b;  // octaves of 5, 1.85, 0.68 m
+            // The sharpened ridges spread over [0, 1]: pow(ridges, 0.4) lies between 0.47 and
+            // 0.88 at 5% and 95% of the program's detail map, nearly uniform between, so the
+            // share of the surface the lace covers is about FOAM_DENSE × the coverage.
+            float pattern = clamp((pow(ridges, 0.4) - FOAM_PATTERN_LOW) / (FOAM_PATTERN_HIGH - FOAM_PATTERN_LOW), 0.0, 1.0);
+            float threshold = 1.0 - FOAM_DENSE * min(coverage, 1.0);
             float lace = smoothstep(threshold - FOAM_EDGE, threshold + FOAM_EDGE, pattern);
-            foam = max(foam, coverage > 0.0 ? lace * (0.55 + 0.45 * pattern) : 0.0);
+            foam = max(foam, coverage > 0.0 ? lace * (0.25 + 0.45 * pattern + 0.3 * min(coverage, 1.0)) : 0.0);
         }
         color = mix(color, vec3(0.9, 0.95, 1.0) * (0.4 + 0.6 * max(sun.y, 0.0)), foam * 0.85);
     }

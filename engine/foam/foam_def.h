@@ -18,7 +18,11 @@ struct FoamDef {
     float ripple_weight = 4.0f;     ///< coverage per second per unit of ripple slope above ripple_slope, 1/s, [0, 1000]
     float ripple_slope = 0.5f;      ///< ripple slope |∇h| above which ripples break into foam, [0, 100]
     float splash_weight = 1.0f;     ///< coverage of a landed drop's whitened disc (radius 10·r) per area, [0, 100]
-    float wake_weight = 0.8f;       ///< coverage a hull sphere leaves along its track (behind it), [0, 100]
+    float wake_weight = 1.0f;       ///< coverage a hull's stern leaves along its track (behind it), and the most its turbulent wake adds after, [0, 100]
+    float wake_streaks = 0.6f;      ///< depth of the wake's streaks along the track: its foam is laid times 1 − depth·(½ + ½·n(y)), n ∈ [−1, 1] across it, [0, 1]
+    float wake_turbulence_s = 3.0f; ///< a_s: the turbulent wake behind a stern keeps adding foam at a rate ∝ exp(−age/a_s) for 4·a_s, s, [0, 100]; 0 = none
+    float wake_diffusivity = 0.3f;  ///< K: the turbulent wake's half-width grows as b(age)² = R² + 2·K·age, m²/s, [0, 100]
+    float bow_weight = 0.6f;        ///< coverage a breaking bow wave leaves along its two arms, times min(1, U/U_bow − 1), [0, 100]
 };
 
 template <class V> void describe(V& v, FoamDef& d) {
@@ -33,7 +37,11 @@ template <class V> void describe(V& v, FoamDef& d) {
     v.field("ripple_weight", d.ripple_weight, range(0, 1000), "steep-ripple source per unit of slope above the threshold (1/s)");
     v.field("ripple_slope", d.ripple_slope, range(0, 100), "ripple slope above which ripples make foam");
     v.field("splash_weight", d.splash_weight, range(0, 100), "foam of a landed drop, times its whitened area");
-    v.field("wake_weight", d.wake_weight, range(0, 100), "foam a hull leaves along its track");
+    v.field("wake_weight", d.wake_weight, range(0, 100), "foam a hull's stern leaves along its track");
+    v.field("wake_streaks", d.wake_streaks, range(0, 1), "depth of the wake's streaks along the track");
+    v.field("wake_turbulence_s", d.wake_turbulence_s, range(0, 100), "how long the turbulent wake behind a stern keeps adding foam (s); 0 = none");
+    v.field("wake_diffusivity", d.wake_diffusivity, range(0, 100), "how fast the turbulent wake widens (m²/s)");
+    v.field("bow_weight", d.bow_weight, range(0, 100), "foam a breaking bow wave leaves along its arms");
 }
 
 } // namespace ob::foam

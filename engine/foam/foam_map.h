@@ -1,5 +1,5 @@
 // Persistent foam: a coverage map in world space over the ripple patch, advected with the
-// surface's horizontal velocity, fed by four sources, decaying exponentially. docs/splash_foam.md.
+// surface's horizontal velocity, fed by six sources, decaying exponentially. docs/splash_foam.md.
 //
 // Laws (coverage f ∈ [0, 1] per cell; N×N cells of side Δ = extent/N; cell (i, j) has its
 // centre at origin() + (i, j)·Δ, i along x, j along z; row-major, index j·N + i):
@@ -17,7 +17,17 @@
 //     (d) wake       a hull sphere (centre c, radius R, horizontal speed U > 0) adds
 //                    S = wake_weight · U / R to every cell within R of c that lies behind it
 //                    ((p − c)·u ≤ 0): a point it passes at lateral offset y gains
-//                    wake_weight·sqrt(1 − (y/R)²) (before decay and the clamp), nothing ahead of it
+//                    wake_weight·sqrt(1 − (y/R)²)·m(y) (before decay and the clamp), nothing ahead of it;
+//                    m(y) = 1 − wake_streaks·(½ + ½·n(y)) (wakeStreaks) lays it in streaks along the track
+//     (e) turbulent wake  a segment of a stern's track of age a adds S = wake_weight·e^(−a/a_s)/a_s ·
+//                    (R/b)·sqrt(1 − (y/b)²)·m(y·R/b) to the cells beside it within b(a) = sqrt(R² + 2·K·a)
+//                    (a_s = wake_turbulence_s, K = wake_diffusivity): it widens and thins with age, and
+//                    adds at most wake_weight on the track (R/b ≤ 1)
+//     (f) bow wave   above the bow-spray speed U_b a bow sphere (radius R, speed U) breaks its bow wave
+//                    along two arms from its shoulders (c + ½R·û ± R·side), back at the Kelvin angle
+//                    θ = asin(1/3) either side, 8·R·q long, q = min(1, U/U_b − 1): the cells within w/2
+//                    of an arm (w = max(2Δ, 0.3 m)) gain S = bow_weight·q·U·sin θ / w, so a point an arm
+//                    sweeps over gains bow_weight·q
 // The map scrolls in whole cells (centerOn), like the ripple patch, so foam stays put in the world.
 // The per-cell velocity is either the caller's (velocityX/Z) or bilinear between the nodes of a
 // coarse grid fixed in the world (setVelocityNodes, or update() from the water; the surface's
@@ -61,6 +71,12 @@ constexpr float FLOW_REST_TOLERANCE = 0.01f;
 
 /// How a landed drop's whitened disc relates to its radius (disc radius = this × r).
 constexpr float DROP_FOAM_RADIUS_FACTOR = 10.0f;
+
+/// The streaks of a wake (law (d), (e)): its foam is laid times m(y) = 1 − depth·(½ + ½·n(y)),
+/// y the lateral offset from the track (m), n ∈ [−1, 1] a fixed sum of three sines of y
+/// (wavelengths 0.9, 1.5, 2.6 m), so the foam lies in lines along the track as the bubbles of
+/// a ship's wake gather where its longitudinal vortices converge.
+float wakeStreaks(float y, float depth);
 
 /// What one whole foam update reads (FoamMap::update); each part may be absent.
 struct FoamInputs {
@@ -121,7 +137,7 @@ public:
     /// The nodes' velocity the next step uses (m/s; set, or update()'s extrapolation; empty before either).
     std::span<const glm::vec2> velocityNodes() const { return m_nodes; }
 
-    // --- sources (laws (a)–(d) above), each clamped to coverage 1
+    // --- sources (laws (a)–(f) above), each clamped to coverage 1
     /// (a) Jacobian of an ocean cascade: n×n floats row-major [j][i] at X = (i, j)·tile/n (m).
     void addWhitecaps(std::span<const float> jacobian, int n, float tile, float dt);
     /// (b) steep ripples of the patch's Vh(t).
@@ -130,6 +146,12 @@ public:
     void addLandings(std::span<const splash::Landing> landings);
     /// (d) one hull sphere: centre (m), velocity (m/s; its horizontal part counts), radius (m).
     void addWake(const glm::vec3& centre, const glm::vec3& velocity, float radius, float dt);
+    /// (e) one segment of a stern's track, from its older end to its newer (world x, z, m), of
+    /// age a (s, at its middle), behind a stern sphere of radius R (m).
+    void addWakeTrail(glm::vec2 from, glm::vec2 to, float age, float radius, float dt);
+    /// (f) a bow sphere's breaking bow wave: centre (m), velocity (m/s; its horizontal part
+    /// counts), radius (m), strength q = min(1, U/U_b − 1) (nothing when ≤ 0).
+    void addBowWave(const glm::vec3& centre, const glm::vec3& velocity, float radius, float strength, float dt);
 
     /// Advects by the velocity and decays over dt seconds.
     void step(float dt);

@@ -11,6 +11,7 @@
 #include "sim/stamp_sources.h"
 #include "sim/water_systems.h"
 
+#include <map>
 #include <memory>
 #include <numbers>
 #include <unordered_map>
@@ -31,7 +32,22 @@ struct SplashFoamState {
         uint64_t seen = 0;  ///< the last step its entity was met (others are removed: ids are reused)
     };
     std::unordered_map<uint32_t, Trackers> crossings;
+    /// Per hull entity: its stern's track, the turbulent wake behind it (law (e)).
+    struct SternTrack {
+        std::vector<glm::vec2> points;  ///< world x, z, oldest first
+        std::vector<float> ages;        ///< s since the stern was there
+        glm::vec2 now{0.0f};            ///< where the stern is this step
+        float radius = 0.0f;            ///< the stern sphere's
+        uint64_t seen = 0;              ///< the last step its stern was wetted and under way
+    };
+    std::map<uint32_t, SternTrack> sterns;  // ordered: the foam adds in the same order every run
+    float bowSpeed = 3.0f;  ///< [splash] bow_speed: the bow wave breaks above it
 };
+
+// A stern's track keeps a point every this many metres (or two foam cells, if larger) for
+// WAKE_TRACK_LIFE turbulence times (the rate has fallen to e^(−4), 2%).
+constexpr float WAKE_TRACK_SPACING = 0.5f;
+constexpr float WAKE_TRACK_LIFE = 4.0f;
 
 // Creates the foam map on the first step with a ripple patch, and keeps it centred on it.
 foam::FoamMap* placeFoam(SplashFoamState& state, const interaction::RipplePatch* patch) {
@@ -89,10 +105,48 @@ void emitFromSources(ecs::World& world, SplashFoamState& state, const water::Wat
         const bool wetted = p.centre.y - radius <= surface.height;
         if (!p.hull || !wetted) return false;
         if (drops && p.bow) drops->emitBowSpray(glm::vec3(p.centre.x, surface.height, p.centre.z), p.velocity, radius, dt);
-        if (foam) foam->addWake(p.centre, p.velocity, radius, dt);
+        if (!foam) return false;
+        // Foam where the flow breaks: the stern's white water and the turbulent wake behind it,
+        // the bow wave's arms when it breaks; the water along the hull's sides stays clear.
+        const float speed = std::sqrt(p.velocity.x * p.velocity.x + p.velocity.z * p.velocity.z);
+        if (p.stern) {
+            foam->addWake(p.centre, p.velocity, radius, dt);
+            if (speed > 0.0f) {
+                SplashFoamState::SternTrack& track = state.sterns[p.owner];
+                track.now = glm::vec2(p.centre.x, p.centre.z);
+                track.radius = radius;
+                track.seen = step + 1;
+            }
+        }
+        if (p.bow && speed > state.bowSpeed) foam->addBowWave(p.centre, p.velocity, radius, speed / state.bowSpeed - 1.0f, dt);
         return false;
     });
     std::erase_if(state.crossings, [&](const auto& entry) { return entry.second.seen != step + 1; });
+}
+
+// The turbulent wake (law (e)): every segment of each stern's track adds foam by its age; the
+// track gains a point where the stern has moved a spacing on, and ages. A hull that stops or
+// leaves the water keeps its track until it has aged out.
+void layWakeTrails(SplashFoamState& state, foam::FoamMap& foam, uint64_t step, float dt) {
+    const float life = WAKE_TRACK_LIFE * foam.def().wake_turbulence_s;
+    const float spacing = std::max(WAKE_TRACK_SPACING, 2.0f * foam.cellSize());
+    for (auto& [owner, track] : state.sterns) {
+        for (float& age : track.ages) age += dt;
+        const bool moving = track.seen == step + 1;
+        if (moving && (track.points.empty() || glm::length(track.now - track.points.back()) >= spacing)) {
+            track.points.push_back(track.now);
+            track.ages.push_back(0.0f);
+        }
+        size_t old = 0;  // points whose next one has aged out
+        while (old + 1 < track.ages.size() && track.ages[old + 1] > life) ++old;
+        track.points.erase(track.points.begin(), track.points.begin() + std::ptrdiff_t(old));
+        track.ages.erase(track.ages.begin(), track.ages.begin() + std::ptrdiff_t(old));
+        for (size_t k = 0; k + 1 < track.points.size(); ++k)
+            foam.addWakeTrail(track.points[k], track.points[k + 1], 0.5f * (track.ages[k] + track.ages[k + 1]), track.radius, dt);
+        if (moving && !track.points.empty())  // from the newest point to the stern
+            foam.addWakeTrail(track.points.back(), track.now, 0.5f * track.ages.back(), track.radius, dt);
+    }
+    std::erase_if(state.sterns, [&](const auto& entry) { return entry.second.ages.empty() || entry.second.ages.back() > life; });
 }
 
 // Foam: whitecaps (first cascade's Jacobian), steep ripples, then transport with the
@@ -112,6 +166,7 @@ void addSplashFoam(ecs::World& world, const splash::SplashDef& splash, const foa
     if (!splash.enabled && !foam.enabled) return;
     auto state = std::make_unique<SplashFoamState>();
     if (splash.enabled) state->particles = std::make_unique<splash::SplashParticles>(splash, seed);
+    state->bowSpeed = splash.bow_speed;
     state->foamDef = foam;
     world.setResource(std::move(state));
 }
@@ -124,6 +179,7 @@ void splashFoamSystem(ecs::World& world, const ecs::Tick& tick) {
     const float dt = float(tick.dt);
     foam::FoamMap* foam = placeFoam(*state, patch);
     emitFromSources(world, *state, *ocean->water, tick.step, dt);
+    if (foam) layWakeTrails(*state, *foam, tick.step, dt);
     // --- flight and landings: rain back on the ripples and the foam
     if (splash::SplashParticles* drops = state->particles.get()) {
         drops->step(dt, *ocean->water);

@@ -25,9 +25,11 @@ void eachBodySphere(ecs::World& world, SphereUse, const SphereVisitor& visit) {
         if (!transform) continue;
         const ecs::Motion* motion = world.find<ecs::Motion>(e);
         set.contacts.resize(set.spheres.size());
-        size_t bow = 0;
-        for (size_t k = 0; k < set.spheres.size(); ++k)
+        size_t bow = 0, stern = 0;
+        for (size_t k = 0; k < set.spheres.size(); ++k) {
             if (set.spheres[k].offset.z > set.spheres[bow].offset.z) bow = k;
+            if (set.spheres[k].offset.z < set.spheres[stern].offset.z) stern = k;
+        }
         PlacedSphere p;
         p.owner = uint32_t(e);
         p.count = uint32_t(set.spheres.size());
@@ -41,6 +43,7 @@ void eachBodySphere(ecs::World& world, SphereUse, const SphereVisitor& visit) {
             p.contact = &set.contacts[k];
             p.centre = transform->position + transform->rotation * set.spheres[k].offset;
             p.bow = set.hull && k == bow;
+            p.stern = set.hull && k == stern;
             visit(p);
         }
     }

@@ -27,7 +27,8 @@ struct PlacedSphere {
     float crossingMass = 0.0f;  ///< kg it carries through the surface (splash crowns): a body's share, a fish's own
     bool underwater = false;    ///< known to be under the surface without a query (a swimming fish)
     bool hull = false;          ///< a hull's sphere: wake foam while wetted
-    bool bow = false;           ///< a hull's foremost sphere: bow spray
+    bool bow = false;           ///< a hull's foremost sphere: bow spray, the bow wave's foam
+    bool stern = false;         ///< a hull's aftmost sphere: wake foam and the turbulent wake behind it
 };
 
 /// What a consumer does with a sphere; for SphereUse::Stamp it returns whether it stamped.

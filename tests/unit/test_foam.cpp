@@ -200,6 +200,8 @@ TEST_CASE("one Gerstner wave carries a foam blob along its particles' orbit: out
 TEST_CASE("wake foam appears behind a moving hull, along its track, and not in front of it", "[foam]") {
     FoamDef def = smallDef(128);
     def.decay_s = 1e4f;  // no decay: the deposit along the centre line is wake_weight
+    def.wake_weight = 0.8f;  // below the clamp
+    def.wake_streaks = 0.0f;  // laid evenly across (the streaks: the next test)
     FoamMap map(def, 32.0f);
     const float radius = 1.0f, speed = 4.0f;
     glm::vec3 hull(-10.0f, 0.0f, 0.0f);
@@ -223,6 +225,111 @@ TEST_CASE("wake foam appears behind a moving hull, along its track, and not in f
     FoamMap still(def, 32.0f);
     for (int s = 0; s < 60; ++s) still.addWake(glm::vec3(0.0f), glm::vec3(0.0f), radius, DT);
     CHECK(still.mean() == 0.0);
+}
+
+namespace {
+
+// The wake's streak factor as docs/splash_foam.md states it: 1 − depth·(½ + ½·n(y)), n the
+// mean of three sines of the lateral offset y (wavelengths 0.9, 1.5, 2.6 m) weighted 1, 0.7, 0.5.
+double streaks(double y, double depth) {
+    const double twoPi = 2.0 * std::numbers::pi;
+    const double n = (std::sin(twoPi * y / 0.9 + 1.3) + 0.7 * std::sin(twoPi * y / 1.5 + 4.1) + 0.5 * std::sin(twoPi * y / 2.6 + 2.2)) / 2.2;
+    return 1.0 - depth * (0.5 + 0.5 * n);
+}
+
+} // namespace
+
+TEST_CASE("a hull's wake foam lies in streaks along its track: wake_weight·sqrt(1 − (y/R)²)·m(y)", "[foam]") {
+    FoamDef def = smallDef(256);  // Δ = 0.125 m
+    def.decay_s = 1e4f;
+    def.wake_weight = 0.8f;
+    def.wake_streaks = 0.6f;
+    FoamMap map(def, 32.0f);
+    const float radius = 1.5f, speed = 4.0f;
+    glm::vec3 hull(-10.0f, 0.0f, 0.0f);
+    const glm::vec3 velocity(speed, 0.0f, 0.0f);  // the track along +x: y = +z to its left
+    while (hull.x < 0.0f) {
+        map.addWake(hull, velocity, radius, DT);
+        map.step(DT);
+        hull.x += speed * DT;
+    }
+    double lo = 1.0, hi = 0.0;
+    for (int k = -10; k <= 10; ++k) {
+        const double y = 0.125 * k;  // on cell centres across the track
+        const double expected = 0.8 * std::sqrt(1.0 - (y / radius) * (y / radius)) * streaks(y, 0.6);
+        const double got = map.sample(-5.0f, float(y));
+        INFO("y " << y << " m: " << got << ", expected " << expected);
+        CHECK(got == Approx(expected).margin(0.04));  // the deposit per step is a sum over ~R/(U·dt) steps: ±1 step
+        lo = std::min(lo, got), hi = std::max(hi, got);
+    }
+    // Streaks: the foam across the track varies by more than half of its largest value.
+    CHECK(hi - lo > 0.5 * hi);
+    // The factor stays in [1 − depth, 1].
+    for (double y = -5.0; y <= 5.0; y += 0.01) {
+        REQUIRE(foam::wakeStreaks(float(y), 0.6f) >= 0.4f - 1e-6f);
+        REQUIRE(foam::wakeStreaks(float(y), 0.6f) <= 1.0f + 1e-6f);
+    }
+}
+
+TEST_CASE("the turbulent wake behind a stern widens as b² = R² + 2·K·a and thins as R/b, adding w·e^(−a/a_s)/a_s", "[foam]") {
+    FoamDef def = smallDef(256);  // Δ = 0.125 m
+    def.decay_s = 1e4f;
+    def.wake_weight = 1.0f;
+    def.wake_streaks = 0.0f;
+    def.wake_turbulence_s = 3.0f;
+    def.wake_diffusivity = 0.3f;
+    const float radius = 1.4f, seconds = 1.0f;
+    for (float age : {0.0f, 4.0f, 10.0f}) {
+        FoamMap map(def, 32.0f);
+        // One segment of the track along x, from −8 m to 8 m, held at this age for a second.
+        for (int s = 0; s < int(seconds / DT + 0.5f); ++s) map.addWakeTrail({-8.0f, 0.0f}, {8.0f, 0.0f}, age, radius, DT);
+        const double b = std::sqrt(1.4 * 1.4 + 2.0 * 0.3 * age);
+        const double peak = std::exp(-age / 3.0) / 3.0 * (1.4 / b) * seconds;
+        INFO("age " << age << " s: half-width " << b << " m, peak " << peak);
+        CHECK(map.sample(0.0f, 0.0f) == Approx(peak).epsilon(1e-3));
+        CHECK(map.sample(0.0f, float(0.5 * b)) == Approx(peak * std::sqrt(0.75)).epsilon(0.02));
+        CHECK(map.sample(0.0f, float(b + 0.2)) == 0.0f);   // nothing beyond b (and its bilinear cell)
+        CHECK(map.sample(0.0f, float(b - 0.3)) > 0.0f);
+        CHECK(map.sample(-8.5f, 0.0f) == 0.0f);            // nothing past the segment's ends
+        CHECK(map.sample(8.5f, 0.0f) == 0.0f);
+    }
+    // No turbulence time: nothing.
+    def.wake_turbulence_s = 0.0f;
+    FoamMap none(def, 32.0f);
+    none.addWakeTrail({-8.0f, 0.0f}, {8.0f, 0.0f}, 1.0f, radius, DT);
+    CHECK(none.mean() == 0.0);
+}
+
+TEST_CASE("a breaking bow wave leaves foam along two arms at the Kelvin angle, bow_weight·q where they swept, none ahead", "[foam]") {
+    FoamDef def = smallDef(256);  // Δ = 0.125 m
+    def.decay_s = 1e4f;
+    def.bow_weight = 0.5f;
+    FoamMap map(def, 32.0f);
+    const float radius = 1.0f, speed = 5.0f, q = 0.5f;  // q = U/U_b − 1 for U_b = 3.33 m/s
+    glm::vec3 bow(-12.0f, 0.0f, 0.0f);
+    const glm::vec3 velocity(speed, 0.0f, 0.0f);
+    while (bow.x < 0.0f) {
+        map.addBowWave(bow, velocity, radius, q, DT);
+        bow.x += speed * DT;
+    }
+    // The arms: from the shoulders (x_c + R/2, ±R), back at asin(1/3), 8·R·q = 4 m long: they
+    // reach R + 4/3 m off the track. Well behind the bow, every point between swept: bow_weight·q.
+    const double reach = 1.0 + 4.0 / 3.0;
+    for (float y : {1.3f, 1.7f, 2.0f}) {
+        for (float side : {-1.0f, 1.0f}) {
+            INFO("y " << side * y);
+            CHECK(map.sample(-6.0f, side * y) == Approx(0.5 * q).epsilon(0.05));
+        }
+    }
+    CHECK(map.sample(-6.0f, float(reach + 0.3)) == 0.0f);  // beyond the arms' reach (+ half the line, a cell)
+    CHECK(map.sample(-6.0f, 0.5f) == 0.0f);                // inside the hull's beam: no arm passes
+    // Nothing ahead of the shoulders.
+    for (float x = bow.x + 0.5f * radius + 0.3f; x < 15.0f; x += 0.25f)
+        for (float z = -4.0f; z <= 4.0f; z += 0.25f) REQUIRE(map.sample(x, z) == 0.0f);
+    // Below the bow-spray speed (q ≤ 0): nothing.
+    FoamMap slow(def, 32.0f);
+    slow.addBowWave(glm::vec3(0.0f), velocity, radius, 0.0f, DT);
+    CHECK(slow.mean() == 0.0);
 }
 
 TEST_CASE("whitecaps, steep ripples and landed drops feed foam by their laws", "[foam]") {
