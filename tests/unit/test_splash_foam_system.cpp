@@ -1,6 +1,7 @@
 // The sandbox's splashes and foam end to end (game/splash_foam_system): the cannon and ship
 // scenes throw drops that land, foam appears behind the ship, none of it without the sections,
 // and the state hash covers it (same scene, same hash).
+#include "behaviours/fish.h"
 #include "behaviours/ship.h"
 #include "ecs/components.h"
 #include "foam/foam_map.h"
@@ -121,6 +122,23 @@ TEST_CASE("a 5 m/s ship's wake foam along its track, 40 m back: the stern's depo
     }
     // 40 m behind the ship there is still foam to see.
     CHECK(expected(8.0) > 0.2);
+    // Not an even band: across the trail's core (|y| ≤ R/2, every 5 cm) the streaks make the
+    // coverage vary with a coefficient of variation of 0.14 (the laws); evenly laid it would be
+    // 0.045 (the sqrt(1 − (y/R)²) profile alone).
+    for (double age : {2.0, 6.0}) {
+        const size_t k = track.size() - 1 - size_t(std::lround(age * 60.0));
+        const glm::vec3 along = track[k + 1].stern - track[k - 1].stern;
+        const glm::vec2 side = glm::normalize(glm::vec2(-along.z, along.x));
+        double sum = 0.0, sum2 = 0.0;
+        int count = 0;
+        for (double y = -0.5 * R; y <= 0.5 * R + 1e-6; y += 0.05) {
+            const double c = foam->sample(track[k].stern.x + float(y) * side.x, track[k].stern.z + float(y) * side.y);
+            sum += c, sum2 += c * c, ++count;
+        }
+        const double mean = sum / count, cv = std::sqrt(std::max(0.0, sum2 / count - mean * mean)) / mean;
+        INFO("across the trail " << age << " s behind the stern: mean " << mean << ", coefficient of variation " << cv);
+        CHECK(cv > 0.08);
+    }
     // Beside the track (6 m off it, beyond the turbulent wake and the bow wave's arms) there is none.
     const Pass& p = track[track.size() - 1 - 240];
     CHECK(foam->sample(p.stern.x + 6.0f, p.stern.z) < 0.05f);
@@ -133,4 +151,61 @@ TEST_CASE("a 5 m/s ship's wake foam along its track, 40 m back: the stern's depo
             const glm::vec3 q = bow + d * ahead + y * side;
             REQUIRE(foam->sample(q.x, q.z) == 0.0f);
         }
+}
+
+TEST_CASE("one jumping fish throws the drops of its body's mass, and 4 s after it falls back its foam patch is under a square metre", "[splash][foam][scene]") {
+    // The fish scene with one fish (0.8 m long: 5.1 kg by its length, docs/splash_foam.md §3):
+    // it leaves the water and falls back at the vertical speed of its arc where its bounding
+    // sphere (r = 0.35·L) meets the surface, v = sqrt(v0² − 2·g·(depth + r)), v0 the take-off
+    // speed sqrt(2·g·(depth + jump height)). Each crossing throws N = 8·sqrt(½·m·v_n²) drops
+    // (§1.2), v_n = v against the sea (wind 4 m/s: its vertical velocity and slope change v_n by
+    // well under 1 m/s), not against the ripples its own stamp raises.
+    game::SceneDef scene = game::loadScene(scenePath("fish.toml"), {"objects[0].count=1"});
+    game::Sandbox sandbox(scene);
+    ecs::World& world = sandbox.world();
+    const game::FishSchool& school = world.pool<game::FishSchool>().components()[0];
+    const double g = 9.81, mass = game::fishMass(school.length), r = school.sphere.radius;
+    REQUIRE(mass == Approx(10.0 * 0.8 * 0.8 * 0.8));
+    const double v0 = std::sqrt(2.0 * g * (school.depth + school.jumpHeight));
+    const double v = std::sqrt(v0 * v0 - 2.0 * g * (school.depth + r));
+    const auto drops = [&](double vn) { return 8.0 * std::sqrt(0.5 * mass * vn * vn); };
+    std::vector<uint64_t> bursts;
+    glm::vec3 entry(0.0f);
+    uint64_t last = 0;
+    int entryStep = -1, s = 0;
+    for (; s < 1200 && (entryStep < 0 || s < entryStep + 240); ++s) {
+        sandbox.step();
+        const uint64_t emitted = game::splashParticles(world)->stats().emitted;
+        if (emitted != last && entryStep < 0) {
+            bursts.push_back(emitted - last);
+            if (bursts.size() == 2) {  // the first jump's exit, then its re-entry
+                entryStep = s;
+                entry = school.position[0];
+            }
+        }
+        last = emitted;
+    }
+    REQUIRE(entryStep >= 0);
+    REQUIRE(s == entryStep + 240);
+    for (uint64_t n : bursts) {
+        INFO(n << " drops; at " << v << " m/s the law gives " << drops(v) << " (±1 m/s: " << drops(v - 1.0) << "–" << drops(v + 1.0) << ")");
+        CHECK(double(n) >= drops(v - 1.0));
+        CHECK(double(n) <= drops(v + 1.0));
+    }
+    // 4 s later: the patch round the re-entry (within 2.5 m; the next jump starts 1–3 s after
+    // the arc ends, over 2.5 m along the fish's circle) is a fish's length across, not metres.
+    const foam::FoamMap* foam = game::foamMap(world);
+    REQUIRE(foam);
+    const float cell = foam->cellSize();
+    double visible = 0.0, anyFoam = 0.0;
+    for (float z = entry.z - 2.5f; z <= entry.z + 2.5f; z += cell)
+        for (float x = entry.x - 2.5f; x <= entry.x + 2.5f; x += cell) {
+            if ((x - entry.x) * (x - entry.x) + (z - entry.z) * (z - entry.z) > 2.5f * 2.5f) continue;
+            const float c = foam->sample(x, z);
+            if (c > 0.1f) visible += double(cell) * cell;
+            if (c > 0.01f) anyFoam += double(cell) * cell;
+        }
+    INFO("4 s after the re-entry: " << visible << " m² with coverage over 0.1, " << anyFoam << " m² over 0.01");
+    CHECK(visible < 1.0);  // a disc of 0.8 m (the fish's length) is 0.5 m²
+    CHECK(visible > 0.0);  // but there is some
 }
