@@ -113,9 +113,25 @@ OB_VECTOR_KERNEL void scaleKernel(float* __restrict dst, const float* __restrict
 } // namespace
 
 float wakeStreaks(float y, float depth) {
-    constexpr float twoPi = 2.0f * std::numbers::pi_v<float>;
-    const float n = (std::sin(twoPi * y / 0.9f + 1.3f) + 0.7f * std::sin(twoPi * y / 1.5f + 4.1f) +
-                     0.5f * std::sin(twoPi * y / 2.6f + 2.2f)) / 2.2f;
+    // n(y) every STREAK_STEP over its period, 117 m (0.9, 1.5 and 2.6 m all divide it), linear
+    // between (within 4e-4 of the sines): the turbulent wake asks for it at thousands of cells
+    // a step.
+    constexpr double STREAK_STEP = 0.01;
+    constexpr int STREAK_SAMPLES = 11700;
+    static const std::vector<float> table = [] {
+        std::vector<float> t(STREAK_SAMPLES + 1);
+        const double twoPi = 2.0 * std::numbers::pi;
+        for (int k = 0; k <= STREAK_SAMPLES; ++k) {
+            const double x = k * STREAK_STEP;
+            t[size_t(k)] = float((std::sin(twoPi * x / 0.9 + 1.3) + 0.7 * std::sin(twoPi * x / 1.5 + 4.1) +
+                                  0.5 * std::sin(twoPi * x / 2.6 + 2.2)) / 2.2);
+        }
+        return t;
+    }();
+    const double u = double(y) / STREAK_STEP, cell = std::floor(u);
+    const int k = int(std::fmod(cell, double(STREAK_SAMPLES)) + (cell < 0.0 ? STREAK_SAMPLES : 0)) % STREAK_SAMPLES;
+    const float w = float(u - cell);
+    const float n = table[size_t(k)] + w * (table[size_t(k) + 1] - table[size_t(k)]);
     return 1.0f - depth * (0.5f + 0.5f * n);
 }
 
@@ -552,9 +568,10 @@ void FoamMap::addWakeTrail(glm::vec2 from, glm::vec2 to, float age, float radius
     const float length = std::sqrt(length2);
     const glm::vec2 along = d / length, side(-along.y, along.x);
     const glm::vec2 g0 = toGrid(from), g1 = toGrid(to);
-    const float bCells = b / m_cell;
-    const int i0 = std::max(0, int(std::floor(std::min(g0.x, g1.x) - bCells))), i1 = std::min(m_n - 1, int(std::ceil(std::max(g0.x, g1.x) + bCells)));
-    const int j0 = std::max(0, int(std::floor(std::min(g0.y, g1.y) - bCells))), j1 = std::min(m_n - 1, int(std::ceil(std::max(g0.y, g1.y) + bCells)));
+    // The strip's corners' bounds (cells): along a grid axis just the strip, not b past its ends.
+    const glm::vec2 reach = glm::vec2(std::abs(side.x), std::abs(side.y)) * (b / m_cell);
+    const int i0 = std::max(0, int(std::floor(std::min(g0.x, g1.x) - reach.x))), i1 = std::min(m_n - 1, int(std::ceil(std::max(g0.x, g1.x) + reach.x)));
+    const int j0 = std::max(0, int(std::floor(std::min(g0.y, g1.y) - reach.y))), j1 = std::min(m_n - 1, int(std::ceil(std::max(g0.y, g1.y) + reach.y)));
     for (int j = j0; j <= j1; ++j) {
         for (int i = i0; i <= i1; ++i) {
             const glm::vec2 p = (glm::vec2(float(i), float(j)) - g0) * m_cell;  // m from the older end

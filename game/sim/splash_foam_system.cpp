@@ -61,8 +61,8 @@ foam::FoamMap* placeFoam(SplashFoamState& state, const interaction::RipplePatch*
     return state.foam.get();
 }
 
-// Every source's spheres: a crossing of the surface splashes; a hull's wetted spheres make
-// wake foam, its bow spray.
+// Every source's spheres: a crossing of the surface splashes; a hull's wetted stern lays wake
+// foam (and records its track), its bow sprays and breaks its bow wave.
 void emitFromSources(ecs::World& world, SplashFoamState& state, const water::WaterQuery& water, uint64_t step, float dt) {
     splash::SplashParticles* drops = state.particles.get();
     foam::FoamMap* foam = state.foam.get();

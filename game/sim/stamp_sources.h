@@ -26,7 +26,7 @@ struct PlacedSphere {
     float stampMass = 1.0f;     ///< kg that eq. 6 weighs its stamp by (a body's mass; 1 for a fish, as seed 001's sweep)
     float crossingMass = 0.0f;  ///< kg it carries through the surface (splash crowns): a body's share, a fish's own
     bool underwater = false;    ///< known to be under the surface without a query (a swimming fish)
-    bool hull = false;          ///< a hull's sphere: wake foam while wetted
+    bool hull = false;          ///< a hull's sphere: its stern and bow make foam while wetted
     bool bow = false;           ///< a hull's foremost sphere: bow spray, the bow wave's foam
     bool stern = false;         ///< a hull's aftmost sphere: wake foam and the turbulent wake behind it
 };
