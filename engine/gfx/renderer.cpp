@@ -366,11 +366,15 @@ void Renderer::drawObjects(const std::vector<ObjectDraw>& objects, View view) {
     for (const ObjectDraw& o : objects) {
         const Mesh& mesh = meshFor(o);
         // An object wholly on one side of the surface is skipped by the pass that keeps the
-        // other side. The surface per vertex (the cut's cost on a software rasteriser) is
-        // evaluated only for large objects across it; the others take its tangent plane.
-        const Side side = view == MAIN_VIEW ? Side::Across : sideOfSurface(o, mesh);
-        if ((view == REFLECTION_VIEW && side == Side::Below) || (view == REFRACTION_VIEW && side == Side::Above)) continue;
-        const bool perVertex = side == Side::Across && boundingRadius(o, mesh) > TANGENT_PLANE_RADIUS;
+        // other side, and wholly under it by the camera's view from above: the water surface,
+        // drawn after it and opaque, covers it (the refraction pass shows it). The surface per
+        // vertex (the cut's cost on a software rasteriser) is evaluated only for large objects
+        // across it in the passes that cut; the others take its tangent plane.
+        const Side side = sideOfSurface(o, mesh);
+        if ((view == REFLECTION_VIEW && side == Side::Below) || (view == REFRACTION_VIEW && side == Side::Above) ||
+            (view == MAIN_VIEW && side == Side::Below && !m_underwater && m_grid.visible))
+            continue;
+        const bool perVertex = view != MAIN_VIEW && side == Side::Across && boundingRadius(o, mesh) > TANGENT_PLANE_RADIUS;
         const GLuint program = perVertex ? m_objectWaterlineProgram.id() : m_objectProgram.id();
         const glm::vec3 plane(o.waterHeight, o.waterSlope);
         const glm::vec3 tint = o.modelFile.empty() ? o.color : glm::vec3(1.0f);  // models carry their own colours

@@ -193,6 +193,47 @@ TEST_CASE("clip planes: above the water only in the reflection, below only in th
     CHECK(gfx::glErrorCount() == errorsBefore);
 }
 
+TEST_CASE("an object wholly under the water is seen through it from above, by the refraction alone", "[gl][render]") {
+    // A red sphere 3 m under a flat sea, seen from 8 m up: the water surface, opaque in the
+    // camera's pass, covers it (so that pass may leave it out); it shows only through the
+    // refraction pass, faded by its depth.
+    gfx::requestDebugOutput(true);
+    const glm::ivec2 size(160, 90);
+    auto platform = platform::createHeadlessPlatform(size);
+    int errorsBefore = gfx::glErrorCount();
+    gfx::CameraView camera;
+    camera.position = glm::vec3(0.0f, 8.0f, 0.0f);
+    camera.view = glm::lookAtRH(camera.position, glm::vec3(0.0f, -3.0f, -12.0f), glm::vec3(0, 1, 0));
+    camera.projection = glm::perspectiveRH_NO(glm::radians(60.0f), 160.0f / 90.0f, 0.1f, 2000.0f);
+    camera.nearM = 0.1f;
+    camera.farM = 2000.0f;
+    gfx::ObjectDraw sphere;
+    sphere.mesh = gfx::MeshKind::Sphere;
+    sphere.model = glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, -3.0f, -12.0f)), glm::vec3(1.5f));
+    sphere.color = glm::vec3(0.9f, 0.05f, 0.05f);
+    auto frame = [&](bool refractions, std::vector<gfx::ObjectDraw> objects) {
+        gfx::RenderDef def;
+        def.refractions = refractions;
+        def.antialias = gfx::Antialias::Off;
+        gfx::Renderer renderer(def);
+        renderer.render(camera, gfx::WaterView{}, objects, 0.0, size);
+        const std::string path = test::tempPath("under.png");
+        gfx::writeScreenshot(path, size);
+        return loadPng(path);
+    };
+    const Image seen = frame(true, {sphere}), empty = frame(true, {});
+    const Image covered = frame(false, {sphere}), bare = frame(false, {});
+    // The camera looks at the sphere's centre: the middle of the frame.
+    auto redness = [](const Image& img) {
+        glm::vec3 c = img.mean(img.w / 2 - 6, img.h / 2 - 6, img.w / 2 + 6, img.h / 2 + 6);
+        return c.x - 0.5f * (c.y + c.z);
+    };
+    INFO("redness with the sphere " << redness(seen) << ", without " << redness(empty));
+    CHECK(redness(seen) > redness(empty) + 0.05f);   // seen through the water
+    CHECK(covered.maxDifference(bare, 0, bare.h) == 0);  // without the refraction pass nothing of it shows
+    CHECK(gfx::glErrorCount() == errorsBefore);
+}
+
 TEST_CASE("a small object across the surface is cut at the surface's tangent plane under it", "[gl][render]") {
     // A sphere of 0.9 m (small: cut at the plane its ObjectDraw carries, not per vertex)
     // centred on the surface, seen level from 6 m. Where the plane rises to +x, more of the
