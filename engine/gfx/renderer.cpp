@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <algorithm>
 #include <cstring>
+#include <filesystem>
 #include <iterator>
 #include <tuple>
 #include <glm/glm.hpp>
@@ -47,6 +48,10 @@ constexpr float MAX_SURFACE_SLOPE = 1.0f;
 // Objects within this radius (m: fish, cannonballs) are cut at the surface's tangent plane
 // under their origin, larger ones (ships) at the surface evaluated vertex by vertex.
 constexpr float TANGENT_PLANE_RADIUS = 1.0f;
+// A model's far twin (X.lod1.gltf) is drawn where the object's bounding sphere spans fewer
+// than this many pixels of radius: the default scene's fish (0.4 m) 20 m away span 12 px at
+// 720 rows (whole) and 3 px at scale 0.25 (the twin, a tenth of the triangles).
+constexpr float LOD_RADIUS_PX = 8.0f;
 const char* const PASS_NAMES[] = {"sky_bake", "reflection", "refraction", "opaque", "water", "sky", "splash", "post"};
 // Samples a pixel of the msaa4 targets; the FXAA pass reads its source on this unit.
 constexpr int MSAA_SAMPLES = 4;
@@ -226,6 +231,10 @@ void Renderer::render(const CameraView& camera, const WaterView& water, const st
     const glm::ivec2 internal = upscale ? scaled(size, m_def.resolution_scale) : size;
     resizeTargets(internal);
     updateFrameUniforms(camera, time, internal);
+    // Pixels per radian at the centre of each view's target (the far twins' choice).
+    m_eye = camera.position;
+    m_pixelsPerRadian[MAIN_VIEW] = 0.5f * float(internal.y) * camera.projection[1][1];
+    m_pixelsPerRadian[REFLECTION_VIEW] = m_pixelsPerRadian[REFRACTION_VIEW] = 0.5f * float(m_reflection.size.y) * camera.projection[1][1];
 
     // --- passes
     if (glm::normalize(m_def.sun_direction) != m_bakedSun) skyBakePass();
@@ -334,15 +343,36 @@ void Renderer::opaquePass(const std::vector<ObjectDraw>& objects) {
     glPopDebugGroup();
 }
 
-const Mesh& Renderer::meshFor(const ObjectDraw& object) {
-    if (object.modelFile.empty()) return object.mesh == MeshKind::Sphere ? m_sphereMesh : m_boxMesh;
+// A model X.gltf may have a far twin X.lod1.gltf beside it, loaded with it.
+const Renderer::ModelMeshes& Renderer::meshesFor(const ObjectDraw& object) {
+    static const ModelMeshes none;
+    if (object.modelFile.empty()) return none;
     auto it = m_models.find(object.modelFile);
-    if (it == m_models.end()) it = m_models.emplace(object.modelFile, makeMesh(object.modelFile, assets::loadGltfModel(object.modelFile))).first;
+    if (it == m_models.end()) {
+        ModelMeshes meshes{makeMesh(object.modelFile, assets::loadGltfModel(object.modelFile)), std::nullopt};
+        const std::string& file = object.modelFile;
+        if (file.size() > 5 && file.ends_with(".gltf")) {
+            const std::string far = file.substr(0, file.size() - 5) + ".lod1.gltf";
+            if (std::filesystem::exists(far)) meshes.far = makeMesh(far, assets::loadGltfModel(far));
+        }
+        it = m_models.emplace(file, std::move(meshes)).first;
+    }
     return it->second;
 }
 
 static float boundingRadius(const ObjectDraw& o, const Mesh& mesh) {
     return mesh.radius * std::max({glm::length(glm::vec3(o.model[0])), glm::length(glm::vec3(o.model[1])), glm::length(glm::vec3(o.model[2]))});
+}
+
+// The mesh to draw in a view: a model's far twin where the object's bounding sphere spans
+// fewer than LOD_RADIUS_PX pixels of radius in that view's target.
+const Mesh& Renderer::meshFor(const ObjectDraw& object, View view) {
+    if (object.modelFile.empty()) return object.mesh == MeshKind::Sphere ? m_sphereMesh : m_boxMesh;
+    const ModelMeshes& meshes = meshesFor(object);
+    if (!meshes.far) return meshes.near;
+    const float distance = std::max(glm::length(glm::vec3(object.model[3]) - m_eye), 1e-3f);
+    const float pixels = boundingRadius(object, meshes.near) / distance * m_pixelsPerRadian[view];
+    return pixels < LOD_RADIUS_PX ? *meshes.far : meshes.near;
 }
 
 // Where an object's bounding sphere lies against the water: the surface within its radius
@@ -364,7 +394,7 @@ void Renderer::drawObjects(const std::vector<ObjectDraw>& objects, View view) {
     glEnable(GL_CULL_FACE);
     if (view != MAIN_VIEW) glEnable(GL_CLIP_DISTANCE0);
     for (const ObjectDraw& o : objects) {
-        const Mesh& mesh = meshFor(o);
+        const Mesh& mesh = meshFor(o, view);
         // An object wholly on one side of the surface is skipped by the pass that keeps the
         // other side, and wholly under it by the camera's view from above: the water surface,
         // drawn after it and opaque, covers it (the refraction pass shows it). The surface per

@@ -21,6 +21,7 @@
 #include <array>
 #include <glm/mat4x4.hpp>
 #include <map>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -124,7 +125,15 @@ private:
     void uploadFoam(const WaterView& water, WaterUniforms& u);  // out: m_foamTexture, u.foamParams
 
     void drawObjects(const std::vector<ObjectDraw>& objects, View view);
-    const Mesh& meshFor(const ObjectDraw& object);
+    // A glTF model's mesh and its far twin, if one lies beside it.
+    struct ModelMeshes {
+        Mesh near;
+        std::optional<Mesh> far;
+    };
+    const ModelMeshes& meshesFor(const ObjectDraw& object);
+    const Mesh& meshFor(const ObjectDraw& object, View view);
+    glm::vec3 m_eye{0.0f};                   // this frame's camera (m)
+    float m_pixelsPerRadian[VIEW_COUNT] = {};  // per view: its target's pixels per radian of view at the centre
     void updateFrameUniforms(const CameraView& camera, double time, glm::ivec2 size);
     void resizeTargets(glm::ivec2 internal);
     void uploadWaterUniforms(const CameraView& camera, const WaterView& water, const GridCorners& grid);
@@ -134,7 +143,7 @@ private:
     RenderDef m_def;
     Program m_skyBakeProgram, m_skyProgram, m_waterProgram, m_objectProgram, m_objectWaterlineProgram, m_fxaaProgram;
     Mesh m_sphereMesh, m_boxMesh;
-    std::map<std::string, Mesh> m_models;  // glTF meshes by file, loaded on first draw
+    std::map<std::string, ModelMeshes> m_models;  // glTF meshes by file, loaded on first draw
     VertexArray m_emptyVao;
     Buffer m_frameUniforms[VIEW_COUNT];
     Buffer m_waterUniforms;

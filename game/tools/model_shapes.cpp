@@ -310,14 +310,16 @@ ShapeModel buildShip() {
 
 // --- fish -------------------------------------------------------------------------------
 
-ShapeModel buildFish() {
+// `coarse`: the far twin (fish.lod1), drawn where a fish covers a few pixels: an 8 × 8 body,
+// the same fins, no eyes (a tenth of the triangles).
+ShapeModel buildFish(bool coarse) {
     ShapePart body = makePart("body", {0.55f, 0.66f, 0.78f}, 0.3f, 0.35f);
     ShapePart fins = makePart("fins", {0.28f, 0.40f, 0.58f}, 0.1f, 0.5f);
     ShapePart eyes = makePart("eyes", {0.02f, 0.02f, 0.025f}, 0.0f, 0.2f);
 
     // Body: elliptic sections (half-width 0.07, half-height 0.13 at most) along z from the
     // tail end −0.32 to the nose 0.5; the profile sin θ·(1 − 0.3 cos θ) is fuller forward.
-    const int ALONG = 24, AROUND = 24;
+    const int ALONG = coarse ? 8 : 24, AROUND = coarse ? 8 : 24;
     const double A = 0.07, C = 0.13, ZC = 0.09, HALF_LENGTH = 0.41;
     Grid grid;
     for (int i = 0; i <= ALONG; ++i) {
@@ -342,22 +344,24 @@ ShapeModel buildFish() {
         const glm::dvec2 t = circle(i, 16);
         ball.push_back({0.018 * t.y, -0.018 * t.x});
     }
+    if (coarse) return {"fish.lod1", {body, fins}};
     for (double side : {-1.0, 1.0}) addLathe(eyes, ball, 12, placeAlong('z', {side * 0.05, 0.035, 0.40}));
     return {"fish", {body, fins, eyes}};
 }
 
 // --- cannonball -------------------------------------------------------------------------
 
-ShapeModel buildCannonball() {
+// `coarse`: the far twin (cannonball.lod1): 8 rings of 16 (a sixteenth of the triangles).
+ShapeModel buildCannonball(bool coarse) {
     ShapePart iron = makePart("iron", {0.09f, 0.09f, 0.10f}, 1.0f, 0.5f);
     std::vector<ProfilePoint> half;
-    const int RINGS = 32;
+    const int RINGS = coarse ? 8 : 32;
     for (int i = 0; i <= RINGS; ++i) {
         const glm::dvec2 t = circle(i, 2 * RINGS);  // south pole → north pole
         half.push_back({t.y, -t.x});
     }
-    addLathe(iron, half, 64, glm::dmat4(1.0), [](const glm::dvec3& p) { return p; });
-    return {"cannonball", {iron}};
+    addLathe(iron, half, 2 * RINGS, glm::dmat4(1.0), [](const glm::dvec3& p) { return p; });
+    return {coarse ? "cannonball.lod1" : "cannonball", {iron}};
 }
 
 // --- cannon -----------------------------------------------------------------------------
@@ -402,7 +406,7 @@ ShapeModel buildCannon() {
 } // namespace
 
 std::vector<ShapeModel> buildProjectModels() {
-    return {buildShip(), buildFish(), buildCannonball(), buildCannon()};
+    return {buildShip(), buildFish(false), buildFish(true), buildCannonball(false), buildCannonball(true), buildCannon()};
 }
 
 } // namespace ob::game

@@ -330,3 +330,39 @@ TEST_CASE("under the surface the frame is water fog and the surface from below, 
     for (size_t i = 0; i < below.rgb.size(); i += 3) black += below.rgb[i] + below.rgb[i + 1] + below.rgb[i + 2] < 6;
     CHECK(black == 0);
 }
+
+TEST_CASE("a model's far twin (X.lod1.gltf) is drawn only where the object spans a few pixels", "[gl][render]") {
+    // A fish model whose "twin" is a ball of 1 m, so that the frame shows which mesh was drawn:
+    // at 6 m the fish's bounding sphere spans 13 px of radius (the model), at 150 m 0.5 px (the twin).
+    gfx::requestDebugOutput(true);
+    const glm::ivec2 size(320, 180);
+    auto platform = platform::createHeadlessPlatform(size);
+    const fs::path dir = test::tempPath("lod_models");
+    fs::create_directories(dir);
+    const fs::path models = fs::path(OCEANBOX_SOURCE_DIR) / "assets/models";
+    fs::copy_file(models / "fish.gltf", dir / "fish.gltf", fs::copy_options::overwrite_existing);
+    fs::copy_file(models / "fish.gltf", dir / "plain.gltf", fs::copy_options::overwrite_existing);  // no twin
+    fs::copy_file(models / "cannonball.gltf", dir / "fish.lod1.gltf", fs::copy_options::overwrite_existing);
+    auto frame = [&](const std::string& model, float distance) {
+        gfx::CameraView camera;
+        camera.position = glm::vec3(0.0f, 1.0f, 0.0f);
+        camera.view = glm::lookAtRH(camera.position, glm::vec3(0.0f, 1.0f, -distance), glm::vec3(0, 1, 0));
+        camera.projection = glm::perspectiveRH_NO(glm::radians(60.0f), 320.0f / 180.0f, 0.1f, 2000.0f);
+        camera.nearM = 0.1f;
+        camera.farM = 2000.0f;
+        gfx::ObjectDraw fish;
+        fish.modelFile = (dir / model).string();
+        fish.model = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 1.0f, -distance)) *
+                     glm::rotate(glm::mat4(1.0f), glm::radians(90.0f), glm::vec3(0, 1, 0));
+        fish.waterHeight = -10.0f;  // well above the water: every pass draws it whole
+        gfx::RenderDef def;
+        def.antialias = gfx::Antialias::Off;
+        gfx::Renderer renderer(def);
+        renderer.render(camera, gfx::WaterView{}, {fish}, 0.0, size);
+        const std::string path = test::tempPath("lod.png");
+        gfx::writeScreenshot(path, size);
+        return loadPng(path);
+    };
+    CHECK(frame("fish.gltf", 6.0f).maxDifference(frame("plain.gltf", 6.0f), 0, size.y) == 0);  // near: the model
+    CHECK(frame("fish.gltf", 150.0f).maxDifference(frame("plain.gltf", 150.0f), 0, size.y) > 0);  // far: the twin
+}

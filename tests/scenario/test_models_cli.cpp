@@ -21,7 +21,7 @@ std::string readBytes(const std::string& path) {
     return s.str();
 }
 
-const char* const MODELS[] = {"ship", "fish", "cannonball", "cannon"};
+const char* const MODELS[] = {"ship", "fish", "fish.lod1", "cannonball", "cannonball.lod1", "cannon"};
 
 } // namespace
 
