@@ -343,7 +343,7 @@ void Renderer::opaquePass(const std::vector<ObjectDraw>& objects) {
     glPopDebugGroup();
 }
 
-// A model X.gltf may have a far twin X.lod1.gltf beside it, loaded with it.
+// A model X.gltf (X.glb) may have a far twin X.lod1.gltf (X.lod1.glb) beside it, loaded with it.
 const Renderer::ModelMeshes& Renderer::meshesFor(const ObjectDraw& object) {
     static const ModelMeshes none;
     if (object.modelFile.empty()) return none;
@@ -351,10 +351,9 @@ const Renderer::ModelMeshes& Renderer::meshesFor(const ObjectDraw& object) {
     if (it == m_models.end()) {
         ModelMeshes meshes{makeMesh(object.modelFile, assets::loadGltfModel(object.modelFile)), std::nullopt};
         const std::string& file = object.modelFile;
-        if (file.size() > 5 && file.ends_with(".gltf")) {
-            const std::string far = file.substr(0, file.size() - 5) + ".lod1.gltf";
-            if (std::filesystem::exists(far)) meshes.far = makeMesh(far, assets::loadGltfModel(far));
-        }
+        const std::filesystem::path path(file);
+        const std::filesystem::path far = std::filesystem::path(path).replace_extension(".lod1" + path.extension().string());
+        if (std::filesystem::exists(far)) meshes.far = makeMesh(far.string(), assets::loadGltfModel(far.string()));
         it = m_models.emplace(file, std::move(meshes)).first;
     }
     return it->second;
