@@ -109,6 +109,7 @@ EWaveField::EWaveField(int rows, int cols, float cellSize, RippleBoundary bounda
     std::memset(m_float[1], 0, m_cells * sizeof(float));
     if (boundary == RippleBoundary::Absorbing) m_spongeWidth = std::clamp(spongeWidth, 1, std::min(rows, cols) / 2);
     m_coef.resize(3 * size_t(m_rows / 2 + 1) * size_t(m_specCols));
+    m_sourceSum.assign(m_cells, 0.0f);
     chooseThreads();
 }
 
@@ -229,6 +230,7 @@ void EWaveField::prepare(float dt) {
 void EWaveField::step(float dt) {
     assert(dt > 0.0f);
     if (dt != m_preparedDt) prepare(dt);
+    applySources();
     if (m_stale) syncHeight();
     if (m_vRows0 < m_vRows1) {  // rows the sources wrote
         const size_t at = size_t(m_vRows0) * size_t(m_cols);
@@ -299,6 +301,7 @@ void EWaveField::finishRows(int t, int z0, int z1) {
 }
 
 void EWaveField::syncHeight() {
+    applySources();
     toFloatKernel(m_float[0], m_h, m_cells);
     toFloatKernel(m_float[1], m_v, m_cells);
     m_stale = false;
@@ -306,19 +309,37 @@ void EWaveField::syncHeight() {
     m_vRows1 = 0;
 }
 
-// One source over `rows` rows of n cells from v (row stride `stride`): per row q = 1 −
-// dz²/R² (dz = dz0 + row, exact), then v[x] += amount·max(0, q − dx2[x])², 0 outside the disc.
-OB_VECTOR_KERNEL static void sourceKernel(double* __restrict v, size_t stride, int rows, double dz0, double invR2,
-                                          const double* __restrict dx2, int n, double amount) {
-    for (int r = 0; r < rows; ++r, v += stride) {
-        const double dz = dz0 + double(r);
-        const double q = 1.0 - dz * dz * invR2;
-        if (q <= 0.0) continue;
+// One source over `rows` rows of n cells of the sources' sum (row stride `stride`): per row
+// q = 1 − dz²/R² (dz = dz0 + row), then sum[x] += amount·max(0, q − dx2[x])², 0 outside the disc.
+OB_VECTOR_KERNEL static void sourceKernel(float* __restrict sum, size_t stride, int rows, float dz0, float invR2,
+                                          const float* __restrict dx2, int n, float amount) {
+    for (int r = 0; r < rows; ++r, sum += stride) {
+        const float dz = dz0 + float(r);
+        const float q = 1.0f - dz * dz * invR2;
+        if (q <= 0.0f) continue;
         for (int x = 0; x < n; ++x) {
-            const double w = std::max(0.0, q - dx2[x]);  // 1 − r²/R²
-            v[x] += amount * w * w;
+            const float w = std::max(0.0f, q - dx2[x]);  // 1 − r²/R²
+            sum[x] += amount * w * w;
         }
     }
+}
+
+// v += the sources' sum, row by row, and the sum back to 0.
+OB_VECTOR_KERNEL static void applySumKernel(double* __restrict v, float* __restrict sum, size_t n) {
+    for (size_t i = 0; i < n; ++i) {
+        v[i] += double(sum[i]);
+        sum[i] = 0.0f;
+    }
+}
+
+void EWaveField::applySources() const {
+    if (m_sourceRows0 >= m_sourceRows1) return;
+    const size_t at = size_t(m_sourceRows0) * size_t(m_cols);
+    applySumKernel(m_v + at, m_sourceSum.data() + at, size_t(m_sourceRows1 - m_sourceRows0) * size_t(m_cols));
+    m_vRows0 = std::min(m_vRows0, m_sourceRows0);  // v's float copy is stale there
+    m_vRows1 = std::max(m_vRows1, m_sourceRows1);
+    m_sourceRows0 = m_rows;
+    m_sourceRows1 = 0;
 }
 
 void EWaveField::addSource(float gx, float gz, float radiusCells, float accel, float dt) {
@@ -336,31 +357,32 @@ void EWaveField::addSources(std::span<const EWaveSource> sources, float dt) {
     for (const EWaveSource& s : sources) {
         const float r = std::max(s.radiusCells, 1.0f);
         work += size_t(2.0 * r + 1.0) * size_t(2.0 * r + 1.0);
-        m_vRows0 = std::min(m_vRows0, std::max(0, int(std::ceil(s.gz - r))));  // v's float copy is stale there
-        m_vRows1 = std::max(m_vRows1, std::min(m_rows, int(std::floor(s.gz + r)) + 1));
+        m_sourceRows0 = std::min(m_sourceRows0, std::max(0, int(std::ceil(s.gz - r))));
+        m_sourceRows1 = std::max(m_sourceRows1, std::min(m_rows, int(std::floor(s.gz + r)) + 1));
     }
     const int minRows = m_sourceThreads > 1 && work >= PARALLEL_MIN_SOURCE_CELLS ? std::max(1, m_rows / 16) : m_rows;
     parallelFor(0, m_rows, minRows, [&](int band0, int band1) {
-        thread_local std::vector<double> dx2;
+        thread_local std::vector<float> dx2;
         dx2.resize(size_t(m_cols));
         for (const EWaveSource& s : sources) {
             const float r = std::max(s.radiusCells, 1.0f);
             const int z0 = std::max(band0, int(std::ceil(s.gz - r))), z1 = std::min(band1 - 1, int(std::floor(s.gz + r)));
             const int x0 = std::max(0, int(std::ceil(s.gx - r))), x1 = std::min(m_cols - 1, int(std::floor(s.gx + r)));
             if (z0 > z1 || x0 > x1) continue;
-            const double invR2 = 1.0 / (double(r) * double(r));
+            const float invR2 = 1.0f / (r * r);
             for (int x = x0; x <= x1; ++x) {
-                const double dx = double(x) - s.gx;
+                const float dx = float(x) - s.gx;
                 dx2[size_t(x - x0)] = dx * dx * invR2;
             }
-            sourceKernel(m_v + size_t(z0) * size_t(m_cols) + size_t(x0), size_t(m_cols), z1 - z0 + 1, double(z0) - s.gz, invR2,
-                         dx2.data(), x1 - x0 + 1, double(s.accel) * double(dt));
+            sourceKernel(m_sourceSum.data() + size_t(z0) * size_t(m_cols) + size_t(x0), size_t(m_cols), z1 - z0 + 1,
+                         float(z0) - s.gz, invR2, dx2.data(), x1 - x0 + 1, s.accel * dt);
         }
     });
 }
 
 void EWaveField::scroll(int dx, int dz) {
     if (dx == 0 && dz == 0) return;
+    applySources();
     const int rows = m_rows, cols = m_cols;
     if (std::abs(dx) >= cols || std::abs(dz) >= rows) {
         clear();
@@ -408,6 +430,7 @@ EWaveSource ewaveSource(const RippleStamp& stamp, float gx, float gz, float cell
 }
 
 void EWaveField::clear() {
+    applySources();
     std::fill(m_h, m_h + m_cells, 0.0);
     std::fill(m_v, m_v + m_cells, 0.0);
     syncHeight();

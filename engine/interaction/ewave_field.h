@@ -32,7 +32,8 @@ struct EWaveSource;
 /// float transforms. Beside the state the field keeps its float copy, which the forward
 /// transforms read: height() is that copy of h, for the renderer, dumps and the WaterQuery. Every
 /// write keeps it current (step, addHeight, scroll, clear) or marks it: the rows the sources
-/// wrote into v, and edit*'s whole state, are copied again before the next step.
+/// wrote into v, and edit*'s whole state, are copied again before the next step. The sources
+/// themselves are summed in float beside v and added to it when v is next read or stepped.
 ///
 /// Step (dt seconds), three passes over the workers (whether two workers pay is measured per
 /// size when the field is made, measuredThreads; the bits do not depend on the split):
@@ -93,6 +94,10 @@ public:
     /// addSource for each of `sources` in order (the same sum; row bands on the workers when
     /// there are many and that was measured to pay for this size: the bits do not depend on
     /// the split).
+    ///
+    /// The sources' velocity is summed in float (8 cells a vector operation, twice double's)
+    /// in a buffer beside v and added to v when v is next read or stepped: a source's share is
+    /// a forcing, rounded once to 2^-24 of itself, not the state that must keep its energy.
     void addSources(std::span<const EWaveSource> sources, float dt);
 
     /// Moves the patch by (dx, dz) whole cells: the value at (x+dx, z+dz) moves to (x, z) in h
@@ -111,8 +116,11 @@ public:
 
     /// The state h, rows·cols values row-major (index z·cols + x), metres.
     std::span<const double> heightState() const { return {m_h, m_cells}; }
-    /// The state v = ∂h/∂t, rows·cols values row-major, m/s.
-    std::span<const double> velocityState() const { return {m_v, m_cells}; }
+    /// The state v = ∂h/∂t, rows·cols values row-major, m/s (the sources added so far included).
+    std::span<const double> velocityState() const {
+        applySources();
+        return {m_v, m_cells};
+    }
     /// The state to write (loaders, tests, the GPU twin's read-back). Marks the float copies for
     /// a rebuild before the next step; call syncHeight() before reading height() in between.
     std::span<double> editHeight() {
@@ -120,6 +128,7 @@ public:
         return {m_h, m_cells};
     }
     std::span<double> editVelocity() {
+        applySources();
         m_stale = true;
         return {m_v, m_cells};
     }
@@ -135,12 +144,13 @@ public:
     /// h at column x, row z (both in range), m.
     float heightAt(int x, int z) const { return float(m_h[size_t(z) * size_t(m_cols) + size_t(x)]); }
     /// v at column x, row z (both in range), m/s.
-    float velocityAt(int x, int z) const { return float(m_v[size_t(z) * size_t(m_cols) + size_t(x)]); }
+    float velocityAt(int x, int z) const { return float(velocityState()[size_t(z) * size_t(m_cols) + size_t(x)]); }
 
 private:
     void chooseThreads();
     void prepare(float dt);
     void changeRows(int j0, int j1);
+    void applySources() const;  // the sources' float sums into v (rows m_sourceRows0..1), then 0
     void finishRows(int t, int z0, int z1);
 
     int m_rows, m_cols, m_specCols;
@@ -153,7 +163,11 @@ private:
     int m_stepThreads = 1;             // the step's passes on 1 or 2 workers (measured, chooseThreads)
     int m_sourceThreads = 1;           // addSources' row bands on 1 or workerCount() workers (measured)
     bool m_stale = false;              // the state was written through edit*: m_float needs a rebuild
-    int m_vRows0 = 0, m_vRows1 = 0;    // rows [m_vRows0, m_vRows1) of v written by sources since m_float[1] was made
+    mutable int m_vRows0 = 0, m_vRows1 = 0;  // rows [m_vRows0, m_vRows1) of v written by sources since m_float[1] was made
+    // The sources' velocity not yet in v: float, rows·cols, nonzero only in rows
+    // [m_sourceRows0, m_sourceRows1). Applied by the readers of v (logically const).
+    mutable std::vector<float> m_sourceSum;
+    mutable int m_sourceRows0 = 0, m_sourceRows1 = 0;
     double* m_h = nullptr;             // fftw_alloc'd real arrays, rows·cols
     double* m_v = nullptr;
     float* m_float[2] = {};            // per field (h, v): float(state), rows·cols; the forward transforms' input
