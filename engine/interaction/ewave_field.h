@@ -116,7 +116,9 @@ public:
 
     /// The state h, rows·cols values row-major (index z·cols + x), metres.
     std::span<const double> heightState() const { return {m_h, m_cells}; }
-    /// The state v = ∂h/∂t, rows·cols values row-major, m/s (the sources added so far included).
+    /// The state v = ∂h/∂t, rows·cols values row-major, m/s (the sources added so far included:
+    /// the first reader after addSources applies them, so that one must not race other readers;
+    /// the sandbox steps right after its sources, and reads v between steps only).
     std::span<const double> velocityState() const {
         applySources();
         return {m_v, m_cells};
