@@ -89,6 +89,7 @@ Renderer::Renderer(const RenderDef& def)
       m_objectProgram(loadProgram("object_mesh", {"object_mesh.vert", "object_mesh.frag"})),
       m_objectWaterlineProgram(loadProgram("object_mesh_waterline", {"object_mesh_waterline.vert", "object_mesh.frag"})),
       m_fxaaProgram(loadProgram("fxaa", {"common_fullscreen.vert", "post_fxaa.frag"})),
+      m_upscaleProgram(loadProgram("upscale", {"common_fullscreen.vert", "post_upscale.frag"})),
       m_sphereMesh(makeSphereMesh(16)),
       m_boxMesh(makeBoxMesh()),
       m_emptyVao(createVertexArray("fullscreen triangle")),
@@ -457,9 +458,19 @@ void Renderer::postPass(glm::ivec2 size) {
         glBindTextureUnit(FXAA_SOURCE_UNIT, 0);  // drawn into again next frame
         last = upscaled ? &m_antialiased : nullptr;
     }
-    if (last)
+    if (last && internal == size) {
         glBlitNamedFramebuffer(last->framebuffer.id(), 0, 0, 0, internal.x, internal.y, 0, 0, size.x, size.y,
-                               GL_COLOR_BUFFER_BIT, internal == size ? GL_NEAREST : GL_LINEAR);
+                               GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    } else if (last) {  // scaled up: one bilinear lookup a pixel (a draw; llvmpipe's blit costs more)
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glViewport(0, 0, size.x, size.y);
+        glDisable(GL_DEPTH_TEST);
+        glBindTextureUnit(FXAA_SOURCE_UNIT, last->color.id());
+        glUseProgram(m_upscaleProgram.id());
+        glBindVertexArray(m_emptyVao.id());
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        glBindTextureUnit(FXAA_SOURCE_UNIT, 0);
+    }
     m_passTimers[POST_PASS].end();
     glPopDebugGroup();
 }

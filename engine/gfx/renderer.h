@@ -141,7 +141,7 @@ private:
     void buildGrid(int resolution);
 
     RenderDef m_def;
-    Program m_skyBakeProgram, m_skyProgram, m_waterProgram, m_objectProgram, m_objectWaterlineProgram, m_fxaaProgram;
+    Program m_skyBakeProgram, m_skyProgram, m_waterProgram, m_objectProgram, m_objectWaterlineProgram, m_fxaaProgram, m_upscaleProgram;
     Mesh m_sphereMesh, m_boxMesh;
     std::map<std::string, ModelMeshes> m_models;  // glTF meshes by file, loaded on first draw
     VertexArray m_emptyVao;
