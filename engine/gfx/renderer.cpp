@@ -344,16 +344,14 @@ void Renderer::opaquePass(const std::vector<ObjectDraw>& objects) {
     glPopDebugGroup();
 }
 
-// A model X.gltf (X.glb) may have a far twin X.lod1.gltf (X.lod1.glb) beside it, loaded with it.
-const Renderer::ModelMeshes& Renderer::meshesFor(const ObjectDraw& object) {
-    static const ModelMeshes none;
-    if (object.modelFile.empty()) return none;
-    auto it = m_models.find(object.modelFile);
+// The model X.gltf (X.glb) and its far twin X.lod1.gltf (X.lod1.glb) beside it, if there is
+// one: loaded on first use.
+const Renderer::ModelMeshes& Renderer::meshesFor(const std::string& file) {
+    auto it = m_models.find(file);
     if (it == m_models.end()) {
-        ModelMeshes meshes{makeMesh(object.modelFile, assets::loadGltfModel(object.modelFile)), std::nullopt};
-        const std::string& file = object.modelFile;
-        const std::filesystem::path path(file);
-        const std::filesystem::path far = std::filesystem::path(path).replace_extension(".lod1" + path.extension().string());
+        ModelMeshes meshes{makeMesh(file, assets::loadGltfModel(file)), std::nullopt};
+        std::filesystem::path far(file);
+        far.replace_extension(".lod1" + far.extension().string());
         if (std::filesystem::exists(far)) meshes.far = makeMesh(far.string(), assets::loadGltfModel(far.string()));
         it = m_models.emplace(file, std::move(meshes)).first;
     }
@@ -368,7 +366,7 @@ static float boundingRadius(const ObjectDraw& o, const Mesh& mesh) {
 // fewer than LOD_RADIUS_PX pixels of radius in that view's target.
 const Mesh& Renderer::meshFor(const ObjectDraw& object, View view) {
     if (object.modelFile.empty()) return object.mesh == MeshKind::Sphere ? m_sphereMesh : m_boxMesh;
-    const ModelMeshes& meshes = meshesFor(object);
+    const ModelMeshes& meshes = meshesFor(object.modelFile);
     if (!meshes.far) return meshes.near;
     const float distance = std::max(glm::length(glm::vec3(object.model[3]) - m_eye), 1e-3f);
     const float pixels = boundingRadius(object, meshes.near) / distance * m_pixelsPerRadian[view];

@@ -130,7 +130,7 @@ private:
         Mesh near;
         std::optional<Mesh> far;
     };
-    const ModelMeshes& meshesFor(const ObjectDraw& object);
+    const ModelMeshes& meshesFor(const std::string& file);
     const Mesh& meshFor(const ObjectDraw& object, View view);
     glm::vec3 m_eye{0.0f};                   // this frame's camera (m)
     float m_pixelsPerRadian[VIEW_COUNT] = {};  // per view: its target's pixels per radian of view at the centre
