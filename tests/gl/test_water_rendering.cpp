@@ -72,6 +72,17 @@ Coverage coverage(const std::vector<glm::vec4>& texels, glm::ivec2 size) {
 }
 
 
+// A 60° camera (near 0.1 m, far 2 km) at `eye` looking at `target`, for a frame of this aspect.
+gfx::CameraView lookingAt(glm::vec3 eye, glm::vec3 target, float aspect) {
+    gfx::CameraView camera;
+    camera.position = eye;
+    camera.view = glm::lookAtRH(eye, target, glm::vec3(0, 1, 0));
+    camera.projection = glm::perspectiveRH_NO(glm::radians(60.0f), aspect, 0.1f, 2000.0f);
+    camera.nearM = 0.1f;
+    camera.farM = 2000.0f;
+    return camera;
+}
+
 // A level camera 4 m above the sea looking along −z; a red box ("ship") afloat 25 m ahead.
 const char* SHIP_SCENE = R"(
 [camera]
@@ -151,12 +162,7 @@ TEST_CASE("clip planes: above the water only in the reflection, below only in th
     gfx::RenderDef def;
     def.rtt_scale = 0.5f;
     gfx::Renderer renderer(def);
-    gfx::CameraView camera;
-    camera.position = glm::vec3(0.0f, 6.0f, 0.0f);
-    camera.view = glm::lookAtRH(camera.position, glm::vec3(0.0f, 0.0f, -30.0f), glm::vec3(0, 1, 0));
-    camera.projection = glm::perspectiveRH_NO(glm::radians(60.0f), 320.0f / 180.0f, 0.1f, 2000.0f);
-    camera.nearM = 0.1f;
-    camera.farM = 2000.0f;
+    const gfx::CameraView camera = lookingAt(glm::vec3(0.0f, 6.0f, 0.0f), glm::vec3(0.0f, 0.0f, -30.0f), 320.0f / 180.0f);
     const glm::ivec2 targetSize = size / 2;
 
     // Where a world point lands in a target of the camera's frame (px, bottom-up).
@@ -201,12 +207,7 @@ TEST_CASE("an object wholly under the water is seen through it from above, by th
     const glm::ivec2 size(160, 90);
     auto platform = platform::createHeadlessPlatform(size);
     int errorsBefore = gfx::glErrorCount();
-    gfx::CameraView camera;
-    camera.position = glm::vec3(0.0f, 8.0f, 0.0f);
-    camera.view = glm::lookAtRH(camera.position, glm::vec3(0.0f, -3.0f, -12.0f), glm::vec3(0, 1, 0));
-    camera.projection = glm::perspectiveRH_NO(glm::radians(60.0f), 160.0f / 90.0f, 0.1f, 2000.0f);
-    camera.nearM = 0.1f;
-    camera.farM = 2000.0f;
+    const gfx::CameraView camera = lookingAt(glm::vec3(0.0f, 8.0f, 0.0f), glm::vec3(0.0f, -3.0f, -12.0f), 160.0f / 90.0f);
     gfx::ObjectDraw sphere;
     sphere.mesh = gfx::MeshKind::Sphere;
     sphere.model = glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, -3.0f, -12.0f)), glm::vec3(1.5f));
@@ -244,12 +245,7 @@ TEST_CASE("a small object across the surface is cut at the surface's tangent pla
     gfx::RenderDef def;
     def.rtt_scale = 0.5f;
     gfx::Renderer renderer(def);
-    gfx::CameraView camera;
-    camera.position = glm::vec3(0.0f, 0.0f, 6.0f);
-    camera.view = glm::lookAtRH(camera.position, glm::vec3(0.0f), glm::vec3(0, 1, 0));
-    camera.projection = glm::perspectiveRH_NO(glm::radians(60.0f), 640.0f / 360.0f, 0.1f, 2000.0f);
-    camera.nearM = 0.1f;
-    camera.farM = 2000.0f;
+    const gfx::CameraView camera = lookingAt(glm::vec3(0.0f, 0.0f, 6.0f), glm::vec3(0.0f), 640.0f / 360.0f);
     const glm::ivec2 targetSize = size / 2;
     auto centroidShifts = [&](float slope) {
         gfx::ObjectDraw sphere;
@@ -344,12 +340,7 @@ TEST_CASE("a model's far twin (X.lod1.gltf) is drawn only where the object spans
     fs::copy_file(models / "fish.gltf", dir / "plain.gltf", fs::copy_options::overwrite_existing);  // no twin
     fs::copy_file(models / "cannonball.gltf", dir / "fish.lod1.gltf", fs::copy_options::overwrite_existing);
     auto frame = [&](const std::string& model, float distance) {
-        gfx::CameraView camera;
-        camera.position = glm::vec3(0.0f, 1.0f, 0.0f);
-        camera.view = glm::lookAtRH(camera.position, glm::vec3(0.0f, 1.0f, -distance), glm::vec3(0, 1, 0));
-        camera.projection = glm::perspectiveRH_NO(glm::radians(60.0f), 320.0f / 180.0f, 0.1f, 2000.0f);
-        camera.nearM = 0.1f;
-        camera.farM = 2000.0f;
+        const gfx::CameraView camera = lookingAt(glm::vec3(0.0f, 1.0f, 0.0f), glm::vec3(0.0f, 1.0f, -distance), 320.0f / 180.0f);
         gfx::ObjectDraw fish;
         fish.modelFile = (dir / model).string();
         fish.model = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 1.0f, -distance)) *
