@@ -13,6 +13,14 @@ layout(std140, binding = 1) uniform WaterUniforms {
     vec4 u_gerstner[32];       // (kx, kz, amplitude, phase) per wave
 };
 
+// The water program is compiled per configuration (gfx::WaterVariant defines WATER_VARIANT and
+// these as constants); other programs read them from the uniforms.
+#ifndef WATER_VARIANT
+#define WATER_CASCADES int(u_gridParams.z)
+#define WATER_RIPPLES (u_rippleParams.w > 0.0)
+#define WATER_FOAM_MAP (u_foamParams.w > 0.0)
+#endif
+
 layout(binding = 0) uniform sampler2DArray u_displacement;  // layer c: (Dx, h, Dz, J)
 layout(binding = 1) uniform sampler2DArray u_slopes;        // layer c: (dh/dx, dh/dz, J, 0)
 layout(binding = 2) uniform sampler2D u_ripples;            // ripple heights Vh(t) (m), 0 outside
@@ -21,7 +29,7 @@ layout(binding = 10) uniform sampler2D u_rippleSlopes;      // ripple (dh/dx, dh
 
 // Ripple height at world (x, z) (bilinear between cell centres; 0 outside the patch).
 float rippleHeight(vec2 world) {
-    if (u_rippleParams.w <= 0.0) return 0.0;
+    if (!WATER_RIPPLES) return 0.0;
     vec2 uv = ((world - u_rippleParams.xy) / u_rippleParams.z + 0.5) / u_rippleParams.w;
     return textureLod(u_ripples, uv, 0.0).r;
 }
@@ -29,7 +37,7 @@ float rippleHeight(vec2 world) {
 // Persistent foam coverage at world (x, z) (bilinear between cell centres; 0 outside the map),
 // faded out over the outer tenth of the map so that a map following a ship leaves no straight edge.
 float foamCoverage(vec2 world) {
-    if (u_foamParams.w <= 0.0) return 0.0;
+    if (!WATER_FOAM_MAP) return 0.0;
     vec2 cell = (world - u_foamParams.xy) / u_foamParams.z;
     vec2 fromEdge = min(cell + 0.5, u_foamParams.w - 0.5 - cell);
     float fade = smoothstep(0.0, 0.1 * u_foamParams.w, min(fromEdge.x, fromEdge.y));
@@ -39,7 +47,7 @@ float foamCoverage(vec2 world) {
 // True inside the ripple patch (plus one cell).
 bool inRipplePatch(vec2 world) {
     vec2 cell = (world - u_rippleParams.xy) / u_rippleParams.z;
-    return u_rippleParams.w > 0.0 && all(greaterThan(cell, vec2(-1.0))) && all(lessThan(cell, vec2(u_rippleParams.w)));
+    return WATER_RIPPLES && all(greaterThan(cell, vec2(-1.0))) && all(lessThan(cell, vec2(u_rippleParams.w)));
 }
 
 // Ripple slope (dh/dx, dh/dz) at world (x, z): central differences over one cell of the

@@ -7,9 +7,12 @@
 // (seed 000) and foam where the FFT Jacobian folds or the ripples are steep, and where the
 // persistent foam map holds coverage (its bubble pattern thins as the coverage decays).
 // Each FFT cascade's slopes fade out with distance ([render] far_fade) as its displacement does.
-// Compiled with WATER_FULL_QUALITY ([render] water_full_quality): every term per pixel, the
-// reference the shipped shading is tested against (the ripple slope from four height lookups,
-// the haze from the sky per pixel instead of per vertex).
+// Compiled per gfx::WaterVariant: the cascade count and the switches (WATER_REFLECTIONS,
+// WATER_REFRACTIONS, WATER_FOAM, WATER_FOAM_MAP, WATER_RIPPLES), the eye's side
+// (WATER_UNDERWATER) and the Fresnel law (WATER_EXACT_FRESNEL) are constants here. With
+// WATER_FULL_QUALITY ([render] water_full_quality): every term per pixel, the reference the
+// shipped shading is tested against (the ripple slope from four height lookups, the haze from
+// the sky per pixel instead of per vertex).
 #include "common_frame.glsl"
 #include "common_sky.glsl"
 #include "common_fresnel.glsl"
@@ -54,8 +57,7 @@ void main() {
     vec2 ripple = rippleSlope(v_world.xz);
     vec2 slope = v_gerstnerSlope + ripple;
     float jacobian = 1.0;
-    int cascades = int(u_gridParams.z);
-    for (int c = 0; c < cascades; ++c) {
+    for (int c = 0; c < WATER_CASCADES; ++c) {
         vec3 uv = cascadeCoord(v_rest, c);
         // (dh/dx, dh/dz, J), faded out with distance as the vertex shader fades the displacement
         vec3 s = texture(u_slopes, uv).xyz;
@@ -69,28 +71,26 @@ void main() {
     float dist = length(toEye);
     vec3 v = toEye / dist;
     vec3 sun = u_sunDirectionFresnel.xyz;
-    bool exact = u_sunDirectionFresnel.w > 0.5;
+    const bool exact = WATER_EXACT_FRESNEL;
     vec3 body = waterBodyColor();
     vec3 r = reflect(-v, n);
     r.y = abs(r.y);
 
-    // One sky evaluation serves both sides (a software rasteriser runs every branch for every
-    // pixel): from above, the reflected ray; from below, the refracted one. The analytic sky
-    // the cube is baked from: on llvmpipe a cube lookup costs 12 % of this pass, its formula less.
-    vec3 refracted = refract(-v, -n, WATER_IOR);
-    bool underwater = eyeUnderwater();
-    vec3 sky = skyRadiance(normalize(underwater && dot(refracted, refracted) > 0.0 ? refracted : r), u_sunDirectionFresnel.xyz);
-    if (underwater) {
+    // The sky is the analytic one the cube is baked from: on llvmpipe a cube lookup costs more
+    // than the formula.
+    if (WATER_UNDERWATER) {
         // The surface from below: Snell's window (the sky refracted in) inside the critical
         // angle, total internal reflection of the dark water outside it.
+        vec3 refracted = refract(-v, -n, WATER_IOR);
         vec3 color = body * 0.5;
         if (dot(refracted, refracted) > 0.0) {
             float transmitted = 1.0 - fresnel(dot(refracted, n), exact);
-            color = mix(color, sky, transmitted);
+            color = mix(color, skyRadiance(normalize(refracted), sun), transmitted);
         }
         o_color = finalColor(underwaterFog(color, dist));
         return;
     }
+    vec3 sky = skyRadiance(normalize(r), sun);
 
     // --- lookups into the targets, offset by the normal and the scrolling DU/DV map
     vec2 screen = gl_FragCoord.xy / u_viewport.xy;
@@ -100,7 +100,7 @@ void main() {
 
     float cosV = max(dot(v, n), 0.0);
     vec3 reflection = sky;
-    if (u_switches.x > 0.5) {
+    if (WATER_REFLECTIONS) {
         // The mirrored camera has the camera's projection: its depth less the surface's is
         // the path from the surface to the mirrored object.
         float behind = eyeDepth(texture(u_reflectionDepth, screen).r) - surfaceDepth;
@@ -111,7 +111,7 @@ void main() {
         reflection = reflection * (1.0 - local.a) + local.rgb;
     }
     vec3 refraction = body;
-    if (u_switches.y > 0.5) {
+    if (WATER_REFRACTIONS) {
         float behind = eyeDepth(texture(u_refractionDepth, screen).r) - surfaceDepth;
         vec2 uv = clamp(screen + offset * smoothstep(0.0, DISTORTION_RAMP_M, behind), 0.0, 1.0);
         float depth = eyeDepth(texture(u_refractionDepth, uv).r) - surfaceDepth;
@@ -128,7 +128,7 @@ void main() {
     vec3 color = mix(refraction, reflection, F);
     color += SUN_COLOR * u_shading.z * pow(max(dot(r, sun), 0.0), u_shading.w);
 
-    if (u_switches.z > 0.5) {
+    if (WATER_FOAM) {
         float whitecap = smoothstep(0.6, 0.1, jacobian);
         float splash = smoothstep(0.12, 0.45, length(ripple));
         float foam = clamp(max(whitecap, splash) * (0.35 + 0.9 * detail.b), 0.0, 1.0);
@@ -137,7 +137,7 @@ void main() {
         // even dense foam keeps open water in the pattern's darkest cells and its texture in its
         // brightness (never a flat sheet). The map is read at a point pushed up to FOAM_WARP
         // cells by the DU/DV field, so its edges fray instead of following the cells.
-        if (u_foamParams.w > 0.0) {
+        if (WATER_FOAM_MAP) {
             vec2 fuv = v_world.xz / FOAM_TILE;
             vec4 fine = texture(u_detail, fuv);
             float coverage = foamCoverage(v_world.xz + fine.xy * FOAM_WARP * u_foamParams.z);

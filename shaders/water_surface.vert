@@ -30,8 +30,7 @@ void main() {
     vec3 offset;
     gerstner(rest, t, u_farFade.x > 0.5 ? spacing : 0.0, offset, v_gerstnerSlope);
     vec3 pos = vec3(rest.x, 0.0, rest.y) + offset;
-    int cascades = int(u_gridParams.z);
-    for (int c = 0; c < cascades; ++c) {
+    for (int c = 0; c < WATER_CASCADES; ++c) {
         float lod = log2(max(spacing * u_gridParams.w / u_cascadeSize[c], 1.0));
         vec4 d = cascadeWeight(rest, c) * textureLod(u_displacement, cascadeCoord(rest, c), lod);
         pos += vec3(u_waterParams.x * d.x, d.y, u_waterParams.x * d.z);

@@ -85,7 +85,6 @@ Renderer::Renderer(const RenderDef& def)
     : m_def(def),
       m_skyBakeProgram(loadProgram("sky bake", {"common_fullscreen.vert", "sky_cube.frag"})),
       m_skyProgram(loadProgram("sky", {"common_fullscreen.vert", "sky_background.frag"})),
-      m_waterProgram(loadProgram("water_surface", {"water_surface.vert", "water_surface.frag"})),
       m_objectProgram(loadProgram("object_mesh", {"object_mesh.vert", "object_mesh.frag"})),
       m_objectWaterlineProgram(loadProgram("object_mesh_waterline", {"object_mesh_waterline.vert", "object_mesh.frag"})),
       m_fxaaProgram(loadProgram("fxaa", {"common_fullscreen.vert", "post_fxaa.frag"})),
@@ -521,6 +520,15 @@ void Renderer::uploadWaterUniforms(const CameraView& camera, const WaterView& wa
         u.rippleParams = glm::vec4(water.rippleOrigin, water.rippleCellSize, float(m_rippleCells));
     }
     uploadFoam(water, u);
+    m_waterVariant = {.cascades = layers ? cascades : 0,
+                      .ripples = u.rippleParams.w > 0.0f,
+                      .foamMap = u.foamParams.w > 0.0f,
+                      .underwater = m_underwater,
+                      .exactFresnel = m_def.fresnel == Fresnel::Exact,
+                      .reflections = m_def.reflections,
+                      .refractions = m_def.refractions,
+                      .foam = m_def.foam,
+                      .fullQuality = m_def.water_full_quality};
     glNamedBufferSubData(m_waterUniforms.id(), 0, sizeof u, &u);
     glBindBufferBase(GL_UNIFORM_BUFFER, WATER_UBO_BINDING, m_waterUniforms.id());
     glBindTextureUnit(FOAM_UNIT, u.foamParams.w > 0.0f ? m_foamTexture.id() : 0);
@@ -542,6 +550,14 @@ void Renderer::prepareWater(const CameraView& camera, const WaterView& water, in
     uploadWaterUniforms(camera, water, m_grid);
 }
 
+std::string WaterVariant::defines() const {
+    const auto flag = [](const char* name, bool on) { return std::string("#define ") + name + (on ? " true\n" : " false\n"); };
+    return "#define WATER_VARIANT\n#define WATER_CASCADES " + std::to_string(cascades) + "\n" + flag("WATER_RIPPLES", ripples) +
+           flag("WATER_FOAM_MAP", foamMap) + flag("WATER_UNDERWATER", underwater) + flag("WATER_EXACT_FRESNEL", exactFresnel) +
+           flag("WATER_REFLECTIONS", reflections) + flag("WATER_REFRACTIONS", refractions) + flag("WATER_FOAM", foam) +
+           (fullQuality ? "#define WATER_FULL_QUALITY\n" : "");
+}
+
 void Renderer::waterPass(const CameraView&) {
     if (!m_grid.visible) return;
     glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, WATER_PASS, -1, "water");
@@ -554,9 +570,11 @@ void Renderer::waterPass(const CameraView&) {
     glBindTextureUnit(REFLECTION_DEPTH_UNIT, m_reflection.depth.id());
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
-    if (m_def.water_full_quality && !m_waterFullProgram.id())
-        m_waterFullProgram = loadProgram("water_surface (full quality)", {"water_surface.vert", "water_surface.frag"}, "#define WATER_FULL_QUALITY\n");
-    glUseProgram(m_def.water_full_quality ? m_waterFullProgram.id() : m_waterProgram.id());
+    const std::string defines = m_waterVariant.defines();
+    auto program = m_waterPrograms.find(defines);
+    if (program == m_waterPrograms.end())
+        program = m_waterPrograms.emplace(defines, loadProgram("water_surface", {"water_surface.vert", "water_surface.frag"}, defines)).first;
+    glUseProgram(program->second.id());
     glBindVertexArray(m_gridVao.id());
     glDrawElements(GL_TRIANGLES, m_gridIndexCount, GL_UNSIGNED_INT, nullptr);
     // The targets are drawn into again next frame: never leave them bound for sampling.

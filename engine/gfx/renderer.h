@@ -87,6 +87,22 @@ struct FrameUniforms {
 };
 static_assert(sizeof(FrameUniforms) == 2 * 64 + 8 * 16, "FrameUniforms must match std140 layout");
 
+/// What the water program is compiled for (`#define`s of shaders/water_surface.frag): each a
+/// constant in its code, so the compiler drops the terms that are off and unrolls the cascades'
+/// loop. A software rasteriser runs both sides of a branch on a uniform, and a loop over a
+/// uniform count cost it a sixth of the water pass. One program per variant met, kept.
+struct WaterVariant {
+    int cascades = 0;          ///< FFT cascades sampled (0: no layers)
+    bool ripples = false;      ///< a ripple patch is uploaded
+    bool foamMap = false;      ///< a persistent foam map is uploaded
+    bool underwater = false;   ///< the eye is below the surface
+    bool exactFresnel = false; ///< [render] fresnel = "exact" (else Schlick)
+    bool reflections = true, refractions = true, foam = true;  ///< [render] switches
+    bool fullQuality = false;  ///< [render] water_full_quality: every term per pixel, the reference
+    /// The lines put after the shaders' #version line.
+    std::string defines() const;
+};
+
 /// GPU ms of each pass in the latest resolved frame (pass name → ms).
 using PassTimes = std::vector<std::pair<const char*, double>>;
 
@@ -141,7 +157,7 @@ private:
     void buildGrid(int resolution);
 
     RenderDef m_def;
-    Program m_skyBakeProgram, m_skyProgram, m_waterProgram, m_objectProgram, m_objectWaterlineProgram, m_fxaaProgram, m_upscaleProgram;
+    Program m_skyBakeProgram, m_skyProgram, m_objectProgram, m_objectWaterlineProgram, m_fxaaProgram, m_upscaleProgram;
     Mesh m_sphereMesh, m_boxMesh;
     std::map<std::string, ModelMeshes> m_models;  // glTF meshes by file, loaded on first draw
     VertexArray m_emptyVao;
@@ -156,7 +172,8 @@ private:
     Texture m_rippleSlopeTexture;  // RG32F central differences of the heights, one cell of margin, every frame
     std::vector<glm::vec2> m_rippleSlopes;  // their texels, (cells + 2)² row-major
     int m_rippleCells = 0;
-    Program m_waterFullProgram;  // the water program with every term per pixel (water_full_quality), loaded on first use
+    WaterVariant m_waterVariant;  // this frame's (uploadWaterUniforms)
+    std::map<std::string, Program> m_waterPrograms;  // by WaterVariant::defines(), compiled on first use
     Texture m_skyCube;        // RGBA16F cube map of the sky's radiance
     Framebuffer m_skyBakeFramebuffer;
     glm::vec3 m_bakedSun{0.0f};

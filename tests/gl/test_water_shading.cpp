@@ -84,6 +84,40 @@ double spectralPeak(const Image& img, int y) {
     return peak;
 }
 
+// Rings h = a·cos(2πr / 0.8 m) on a 128² patch of 0.1 m cells round the origin.
+constexpr int RING_CELLS = 128;
+std::vector<float> rings(float amplitude) {
+    std::vector<float> h(size_t(RING_CELLS) * size_t(RING_CELLS));
+    for (int j = 0; j < RING_CELLS; ++j)
+        for (int i = 0; i < RING_CELLS; ++i) {
+            const float r = 0.1f * std::hypot(float(i) - 63.5f, float(j) - 63.5f);
+            h[size_t(j * RING_CELLS + i)] = amplitude * std::cos(2.0f * float(M_PI) * r / 0.8f);
+        }
+    return h;
+}
+
+// One frame of `renderer` (a headless context of `size` current): the rings (none if empty)
+// seen from `eye` toward (0, 0, 1), read back.
+Image drawRings(gfx::Renderer& renderer, glm::ivec2 size, const std::vector<float>& heights, glm::vec3 eye, const char* tag) {
+    const int errorsBefore = gfx::glErrorCount();
+    gfx::WaterView water;
+    water.ripples = heights.empty() ? nullptr : heights.data();
+    water.rippleCells = heights.empty() ? 0 : RING_CELLS;
+    water.rippleOrigin = glm::vec2(-6.35f);
+    water.rippleCellSize = 0.1f;
+    gfx::CameraView camera;
+    camera.position = eye;
+    camera.view = glm::lookAtRH(camera.position, glm::vec3(0.0f, 0.0f, 1.0f), glm::vec3(0, 1, 0));
+    camera.projection = glm::perspectiveRH_NO(glm::radians(60.0f), float(size.x) / float(size.y), camera.nearM, camera.farM);
+    renderer.render(camera, water, {}, 0.0, size);
+    const std::string path = test::tempPath(std::string("rings_") + tag + ".png");
+    gfx::writeScreenshot(path, size);
+    CHECK(gfx::glErrorCount() == errorsBefore);
+    Image img = test::loadPng(path);
+    REQUIRE(img.w == size.x);
+    return img;
+}
+
 } // namespace
 
 TEST_CASE("the optimised water shading draws the full-quality frame: mean difference under 0.05 of 255", "[gl][render][water]") {
@@ -99,40 +133,13 @@ TEST_CASE("the optimised water shading draws the full-quality frame: mean differ
 TEST_CASE("the ripple slope from one lookup equals the four-lookup central difference: rings seen from above", "[gl][render][water]") {
     gfx::requestDebugOutput(true);
     const glm::ivec2 size(320, 180);
-    // Rings h = a·cos(2πr / 0.8 m) on a 128² patch of 0.1 m cells round the origin, seen from
-    // 4 m up and 6 m back: the ripple slope is the only relief in the frame.
-    const int cells = 128;
-    auto rings = [&](float amplitude) {
-        std::vector<float> h(size_t(cells) * size_t(cells));
-        for (int j = 0; j < cells; ++j)
-            for (int i = 0; i < cells; ++i) {
-                const float r = 0.1f * std::hypot(float(i) - 63.5f, float(j) - 63.5f);
-                h[size_t(j * cells + i)] = amplitude * std::cos(2.0f * float(M_PI) * r / 0.8f);
-            }
-        return h;
-    };
+    // Seen from 4 m up and 6 m back: the ripple slope is the only relief in the frame.
     auto render = [&](const std::vector<float>& heights, bool fullQuality, const char* tag) {
         auto platform = platform::createHeadlessPlatform(size);
-        const int errorsBefore = gfx::glErrorCount();
         gfx::RenderDef def;
         def.water_full_quality = fullQuality;
         gfx::Renderer renderer(def);
-        gfx::WaterView water;
-        water.ripples = heights.data();
-        water.rippleCells = cells;
-        water.rippleOrigin = glm::vec2(-6.35f);
-        water.rippleCellSize = 0.1f;
-        gfx::CameraView camera;
-        camera.position = glm::vec3(0.0f, 4.0f, -6.0f);
-        camera.view = glm::lookAtRH(camera.position, glm::vec3(0.0f, 0.0f, 1.0f), glm::vec3(0, 1, 0));
-        camera.projection = glm::perspectiveRH_NO(glm::radians(60.0f), float(size.x) / float(size.y), camera.nearM, camera.farM);
-        renderer.render(camera, water, {}, 0.0, size);
-        const std::string path = test::tempPath(std::string("rings_") + tag + ".png");
-        gfx::writeScreenshot(path, size);
-        CHECK(gfx::glErrorCount() == errorsBefore);
-        Image img = test::loadPng(path);
-        REQUIRE(img.w == size.x);
-        return img;
+        return drawRings(renderer, size, heights, glm::vec3(0.0f, 4.0f, -6.0f), tag);
     };
     const std::vector<float> heights = rings(0.01f), weaker = rings(0.009f);
     const Image fast = render(heights, false, "fast"), full = render(heights, true, "full");
@@ -141,6 +148,33 @@ TEST_CASE("the ripple slope from one lookup equals the four-lookup central diffe
     CHECK(meanDifference(fast, full) < 0.05);
     // The bound sees a slope 10 % off.
     CHECK(meanDifference(weakerFull, full) > 4 * 0.05);
+}
+
+TEST_CASE("the water program follows the frame: after other configurations a renderer draws each frame as a fresh one does", "[gl][render][water]") {
+    gfx::requestDebugOutput(true);
+    const glm::ivec2 size(160, 90);
+    // The water program is compiled per configuration (gfx::WaterVariant): eye above or below,
+    // ripples or none. A renderer that drew the others must switch, byte for byte.
+    struct Frame {
+        bool ripples;
+        glm::vec3 eye;
+        const char* tag;
+    };
+    const std::vector<float> heights = rings(0.01f);
+    const Frame frames[] = {{true, {0.0f, 4.0f, -6.0f}, "above"}, {true, {0.0f, -3.0f, -6.0f}, "below"}, {false, {0.0f, 4.0f, -6.0f}, "flat"}};
+    auto platform = platform::createHeadlessPlatform(size);
+    gfx::Renderer reused{gfx::RenderDef{}};
+    std::vector<Image> seen;
+    for (const Frame& f : frames) seen.push_back(drawRings(reused, size, f.ripples ? heights : std::vector<float>{}, f.eye, f.tag));
+    for (size_t i = 0; i < std::size(frames); ++i) {
+        gfx::Renderer fresh{gfx::RenderDef{}};
+        const Image expected = drawRings(fresh, size, frames[i].ripples ? heights : std::vector<float>{}, frames[i].eye, "fresh");
+        INFO(frames[i].tag << ": mean |reused - fresh| = " << meanDifference(seen[i], expected));
+        CHECK(meanDifference(seen[i], expected) == 0.0);
+    }
+    // The three configurations draw three different pictures.
+    CHECK(meanDifference(seen[0], seen[1]) > 1.0);
+    CHECK(meanDifference(seen[0], seen[2]) > 0.1);
 }
 
 TEST_CASE("the far field of the cannon scene shows no regular pattern: no spectral peak under the horizon", "[gl][render][water]") {
