@@ -17,6 +17,7 @@
 #include "common_sky.glsl"
 #include "common_fresnel.glsl"
 #include "common_water.glsl"
+#include "common_detail.glsl"
 
 in vec3 v_world;
 in vec2 v_rest;
@@ -26,8 +27,8 @@ layout(binding = 3) uniform samplerCube u_sky;
 layout(binding = 4) uniform sampler2D u_reflection;       // rgb linear radiance, a coverage
 layout(binding = 5) uniform sampler2D u_refraction;       // rgb linear radiance
 layout(binding = 6) uniform sampler2D u_refractionDepth;  // window depth of what lies below
-layout(binding = 7) uniform sampler2D u_detail;           // rg DU/DV in [-1, 1], b foam pattern
 layout(binding = 8) uniform sampler2D u_reflectionDepth;  // window depth of the mirrored objects
+layout(binding = 11) uniform sampler2D u_foamPattern;     // foamPattern() baked over its repeat, RGBA8 (du, dv as 0.5 + 0.5·x)
 out vec4 o_color;
 
 const float DETAIL_TILE = 24.0;            // m per repeat of the detail map
@@ -36,8 +37,6 @@ const vec3 SUN_COLOR = vec3(1.0, 0.9, 0.7);
 const float FOAM_TILE = 5.0;               // m per repeat of the persistent foam's bubble pattern
 const float FOAM_EDGE = 0.08;              // softness of the pattern's threshold
 const float FOAM_DENSE = 0.85;             // the share of the surface foam at coverage 1 covers
-const float FOAM_PATTERN_LOW = 0.47;       // pow(ridges, 0.4) at 5% of the detail map's foam pattern
-const float FOAM_PATTERN_HIGH = 0.88;      // ...and at 95%
 const float FOAM_WARP = 3.0;               // foam map cells the lookup is pushed by the DU/DV field, at most
 // A tilted surface shifts an image by an angle, so the shift grows with the distance of the
 // reflected or refracted object behind the surface: none where it touches it (a hull at the
@@ -94,7 +93,7 @@ void main() {
 
     // --- lookups into the targets, offset by the normal and the scrolling DU/DV map
     vec2 screen = gl_FragCoord.xy / u_viewport.xy;
-    vec3 detail = texture(u_detail, v_world.xz / DETAIL_TILE + DETAIL_DRIFT * t).rgb;
+    vec3 detail = decodeDetail(texture(u_detail, v_world.xz / DETAIL_TILE + DETAIL_DRIFT * t));
     vec2 offset = u_shading.x * detail.xy + u_shading.y * n.xz;
     float surfaceDepth = eyeDepth(gl_FragCoord.z);
 
@@ -139,14 +138,14 @@ void main() {
         // cells by the DU/DV field, so its edges fray instead of following the cells.
         if (WATER_FOAM_MAP) {
             vec2 fuv = v_world.xz / FOAM_TILE;
-            vec4 fine = texture(u_detail, fuv);
-            float coverage = foamCoverage(v_world.xz + fine.xy * FOAM_WARP * u_foamParams.z);
-            float ridges = 0.5 * fine.b + 0.3 * texture(u_detail, fuv * 2.7 + 0.37).b +
-                           0.2 * texture(u_detail, fuv * 7.3 + 0.71).b;  // octaves of 5, 1.85, 0.68 m
-            // The sharpened ridges spread over [0, 1]: pow(ridges, 0.4) lies between 0.47 and
-            // 0.88 at 5% and 95% of the program's detail map, nearly uniform between, so the
-            // share of the surface the lace covers is about FOAM_DENSE × the coverage.
-            float pattern = clamp((pow(ridges, 0.4) - FOAM_PATTERN_LOW) / (FOAM_PATTERN_HIGH - FOAM_PATTERN_LOW), 0.0, 1.0);
+#ifdef WATER_FULL_QUALITY
+            vec3 bubbles = foamPattern(fuv);
+#else
+            vec3 bubbles = decodeDetail(texture(u_foamPattern, fuv / FOAM_PATTERN_REPEAT));
+#endif
+            float coverage = foamCoverage(v_world.xz + bubbles.xy * FOAM_WARP * u_foamParams.z);
+            // The lace covers about FOAM_DENSE × the coverage of the surface (foamPattern()).
+            float pattern = bubbles.z;
             float threshold = 1.0 - FOAM_DENSE * min(coverage, 1.0);
             float lace = smoothstep(threshold - FOAM_EDGE, threshold + FOAM_EDGE, pattern);
             foam = max(foam, coverage > 0.0 ? lace * (0.25 + 0.45 * pattern + 0.3 * min(coverage, 1.0)) : 0.0);

@@ -28,7 +28,8 @@ constexpr GLuint FRAME_UBO_BINDING = 0;
 constexpr GLuint WATER_UBO_BINDING = 1;
 // Texture units of the water and sky passes (shaders/common_water.glsl, water_surface.frag).
 enum TextureUnit : GLuint { DISPLACEMENT_UNIT, SLOPES_UNIT, RIPPLES_UNIT, SKY_UNIT, REFLECTION_UNIT, REFRACTION_UNIT,
-                            REFRACTION_DEPTH_UNIT, DETAIL_UNIT, REFLECTION_DEPTH_UNIT, FOAM_UNIT, RIPPLE_SLOPES_UNIT };
+                            REFRACTION_DEPTH_UNIT, DETAIL_UNIT, REFLECTION_DEPTH_UNIT, FOAM_UNIT, RIPPLE_SLOPES_UNIT,
+                            FOAM_PATTERN_UNIT };
 // The projected grid reaches this fraction of the far clip distance; past it the grid is a
 // wall up to the eye's level, which the camera sees exactly on the horizon line.
 constexpr float GRID_REACH = 0.9f;
@@ -36,6 +37,9 @@ constexpr float GRID_REACH = 0.9f;
 constexpr float TILE_FADE_START = 1.0f / 3.0f;
 constexpr int SKY_CUBE_SIZE = 128;
 constexpr int DETAIL_MAP_SIZE = 256;
+// The baked foam pattern's texels over its repeat (three foam tiles, 15 m): 2 cm a texel, 46 over
+// the finest octave's period.
+constexpr int FOAM_PATTERN_SIZE = 1024;
 // Mean water level (m): the mirrored eye's. The reflection and refraction passes cut objects
 // at the surface itself, each reaching this far (m) past it so the waterline leaves no seam
 // between the surface the water pass shades and the one the objects were cut at.
@@ -119,12 +123,7 @@ Renderer::Renderer(const RenderDef& def)
     glObjectLabel(GL_FRAMEBUFFER, id, -1, "sky bake");
     m_skyBakeFramebuffer = Framebuffer(id);
 
-    const std::vector<glm::vec4> detail = makeDetailMap(DETAIL_MAP_SIZE, 0x0CEA4u);
-    m_detailMap = createTexture2D("water detail (du, dv, foam)", GL_RGBA16F, glm::ivec2(DETAIL_MAP_SIZE), mipLevels(DETAIL_MAP_SIZE));
-    glTextureParameteri(m_detailMap.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
-    glTextureParameteri(m_detailMap.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
-    glTextureSubImage2D(m_detailMap.id(), 0, 0, 0, DETAIL_MAP_SIZE, DETAIL_MAP_SIZE, GL_RGBA, GL_FLOAT, detail.data());
-    glGenerateTextureMipmap(m_detailMap.id());
+    bakeDetailMaps();
 
     for (const char* name : PASS_NAMES) m_passTimers.emplace_back(name);
     static_assert(std::size(PASS_NAMES) == PASS_COUNT);
@@ -159,6 +158,36 @@ void Renderer::buildGrid(int resolution) {
     glEnableVertexArrayAttrib(m_gridVao.id(), 0);
     glVertexArrayAttribFormat(m_gridVao.id(), 0, 2, GL_FLOAT, GL_FALSE, 0);
     glVertexArrayAttribBinding(m_gridVao.id(), 0, 0);
+}
+
+// The detail map (RGBA8, (du, dv) stored as 0.5 + 0.5·x: llvmpipe filters 8-bit texels on its
+// fast path) and the foam pattern baked from it (shaders/foam_pattern_bake.frag), both tiling.
+void Renderer::bakeDetailMaps() {
+    std::vector<glm::vec4> detail = makeDetailMap(DETAIL_MAP_SIZE, 0x0CEA4u);
+    for (glm::vec4& t : detail) t = glm::vec4(0.5f + 0.5f * t.x, 0.5f + 0.5f * t.y, t.z, t.w);
+    m_detailMap = createTexture2D("water detail (du, dv, foam)", GL_RGBA8, glm::ivec2(DETAIL_MAP_SIZE), mipLevels(DETAIL_MAP_SIZE));
+    m_foamPattern = createTexture2D("foam pattern (du, dv, bubbles)", GL_RGBA8, glm::ivec2(FOAM_PATTERN_SIZE), mipLevels(FOAM_PATTERN_SIZE));
+    for (const Texture* map : {&m_detailMap, &m_foamPattern}) {
+        glTextureParameteri(map->id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+        glTextureParameteri(map->id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
+    }
+    glTextureSubImage2D(m_detailMap.id(), 0, 0, 0, DETAIL_MAP_SIZE, DETAIL_MAP_SIZE, GL_RGBA, GL_FLOAT, detail.data());
+    glGenerateTextureMipmap(m_detailMap.id());
+
+    GLuint id;
+    glCreateFramebuffers(1, &id);
+    const Framebuffer framebuffer(id);
+    glNamedFramebufferTexture(id, GL_COLOR_ATTACHMENT0, m_foamPattern.id(), 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, id);
+    glViewport(0, 0, FOAM_PATTERN_SIZE, FOAM_PATTERN_SIZE);
+    glDisable(GL_DEPTH_TEST);
+    const Program bake = loadProgram("foam pattern bake", {"common_fullscreen.vert", "foam_pattern_bake.frag"});
+    glUseProgram(bake.id());
+    glBindTextureUnit(DETAIL_UNIT, m_detailMap.id());
+    glBindVertexArray(m_emptyVao.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glGenerateTextureMipmap(m_foamPattern.id());
 }
 
 // The three views: the camera, the camera seeing the objects mirrored in the water surface
@@ -567,6 +596,7 @@ void Renderer::waterPass(const CameraView&) {
     glBindTextureUnit(REFRACTION_UNIT, m_refraction.color.id());
     glBindTextureUnit(REFRACTION_DEPTH_UNIT, m_refraction.depth.id());
     glBindTextureUnit(DETAIL_UNIT, m_detailMap.id());
+    glBindTextureUnit(FOAM_PATTERN_UNIT, m_foamPattern.id());
     glBindTextureUnit(REFLECTION_DEPTH_UNIT, m_reflection.depth.id());
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);

@@ -120,6 +120,9 @@ public:
     /// The reflection and refraction targets of the latest frame (for tests and debug views).
     const RenderTarget& reflectionTarget() const { return m_reflection; }
     const RenderTarget& refractionTarget() const { return m_refraction; }
+    /// The detail map and the foam pattern baked from it (RGBA8, for tests).
+    const Texture& detailMap() const { return m_detailMap; }
+    const Texture& foamPatternMap() const { return m_foamPattern; }
 
 private:
     enum View { MAIN_VIEW, REFLECTION_VIEW, REFRACTION_VIEW, VIEW_COUNT };
@@ -177,7 +180,9 @@ private:
     Texture m_skyCube;        // RGBA16F cube map of the sky's radiance
     Framebuffer m_skyBakeFramebuffer;
     glm::vec3 m_bakedSun{0.0f};
-    Texture m_detailMap;      // DU/DV (rg) and foam pattern (b), tileable, mipmapped
+    Texture m_detailMap;      // DU/DV (rg, as 0.5 + 0.5·x) and foam streaks (b), RGBA8, tileable, mipmapped
+    Texture m_foamPattern;    // the persistent foam's bubble pattern over its repeat, baked from the detail map
+    void bakeDetailMaps();    // out: m_detailMap, m_foamPattern
     Texture m_foamTexture;    // R16F foam coverage of the foam map, re-uploaded every frame
     int m_foamCells = 0;
     Program m_splashProgram, m_splashMirrorProgram;

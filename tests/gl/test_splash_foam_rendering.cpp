@@ -191,6 +191,28 @@ TEST_CASE("foam at a cannonball's hit: 1 s after it the water there is brighter 
     CHECK(at5 - none5 < 0.8f * (at1 - none1));  // coverage e^(−4/6) = 0.51 of 1 s (with no new sources)
 }
 
+TEST_CASE("the baked foam pattern draws the per-pixel one: 1 s after a cannonball's hit, full quality against shipped", "[gl][render][foam]") {
+    // The shipped water shader reads the bubble pattern from its baked map (one RGBA8 lookup);
+    // full quality computes it per pixel from three detail map lookups (common_detail.glsl).
+    const CannonRun shipped = runCannon({"render.splash_drops=false"}, {60});
+    const CannonRun full = runCannon({"render.splash_drops=false", "render.water_full_quality=true"}, {60});
+    const CannonRun none = runCannon({"render.splash_drops=false", "foam.enabled=false"}, {60});
+    REQUIRE(shipped.hitScreen == full.hitScreen);
+    // Mean |luma difference| in a 40 × 20 px box round the hit (the foam patch, about 3 m across).
+    const auto boxDifference = [&](const Image& a, const Image& b) {
+        const int x = int(shipped.hitScreen.x), y = int(shipped.hitScreen.y);
+        float sum = 0.0f;
+        for (int j = y - 10; j < y + 10; ++j)
+            for (int i = x - 20; i < x + 20; ++i) sum += std::abs(luma(a, i, j) - luma(b, i, j));
+        return sum / 800.0f;
+    };
+    const float baked = boxDifference(imageAt(shipped, 60), imageAt(full, 60));
+    const float foam = boxDifference(imageAt(none, 60), imageAt(full, 60));
+    INFO("mean |luma shipped - full| in the box " << baked << "; the foam itself (full - no foam) " << foam);
+    CHECK(foam > 0.05f);
+    CHECK(baked < 0.1f * foam);
+}
+
 TEST_CASE("splash drops above flat water: drawn in the frame where they are, mirrored in the reflection target, none below the "
           "surface, and far drops keep a 1.5 px sprite",
           "[gl][render][splash]") {

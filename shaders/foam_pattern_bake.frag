@@ -1,0 +1,14 @@
+#version 450 core
+// Bakes the persistent foam's bubble pattern (common_detail.glsl, foamPattern) over its repeat
+// of FOAM_PATTERN_REPEAT foam tiles into an RGBA8 map, once: (du, dv) as 0.5 + 0.5·x, the
+// pattern, 1. The water shader then reads one lookup instead of three and a pow.
+#define FOAM_PATTERN_BAKE
+#include "common_detail.glsl"
+
+in vec2 v_ndc;
+out vec4 o_color;
+
+void main() {
+    vec3 p = foamPattern((v_ndc * 0.5 + 0.5) * FOAM_PATTERN_REPEAT);
+    o_color = vec4(p.xy * 0.5 + 0.5, p.z, 1.0);
+}
