@@ -6,6 +6,10 @@
 // size. A frame drawn smaller (render.resolution_scale < 1) is scaled up after this pass by a
 // bilinear blit, so here its pixels off the edges are sharpened first (after AMD's
 // contrast-adaptive sharpening, on luma) so the scaled-up frame does not look blurred.
+// Drawn twice (a software rasteriser runs every branch for every pixel, but skips blocks that
+// fail the depth test): FXAA_OFF_EDGES writes the pixels off the edges (about 8% of a sea's
+// pixels are on one) and marks them at depth 0, discarding the others; FXAA_ON_EDGES, drawn at
+// depth 1 with the test LEQUAL, walks the edges for the pixels left.
 in vec2 v_ndc;
 layout(binding = 0) uniform sampler2D u_source;  // rgb display-encoded colour, a its luma; linear filtered
 layout(location = 0) uniform vec2 u_texel;       // 1 / source size (uv per source pixel)
@@ -46,11 +50,13 @@ void main() {
     float m = lower.y, w = lower.x, s = lower.z, sw = lower.w, n = upper.x, ne = upper.y, e = upper.z;
     float brightest = max(max(max(n, s), max(e, w)), m);
     float range = brightest - min(min(min(n, s), min(e, w)), m);
-    if (range < max(EDGE_MIN, EDGE_RELATIVE * brightest)) {
-        // Off the edges: as drawn, sharpened when it is to be scaled up.
-        o_color = vec4(sharpen(textureLod(u_source, uv, 0.0).rgb, m, n, s, e, w), 1.0);
-        return;
-    }
+#ifdef FXAA_OFF_EDGES
+    if (range >= max(EDGE_MIN, EDGE_RELATIVE * brightest)) discard;
+    // Off the edges: as drawn, sharpened when it is to be scaled up.
+    o_color = vec4(sharpen(textureLod(u_source, uv, 0.0).rgb, m, n, s, e, w), 1.0);
+    gl_FragDepth = 0.0;
+    return;
+#endif
     float nw = textureLodOffset(u_source, centre, 0.0, ivec2(-1, 1)).a;
     float se = textureLodOffset(u_source, centre, 0.0, ivec2(1, -1)).a;
 

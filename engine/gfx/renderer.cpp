@@ -91,8 +91,9 @@ Renderer::Renderer(const RenderDef& def)
       m_skyProgram(loadProgram("sky", {"common_fullscreen.vert", "sky_background.frag"})),
       m_objectProgram(loadProgram("object_mesh", {"object_mesh.vert", "object_mesh.frag"})),
       m_objectWaterlineProgram(loadProgram("object_mesh_waterline", {"object_mesh_waterline.vert", "object_mesh.frag"})),
-      m_fxaaProgram(loadProgram("fxaa", {"common_fullscreen.vert", "post_fxaa.frag"})),
       m_upscaleProgram(loadProgram("upscale", {"common_fullscreen.vert", "post_upscale.frag"})),
+      m_fxaaPrograms{loadProgram("fxaa off the edges", {"common_fullscreen.vert", "post_fxaa.frag"}, "#define FXAA_OFF_EDGES\n"),
+                     loadProgram("fxaa on the edges", {"common_fullscreen.vert", "post_fxaa.frag"})},
       m_sphereMesh(makeSphereMesh(16)),
       m_boxMesh(makeBoxMesh()),
       m_emptyVao(createVertexArray("fullscreen triangle")),
@@ -242,9 +243,9 @@ void Renderer::resizeTargets(glm::ivec2 internal) {
     const bool offscreen = m_def.resolution_scale < 1.0f || m_antialias != Antialias::Off;
     if (!offscreen) m_internal = {};
     if (offscreen && m_internal.size != internal) m_internal = createRenderTarget("internal frame", internal, 1, GL_RGBA8);
-    const bool upscaled = m_antialias == Antialias::Fxaa && m_def.resolution_scale < 1.0f;
-    if (!upscaled) m_antialiased = {};
-    if (upscaled && m_antialiased.size != internal) m_antialiased = createRenderTarget("anti-aliased frame", internal, 1, GL_RGBA8);
+    const bool fxaa = m_antialias == Antialias::Fxaa;
+    if (!fxaa) m_antialiased = {};
+    if (fxaa && m_antialiased.size != internal) m_antialiased = createRenderTarget("anti-aliased frame", internal, 1, GL_RGBA8);
 }
 
 void Renderer::render(const CameraView& camera, const WaterView& water, const std::vector<ObjectDraw>& objects, double time,
@@ -471,18 +472,25 @@ void Renderer::postPass(glm::ivec2 size) {
     const glm::ivec2 internal = m_internal.size;
     const RenderTarget* last = &m_internal;
     if (m_antialias == Antialias::Fxaa) {
-        const bool upscaled = internal != size;
-        glBindFramebuffer(GL_FRAMEBUFFER, upscaled ? m_antialiased.framebuffer.id() : 0);
-        glViewport(0, 0, internal.x, internal.y);
-        glDisable(GL_DEPTH_TEST);
+        // Off the edges first, marked at depth 0; then the edges' walk only where depth is left
+        // at 1 (post_fxaa.frag): the rasteriser skips the blocks with no edge pixel.
+        clearTarget(m_antialiased);
+        glEnable(GL_DEPTH_TEST);
         glBindTextureUnit(FXAA_SOURCE_UNIT, m_internal.color.id());
-        glProgramUniform2f(m_fxaaProgram.id(), 0, 1.0f / float(internal.x), 1.0f / float(internal.y));
-        glProgramUniform1f(m_fxaaProgram.id(), 1, upscaled ? m_def.upscale_sharpness : 0.0f);
-        glUseProgram(m_fxaaProgram.id());
         glBindVertexArray(m_emptyVao.id());
-        glDrawArrays(GL_TRIANGLES, 0, 3);
+        for (const Program& program : m_fxaaPrograms) {
+            const bool offEdges = &program == &m_fxaaPrograms[0];
+            glDepthFunc(offEdges ? GL_ALWAYS : GL_LEQUAL);
+            glDepthMask(offEdges ? GL_TRUE : GL_FALSE);
+            glProgramUniform2f(program.id(), 0, 1.0f / float(internal.x), 1.0f / float(internal.y));
+            glProgramUniform1f(program.id(), 1, internal != size ? m_def.upscale_sharpness : 0.0f);
+            glUseProgram(program.id());
+            glDrawArrays(GL_TRIANGLES, 0, 3);
+        }
+        glDepthMask(GL_TRUE);
+        glDepthFunc(GL_LESS);
         glBindTextureUnit(FXAA_SOURCE_UNIT, 0);  // drawn into again next frame
-        last = upscaled ? &m_antialiased : nullptr;
+        last = &m_antialiased;
     }
     if (last && internal == size) {
         glBlitNamedFramebuffer(last->framebuffer.id(), 0, 0, 0, internal.x, internal.y, 0, 0, size.x, size.y,

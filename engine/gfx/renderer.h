@@ -160,7 +160,8 @@ private:
     void buildGrid(int resolution);
 
     RenderDef m_def;
-    Program m_skyBakeProgram, m_skyProgram, m_objectProgram, m_objectWaterlineProgram, m_fxaaProgram, m_upscaleProgram;
+    Program m_skyBakeProgram, m_skyProgram, m_objectProgram, m_objectWaterlineProgram, m_upscaleProgram;
+    Program m_fxaaPrograms[2];  // post_fxaa.frag off the edges, then on them
     Mesh m_sphereMesh, m_boxMesh;
     std::map<std::string, ModelMeshes> m_models;  // glTF meshes by file, loaded on first draw
     VertexArray m_emptyVao;
@@ -193,7 +194,7 @@ private:
     RenderTarget m_reflection, m_refraction;
     RenderTarget m_internal;      // the frame (RGBA8, display-encoded) when it is not drawn into the framebuffer directly
     RenderTarget m_multisampled;  // msaa4: the frame's 4 samples a pixel, resolved into m_internal
-    RenderTarget m_antialiased;   // fxaa below scale 1: the internal frame anti-aliased, then scaled up
+    RenderTarget m_antialiased;   // fxaa: the internal frame anti-aliased, then copied or scaled up
     RenderTarget m_rttMultisampled;  // msaa4: reflection, then refraction, resolved into each
     bool m_underwater = false;
     Antialias m_antialias = Antialias::Off;  // this frame's mode

@@ -9,6 +9,7 @@
 #include "support/test_image.h"
 #include "support/test_support.h"
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
@@ -144,6 +145,41 @@ TEST_CASE("a black box's slanted edges against the sky: blended pixels with fxaa
     CHECK(none <= outline / 50);
     CHECK(fxaa >= outline / 3);
     CHECK(msaa >= outline / 2);
+}
+
+TEST_CASE("fxaa at full size keeps every pixel off the edges as drawn and changes pixels on them", "[gl][render][antialias]") {
+    gfx::requestDebugOutput(true);
+    const glm::ivec2 size(320, 180);
+    // A sea with sun glitter under the sky, a dark box on the horizon: smooth areas and edges.
+    const gfx::CameraView camera = cameraAt({0.0f, 4.0f, 0.0f}, {0.0f, 2.0f, -30.0f}, size);
+    gfx::ObjectDraw box;
+    box.mesh = gfx::MeshKind::Box;
+    box.color = glm::vec3(0.05f);
+    box.model = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 3.0f, -30.0f)) *
+                glm::rotate(glm::mat4(1.0f), glm::radians(25.0f), glm::vec3(0, 0, 1)) * glm::scale(glm::mat4(1.0f), glm::vec3(4.0f, 4.0f, 0.2f));
+    gfx::WaterView water;
+    water.gravity = 9.81f;
+    water.gerstner = {glm::vec4(0.5f, 0.2f, 0.15f, 0.0f), glm::vec4(-0.3f, 0.7f, 0.08f, 1.0f)};
+    const Image off = renderFrame("fxaa_keep", size, withAntialias(gfx::Antialias::Off), camera, water, {box});
+    const Image fxaa = renderFrame("fxaa_keep", size, withAntialias(gfx::Antialias::Fxaa), camera, water, {box});
+    // post_fxaa.frag's test on the luma of a pixel's cross: contrast under
+    // max(0.0833, 0.166 · brightest) is off the edges. Pixels well under it (80 %, so the
+    // 8-bit luma here cannot put them on the other side) must come out as drawn.
+    int kept = 0, offEdges = 0, changedOnEdges = 0;
+    for (int y = 1; y < size.y - 1; ++y)
+        for (int x = 1; x < size.x - 1; ++x) {
+            const float c[5] = {luma(off, x, y), luma(off, x - 1, y), luma(off, x + 1, y), luma(off, x, y - 1), luma(off, x, y + 1)};
+            const float hi = *std::max_element(c, c + 5), lo = *std::min_element(c, c + 5);
+            const float threshold = std::max(0.0833f, 0.166f * hi);
+            const size_t i = size_t((y * size.x + x) * 3);
+            const bool same = std::equal(&off.rgb[i], &off.rgb[i] + 3, &fxaa.rgb[i]);
+            if (hi - lo < 0.8f * threshold) offEdges++, kept += same;
+            else if (hi - lo > 1.2f * threshold) changedOnEdges += !same;
+        }
+    INFO(kept << " of " << offEdges << " pixels off the edges kept; " << changedOnEdges << " on them changed");
+    REQUIRE(offEdges > size.x * size.y / 2);
+    CHECK(kept == offEdges);
+    CHECK(changedOnEdges > 50);
 }
 
 TEST_CASE("on long waves a hull's image in the water starts at its waterline in every column", "[gl][render][antialias]") {
