@@ -15,6 +15,7 @@
 #include "behaviours/fish.h"
 #include "world/input_script.h"
 #include "sim/objects.h"
+#include "view/sandbox_view.h"
 #include "world/sandbox.h"
 #include "world/script.h"
 
@@ -55,6 +56,9 @@ static void writeStats(const std::string& path, Sandbox& sandbox, const std::str
     j["frame"] = phaseStats(timer.frameSamples());
     double medianFrame = ecs::median(timer.frameSamples());
     j["fps"] = medianFrame > 0 ? 1000.0 / medianFrame : 0.0;
+    // Dynamic resolution (play): the internal scale it holds at the end.
+    if (const auto* dynamic = sandbox.world().resource<DynamicScale>(); dynamic && dynamic->control)
+        j["resolution_scale"] = dynamic->control->scale();
     for (int p = 0; p < ecs::PHASE_COUNT; ++p) {
         auto phase = ecs::Phase(p);
         j["phases"][ecs::phaseName(phase)] = phaseStats(timer.cpuSamples(phase));
