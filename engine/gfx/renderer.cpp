@@ -243,9 +243,9 @@ void Renderer::resizeTargets(glm::ivec2 internal) {
     const bool offscreen = m_def.resolution_scale < 1.0f || m_antialias != Antialias::Off;
     if (!offscreen) m_internal = {};
     if (offscreen && m_internal.size != internal) m_internal = createRenderTarget("internal frame", internal, 1, GL_RGBA8);
-    const bool fxaa = m_antialias == Antialias::Fxaa;
-    if (!fxaa) m_antialiased = {};
-    if (fxaa && m_antialiased.size != internal) m_antialiased = createRenderTarget("anti-aliased frame", internal, 1, GL_RGBA8);
+    const bool upscaled = m_antialias == Antialias::Fxaa && m_def.resolution_scale < 1.0f;
+    if (!upscaled) m_antialiased = {};
+    if (upscaled && m_antialiased.size != internal) m_antialiased = createRenderTarget("anti-aliased frame", internal, 1, GL_RGBA8);
 }
 
 void Renderer::render(const CameraView& camera, const WaterView& water, const std::vector<ObjectDraw>& objects, double time,
@@ -473,8 +473,14 @@ void Renderer::postPass(glm::ivec2 size) {
     const RenderTarget* last = &m_internal;
     if (m_antialias == Antialias::Fxaa) {
         // Off the edges first, marked at depth 0; then the edges' walk only where depth is left
-        // at 1 (post_fxaa.frag): the rasteriser skips the blocks with no edge pixel.
-        clearTarget(m_antialiased);
+        // at 1 (post_fxaa.frag): the rasteriser skips the blocks with no edge pixel. Each pixel
+        // is written once, into the framebuffer itself at full size (every platform's has depth).
+        const bool upscaled = internal != size;
+        const GLuint target = upscaled ? m_antialiased.framebuffer.id() : 0;
+        const float far = 1.0f;
+        glClearNamedFramebufferfv(target, GL_DEPTH, 0, &far);
+        glBindFramebuffer(GL_FRAMEBUFFER, target);
+        glViewport(0, 0, internal.x, internal.y);
         glEnable(GL_DEPTH_TEST);
         glBindTextureUnit(FXAA_SOURCE_UNIT, m_internal.color.id());
         glBindVertexArray(m_emptyVao.id());
@@ -483,14 +489,14 @@ void Renderer::postPass(glm::ivec2 size) {
             glDepthFunc(offEdges ? GL_ALWAYS : GL_LEQUAL);
             glDepthMask(offEdges ? GL_TRUE : GL_FALSE);
             glProgramUniform2f(program.id(), 0, 1.0f / float(internal.x), 1.0f / float(internal.y));
-            glProgramUniform1f(program.id(), 1, internal != size ? m_def.upscale_sharpness : 0.0f);
+            glProgramUniform1f(program.id(), 1, upscaled ? m_def.upscale_sharpness : 0.0f);
             glUseProgram(program.id());
             glDrawArrays(GL_TRIANGLES, 0, 3);
         }
         glDepthMask(GL_TRUE);
         glDepthFunc(GL_LESS);
         glBindTextureUnit(FXAA_SOURCE_UNIT, 0);  // drawn into again next frame
-        last = &m_antialiased;
+        last = upscaled ? &m_antialiased : nullptr;
     }
     if (last && internal == size) {
         glBlitNamedFramebuffer(last->framebuffer.id(), 0, 0, 0, internal.x, internal.y, 0, 0, size.x, size.y,
