@@ -4,12 +4,12 @@
 // along it, and blend each pixel toward its neighbour across the edge by how far it sits
 // from the nearer end; a sub-pixel term softens single-pixel features. Drawn at the source's
 // size. A frame drawn smaller (render.resolution_scale < 1) is scaled up after this pass by a
-// bilinear blit, so here its pixels off the edges are sharpened first (after AMD's
+// bilinear draw, so here its pixels off the edges are sharpened first (after AMD's
 // contrast-adaptive sharpening, on luma) so the scaled-up frame does not look blurred.
 // Drawn twice (a software rasteriser runs every branch for every pixel, but skips blocks that
 // fail the depth test): FXAA_OFF_EDGES writes the pixels off the edges (about 8% of a sea's
-// pixels are on one) and marks them at depth 0, discarding the others; FXAA_ON_EDGES, drawn at
-// depth 1 with the test LEQUAL, walks the edges for the pixels left.
+// pixels are on one) and marks them at depth 0, discarding the others; compiled without it,
+// drawn at depth 1 with the test LEQUAL, it walks the edges for the pixels left.
 in vec2 v_ndc;
 layout(binding = 0) uniform sampler2D u_source;  // rgb display-encoded colour, a its luma; linear filtered
 layout(location = 0) uniform vec2 u_texel;       // 1 / source size (uv per source pixel)

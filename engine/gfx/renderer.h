@@ -184,7 +184,7 @@ private:
     Texture m_detailMap;      // DU/DV (rg, as 0.5 + 0.5·x) and foam streaks (b), RGBA8, tileable, mipmapped
     Texture m_foamPattern;    // the persistent foam's bubble pattern over its repeat, baked from the detail map
     void bakeDetailMaps();    // out: m_detailMap, m_foamPattern
-    Texture m_foamTexture;    // R16F foam coverage of the foam map, re-uploaded every frame
+    Texture m_foamTexture;    // R32F foam coverage of the foam map, re-uploaded every frame
     int m_foamCells = 0;
     Program m_splashProgram, m_splashMirrorProgram;
     VertexArray m_splashVao;
