@@ -1,4 +1,4 @@
-// The water pass's shading against its reference and the far field (docs/benchmarks.md, the
+// The water pass's shading against its reference and the far field (docs/frame.md, the
 // water pass): the shipped shading draws the frame the full-quality program draws (every term
 // per pixel) within a stated mean difference; the far field of the cannon scene shows no
 // regular pattern (no peak in the spectra of a band of rows under the horizon); a frame scaled
