@@ -133,6 +133,9 @@ Renderer::Renderer(const RenderDef& def)
     glGetIntegerv(GL_MAX_COLOR_TEXTURE_SAMPLES, &colorSamples);
     glGetIntegerv(GL_MAX_DEPTH_TEXTURE_SAMPLES, &depthSamples);
     m_msaaSupported = std::min(colorSamples, depthSamples) >= MSAA_SAMPLES;
+    GLint depthBits = 0;
+    glGetNamedFramebufferAttachmentParameteriv(0, GL_DEPTH, GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE, &depthBits);
+    m_framebufferDepth = depthBits > 0;
 }
 
 // A (res+1)² vertex grid of (u, v) ∈ [0, 1]², triangles as an index list.
@@ -243,9 +246,9 @@ void Renderer::resizeTargets(glm::ivec2 internal) {
     const bool offscreen = m_def.resolution_scale < 1.0f || m_antialias != Antialias::Off;
     if (!offscreen) m_internal = {};
     if (offscreen && m_internal.size != internal) m_internal = createRenderTarget("internal frame", internal, 1, GL_RGBA8);
-    const bool upscaled = m_antialias == Antialias::Fxaa && m_def.resolution_scale < 1.0f;
-    if (!upscaled) m_antialiased = {};
-    if (upscaled && m_antialiased.size != internal) m_antialiased = createRenderTarget("anti-aliased frame", internal, 1, GL_RGBA8);
+    const bool antialiased = m_antialias == Antialias::Fxaa && (m_def.resolution_scale < 1.0f || !m_framebufferDepth);
+    if (!antialiased) m_antialiased = {};
+    if (antialiased && m_antialiased.size != internal) m_antialiased = createRenderTarget("anti-aliased frame", internal, 1, GL_RGBA8);
 }
 
 void Renderer::render(const CameraView& camera, const WaterView& water, const std::vector<ObjectDraw>& objects, double time,
@@ -474,9 +477,10 @@ void Renderer::postPass(glm::ivec2 size) {
     if (m_antialias == Antialias::Fxaa) {
         // Off the edges first, marked at depth 0; then the edges' walk only where depth is left
         // at 1 (post_fxaa.frag): the rasteriser skips the blocks with no edge pixel. Each pixel
-        // is written once, into the framebuffer itself at full size (every platform's has depth).
+        // is written once, into the framebuffer itself at full size when it has a depth buffer.
         const bool upscaled = internal != size;
-        const GLuint target = upscaled ? m_antialiased.framebuffer.id() : 0;
+        const bool intoFramebuffer = !upscaled && m_framebufferDepth;
+        const GLuint target = intoFramebuffer ? 0 : m_antialiased.framebuffer.id();
         const float far = 1.0f;
         glClearNamedFramebufferfv(target, GL_DEPTH, 0, &far);
         glBindFramebuffer(GL_FRAMEBUFFER, target);
@@ -496,7 +500,7 @@ void Renderer::postPass(glm::ivec2 size) {
         glDepthMask(GL_TRUE);
         glDepthFunc(GL_LESS);
         glBindTextureUnit(FXAA_SOURCE_UNIT, 0);  // drawn into again next frame
-        last = upscaled ? &m_antialiased : nullptr;
+        last = intoFramebuffer ? nullptr : &m_antialiased;
     }
     if (last && internal == size) {
         glBlitNamedFramebuffer(last->framebuffer.id(), 0, 0, 0, internal.x, internal.y, 0, 0, size.x, size.y,

@@ -194,11 +194,12 @@ private:
     RenderTarget m_reflection, m_refraction;
     RenderTarget m_internal;      // the frame (RGBA8, display-encoded) when it is not drawn into the framebuffer directly
     RenderTarget m_multisampled;  // msaa4: the frame's 4 samples a pixel, resolved into m_internal
-    RenderTarget m_antialiased;   // fxaa below scale 1: the internal frame anti-aliased, then scaled up
+    RenderTarget m_antialiased;   // fxaa below scale 1 (or a framebuffer without depth): the frame anti-aliased, then scaled up (or copied)
     RenderTarget m_rttMultisampled;  // msaa4: reflection, then refraction, resolved into each
     bool m_underwater = false;
     Antialias m_antialias = Antialias::Off;  // this frame's mode
     bool m_msaaSupported = false;           // the driver multisamples float colour and depth textures 4×
+    bool m_framebufferDepth = false;        // the default framebuffer has a depth buffer (FXAA draws into it at full size)
     std::vector<GpuTimer> m_passTimers;
 };
 

@@ -34,6 +34,7 @@ public:
         glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
         glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
         glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, gfx::debugOutputRequested() ? GLFW_TRUE : GLFW_FALSE);
+        glfwWindowHint(GLFW_DEPTH_BITS, 24);  // the renderer's FXAA marks finished pixels in it
         m_window = glfwCreateWindow(def.width, def.height, title.c_str(), nullptr, nullptr);
         if (!m_window) {
             glfwTerminate();
