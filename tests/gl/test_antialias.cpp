@@ -55,6 +55,17 @@ Image renderFrame(const char* name, glm::ivec2 size, const gfx::RenderDef& def, 
     return img;
 }
 
+// A thin box of grey `shade` centred at `at`, `side` m across and 0.2 m thick, facing the eye
+// and turned 25° about the view axis: its four edges are slanted staircases.
+gfx::ObjectDraw slantedBox(glm::vec3 at, float side, float shade) {
+    gfx::ObjectDraw box;
+    box.mesh = gfx::MeshKind::Box;
+    box.color = glm::vec3(shade);
+    box.model = glm::translate(glm::mat4(1.0f), at) * glm::rotate(glm::mat4(1.0f), glm::radians(25.0f), glm::vec3(0, 0, 1)) *
+                glm::scale(glm::mat4(1.0f), glm::vec3(side, side, 0.2f));
+    return box;
+}
+
 gfx::RenderDef withAntialias(gfx::Antialias mode) {
     gfx::RenderDef def;
     def.antialias = mode;
@@ -97,11 +108,7 @@ TEST_CASE("a black box's slanted edges against the sky: blended pixels with fxaa
     // its four edges are slanted staircases, the sky (bright, smooth) on one side, the box
     // (dark, flat) on the other.
     const gfx::CameraView camera = cameraAt({0.0f, 5.0f, 0.0f}, {0.0f, 15.0f, -30.0f}, size);
-    gfx::ObjectDraw box;
-    box.mesh = gfx::MeshKind::Box;
-    box.color = glm::vec3(0.0f);
-    box.model = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 15.0f, -30.0f)) *
-                glm::rotate(glm::mat4(1.0f), glm::radians(25.0f), glm::vec3(0, 0, 1)) * glm::scale(glm::mat4(1.0f), glm::vec3(5.0f, 5.0f, 0.2f));
+    const gfx::ObjectDraw box = slantedBox({0.0f, 15.0f, -30.0f}, 5.0f, 0.0f);
 
     // From the frame without AA: the box's pixels, its outline (box pixels with a sky
     // neighbour), its brightest pixel and the dimmest sky around it.
@@ -152,11 +159,7 @@ TEST_CASE("fxaa at full size keeps every pixel off the edges as drawn and change
     const glm::ivec2 size(320, 180);
     // A sea with sun glitter under the sky, a dark box on the horizon: smooth areas and edges.
     const gfx::CameraView camera = cameraAt({0.0f, 4.0f, 0.0f}, {0.0f, 2.0f, -30.0f}, size);
-    gfx::ObjectDraw box;
-    box.mesh = gfx::MeshKind::Box;
-    box.color = glm::vec3(0.05f);
-    box.model = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 3.0f, -30.0f)) *
-                glm::rotate(glm::mat4(1.0f), glm::radians(25.0f), glm::vec3(0, 0, 1)) * glm::scale(glm::mat4(1.0f), glm::vec3(4.0f, 4.0f, 0.2f));
+    const gfx::ObjectDraw box = slantedBox({0.0f, 3.0f, -30.0f}, 4.0f, 0.05f);
     gfx::WaterView water;
     water.gravity = 9.81f;
     water.gerstner = {glm::vec4(0.5f, 0.2f, 0.15f, 0.0f), glm::vec4(-0.3f, 0.7f, 0.08f, 1.0f)};
