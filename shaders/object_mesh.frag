@@ -26,4 +26,8 @@ void main() {
         color = mix(color, haze, 1.0 - exp(-dist * 0.00025));
     }
     o_color = finalColor(color);
+    // In the refraction target alpha is 1 / the eye depth (1/m; cleared to 0: nothing). Filtered,
+    // it blends as window depth does (an affine function of it), and the water pass reads what
+    // lies below and how deep it lies in one lookup.
+    if (u_viewport.z > 2.5) o_color.a = gl_FragCoord.w;
 }

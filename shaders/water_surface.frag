@@ -25,10 +25,9 @@ in vec2 v_gerstnerSlope;
 in vec3 v_haze;
 layout(binding = 3) uniform samplerCube u_sky;
 layout(binding = 4) uniform sampler2D u_reflection;       // rgb linear radiance, a coverage
-layout(binding = 5) uniform sampler2D u_refraction;       // rgb linear radiance
-layout(binding = 6) uniform sampler2D u_refractionDepth;  // window depth of what lies below
-layout(binding = 8) uniform sampler2D u_reflectionDepth;  // window depth of the mirrored objects
-layout(binding = 11) uniform sampler2D u_foamPattern;     // foamPattern() baked over its repeat, RGBA8 (du, dv as 0.5 + 0.5·x)
+layout(binding = 5) uniform sampler2D u_refraction;       // rgb linear radiance, a 1 / eye depth (1/m) of what lies below (0: nothing)
+layout(binding = 7) uniform sampler2D u_reflectionDepth;  // window depth of the mirrored objects
+layout(binding = 10) uniform sampler2D u_foamPattern;     // foamPattern() baked over its repeat, RGBA8 (du, dv as 0.5 + 0.5·x)
 out vec4 o_color;
 
 const float DETAIL_TILE = 24.0;            // m per repeat of the detail map
@@ -111,16 +110,16 @@ void main() {
     }
     vec3 refraction = body;
     if (WATER_REFRACTIONS) {
-        float behind = eyeDepth(texture(u_refractionDepth, screen).r) - surfaceDepth;
+        vec4 below = texture(u_refraction, screen);
+        float behind = 1.0 / max(below.a, 1e-6) - surfaceDepth;
         vec2 uv = clamp(screen + offset * smoothstep(0.0, DISTORTION_RAMP_M, behind), 0.0, 1.0);
-        float depth = eyeDepth(texture(u_refractionDepth, uv).r) - surfaceDepth;
-        if (depth < 0.0) {
-            // The offset lookup found an object in front of the surface (the part of a hull
-            // above the waterline, kept by the plane's overlap): what lies straight behind shows.
-            uv = screen;
-            depth = behind;
-        }
-        refraction = mix(body, texture(u_refraction, uv).rgb, exp(-max(depth, 0.0) / u_depthParams.z));
+        vec4 shifted = texture(u_refraction, uv);
+        float depth = 1.0 / max(shifted.a, 1e-6) - surfaceDepth;
+        // Unless the offset lookup found an object in front of the surface (the part of a hull
+        // above the waterline, kept by the plane's overlap): then what lies straight behind shows.
+        if (depth < 0.0) depth = behind;
+        else below = shifted;
+        refraction = mix(body, below.rgb, exp(-max(depth, 0.0) / u_depthParams.z));
     }
 
     float F = fresnel(cosV, exact);

@@ -28,8 +28,7 @@ constexpr GLuint FRAME_UBO_BINDING = 0;
 constexpr GLuint WATER_UBO_BINDING = 1;
 // Texture units of the water and sky passes (shaders/common_water.glsl, water_surface.frag).
 enum TextureUnit : GLuint { DISPLACEMENT_UNIT, SLOPES_UNIT, RIPPLES_UNIT, SKY_UNIT, REFLECTION_UNIT, REFRACTION_UNIT,
-                            REFRACTION_DEPTH_UNIT, DETAIL_UNIT, REFLECTION_DEPTH_UNIT, FOAM_UNIT, RIPPLE_SLOPES_UNIT,
-                            FOAM_PATTERN_UNIT };
+                            DETAIL_UNIT, REFLECTION_DEPTH_UNIT, FOAM_UNIT, RIPPLE_SLOPES_UNIT, FOAM_PATTERN_UNIT };
 // The projected grid reaches this fraction of the far clip distance; past it the grid is a
 // wall up to the eye's level, which the camera sees exactly on the horizon line.
 constexpr float GRID_REACH = 0.9f;
@@ -222,7 +221,7 @@ void Renderer::updateFrameUniforms(const CameraView& camera, double time, glm::i
     glNamedBufferSubData(m_frameUniforms[REFLECTION_VIEW].id(), 0, sizeof u, &u);
 
     u.cameraPositionTime = glm::vec4(camera.position, float(time));
-    u.viewport = glm::vec4(glm::vec2(m_refraction.size), 1.0f, underwater);
+    u.viewport = glm::vec4(glm::vec2(m_refraction.size), 3.0f, underwater);
     u.surfaceClip = glm::vec4(-1.0f, REFRACTION_OVERLAP, 0.0f, 0.0f);
     glNamedBufferSubData(m_frameUniforms[REFRACTION_VIEW].id(), 0, sizeof u, &u);
 }
@@ -612,7 +611,6 @@ void Renderer::waterPass(const CameraView&) {
     glBindTextureUnit(SKY_UNIT, m_skyCube.id());
     glBindTextureUnit(REFLECTION_UNIT, m_reflection.color.id());
     glBindTextureUnit(REFRACTION_UNIT, m_refraction.color.id());
-    glBindTextureUnit(REFRACTION_DEPTH_UNIT, m_refraction.depth.id());
     glBindTextureUnit(DETAIL_UNIT, m_detailMap.id());
     glBindTextureUnit(FOAM_PATTERN_UNIT, m_foamPattern.id());
     glBindTextureUnit(REFLECTION_DEPTH_UNIT, m_reflection.depth.id());
@@ -626,7 +624,7 @@ void Renderer::waterPass(const CameraView&) {
     glBindVertexArray(m_gridVao.id());
     glDrawElements(GL_TRIANGLES, m_gridIndexCount, GL_UNSIGNED_INT, nullptr);
     // The targets are drawn into again next frame: never leave them bound for sampling.
-    for (GLuint unit : {REFLECTION_UNIT, REFRACTION_UNIT, REFRACTION_DEPTH_UNIT, REFLECTION_DEPTH_UNIT}) glBindTextureUnit(unit, 0);
+    for (GLuint unit : {REFLECTION_UNIT, REFRACTION_UNIT, REFLECTION_DEPTH_UNIT}) glBindTextureUnit(unit, 0);
     m_passTimers[WATER_PASS].end();
     glPopDebugGroup();
 }

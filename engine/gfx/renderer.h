@@ -79,7 +79,7 @@ struct FrameUniforms {
     glm::vec4 cameraPositionTime;   ///< xyz eye (m), w simulated time (s)
     glm::vec4 sunDirectionFresnel;  ///< xyz toward the sun (unit), w 0 = Schlick, 1 = exact
     glm::vec4 waterColorExposure;   ///< rgb deep water colour, w exposure
-    glm::vec4 viewport;             ///< xy framebuffer size (px), z output: 0 display colour, 1 linear radiance (targets), 2 display colour + luma in alpha (FXAA); w 1 = eye under water
+    glm::vec4 viewport;             ///< xy framebuffer size (px), z output: 0 display colour, 1 linear radiance + coverage (reflection), 2 display colour + luma in alpha (FXAA), 3 linear radiance + 1 / eye depth (refraction); w 1 = eye under water
     glm::vec4 surfaceClip;          ///< side s (±1; 0 keeps all), overlap m (m), 1 = mirror, 0: objects keep s·(y − surface height) + m ≥ 0 and, mirrored, y → 2·surface − y
     glm::vec4 depthParams;          ///< near, far (m), water clarity (m), sky mip count
     glm::vec4 shading;              ///< DU/DV strength, normal distortion, glitter, glitter shininess

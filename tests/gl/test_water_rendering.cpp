@@ -54,16 +54,18 @@ std::vector<glm::vec4> readTexture(const gfx::Texture& texture, glm::ivec2 size)
     return texels;
 }
 
-// Centroid (px, bottom-up) and count of the texels an object covered (alpha > 0.5).
+// Centroid (px, bottom-up) and count of the texels an object covered: alpha over `threshold`
+// (the reflection target's alpha is coverage; the refraction target's 1 / eye depth, 0 where
+// nothing was drawn).
 struct Coverage {
     glm::vec2 centroid{0.0f};
     int count = 0;
 };
-Coverage coverage(const std::vector<glm::vec4>& texels, glm::ivec2 size) {
+Coverage coverage(const std::vector<glm::vec4>& texels, glm::ivec2 size, float threshold) {
     Coverage c;
     for (int y = 0; y < size.y; ++y)
         for (int x = 0; x < size.x; ++x)
-            if (texels[size_t(y * size.x + x)].w > 0.5f) {
+            if (texels[size_t(y * size.x + x)].w > threshold) {
                 c.centroid += glm::vec2(float(x) + 0.5f, float(y) + 0.5f);
                 ++c.count;
             }
@@ -177,8 +179,8 @@ TEST_CASE("clip planes: above the water only in the reflection, below only in th
         sphere.model = glm::scale(glm::translate(glm::mat4(1.0f), centre), glm::vec3(1.5f));
         sphere.color = glm::vec3(0.9f, 0.1f, 0.1f);
         renderer.render(camera, gfx::WaterView{}, {sphere}, 0.0, size);
-        return std::pair{coverage(readTexture(renderer.reflectionTarget().color, targetSize), targetSize),
-                         coverage(readTexture(renderer.refractionTarget().color, targetSize), targetSize)};
+        return std::pair{coverage(readTexture(renderer.reflectionTarget().color, targetSize), targetSize, 0.5f),
+                         coverage(readTexture(renderer.refractionTarget().color, targetSize), targetSize, 0.0f)};
     };
 
     const glm::vec3 above(2.0f, 3.0f, -30.0f);
@@ -253,8 +255,8 @@ TEST_CASE("a small object across the surface is cut at the surface's tangent pla
         sphere.waterSlope = glm::vec2(slope, 0.0f);
         renderer.render(camera, gfx::WaterView{}, {sphere}, 0.0, size);
         const float centre = 0.5f * float(targetSize.x);
-        return std::pair{coverage(readTexture(renderer.refractionTarget().color, targetSize), targetSize).centroid.x - centre,
-                         coverage(readTexture(renderer.reflectionTarget().color, targetSize), targetSize).centroid.x - centre};
+        return std::pair{coverage(readTexture(renderer.refractionTarget().color, targetSize), targetSize, 0.0f).centroid.x - centre,
+                         coverage(readTexture(renderer.reflectionTarget().color, targetSize), targetSize, 0.5f).centroid.x - centre};
     };
     const auto [level, levelMirror] = centroidShifts(0.0f);
     const auto [rising, risingMirror] = centroidShifts(0.8f);
