@@ -12,7 +12,7 @@
 // (WATER_UNDERWATER) and the Fresnel law (WATER_EXACT_FRESNEL) are constants here. With
 // WATER_FULL_QUALITY ([render] water_full_quality): every term per pixel, the reference the
 // shipped shading is tested against (the ripple slope from four height lookups, the haze from
-// the sky per pixel instead of per vertex).
+// the sky and the cascades' weights per pixel instead of per vertex).
 #include "common_frame.glsl"
 #include "common_sky.glsl"
 #include "common_fresnel.glsl"
@@ -23,6 +23,7 @@ in vec3 v_world;
 in vec2 v_rest;
 in vec2 v_gerstnerSlope;
 in vec3 v_haze;
+in vec4 v_cascadeWeight;
 layout(binding = 3) uniform samplerCube u_sky;
 layout(binding = 4) uniform sampler2D u_reflection;       // rgb linear radiance, a coverage
 layout(binding = 5) uniform sampler2D u_refraction;       // rgb linear radiance, a 1 / eye depth (1/m) of what lies below (0: nothing)
@@ -59,7 +60,11 @@ void main() {
         vec3 uv = cascadeCoord(v_rest, c);
         // (dh/dx, dh/dz, J), faded out with distance as the vertex shader fades the displacement
         vec3 s = texture(u_slopes, uv).xyz;
+#ifdef WATER_FULL_QUALITY
         float weight = cascadeWeight(v_rest, c);
+#else
+        float weight = v_cascadeWeight[c];
+#endif
         slope += weight * s.xy;
         jacobian = min(jacobian, mix(1.0, s.z, weight));
     }

@@ -10,6 +10,7 @@ out vec3 v_world;   // displaced surface point (m)
 out vec2 v_rest;    // rest point on the mean plane (m)
 out vec2 v_gerstnerSlope;  // Gerstner slope per vertex: long waves are smooth across a cell
 out vec3 v_haze;           // the sky at the horizon behind the point (linear radiance): it changes only with the azimuth
+out vec4 v_cascadeWeight;  // each cascade's weight (cascadeWeight): it changes only with the distance
 layout(binding = 3) uniform samplerCube u_sky;
 
 void main() {
@@ -30,9 +31,11 @@ void main() {
     vec3 offset;
     gerstner(rest, t, u_farFade.x > 0.5 ? spacing : 0.0, offset, v_gerstnerSlope);
     vec3 pos = vec3(rest.x, 0.0, rest.y) + offset;
+    v_cascadeWeight = vec4(0.0);
     for (int c = 0; c < WATER_CASCADES; ++c) {
         float lod = log2(max(spacing * u_gridParams.w / u_cascadeSize[c], 1.0));
-        vec4 d = cascadeWeight(rest, c) * textureLod(u_displacement, cascadeCoord(rest, c), lod);
+        v_cascadeWeight[c] = cascadeWeight(rest, c);
+        vec4 d = v_cascadeWeight[c] * textureLod(u_displacement, cascadeCoord(rest, c), lod);
         pos += vec3(u_waterParams.x * d.x, d.y, u_waterParams.x * d.z);
     }
     pos.y += rippleHeight(pos.xz);

@@ -6,7 +6,7 @@
 
 namespace ob::gfx {
 
-enum class GlKind { Buffer, Texture, Framebuffer, VertexArray, Program, Query, Shader };
+enum class GlKind { Buffer, Texture, Sampler, Framebuffer, VertexArray, Program, Query, Shader };
 
 /// Move-only owner of one GL object of kind K; deletes it on destruction.
 template <GlKind K>
@@ -32,6 +32,7 @@ public:
         if (!m_id) return;
         if constexpr (K == GlKind::Buffer) glDeleteBuffers(1, &m_id);
         else if constexpr (K == GlKind::Texture) glDeleteTextures(1, &m_id);
+        else if constexpr (K == GlKind::Sampler) glDeleteSamplers(1, &m_id);
         else if constexpr (K == GlKind::Framebuffer) glDeleteFramebuffers(1, &m_id);
         else if constexpr (K == GlKind::VertexArray) glDeleteVertexArrays(1, &m_id);
         else if constexpr (K == GlKind::Program) glDeleteProgram(m_id);
@@ -46,6 +47,7 @@ private:
 
 using Buffer = Handle<GlKind::Buffer>;
 using Texture = Handle<GlKind::Texture>;
+using Sampler = Handle<GlKind::Sampler>;
 using Framebuffer = Handle<GlKind::Framebuffer>;
 using VertexArray = Handle<GlKind::VertexArray>;
 using Program = Handle<GlKind::Program>;

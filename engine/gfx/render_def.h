@@ -37,7 +37,7 @@ struct RenderDef {
     float resolution_scale = 1.0f;                  ///< internal render size / framebuffer size, [0.25, 1]; below 1 the frame is scaled up (bilinear)
     float target_fps = 30.0f;                       ///< dynamic resolution: the internal scale follows the frame time to hold this rate (play; run only when set on the command line), [0, 1000]; 0 = off (resolution_scale as set)
     Antialias antialias = Antialias::Auto;          ///< edge smoothing: "off", "fxaa" (one post pass), "msaa4" (4 samples a pixel), "auto" (msaa4 on a GPU, fxaa on a software rasteriser)
-    int grid_resolution = 0;                        ///< projected grid cells per side, [16, 2048]; 0 = auto (one per 3 px of internal height on a GPU, per 6 px on a software rasteriser, within [32, 512])
+    int grid_resolution = 0;                        ///< projected grid cells per side, [16, 2048]; 0 = auto (one per 3 px of internal height on a GPU, per 12 px on a software rasteriser, within [32, 512])
     float upscale_sharpness = 0.75f;                ///< sharpening of the frame scaled up from resolution_scale < 1 (fxaa), [0, 1]; 0 = plain bilinear
     bool far_fade = true;                           ///< far field without regular patterns: FFT cascades fade out by tile_fade tiles, Gerstner waves where the grid is too sparse to sample them
     float tile_fade = 6.0f;                         ///< FFT cascade c is gone past this many of its tiles from the eye (fading from a third of it), [1, 1000]
@@ -63,7 +63,7 @@ template <class V> void describe(V& v, RenderDef& d) {
     v.field("resolution_scale", d.resolution_scale, range(0.25, 1), "internal render size / framebuffer size (scaled up below 1)");
     v.field("target_fps", d.target_fps, range(0, 1000), "dynamic resolution holds this frame rate (play); 0 = off");
     v.field("antialias", d.antialias, "edge smoothing: off, fxaa (post pass), msaa4 (4 samples), auto (msaa4 on a GPU, fxaa in software)");
-    v.field("grid_resolution", d.grid_resolution, range(0, 2048), "projected grid cells per side; 0 = auto (internal height / 3 on a GPU, / 6 in software)");
+    v.field("grid_resolution", d.grid_resolution, range(0, 2048), "projected grid cells per side; 0 = auto (internal height / 3 on a GPU, / 12 in software)");
     v.field("upscale_sharpness", d.upscale_sharpness, range(0, 1), "sharpening of a frame scaled up from resolution_scale < 1 (fxaa); 0 = none");
     v.field("far_fade", d.far_fade, "FFT cascades fade out with distance, Gerstner waves where the grid cannot sample them");
     v.field("tile_fade", d.tile_fade, range(1, 1000), "FFT cascades fade out by this many of their tiles from the eye (far_fade)");

@@ -124,6 +124,14 @@ Renderer::Renderer(const RenderDef& def)
     m_skyBakeFramebuffer = Framebuffer(id);
 
     bakeDetailMaps();
+    GLuint sampler;
+    glCreateSamplers(1, &sampler);
+    glObjectLabel(GL_SAMPLER, sampler, -1, "nearest mip, repeated");
+    glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_NEAREST);
+    glSamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glSamplerParameteri(sampler, GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glSamplerParameteri(sampler, GL_TEXTURE_WRAP_T, GL_REPEAT);
+    m_nearestMipSampler = Sampler(sampler);
 
     for (const char* name : PASS_NAMES) m_passTimers.emplace_back(name);
     static_assert(std::size(PASS_NAMES) == PASS_COUNT);
@@ -587,10 +595,10 @@ void Renderer::uploadWaterUniforms(const CameraView& camera, const WaterView& wa
 // Before the object passes: they clip against (and mirror about) the surface these describe.
 void Renderer::prepareWater(const CameraView& camera, const WaterView& water, int internalHeight) {
     m_grid = projectedGridCorners(camera.projection * camera.view, camera.position, displacementBounds(water));
-    // Software rasterisers shade vertices on one thread: a coarser grid there.
-    // Auto: a grid row per 3 px of internal height on a GPU, per 6 px on a software rasteriser
-    // (which shades vertices on one thread), within [32, 512].
-    const int autoCells = std::clamp(internalHeight / (isSoftwareRenderer() ? 6 : 3), 32, 512);
+    // Auto: a grid row per 3 px of internal height on a GPU, per 12 px on a software rasteriser,
+    // within [32, 512]. A software rasteriser shades vertices on one thread, and it shades a 4×4
+    // block of pixels once for every triangle that touches it (docs/frame.md).
+    const int autoCells = std::clamp(internalHeight / (isSoftwareRenderer() ? 12 : 3), 32, 512);
     int resolution = std::max(m_def.grid_resolution > 0 ? m_def.grid_resolution : autoCells, 16);
     if (m_gridResolution != resolution) buildGrid(resolution);
     uploadWaterUniforms(camera, water, m_grid);
@@ -614,6 +622,10 @@ void Renderer::waterPass(const CameraView&) {
     glBindTextureUnit(DETAIL_UNIT, m_detailMap.id());
     glBindTextureUnit(FOAM_PATTERN_UNIT, m_foamPattern.id());
     glBindTextureUnit(REFLECTION_DEPTH_UNIT, m_reflection.depth.id());
+    // A software rasteriser filters the ocean's slopes and the foam pattern from their nearest
+    // mip only: bilinear, not trilinear (full quality keeps trilinear).
+    const GLuint mipSampler = isSoftwareRenderer() && !m_def.water_full_quality ? m_nearestMipSampler.id() : 0;
+    for (GLuint unit : {SLOPES_UNIT, DETAIL_UNIT, FOAM_PATTERN_UNIT}) glBindSampler(unit, mipSampler);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     const std::string defines = m_waterVariant.defines();
@@ -625,6 +637,7 @@ void Renderer::waterPass(const CameraView&) {
     glDrawElements(GL_TRIANGLES, m_gridIndexCount, GL_UNSIGNED_INT, nullptr);
     // The targets are drawn into again next frame: never leave them bound for sampling.
     for (GLuint unit : {REFLECTION_UNIT, REFRACTION_UNIT, REFLECTION_DEPTH_UNIT}) glBindTextureUnit(unit, 0);
+    for (GLuint unit : {SLOPES_UNIT, DETAIL_UNIT, FOAM_PATTERN_UNIT}) glBindSampler(unit, 0);
     m_passTimers[WATER_PASS].end();
     glPopDebugGroup();
 }
