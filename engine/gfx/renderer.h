@@ -1,7 +1,7 @@
 // The renderer: a short list of passes (Renderer::render runs them in this order).
 //   sky bake   → the analytic daylight sky into a cube map, when the sun moves
 //   reflection → objects above the water surface, mirrored about it (per vertex) → colour + depth target
-//   refraction → objects below the water surface from the camera → colour + depth target
+//   refraction → objects below the water surface from the camera → colour target (1 / eye depth in alpha)
 //   opaque     → objects from the camera into the framebuffer
 //   water      → the composite surface on a projected grid, shaded from the targets and sky
 //   sky        → the cube map (or underwater fog) where nothing else was drawn
@@ -130,7 +130,7 @@ private:
 
     void skyBakePass();  // in: sun direction; out: m_skyCube (linear radiance, mipmapped)
     void reflectionPass(const std::vector<ObjectDraw>& objects);  // in: mirrored view, objects; out: m_reflection colour + depth
-    void refractionPass(const std::vector<ObjectDraw>& objects);  // in: camera view, objects; out: m_refraction colour + depth
+    void refractionPass(const std::vector<ObjectDraw>& objects);  // in: camera view, objects; out: m_refraction colour, 1 / eye depth in alpha
     void opaquePass(const std::vector<ObjectDraw>& objects);      // in: camera view, objects; out: framebuffer colour, depth
     void prepareWater(const CameraView& camera, const WaterView& water, int internalHeight);  // out: grid, water uniforms, layer textures bound
     void waterPass(const CameraView& camera);  // in: water layers, targets, sky; out: framebuffer
