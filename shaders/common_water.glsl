@@ -25,7 +25,7 @@ layout(binding = 0) uniform sampler2DArray u_displacement;  // layer c: (Dx, h, 
 layout(binding = 1) uniform sampler2DArray u_slopes;        // layer c: (dh/dx, dh/dz, J, 0)
 layout(binding = 2) uniform sampler2D u_ripples;            // ripple heights Vh(t) (m), 0 outside
 layout(binding = 8) uniform sampler2D u_foamMap;            // persistent foam coverage [0, 1], 0 outside
-layout(binding = 9) uniform sampler2D u_rippleSlopes;      // ripple (dh/dx, dh/dz) per cell, one cell of margin round the patch
+layout(binding = 9) uniform sampler2D u_rippleSlopes;       // ripple (dh/dx, dh/dz) per cell, one cell of margin round the patch
 
 // Ripple height at world (x, z) (bilinear between cell centres; 0 outside the patch).
 float rippleHeight(vec2 world) {

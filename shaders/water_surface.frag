@@ -120,10 +120,10 @@ void main() {
         vec2 uv = clamp(screen + offset * smoothstep(0.0, DISTORTION_RAMP_M, behind), 0.0, 1.0);
         vec4 shifted = texture(u_refraction, uv);
         float depth = 1.0 / max(shifted.a, 1e-6) - surfaceDepth;
-        // Unless the offset lookup found an object in front of the surface (the part of a hull
-        // above the waterline, kept by the plane's overlap): then what lies straight behind shows.
-        if (depth < 0.0) depth = behind;
-        else below = shifted;
+        // What the offset lookup found, unless it is an object in front of the surface (the part
+        // of a hull above the waterline, kept by the plane's overlap): then what lies straight behind.
+        if (depth >= 0.0) below = shifted;
+        else depth = behind;
         refraction = mix(body, below.rgb, exp(-max(depth, 0.0) / u_depthParams.z));
     }
 

@@ -622,8 +622,8 @@ void Renderer::waterPass(const CameraView&) {
     glBindTextureUnit(DETAIL_UNIT, m_detailMap.id());
     glBindTextureUnit(FOAM_PATTERN_UNIT, m_foamPattern.id());
     glBindTextureUnit(REFLECTION_DEPTH_UNIT, m_reflection.depth.id());
-    // A software rasteriser filters the ocean's slopes and the foam pattern from their nearest
-    // mip only: bilinear, not trilinear (full quality keeps trilinear).
+    // A software rasteriser filters the ocean's slopes, the detail map and the foam pattern from
+    // their nearest mip only: bilinear, not trilinear (full quality keeps trilinear).
     const GLuint mipSampler = isSoftwareRenderer() && !m_def.water_full_quality ? m_nearestMipSampler.id() : 0;
     for (GLuint unit : {SLOPES_UNIT, DETAIL_UNIT, FOAM_PATTERN_UNIT}) glBindSampler(unit, mipSampler);
     glEnable(GL_DEPTH_TEST);

@@ -183,7 +183,7 @@ private:
     glm::vec3 m_bakedSun{0.0f};
     Texture m_detailMap;      // DU/DV (rg, as 0.5 + 0.5·x) and foam streaks (b), RGBA8, tileable, mipmapped
     Texture m_foamPattern;    // the persistent foam's bubble pattern over its repeat, baked from the detail map
-    Sampler m_nearestMipSampler;  // bilinear in the nearest mip, repeated: the slopes and foam pattern on a software rasteriser
+    Sampler m_nearestMipSampler;  // bilinear in the nearest mip, repeated: the slopes, detail map and foam pattern on a software rasteriser
     void bakeDetailMaps();    // out: m_detailMap, m_foamPattern
     Texture m_foamTexture;    // R32F foam coverage of the foam map, re-uploaded every frame
     int m_foamCells = 0;
