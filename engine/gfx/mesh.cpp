@@ -43,7 +43,7 @@ Mesh makeSphereMesh(int rings) {
     for (int r = 0; r < rings; ++r)
         for (int s = 0; s < segments; ++s) {
             uint32_t a = uint32_t(r * (segments + 1) + s), b = a + 1, c = a + uint32_t(segments + 1), d = c + 1;
-            idx.insert(idx.end(), {a, c, b, b, c, d});
+            idx.insert(idx.end(), {a, b, c, b, d, c});  // counter-clockwise seen from outside
         }
     return upload("sphere mesh", v, idx);
 }

@@ -237,6 +237,33 @@ TEST_CASE("an object wholly under the water is seen through it from above, by th
     CHECK(gfx::glErrorCount() == errorsBefore);
 }
 
+TEST_CASE("the refraction target carries 1 / the eye depth of what lies below, 0 where nothing does", "[gl][render]") {
+    // The water pass reads the depth below the surface from the refraction colour's alpha (seed
+    // 004 eq. 7's fade). A sphere of radius 1.5 m centred 3 m under the surface, on the camera's
+    // axis: at the frame's centre the eye depth of its front is |centre − eye| − r (its back,
+    // |centre − eye| + r, where a mesh wound inside out is culled at the front).
+    gfx::requestDebugOutput(true);
+    const glm::ivec2 size(160, 90);
+    auto platform = platform::createHeadlessPlatform(size);
+    const glm::vec3 eye(0.0f, 8.0f, 0.0f), centre(0.0f, -3.0f, -12.0f);
+    const float radius = 1.5f;
+    gfx::ObjectDraw sphere;
+    sphere.mesh = gfx::MeshKind::Sphere;
+    sphere.model = glm::scale(glm::translate(glm::mat4(1.0f), centre), glm::vec3(radius));
+    gfx::RenderDef def;
+    def.antialias = gfx::Antialias::Off;
+    gfx::Renderer renderer(def);
+    renderer.render(lookingAt(eye, centre, 160.0f / 90.0f), gfx::WaterView{}, {sphere}, 0.0, size);
+    const glm::ivec2 target = renderer.refractionTarget().size;
+    const std::vector<glm::vec4> texels = readTexture(renderer.refractionTarget().color, target);
+    const float expected = glm::distance(eye, centre) - radius;
+    const float alpha = texels[size_t((target.y / 2) * target.x + target.x / 2)].w;
+    INFO("1 / alpha at the centre " << 1.0f / alpha << " m, the sphere's front at " << expected << " m");
+    CHECK(std::abs(1.0f / alpha - expected) < 0.02f * expected);
+    // The top row looks at the sky: nothing below the surface there.
+    CHECK(texels[size_t((target.y - 1) * target.x + target.x / 2)].w == 0.0f);
+}
+
 TEST_CASE("a small object across the surface is cut at the surface's tangent plane under it", "[gl][render]") {
     // A sphere of 0.9 m (small: cut at the plane its ObjectDraw carries, not per vertex)
     // centred on the surface, seen level from 6 m. Where the plane rises to +x, more of the
