@@ -23,7 +23,8 @@ namespace {
 constexpr int KEY_CODES[size_t(Key::Count)] = {
     GLFW_KEY_W, GLFW_KEY_A, GLFW_KEY_S, GLFW_KEY_D, GLFW_KEY_Q, GLFW_KEY_E, GLFW_KEY_SPACE,
     GLFW_KEY_LEFT_SHIFT, GLFW_KEY_ESCAPE, GLFW_KEY_UP, GLFW_KEY_DOWN, GLFW_KEY_LEFT, GLFW_KEY_RIGHT, GLFW_KEY_F1,
-    GLFW_KEY_P, GLFW_KEY_N, GLFW_KEY_F, GLFW_KEY_F12, GLFW_KEY_H, GLFW_KEY_C};
+    GLFW_KEY_P, GLFW_KEY_N, GLFW_KEY_F, GLFW_KEY_F12, GLFW_KEY_H, GLFW_KEY_C, GLFW_KEY_R,
+    GLFW_KEY_1, GLFW_KEY_2, GLFW_KEY_3, GLFW_KEY_4, GLFW_KEY_5, GLFW_KEY_6, GLFW_KEY_7, GLFW_KEY_8, GLFW_KEY_9};
 
 class GlfwPlatform final : public Platform {
 public:
@@ -60,12 +61,20 @@ public:
             InputEvent e;
             e.type = action == GLFW_PRESS ? InputEvent::Type::ButtonDown : InputEvent::Type::ButtonUp;
             e.button = button == GLFW_MOUSE_BUTTON_LEFT ? MouseButton::Left : MouseButton::Right;
+            e.hasPos = self(w)->m_cursorKnown;
+            e.pos = self(w)->m_cursor;
             self(w)->m_events.push_back(e);
         });
         glfwSetCursorPosCallback(m_window, [](GLFWwindow* w, double x, double y) {
             GlfwPlatform* p = self(w);
-            const glm::vec2 cursor{float(x), float(y)};
-            if (p->m_cursorKnown) p->m_events.push_back({InputEvent::Type::Move, 0.0, Key::W, MouseButton::Left, cursor - p->m_cursor});
+            // Window coordinates to framebuffer pixels (they differ on a high-density display).
+            int ww, wh, fw, fh;
+            glfwGetWindowSize(w, &ww, &wh);
+            glfwGetFramebufferSize(w, &fw, &fh);
+            const glm::vec2 scale = ww > 0 && wh > 0 ? glm::vec2(float(fw) / float(ww), float(fh) / float(wh)) : glm::vec2(1.0f);
+            const glm::vec2 cursor = glm::vec2(float(x), float(y)) * scale;
+            const glm::vec2 motion = p->m_cursorKnown ? cursor - p->m_cursor : glm::vec2(0.0f);
+            p->m_events.push_back({InputEvent::Type::Move, 0.0, Key::W, MouseButton::Left, motion, true, cursor});
             p->m_cursor = cursor;
             p->m_cursorKnown = true;
         });
@@ -102,7 +111,7 @@ private:
 
     GLFWwindow* m_window = nullptr;
     std::vector<InputEvent> m_events;  // delivered since the last poll, in order
-    glm::vec2 m_cursor{0.0f};
+    glm::vec2 m_cursor{0.0f};  // framebuffer px
     bool m_cursorKnown = false;
 };
 

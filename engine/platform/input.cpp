@@ -14,6 +14,10 @@ void InputState::beginConsume() {
 
 void InputState::apply(const InputEvent& e) {
     using T = InputEvent::Type;
+    if (e.hasPos) {
+        cursor = e.pos;
+        cursorKnown = true;
+    }
     switch (e.type) {
     case T::KeyDown:
         if (!down[size_t(e.key)] && presses[size_t(e.key)] < 255) ++presses[size_t(e.key)];

@@ -13,12 +13,14 @@ namespace ob::platform {
 
 /// Keys the game reads.
 enum class Key : uint8_t {
-    W, A, S, D, Q, E, Space, Shift, Escape, Up, Down, Left, Right, F1, P, N, F, F12, H, C, Count
+    W, A, S, D, Q, E, Space, Shift, Escape, Up, Down, Left, Right, F1, P, N, F, F12, H, C, R,
+    Num1, Num2, Num3, Num4, Num5, Num6, Num7, Num8, Num9, Count
 };
 constexpr size_t KEY_COUNT = size_t(Key::Count);
 /// Lower-case key names as scripts write them (enumName(Key::Space) is "space").
 constexpr std::array<const char*, KEY_COUNT> names(Key) {
-    return {"w", "a", "s", "d", "q", "e", "space", "shift", "escape", "up", "down", "left", "right", "f1", "p", "n", "f", "f12", "h", "c"};
+    return {"w", "a", "s", "d", "q", "e", "space", "shift", "escape", "up", "down", "left", "right", "f1", "p",
+            "n", "f", "f12", "h", "c", "r", "1", "2", "3", "4", "5", "6", "7", "8", "9"};
 }
 
 enum class MouseButton : uint8_t { Left, Right, Count };
@@ -32,6 +34,8 @@ struct InputEvent {
     Key key = Key::W;                      ///< KeyDown, KeyUp
     MouseButton button = MouseButton::Left;  ///< ButtonDown, ButtonUp
     glm::vec2 value{0.0f};                 ///< Move: cursor motion (px); Scroll: (0, wheel steps)
+    bool hasPos = false;                   ///< `pos` is known (a window's mouse events, scripts with `pos`)
+    glm::vec2 pos{0.0f};                   ///< Move, ButtonDown, ButtonUp: the cursor after the event (framebuffer px, origin top left)
 };
 
 /// What one consumer has seen of the input: held keys and buttons, and the edges, motion
@@ -42,6 +46,8 @@ struct InputState {
     std::array<bool, BUTTON_COUNT> buttonDown{};    ///< mouse buttons held now
     std::array<uint8_t, BUTTON_COUNT> clicks{};     ///< button presses since the last beginConsume
     glm::vec2 mouseDelta{0.0f};  ///< cursor motion (px)
+    glm::vec2 cursor{0.0f};      ///< where the cursor is (framebuffer px, origin top left) once cursorKnown
+    bool cursorKnown = false;    ///< an event has told where the cursor is
     float scroll = 0.0f;         ///< wheel steps
     bool quit = false;           ///< the window was closed or Escape pressed
     bool uiCapturesMouse = false, uiCapturesKeyboard = false;  ///< the UI owns these (frame only)
