@@ -34,6 +34,7 @@ void addPlayCommand(CLI::App& app, CommandAction& action) {
     CLI::App* cmd = app.add_subcommand("play", "open a scene in a window (headless with a screenshot where there is no display)");
     cmd->add_option("scene", play->scene, "scene file (default: config/scenes/default.toml)");
     play->addTo(cmd, 0);
+    cmd->add_option("--record", play->record, "write every input the simulation consumed to this TOML file (run --input replays it)");
     cmd->footer(PLAY_KEYS);
     cmd->callback([&action, play] {
         action = [play] {
@@ -44,6 +45,7 @@ void addPlayCommand(CLI::App& app, CommandAction& action) {
             else if (!scene.info.note.empty())
                 logInfo("%s", scene.info.note.c_str());
             RunOptions o = play->options();
+            o.record = play->record;
             o.realTime = true;
             o.dynamicResolution = true;
             if (o.frames == 0) o.frames = -1;

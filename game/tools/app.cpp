@@ -13,6 +13,7 @@
 #include "ecs/components.h"
 #include "behaviours/cannon.h"
 #include "behaviours/fish.h"
+#include "world/controls.h"
 #include "world/input_script.h"
 #include "sim/objects.h"
 #include "view/sandbox_view.h"
@@ -112,6 +113,7 @@ static void writeStats(const std::string& path, Sandbox& sandbox, const std::str
 static void checkOutputs(const SceneDef& scene, const RunOptions& options) {
     if (!options.screenshot.empty()) checkWritable(options.screenshot, "screenshot");
     if (!options.stats.empty()) checkWritable(options.stats, "stats");
+    if (!options.record.empty()) checkWritable(options.record, "recording");
     for (const EventDef& e : scene.events)
         if (e.action == EventAction::Screenshot) checkWritable(e.file, "event screenshot");
 }
@@ -150,13 +152,14 @@ int runScene(const SceneDef& scene, const std::string& scenePath, const RunOptio
         auto made = std::make_unique<Sandbox>(withSteps(s));
         made->attachPlatform(*platform, !platform->headless());
         made->setScriptedInput(scripted);
+        if (!options.record.empty()) made->world().setResource(std::make_unique<InputRecorder>());
         if (options.dynamicResolution) made->enableDynamicResolution();
         if (!options.realTime) made->schedule().setFirstFrameSeconds(options.stepsPerFrame / double(s.sim.step_hz));
         return made;
     };
     auto makeClock = [&](const SceneDef& s) -> std::unique_ptr<Clock> {
         if (options.realTime) return std::make_unique<SteadyClock>();
-        return std::make_unique<FixedStepClock>(options.stepsPerFrame / double(s.sim.step_hz));
+        return std::make_unique<FixedStepClock>(options.stepsPerFrame / double(s.sim.step_hz), double(options.steps) / double(s.sim.step_hz));
     };
     auto sandbox = makeSandbox(scene);
     std::unique_ptr<Clock> clock = makeClock(scene);
@@ -201,6 +204,17 @@ int runScene(const SceneDef& scene, const std::string& scenePath, const RunOptio
         logWarn("--screenshot needs --frames N (or [sim] end_time); no screenshot written");
 
     if (!options.stats.empty()) writeStats(options.stats, *sandbox, scenePath, *platform);
+    if (!options.record.empty()) {
+        const auto* recorder = sandbox->world().resource<InputRecorder>();
+        const auto* viewport = sandbox->world().resource<Viewport>();
+        InputScriptDef recording = recordedScript(recorder->events, sandbox->schedule().steps(), sandbox->schedule().stepSeconds(),
+                                                  viewport ? viewport->size : platform->framebufferSize());
+        writeTextFile(options.record,
+                      "# oceanbox input recorded from " + scenePath + ": `oceanbox run SCENE --input FILE` replays it\n" +
+                          writeToml(recording),
+                      "recording");
+        logInfo("input recorded to %s (%llu steps)", options.record.c_str(), static_cast<unsigned long long>(recording.steps));
+    }
     if (!options.screenshot.empty() && bounded) logInfo("screenshot written to %s", options.screenshot.c_str());
     if (gfx::glErrorCount() > 0) {
         logWarn("%d GL error(s) were reported during the run", gfx::glErrorCount());
