@@ -19,7 +19,11 @@ const char* const PLAY_KEYS = R"(Keys and mouse (H shows and hides the overlay, 
   W/S  A/D      ship: throttle, rudder (fly mode: move the camera)
   Q/E  Shift    fly mode: down, up; Shift x4 speed; hold Q at the surface to dive
   arrows        cannon: aim (yaw, elevation)
-  Space, click  cannon: fire one ball per press
+  Space         cannon: fire one ball per press
+  1-5           the left button's tool: 1 grab (drag a body, release throws; wheel: distance),
+                2 stir (hold on the water; wheel: radius, Shift+wheel: depth), 3 drop (click on
+                the water; 3 again: next object), 4 erase (click a body), 5 cannon (click on the
+                water: aim there and fire)
   F             a school of fish where the camera looks
   P  N          pause and resume; one step while paused
   F12           screenshot (oceanbox_shot_NNN.png)

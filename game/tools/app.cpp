@@ -171,6 +171,9 @@ int runScene(const SceneDef& scene, const std::string& scenePath, const RunOptio
                                              : long(std::ceil(options.endTime * scene.sim.step_hz / options.stepsPerFrame - 1e-6));
     for (long f = 0; bounded || !sandbox->quitRequested(); ++f) {
         sandbox->frame(clock->now());
+        // The wall clock starts once the first frame is drawn (shaders compiled, maps made):
+        // the simulation does not make up for the loading time with a burst of steps.
+        if (options.realTime && sandbox->schedule().frames() == 1) clock = makeClock(sandbox->scene());
         if (sandbox->quitRequested()) break;
         const bool last = (options.frames > 0 && f + 1 >= options.frames) ||
                           (options.endTime > 0.0 && sandbox->schedule().simTime() >= options.endTime - 1e-9);

@@ -9,7 +9,7 @@
 #include "core/error.h"
 #include "ecs/components.h"
 #include "gfx/ui_overlay.h"
-#include "behaviours/player_tools.h"
+#include "world/tools.h"
 #include "behaviours/ship.h"
 
 #include <cfloat>
@@ -118,8 +118,8 @@ static void toolsPanel(ecs::World& world, double now) {
     auto* tools = world.resource<PlayerTools>();
     if (!tools) return;
     const ImGuiViewport* viewport = ImGui::GetMainViewport();
-    ImGui::SetNextWindowPos(ImVec2(viewport->WorkPos.x + 10, viewport->WorkPos.y + viewport->WorkSize.y - 10), ImGuiCond_Always,
-                            ImVec2(0.0f, 1.0f));
+    ImGui::SetNextWindowPos(ImVec2(viewport->WorkPos.x + viewport->WorkSize.x - 10, viewport->WorkPos.y + viewport->WorkSize.y - 10),
+                            ImGuiCond_Always, ImVec2(1.0f, 1.0f));  // bottom right, clear of the main panel
     ImGui::Begin("tools", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove);
     constexpr platform::Key KEYS[] = {platform::Key::Num1, platform::Key::Num2, platform::Key::Num3, platform::Key::Num4,
                                       platform::Key::Num5};

@@ -3,7 +3,7 @@
 #include "platform/platform.h"
 
 #include "behaviours/fish.h"
-#include "behaviours/player_tools.h"
+#include "world/tools.h"
 #include "gfx/gl.h"
 #include "gfx/renderer.h"
 #include "gfx/ui_overlay.h"

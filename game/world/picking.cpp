@@ -28,12 +28,14 @@ std::optional<glm::vec3> pickWater(const water::WaterQuery& water, const Ray& ra
         return p.y - water.sample(p.x, p.z).height;
     };
     const float rate = std::abs(ray.direction.y) + PICK_MAX_SLOPE * std::hypot(ray.direction.x, ray.direction.z);
-    constexpr int MAX_MARCH = 160, MAX_BISECT = 40;
+    constexpr int MAX_MARCH = 400, MAX_BISECT = 40;
     float t0 = 0.0f, f0 = f(0.0f);
     if (std::abs(f0) < PICK_TOLERANCE_M) return ray.origin;
     const float side = f0 > 0.0f ? 1.0f : -1.0f;  // above (1) or below (−1) the water
     for (int i = 0; i < MAX_MARCH && t0 < maxDistance; ++i) {
-        const float step = std::max(std::abs(f0) / rate, 1e-3f + 1e-3f * t0);  // at least a little ahead
+        // At grazing views |f| / rate shrinks geometrically: the step is at least
+        // PICK_STEP_PER_M of the distance (a crest thinner than that may be stepped over).
+        const float step = std::max(std::abs(f0) / rate, 1e-3f + PICK_STEP_PER_M * t0);
         const float t1 = std::min(t0 + step, maxDistance);
         const float f1 = f(t1);
         if (std::abs(f1) < PICK_TOLERANCE_M) return ray.at(t1);

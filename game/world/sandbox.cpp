@@ -12,7 +12,7 @@
 #include "behaviours/spawning.h"
 #include "ocean/ocean_fft_cpu.h"
 #include "world/script.h"
-#include "behaviours/player_tools.h"
+#include "world/tools.h"
 #include "behaviours/ship.h"
 #include "sim/splash_foam_system.h"
 #include "sim/stamp_sources.h"

@@ -11,7 +11,7 @@
 #include "ocean/ocean_def.h"
 #include "platform/window_def.h"
 #include "world/script.h"
-#include "behaviours/player_tools.h"
+#include "world/tools.h"
 #include "splash/splash_def.h"
 
 #include <string>

@@ -1,6 +1,6 @@
 // The player's tools: picking at the cursor, then grab (a critically damped spring), stir (a
 // moving source sphere through the bodies' stamp path), drop, erase and the cannon's aim.
-#include "behaviours/player_tools.h"
+#include "world/tools.h"
 
 #include "behaviours/cannon.h"
 #include "behaviours/fish.h"
@@ -28,6 +28,7 @@ constexpr float PICK_DISTANCE_M = 3000.0f;   // farther than this the cursor poi
 constexpr float WHEEL_FACTOR = 1.1f;         // one wheel step scales a radius or distance by this
 constexpr float THROW_SMOOTHING_S = 0.08f;   // the throw's velocity: the cursor's over about this long
 constexpr float MAX_THROW_M_S = 60.0f;
+constexpr float MIN_ELEVATION_DEG = -10.0f;  // a cannon's barrel goes no lower (CannonDef)
 constexpr glm::vec3 MARKER_COLOR{1.0f, 0.85f, 0.2f};
 constexpr glm::vec3 RING_COLOR{0.3f, 0.9f, 1.0f};
 
@@ -173,13 +174,15 @@ void fireAt(ecs::World& world, PlayerTools& tools, glm::vec3 point) {
     // The ball leaves the barrel's end, which moves with the elevation: three rounds settle it.
     float elevation = c.elevationDeg;
     bool reachable = true;
+    // The low arc, or the high one where the low would need the barrel below its lowest.
     for (int k = 0; k < 3; ++k) {
         const glm::vec3 muzzle = pivot + cannonAim(c.yawDeg, elevation) * CANNON_BARREL;
-        const std::optional<float> e = ballisticElevationDeg(muzzle, point, c.muzzleSpeed, gravityOf(world));
+        std::optional<float> e = ballisticElevationDeg(muzzle, point, c.muzzleSpeed, gravityOf(world), false);
+        if (e && *e < MIN_ELEVATION_DEG) e = ballisticElevationDeg(muzzle, point, c.muzzleSpeed, gravityOf(world), true);
         reachable = e.has_value();
         elevation = e ? *e : 45.0f;  // out of reach: the farthest shot
     }
-    c.elevationDeg = std::clamp(elevation, -10.0f, 89.0f);
+    c.elevationDeg = std::clamp(elevation, MIN_ELEVATION_DEG, 89.0f);
     c.fireRequested = true;
     ++tools.shots;
     tools.message = reachable ? "" : "out of the cannon's reach: fired as far as it goes";
@@ -187,14 +190,14 @@ void fireAt(ecs::World& world, PlayerTools& tools, glm::vec3 point) {
 
 } // namespace
 
-std::optional<float> ballisticElevationDeg(glm::vec3 from, glm::vec3 to, float speed, float g) {
+std::optional<float> ballisticElevationDeg(glm::vec3 from, glm::vec3 to, float speed, float g, bool high) {
     const float x = std::hypot(to.x - from.x, to.z - from.z), y = to.y - from.y;
     const float v2 = speed * speed;
     if (x < 1e-4f) return y >= 0.0f ? 89.0f : -89.0f;
     if (g <= 0.0f) return glm::degrees(std::atan2(y, x));
     const float disc = v2 * v2 - g * (g * x * x + 2.0f * y * v2);
     if (disc < 0.0f) return std::nullopt;
-    return glm::degrees(std::atan((v2 - std::sqrt(disc)) / (g * x)));  // the low arc
+    return glm::degrees(std::atan((v2 + (high ? 1.0f : -1.0f) * std::sqrt(disc)) / (g * x)));
 }
 
 void addPlayerTools(ecs::World& world, const ToolsDef& def, glm::ivec2 viewportSize, const ObjectDef& fishTemplate,

@@ -88,8 +88,9 @@ void addPlayerTools(ecs::World& world, const ToolsDef& def, glm::ivec2 viewportS
 /// an erase, the cannon's aim and shot).
 void toolsSystem(ecs::World& world, const ecs::Tick& tick);
 /// The elevation (deg) at which a ball leaving `from` at `speed` m/s under gravity `g`
-/// reaches `to` on the low arc (no air drag), or nothing when it is out of reach.
-std::optional<float> ballisticElevationDeg(glm::vec3 from, glm::vec3 to, float speed, float g);
+/// reaches `to` on the low arc (or the `high` one; no air drag), or nothing when it is out
+/// of reach.
+std::optional<float> ballisticElevationDeg(glm::vec3 from, glm::vec3 to, float speed, float g, bool high = false);
 /// The body the overlay lights up: the one held, else the one under the cursor (None: none).
 ecs::Entity highlightedBody(ecs::World& world);
 /// What the renderer draws of the tools: the marker on the water and the stir ring.
