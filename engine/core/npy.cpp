@@ -126,7 +126,10 @@ std::string shapeText(const std::vector<size_t>& shape) {
 
 NpyArray readNpy(const std::string& path) {
     // A regular file only (a named pipe would block, a device read forever), read whole.
-    const std::string file = readRegularFile(path);
+    return parseNpy(readRegularFile(path), path);
+}
+
+NpyArray parseNpy(const std::string& file, const std::string& path) {
     const uint64_t fileSize = file.size();
     const auto* bytes = reinterpret_cast<const unsigned char*>(file.data());
 

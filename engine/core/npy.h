@@ -18,6 +18,9 @@ struct NpyArray {
 /// fortran_order True or truncated data.
 NpyArray readNpy(const std::string& path);
 
+/// As readNpy, from the bytes of a .npy file; `sourceName` names it in messages.
+NpyArray parseNpy(const std::string& bytes, const std::string& sourceName);
+
 /// Writes a version 1.0 .npy file ('<f4', C order) holding product(shape) values from data.
 /// Written whole or not at all (writeFileWhole: a temporary beside it, renamed over it).
 /// Throws ob::InputError if the path cannot be created (the user's choice: exit 2),
