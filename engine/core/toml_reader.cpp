@@ -189,7 +189,10 @@ void TomlDocument::applyOverride(const std::string& assignment, std::vector<std:
         if (!target) return;
     }
     std::string path;
-    for (size_t s = last; s < segments.size(); ++s) path += (path.empty() ? "" : ".") + std::string(segments[s].key);
+    for (size_t s = last; s < segments.size(); ++s) {
+        if (!path.empty()) path += '.';
+        path += segments[s].key;
+    }
     // The value in TOML syntax; a bare word that is no TOML value is taken as a string.
     // The key path is a TOML dotted key, so the parse builds the nested tables itself.
     toml::table parsed;

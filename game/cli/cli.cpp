@@ -15,6 +15,9 @@ int runCli(int argc, char** argv) {
                  "interactive ripples, buoyant bodies)",
                  "oceanbox"};
     app.require_subcommand(1);
+    app.footer("Outputs (--stats, --screenshot, --out) are written whole to a regular file at the path given: a device, "
+               "a named pipe, a folder or a symbolic link there (/dev/null, /dev/stdout) is refused with exit 2 before the "
+               "run. Inputs must be regular files.");
     app.fallthrough(false);
     CommandAction action;
     std::string commandLine = "oceanbox";

@@ -18,13 +18,15 @@ namespace ob::game {
 static std::string resolveModel(const std::string& model, const std::string& sceneDir) {
     namespace fs = std::filesystem;
     std::error_code ec;
-    if (fs::path(model).is_absolute()) return fs::exists(model, ec) ? model : "";
+    // A link counts as there even when it dangles or loops: the loader then says which.
+    auto present = [&](const fs::path& p) { return fs::exists(fs::symlink_status(p, ec)); };
+    if (fs::path(model).is_absolute()) return present(model) ? model : "";
     std::vector<fs::path> candidates;
     if (!sceneDir.empty()) candidates.push_back(fs::path(sceneDir) / model);
     candidates.push_back(fs::path(model));
     candidates.push_back(fs::path(OCEANBOX_SOURCE_DIR) / model);
     for (const fs::path& c : candidates)
-        if (fs::exists(c, ec)) return fs::absolute(c, ec).lexically_normal().string();
+        if (present(c)) return fs::absolute(c, ec).lexically_normal().string();
     return "";
 }
 

@@ -107,6 +107,14 @@ TEST_CASE("a symlink loop is reported as one, not as a missing file", "[hostile]
     CHECK(errorWithin5s([&] { readRegularFile(a); }) == a + ": cannot open file (symlink loop)");
     CHECK(errorWithin5s([&] { game::loadScene(a, {}); }) == a + ": cannot open file (symlink loop)");
     CHECK(errorWithin5s([&] { readNpy(a); }).find("symlink loop") != std::string::npos);
+    // A model that is a loop is found, then named as one (not "not found").
+    const std::string folder = tempPath("loop_models");
+    fs::create_directories(folder);
+    fs::create_symlink(folder + "/b.gltf", folder + "/a.gltf");
+    fs::create_symlink(folder + "/a.gltf", folder + "/b.gltf");
+    const std::string scene = writeFile(folder + "/s.toml", "[[objects]]\ntype = \"sphere\"\nmodel = \"a.gltf\"\n");
+    CHECK(errorWithin5s([&] { game::loadScene(scene, {}); }) ==
+          scene + ":3:9: objects[0].model: " + folder + "/a.gltf: cannot open file (symlink loop)");
 }
 
 // --- writers -------------------------------------------------------------------------------
