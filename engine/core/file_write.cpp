@@ -202,11 +202,10 @@ void writeFileWhole(const std::string& path, const std::string& what, const std:
             throw RuntimeError(head + "writing " + tmp + " failed: " + std::strerror(buffer.error() ? buffer.error() : EIO) +
                                " (disk full?)");
     }
-    if (::fsync(fd) != 0 || ::close(fd) != 0) {
-        guard.fd = -1;
-        throw RuntimeError(head + "writing " + tmp + " failed: " + std::strerror(errno) + " (disk full?)");
-    }
+    int err = ::fsync(fd) == 0 ? 0 : errno;
     guard.fd = -1;
+    if (::close(fd) != 0 && err == 0) err = errno;
+    if (err != 0) throw RuntimeError(head + "writing " + tmp + " failed: " + std::strerror(err) + " (disk full?)");
     // The path may have changed since the check (another process): never rename over what is
     // not a regular file.
     checkWritable(path, what.c_str());

@@ -121,9 +121,9 @@ int makeModels(const std::string& outDir) {
         if (!fs::is_directory(outDir, ec))
             throw InputError("--out '" + outDir + "': cannot create the folder" + (ec ? " (" + ec.message() + ")" : std::string()));
     }
-    for (const ShapeModel& model : buildProjectModels())
-        checkWritable((fs::path(outDir) / (model.name + ".gltf")).string(), "model");
-    for (const ShapeModel& model : buildProjectModels()) {
+    const std::vector<ShapeModel> models = buildProjectModels();
+    for (const ShapeModel& model : models) checkWritable((fs::path(outDir) / (model.name + ".gltf")).string(), "model");
+    for (const ShapeModel& model : models) {
         const std::string path = (fs::path(outDir) / (model.name + ".gltf")).string();
         const std::string text = gltfText(model);
         writeTextFile(path, text, "model");

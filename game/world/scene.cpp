@@ -131,8 +131,12 @@ std::string saveScene(SceneDef scene, const std::string& path) {
     // scene and its models move together.
     namespace fs = std::filesystem;
     const fs::path folder = fs::absolute(fs::path(path)).parent_path();
-    for (ObjectDef& o : scene.objects)
+    auto relative = [&](ObjectDef& o) {
         if (!o.model.empty() && fs::path(o.model).is_absolute()) o.model = fs::path(o.model).lexically_relative(folder).string();
+    };
+    for (ObjectDef& o : scene.objects) relative(o);
+    for (EventDef& e : scene.events)
+        if (e.action == EventAction::Spawn) relative(e.object);
     try {
         writeFileWhole(path, "scene", [&](std::ostream& out) {
             out << "# Saved from oceanbox: the keys that differ from the defaults.\n" << writeToml(scene);
