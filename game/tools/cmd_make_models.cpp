@@ -116,7 +116,7 @@ int makeModels(const std::string& outDir) {
     if (!fs::is_directory(outDir, ec)) {
         if (!fs::is_directory(parent, ec))
             throw InputError("--out '" + outDir + "': folder '" + parent.string() +
-                             "' does not exist (create it, or choose another path)");
+                             "' does not exist (create it, or choose another path; make-models makes only the last folder)");
         fs::create_directory(outDir, ec);
         if (!fs::is_directory(outDir, ec))
             throw InputError("--out '" + outDir + "': cannot create the folder" + (ec ? " (" + ec.message() + ")" : std::string()));

@@ -75,13 +75,13 @@ TEST_CASE("an output path that is a device is refused before the run and the dev
     }
 }
 
-TEST_CASE("--stats /dev/stdout (a symbolic link) is refused: no output is written through a link", "[hostile][cli]") {
+TEST_CASE("an output of /dev/stdout (a symbolic link) is refused: no output is written through a link", "[hostile][cli]") {
     const ProcessResult r = oceanbox("run " + tinyScene("stdout.toml") + RUN_FLAGS + " --stats /dev/stdout");
     expectRefused(r, "cannot write stats '/dev/stdout': it is a symbolic link to '/proc/self/fd/1'");
     CHECK(fs::is_symlink("/dev/stdout"));
 }
 
-TEST_CASE("a planted link at the old temporary name is not followed; the output becomes a regular file", "[hostile][cli]") {
+TEST_CASE("a planted link at the old temporary name is not followed and the output becomes a regular file", "[hostile][cli]") {
     const std::string folder = tempPath("shared");
     fs::create_directories(folder);
     const std::string victim = writeFile(tempPath("victim.txt"), "precious");
@@ -194,7 +194,7 @@ TEST_CASE("a spawn event's missing model fails at load with file and line, befor
                   "events[0].target: no object is named 'ghost'");
 }
 
-TEST_CASE("empty output and input paths are errors everywhere; make-models makes no parent folders", "[hostile][cli]") {
+TEST_CASE("empty output and input paths are errors everywhere, and make-models makes no parent folders", "[hostile][cli]") {
     const std::string scene = tinyScene("empty_paths.toml");
     for (const std::string& args : {"run " + scene + RUN_FLAGS + " --stats ''", "run " + scene + RUN_FLAGS + " --screenshot ''",
                                     "run " + scene + RUN_FLAGS + " --input ''", "dump ocean " + scene + " --out ''",
@@ -205,7 +205,7 @@ TEST_CASE("empty output and input paths are errors everywhere; make-models makes
     CHECK(!fs::exists(fs::path(missing).parent_path().parent_path()));
 }
 
-TEST_CASE("an unknown subcommand is named with the valid ones; --seed -1 and a huge integer read as written", "[hostile][cli]") {
+TEST_CASE("an unknown subcommand is named with the valid ones, --seed -1 and a huge integer read as written", "[hostile][cli]") {
     ProcessResult r = oceanbox("frobnicate");
     expectRefused(r, "unknown subcommand 'frobnicate' (the subcommands: play, run, bench, dump, ripple, soak, make-models)");
     r = oceanbox("run " + tinyScene("seed.toml") + RUN_FLAGS + " --seed -1");

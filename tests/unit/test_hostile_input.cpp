@@ -171,7 +171,7 @@ TEST_CASE("the temporary is unique and never followed: a planted link and a user
     CHECK(temporaries(folder, "s.json").empty());
 }
 
-TEST_CASE("the output keeps the old file's mode; a new one gets 0666 less the umask", "[hostile][files]") {
+TEST_CASE("the output keeps the old file's mode, and a new one gets 0666 less the umask", "[hostile][files]") {
     const std::string out = writeFile(tempPath("mode.json"), "old");
     fs::permissions(out, fs::perms::owner_read | fs::perms::owner_write);
     writeTextFile(out, "new", "stats");
@@ -208,7 +208,7 @@ TEST_CASE("two writers of one output never share a temporary: every write succee
     CHECK(temporaries(folder, "both.json").empty());
 }
 
-TEST_CASE("a killed run's temporaries are removed by the next write to the folder; a live writer's are kept", "[hostile][files]") {
+TEST_CASE("a killed run's temporaries are removed by the next write to the folder, a live writer's are kept", "[hostile][files]") {
     const std::string folder = tempPath("stale");
     fs::create_directories(folder);
     // A pid that is gone: a child that has exited and been reaped.
@@ -285,7 +285,7 @@ TEST_CASE("an out-of-range integer is printed as the integer it is", "[hostile][
 
 // --- events --------------------------------------------------------------------------------
 
-TEST_CASE("a spawn event's model is loaded with the scene; a spawn without object and an unknown camera target are errors",
+TEST_CASE("a spawn event's model is loaded with the scene, and a spawn without object or an unknown camera target is an error",
           "[hostile][events]") {
     std::string e = sceneError(R"([[events]]
 at = 100.0
