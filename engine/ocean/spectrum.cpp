@@ -285,6 +285,28 @@ void CascadeSpectrum::clear() {
     for (size_t idx = 0; idx < m_h0.size(); ++idx) refreshMode(idx);
 }
 
+void CascadeSpectrum::blend(const CascadeSpectrum& from, const CascadeSpectrum& to, float s) {
+    assert(from.m_n == m_n && to.m_n == m_n && from.m_patchSize == m_patchSize && to.m_patchSize == m_patchSize);
+    if (s <= 0.0f || s >= 1.0f) {
+        const CascadeSpectrum& whole = s <= 0.0f ? from : to;
+        m_h0 = whole.m_h0;
+        m_cosRe = whole.m_cosRe;
+        m_sinRe = whole.m_sinRe;
+        m_cosIm = whole.m_cosIm;
+        m_sinIm = whole.m_sinIm;
+        return;
+    }
+    const float r = 1.0f - s;
+    for (size_t i = 0; i < m_h0.size(); ++i) m_h0[i] = r * from.m_h0[i] + s * to.m_h0[i];
+    const auto mix = [&](std::vector<float>& out, const std::vector<float>& a, const std::vector<float>& b) {
+        for (size_t i = 0; i < out.size(); ++i) out[i] = r * a[i] + s * b[i];
+    };
+    mix(m_cosRe, from.m_cosRe, to.m_cosRe);
+    mix(m_sinRe, from.m_sinRe, to.m_sinRe);
+    mix(m_cosIm, from.m_cosIm, to.m_cosIm);
+    mix(m_sinIm, from.m_sinIm, to.m_sinIm);
+}
+
 double CascadeSpectrum::omega(int n, int m) const {
     assert(n >= -m_n / 2 && n < m_n / 2 && m >= -m_n / 2 && m < m_n / 2);
     return m_omega[size_t(std::abs(m)) * (m_n / 2 + 1) + size_t(std::abs(n))];
