@@ -26,8 +26,8 @@ struct PresetSet {
     float value;
 };
 
-/// The keys a preset sets: ocean.wind_speed, ocean.choppiness, gerstner.count (8: a scene
-/// without Gerstner waves gains the swell), gerstner.amplitude_scale.
+/// The keys a preset sets: ocean.wind_speed, ocean.amplitude, ocean.choppiness,
+/// gerstner.count (8: a scene without Gerstner waves gains the swell), gerstner.amplitude_scale.
 std::vector<PresetSet> presetSets(SeaPreset preset);
 
 /// Requests every key of `preset` (requestLiveSet): applied together at the next step.
