@@ -153,7 +153,7 @@ value = 53.0
     for (size_t i = 0; i < a.waves.size(); ++i) CHECK(a.waves[i].amplitude == b.waves[i].amplitude);
 }
 
-TEST_CASE("during a live wind change no step moves the surface more than the cross-fade allows; an instant switch would",
+TEST_CASE("during a live wind change no step moves the surface more than the cross-fade allows, which an instant switch breaks",
           "[sea_live]") {
     // The bound (sea_fade.h), with s the fade's weight (smoothstep over T = 2 s, slope ≤ 1.5/T):
     //   h(t+Δt) − h(t) = (1−s₁)·Δh_old + s₁·Δh_new + (s₁ − s₀)·(h_new − h_old)(t)
