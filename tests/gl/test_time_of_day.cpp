@@ -1,6 +1,7 @@
 // Time of day ([render] time_of_day, gfx/sun.h): the sun where spherical astronomy puts it,
 // and a sky, set live, that follows it: sunset colours with a low sun, dark at night.
 #include "gfx/gl.h"
+#include "gfx/renderer.h"
 #include "gfx/sun.h"
 #include "platform/platform.h"
 #include "world/sandbox.h"
@@ -67,10 +68,10 @@ enabled = false
     const glm::vec3 sunset = shot("sunset");
     REQUIRE(game::requestLiveSet(sandbox.world(), "render.time_of_day", 21.0f).empty());
     const glm::vec3 night = shot("night");
-    INFO("horizon rgb: noon " << noon.r << " " << noon.g << " " << noon.b << ", sunset " << sunset.r << " " << sunset.g << " "
-                              << sunset.b << ", night " << night.r << " " << night.g << " " << night.b);
-    CHECK(noon.b > noon.r);                          // a blue-white day horizon
-    CHECK(sunset.r > sunset.b);                      // orange toward the low sun
-    CHECK(sunset.r / sunset.b > 1.3f * noon.r / noon.b);
-    CHECK(night.r + night.g + night.b < 0.25f * (noon.r + noon.g + noon.b));
+    INFO("horizon rgb: noon " << noon.x << " " << noon.y << " " << noon.z << ", sunset " << sunset.x << " " << sunset.y << " "
+                              << sunset.z << ", night " << night.x << " " << night.y << " " << night.z);
+    CHECK(noon.z > noon.x);                          // a blue-white day horizon
+    CHECK(sunset.x > sunset.z);                      // orange toward the low sun
+    CHECK(sunset.x / sunset.z > 1.3f * noon.x / noon.z);
+    CHECK(night.x + night.y + night.z < 0.25f * (noon.x + noon.y + noon.z));
 }
