@@ -16,8 +16,12 @@ double fadeWeight(double elapsed, double duration) {
 
 SeaFade::SeaFade(const OceanFftCpu& fft, std::span<const GerstnerWave> waves, const OceanDef& ocean,
                  const GerstnerDef& gerstner, double start, double duration)
+    : SeaFade(fft, waves, ocean, resolveWaves(gerstner, ocean), start, duration) {}
+
+SeaFade::SeaFade(const OceanFftCpu& fft, std::span<const GerstnerWave> waves, const OceanDef& ocean,
+                 std::vector<GerstnerWave> newWaves, double start, double duration)
     : m_lambdaFrom(fft.lambda()), m_lambdaTo(-ocean.choppiness), m_wavesFrom(waves.begin(), waves.end()),
-      m_wavesTo(resolveWaves(gerstner, ocean)), m_start(start), m_duration(duration) {
+      m_wavesTo(std::move(newWaves)), m_start(start), m_duration(duration) {
     assert(ocean.resolution == fft.resolution() && ocean.cascades == fft.cascadeCount());
     for (int c = 0; c < fft.cascadeCount(); ++c) {
         m_from.push_back(fft.spectrum(c));

@@ -44,6 +44,10 @@ public:
     /// starting at `start` s over `duration` s. Builds the new h̃0 from ocean.seed's ξ (eq. 4).
     SeaFade(const OceanFftCpu& fft, std::span<const GerstnerWave> waves, const OceanDef& ocean,
             const GerstnerDef& gerstner, double start, double duration = SEA_FADE_SECONDS);
+    /// As above with the new sea's Gerstner waves given (resolveWaves(gerstner, ocean), when the
+    /// caller has them already).
+    SeaFade(const OceanFftCpu& fft, std::span<const GerstnerWave> waves, const OceanDef& ocean,
+            std::vector<GerstnerWave> newWaves, double start, double duration = SEA_FADE_SECONDS);
 
     /// Weight of the new sea at time t, s.
     double weight(double t) const { return fadeWeight(t - m_start, m_duration); }

@@ -1,6 +1,7 @@
 // Wave spectra, seeded h̃0(K) and the vectorised synthesis of h̃(K,t): SPEC §2.1 eq. 2–7,
 // seed 000 §2.1, seed 003; JONSWAP after Hasselmann et al. 1973 (formulas in spectrum.h).
 #include "core/error.h"
+#include "core/parallel.h"
 #include "core/simd.h"
 #include "ocean/fast_trig.h"
 #include "ocean/spectrum.h"
@@ -247,19 +248,25 @@ CascadeSpectrum::CascadeSpectrum(const OceanDef& def, int cascade)
     const WaveBand band = cascadeBand(def, cascade);
     const double dk = TWO_PI / m_patchSize;
     const int half = m_n / 2;
-    for (int m = -half + 1; m < half; ++m) {
-        for (int n = -half + 1; n < half; ++n) {
-            const double kx = waveNumber(n);
-            const double kz = waveNumber(m);
-            const double k = std::sqrt(kx * kx + kz * kz);
-            if (k < band.kMin || k >= band.kMax) continue;
-            const double ph = modeVariance(kx, kz, dk, params);
-            if (ph <= 0.0) continue;
-            const std::complex<double> xi = modeNoise(def.seed, cascade, n, m);
-            m_h0[index(n, m)] = std::complex<float>(xi * std::sqrt(ph / 2.0));
+    // Rows in parallel (a live change of the sea builds a whole spectrum in one step): every
+    // mode is a pure function of (seed, cascade, n, m), so the split changes no bit.
+    parallelFor(-half + 1, half, 16, [&](int mBegin, int mEnd) {
+        for (int m = mBegin; m < mEnd; ++m) {
+            for (int n = -half + 1; n < half; ++n) {
+                const double kx = waveNumber(n);
+                const double kz = waveNumber(m);
+                const double k = std::sqrt(kx * kx + kz * kz);
+                if (k < band.kMin || k >= band.kMax) continue;
+                const double ph = modeVariance(kx, kz, dk, params);
+                if (ph <= 0.0) continue;
+                const std::complex<double> xi = modeNoise(def.seed, cascade, n, m);
+                m_h0[index(n, m)] = std::complex<float>(xi * std::sqrt(ph / 2.0));
+            }
         }
-    }
-    for (size_t idx = 0; idx < m_h0.size(); ++idx) refreshMode(idx);
+    });
+    parallelFor(0, m_n, 16, [&](int rowBegin, int rowEnd) {
+        for (size_t idx = size_t(rowBegin) * m_n; idx < size_t(rowEnd) * m_n; ++idx) refreshMode(idx);
+    });
 }
 
 double CascadeSpectrum::waveNumber(int n) const { return TWO_PI * n / m_patchSize; }

@@ -27,7 +27,8 @@ void addOcean(ecs::World& world, const ocean::OceanDef& def, const ocean::Gerstn
     world.setResource(std::move(state));
 }
 
-void changeSea(ecs::World& world, const ocean::OceanDef& def, const ocean::GerstnerDef& gerstner, double now) {
+void changeSea(ecs::World& world, const ocean::OceanDef& def, const ocean::GerstnerDef& gerstner,
+               std::vector<ocean::GerstnerWave> waves, double now) {
     OceanState* ocean = world.resource<OceanState>();
     if (!ocean) return;
     // Only the live keys change; the rest is what the maps were built with.
@@ -44,6 +45,7 @@ void changeSea(ecs::World& world, const ocean::OceanDef& def, const ocean::Gerst
     ocean->gerstner = gerstner;
     ocean->changed = true;
     ocean->changeTime = now;
+    ocean->changeWaves = std::move(waves);
 }
 
 void oceanSystem(ecs::World& world, const ecs::Tick& tick) {
@@ -55,7 +57,8 @@ void oceanSystem(ecs::World& world, const ecs::Tick& tick) {
     // --- a live change: one fade from the sea as last computed (mid-fade: the blend); the
     // prefetched maps (made before the change) are thrown away
     if (ocean->changed) {
-        ocean->fade = std::make_unique<ocean::SeaFade>(*ocean->cpu, ocean->waves, ocean->def, ocean->gerstner, ocean->changeTime);
+        ocean->fade = std::make_unique<ocean::SeaFade>(*ocean->cpu, ocean->waves, ocean->def, std::move(ocean->changeWaves),
+                                                       ocean->changeTime);
         ocean->changed = false;
         ocean->prefetchTime = -1.0;
     }

@@ -30,6 +30,7 @@ struct OceanState {
     /// the number of keys set in the step: one new spectrum built, one fade started.
     bool changed = false;
     double changeTime = 0.0;                       ///< start of the step that set the change, s
+    std::vector<ocean::GerstnerWave> changeWaves;  ///< the change's Gerstner waves (resolveWaves)
     std::unique_ptr<ocean::SeaFade> fade;          ///< the cross-fade running (kept after its end: null only before the first change)
     std::uint64_t seaVersion = 0;                  ///< counts the steps a fade changed h̃0, λ or the waves (the GPU twin follows)
     std::unique_ptr<ocean::OceanFftCpu> cpu;       ///< FFTW maps (the CPU backend, and the query's data)
@@ -51,7 +52,9 @@ void oceanSystem(ecs::World& world, const ecs::Tick& tick);
 /// phase on the sea cross-fades (ocean/sea_fade.h) from what it is to `def` and `gerstner`
 /// over ocean::SEA_FADE_SECONDS. Keys read once at start (resolution, patch size, cascades,
 /// gravity, backend) keep their values.
-void changeSea(ecs::World& world, const ocean::OceanDef& def, const ocean::GerstnerDef& gerstner, double now);
+/// `waves`: resolveWaves(gerstner, def), checked by the caller.
+void changeSea(ecs::World& world, const ocean::OceanDef& def, const ocean::GerstnerDef& gerstner,
+               std::vector<ocean::GerstnerWave> waves, double now);
 /// Creates the ripple patch resource from the scene's [ripples] (nothing when disabled) and
 /// adds it to the ocean's query; stepSeconds: the simulation step (s).
 void addRipples(ecs::World& world, const interaction::RippleDef& def, float stepSeconds);

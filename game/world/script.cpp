@@ -89,12 +89,16 @@ std::string checkValue(const KeySlot& slot, float value) {
 }
 
 // The one function through which a live key changes the running world: the timeline's `set`
-// events and requestLiveSet alike, inside the fixed step (`now`: the step's start time, s).
-// The key and value are checked already.
-void applyLiveSet(ecs::World& world, ScriptState& script, const std::string& key, float value, double now) {
+// events and requestLiveSet alike, inside the fixed step's script phase (the sea's keys take
+// effect at its end, finishSeaChange). The key and value are checked already.
+void applyLiveSet(ecs::World& world, ScriptState& script, const std::string& key, float value) {
     SceneDef& scene = *script.scene;
-    const ocean::GerstnerDef gerstnerBefore = scene.gerstner;
-    const ocean::OceanDef oceanBefore = scene.ocean;
+    const bool sea = key.rfind("ocean.", 0) == 0 || key.rfind("gerstner.", 0) == 0;
+    if (sea && !script.seaChanged) {  // the sea as the step found it, should its changes be refused
+        script.seaChanged = true;
+        script.oceanBefore = scene.ocean;
+        script.gerstnerBefore = scene.gerstner;
+    }
     if (key == WIND_DIRECTION_DEG) {
         const double rad = double(value) * std::numbers::pi / 180.0;
         scene.ocean.wind_direction = {float(std::cos(rad)), float(std::sin(rad))};
@@ -106,7 +110,8 @@ void applyLiveSet(ecs::World& world, ScriptState& script, const std::string& key
         if (slot.i) *slot.i = int(value);
         if (slot.b) *slot.b = value != 0.0f;
     }
-    // Hand the change to the systems that keep their own copy.
+    // Hand the change to the systems that keep their own copy (the sea: once per step,
+    // finishSeaChange).
     if (key.rfind("camera.", 0) == 0) {
         auto& rigs = world.pool<CameraRig>();
         for (size_t k = 0; k < rigs.size(); ++k) rigs.components()[k].def = scene.camera;
@@ -116,16 +121,27 @@ void applyLiveSet(ecs::World& world, ScriptState& script, const std::string& key
             patch->setDamping(scene.ripples.damping, scene.ripples.decay_time, scene.ripples.viscosity);
     if (key.rfind("physics.", 0) == 0)
         if (auto* physics = world.resource<physics::PhysicsDef>()) *physics = scene.physics;
-    if (key.rfind("ocean.", 0) == 0 || key.rfind("gerstner.", 0) == 0) {
-        // A sea whose generated swell would fold (k·a ≥ 1) is refused as a whole.
-        if (std::vector<std::string> errors = ocean::validate(scene.gerstner, &scene.ocean); !errors.empty()) {
-            logWarn("live set %s = %g refused: %s", key.c_str(), double(value), errors.front().c_str());
-            scene.gerstner = gerstnerBefore;
-            scene.ocean = oceanBefore;
+}
+
+// The step's changes of [ocean] and [gerstner], all keys together: one new swell drawn and
+// checked, one cross-fade. A swell that would fold (a generated wave with k·a ≥ 1) refuses the
+// step's sea changes as a whole (logged), the scene keeping the sea it had.
+void finishSeaChange(ecs::World& world, ScriptState& script, double now) {
+    if (!script.seaChanged) return;
+    script.seaChanged = false;
+    SceneDef& scene = *script.scene;
+    std::vector<ocean::GerstnerWave> waves = ocean::resolveWaves(scene.gerstner, scene.ocean);
+    for (size_t i = scene.gerstner.waves.size(); i < waves.size(); ++i) {
+        const double ka = std::hypot(double(waves[i].kx), double(waves[i].kz)) * double(waves[i].amplitude);
+        if (!(ka < 1.0)) {
+            logWarn("live change of the sea refused: generated Gerstner wave %zu would fold (k·a = %.3g ≥ 1); lower "
+                    "gerstner.amplitude_scale", i - scene.gerstner.waves.size(), ka);
+            scene.ocean = script.oceanBefore;
+            scene.gerstner = script.gerstnerBefore;
             return;
         }
-        changeSea(world, scene.ocean, scene.gerstner, now);
     }
+    changeSea(world, scene.ocean, scene.gerstner, std::move(waves), now);
 }
 
 void fireCannons(ecs::World& world, const std::string& target) {
@@ -161,12 +177,12 @@ void moveCamera(ecs::World& world, const EventDef& e) {
     }
 }
 
-void run(ecs::World& world, ScriptState& script, const EventDef& e, size_t index, double now) {
+void run(ecs::World& world, ScriptState& script, const EventDef& e, size_t index) {
     switch (e.action) {
     case EventAction::Fire: fireCannons(world, e.target); break;
     case EventAction::Spawn: spawnObject(world, e.object, script.seed * 7919ull + 1000000007ull + index); break;
     case EventAction::SetSpeed: setSpeed(world, e.target, e.value); break;
-    case EventAction::Set: applyLiveSet(world, script, e.key, e.value, now); break;
+    case EventAction::Set: applyLiveSet(world, script, e.key, e.value); break;
     case EventAction::Camera: moveCamera(world, e); break;
     case EventAction::Screenshot: script.screenshots.push_back(e.file); break;
     }
@@ -241,15 +257,16 @@ void scriptSystem(ecs::World& world, const ecs::Tick& tick) {
     const double due = tick.time + 0.5 * tick.dt;
     while (script->next < script->events.size() && double(script->events[script->next].at) < due) {
         const size_t index = script->next++;
-        run(world, *script, script->events[index], index, tick.time);
+        run(world, *script, script->events[index], index);
     }
     // The changes asked for from outside the step (the UI) since the last one, in order.
     for (LiveChange& change : script->requested) {
         change.time = tick.time;
-        applyLiveSet(world, *script, change.key, change.value, tick.time);
+        applyLiveSet(world, *script, change.key, change.value);
         script->liveChanges.push_back(std::move(change));
     }
     script->requested.clear();
+    finishSeaChange(world, *script, tick.time);
 }
 
 } // namespace ob::game

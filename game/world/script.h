@@ -5,6 +5,8 @@
 #include "ecs/schedule.h"
 #include "sim/objects.h"
 #include "world/camera.h"
+#include "ocean/gerstner.h"
+#include "ocean/ocean_def.h"
 
 #include <string>
 #include <vector>
@@ -77,6 +79,9 @@ struct ScriptState {
     /// as `set` events at those times they replay the session (the timeline's own `set`
     /// events are not listed: the scene holds them).
     std::vector<LiveChange> liveChanges;
+    bool seaChanged = false;               ///< an [ocean] or [gerstner] key was set in this step (applied at its script phase's end)
+    ocean::OceanDef oceanBefore;           ///< [ocean] as the step found it (restored if the step's sea is refused)
+    ocean::GerstnerDef gerstnerBefore;     ///< [gerstner] likewise
 };
 
 /// Checks what the reader cannot: `set` keys are live numeric keys with values in range,

@@ -17,6 +17,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <complex>
 #include <string>
@@ -377,4 +378,43 @@ TEST_CASE("the same live changes, as requests or as timeline events at their log
     game::Sandbox replayed(replay);
     for (int k = 0; k < 200; ++k) replayed.step();
     CHECK(replayed.stateHash() == requested.stateHash());
+}
+
+// Not a test (hidden, no timing asserts): what a live change costs the step that applies it and
+// each step of its fade, for docs/benchmarks.md. `tests_unit "[.sea_cost]"`.
+TEST_CASE("cost of a live change of the sea: the fade's build and its per-step blend", "[.sea_cost]") {
+    ocean::OceanDef def;  // the showcase scene's sea: 256², 2 cascades
+    def.cascades = 2;
+    def.wind_speed = 16.0f;
+    ocean::OceanDef next = def;
+    next.wind_speed = 20.0f;
+    next.amplitude = 0.002f;
+    ocean::GerstnerDef g;
+    g.count = 8;
+    ocean::OceanFftCpu fft(def);
+    const std::vector<ocean::GerstnerWave> waves = ocean::resolveWaves(g, def);
+    using Clock = std::chrono::steady_clock;
+    const auto ms = [](Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
+    std::vector<double> generate, build, apply, update;
+    for (int r = 0; r < 9; ++r) {
+        const auto t0 = Clock::now();
+        std::vector<ocean::GerstnerWave> target = ocean::resolveWaves(g, next);
+        const auto t1 = Clock::now();
+        ocean::SeaFade fade(fft, waves, next, std::move(target), 0.0);
+        const auto t2 = Clock::now();
+        fade.apply(fft, 1.0);
+        const auto t3 = Clock::now();
+        fft.update(1.0);
+        const auto t4 = Clock::now();
+        generate.push_back(ms(t0, t1));
+        build.push_back(ms(t1, t2));
+        apply.push_back(ms(t2, t3));
+        update.push_back(ms(t3, t4));
+    }
+    const auto median = [](std::vector<double> v) {
+        std::sort(v.begin(), v.end());
+        return v[v.size() / 2];
+    };
+    WARN("median ms of 9: swell drawn " << median(generate) << ", fade built (2 new spectra) " << median(build) << ", blend per step "
+                                        << median(apply) << ", the maps' update " << median(update));
 }
