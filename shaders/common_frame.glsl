@@ -20,9 +20,11 @@ vec3 viewRay(vec2 ndc) {
 
 bool eyeUnderwater() { return u_viewport.w > 0.5; }
 
-// Water body colour lit by the sun's height (linear radiance).
+// Water body colour lit by the sun's height (linear radiance); dark at night (the sun below
+// sin e = −0.18, as common_sky.glsl's daylight()).
 vec3 waterBodyColor() {
-    return u_waterColorExposure.rgb * (0.35 + 0.65 * max(u_sunDirectionFresnel.y, 0.0));
+    float night = mix(0.06, 1.0, smoothstep(-0.18, 0.10, u_sunDirectionFresnel.y));
+    return u_waterColorExposure.rgb * (0.35 + 0.65 * max(u_sunDirectionFresnel.y, 0.0)) * night;
 }
 
 // Light through `dist` metres of water: fades to the body colour (Beer–Lambert by clarity).

@@ -16,9 +16,9 @@ void main() {
     vec3 toEye = u_cameraPositionTime.xyz - v_world;
     float dist = length(toEye);
     vec3 v = toEye / dist;
-    vec3 ambient = mix(vec3(0.10, 0.14, 0.18), skyRadiance(vec3(0.0, 1.0, 0.0), sun) * 0.45, 0.5 + 0.5 * n.y);
-    vec3 light = ambient + vec3(1.0, 0.92, 0.8) * 1.4 * max(dot(n, sun), 0.0);
-    vec3 color = u_tint * v_color * light + 0.25 * pow(max(dot(reflect(-sun, n), v), 0.0), 40.0);
+    vec3 ambient = mix(vec3(0.10, 0.14, 0.18) * daylight(sun), skyRadiance(vec3(0.0, 1.0, 0.0), sun) * 0.45, 0.5 + 0.5 * n.y);
+    vec3 light = ambient + vec3(1.0, 0.92, 0.8) * sunTint(sun) * 1.4 * max(dot(n, sun), 0.0);
+    vec3 color = u_tint * v_color * light + sunTint(sun) * 0.25 * pow(max(dot(reflect(-sun, n), v), 0.0), 40.0);
     if (eyeUnderwater()) {
         color = underwaterFog(color, dist);
     } else {

@@ -129,7 +129,7 @@ void main() {
 
     float F = fresnel(cosV, exact);
     vec3 color = mix(refraction, reflection, F);
-    color += SUN_COLOR * u_shading.z * pow(max(dot(r, sun), 0.0), u_shading.w);
+    color += SUN_COLOR * sunTint(sun) * u_shading.z * pow(max(dot(r, sun), 0.0), u_shading.w);
 
     if (WATER_FOAM) {
         float whitecap = smoothstep(0.6, 0.1, jacobian);
@@ -154,7 +154,7 @@ void main() {
             float lace = smoothstep(threshold - FOAM_EDGE, threshold + FOAM_EDGE, pattern);
             foam = max(foam, coverage > 0.0 ? lace * (0.25 + 0.45 * pattern + 0.3 * min(coverage, 1.0)) : 0.0);
         }
-        color = mix(color, vec3(0.9, 0.95, 1.0) * (0.4 + 0.6 * max(sun.y, 0.0)), foam * 0.85);
+        color = mix(color, vec3(0.9, 0.95, 1.0) * (0.4 + 0.6 * max(sun.y, 0.0)) * daylight(sun), foam * 0.85);
     }
 #ifdef WATER_FULL_QUALITY
     vec3 haze = textureLod(u_sky, normalize(vec3(-v.x, 0.0, -v.z)), 0.0).rgb;

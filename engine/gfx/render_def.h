@@ -19,7 +19,10 @@ constexpr std::array<const char*, 4> names(Antialias) { return {"auto", "off", "
 
 /// Look of the sky and the water surface; every switch removes its pass or term.
 struct RenderDef {
-    glm::vec3 sun_direction{0.35f, 0.30f, 0.88f};  ///< direction toward the sun (world, y up; normalised on use)
+    glm::vec3 sun_direction{0.35f, 0.30f, 0.88f};  ///< direction toward the sun (world, y up; normalised on use); unused when time_of_day is set
+    float time_of_day = -1.0f;                      ///< local solar time, hours, [−1, 24]: the sun stands where it does at that hour (gfx/sun.h; 12 noon toward +z, rising toward +x), sky and light follow; −1 = off (sun_direction)
+    float latitude_deg = 40.0f;                     ///< latitude of the sea for time_of_day, degrees, [−90, 90]
+    float sun_declination_deg = 10.0f;              ///< the sun's declination for time_of_day, degrees, [−23.44, 23.44] (0 at the equinoxes, +23.44 at the June solstice)
     glm::vec3 water_color{0.015f, 0.09f, 0.13f};   ///< deep water body colour (linear RGB, 0..1)
     Fresnel fresnel = Fresnel::Schlick;             ///< "schlick" approximation or "exact" unpolarised equations (n = 1.33)
     bool reflections = true;                        ///< planar reflection pass (objects above the water, mirrored); off: sky only
@@ -45,7 +48,10 @@ struct RenderDef {
 };
 
 template <class V> void describe(V& v, RenderDef& d) {
-    v.field("sun_direction", d.sun_direction, direction(), "direction toward the sun (world, y up)");
+    v.field("sun_direction", d.sun_direction, direction(), "direction toward the sun (world, y up); unused when time_of_day is set");
+    v.field("time_of_day", d.time_of_day, range(-1, 24), "local solar time, hours: places the sun (12 = noon); -1 = off (sun_direction)");
+    v.field("latitude_deg", d.latitude_deg, range(-90, 90), "latitude for time_of_day, degrees");
+    v.field("sun_declination_deg", d.sun_declination_deg, range(-23.44, 23.44), "the sun's declination for time_of_day, degrees");
     v.field("water_color", d.water_color, range(0, 1), "deep water body colour (linear RGB)");
     v.field("fresnel", d.fresnel, "Fresnel term: Schlick or exact (n = 1.33)");
     v.field("reflections", d.reflections, "planar reflection pass (local objects mirrored); off: sky only");

@@ -1,5 +1,6 @@
 // Renderer passes and the screenshot read-back.
 #include "gfx/renderer.h"
+#include "gfx/sun.h"
 
 #include "core/error.h"
 #include "core/file_write.h"
@@ -210,7 +211,7 @@ void Renderer::bakeDetailMaps() {
 // view-projection stays the camera's.
 void Renderer::updateFrameUniforms(const CameraView& camera, double time, glm::ivec2 size) {
     FrameUniforms u{};
-    u.sunDirectionFresnel = glm::vec4(glm::normalize(m_def.sun_direction), m_def.fresnel == Fresnel::Exact ? 1.0f : 0.0f);
+    u.sunDirectionFresnel = glm::vec4(sunDirection(m_def), m_def.fresnel == Fresnel::Exact ? 1.0f : 0.0f);
     u.waterColorExposure = glm::vec4(m_def.water_color, m_def.exposure);
     u.depthParams = glm::vec4(camera.nearM, camera.farM, m_def.water_clarity, float(mipLevels(SKY_CUBE_SIZE)));
     u.shading = glm::vec4(m_def.dudv_strength, m_def.normal_distortion, m_def.glitter, m_def.glitter_shininess);
@@ -280,7 +281,7 @@ void Renderer::render(const CameraView& camera, const WaterView& water, const st
     m_pixelsPerRadian[REFLECTION_VIEW] = m_pixelsPerRadian[REFRACTION_VIEW] = 0.5f * float(m_reflection.size.y) * camera.projection[1][1];
 
     // --- passes
-    if (glm::normalize(m_def.sun_direction) != m_bakedSun) skyBakePass();
+    if (sunDirection(m_def) != m_bakedSun) skyBakePass();
     prepareWater(camera, water, internal.y);
     uploadSplashDrops(drops, camera);
     const bool above = !m_underwater;
@@ -327,7 +328,7 @@ static const glm::mat3 CUBE_FACES[6] = {
 void Renderer::skyBakePass() {
     glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, SKY_BAKE_PASS, -1, "sky bake");
     m_passTimers[SKY_BAKE_PASS].begin();
-    m_bakedSun = glm::normalize(m_def.sun_direction);
+    m_bakedSun = sunDirection(m_def);
     glBindBufferBase(GL_UNIFORM_BUFFER, FRAME_UBO_BINDING, m_frameUniforms[MAIN_VIEW].id());
     glBindFramebuffer(GL_FRAMEBUFFER, m_skyBakeFramebuffer.id());
     glViewport(0, 0, SKY_CUBE_SIZE, SKY_CUBE_SIZE);

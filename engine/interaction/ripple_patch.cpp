@@ -23,6 +23,13 @@ RipplePatch::RipplePatch(const RippleDef& def)
 
 RipplePatch::~RipplePatch() = default;
 
+void RipplePatch::setDamping(float damping, float decayTime, float viscosity) {
+    m_def.damping = damping;
+    m_def.decay_time = decayTime;
+    m_def.viscosity = viscosity;
+    if (m_ewave) m_ewave->setDamping(decayTime, viscosity);  // the GPU twin takes it from the field at its next step
+}
+
 void RipplePatch::step(float dt) {
     if (m_ewave) {
         const bool sources = !m_sources.empty();

@@ -67,8 +67,9 @@ public:
     void step(float dt);
 
     const RippleDef& def() const { return m_def; }
-    /// Changes DF (eq. 2) from the next step on, [0, 1] (kang2008).
-    void setDamping(float damping) { m_def.damping = damping; }
+    /// Changes the damping from the next step on: DF (eq. 2) in [0, 1] (kang2008); the decay
+    /// time τ in s and viscosity ν in m²/s, ≥ 0, 0 = none (ewave).
+    void setDamping(float damping, float decayTime, float viscosity);
     /// kang2008's field (a 1×1 placeholder under ewave), writable: on the GPU, call
     /// fieldEdited() after writing it.
     RippleField& field() { return m_field; }

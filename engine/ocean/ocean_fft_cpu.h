@@ -60,6 +60,8 @@ public:
     double patchSize(int cascade) const;
     /// λ of X + λ·D and of the Jacobian: −choppiness (SPEC eq. 7 sign: λ < 0 sharpens crests).
     float lambda() const { return m_lambda; }
+    /// Sets λ for the next update() (a live change of ocean.choppiness: λ = −choppiness).
+    void setLambda(float lambda) { m_lambda = lambda; }
     /// Workers update() uses.
     int threadCount() const { return m_threads; }
 

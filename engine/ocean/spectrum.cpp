@@ -1,6 +1,7 @@
 // Wave spectra, seeded h̃0(K) and the vectorised synthesis of h̃(K,t): SPEC §2.1 eq. 2–7,
 // seed 000 §2.1, seed 003; JONSWAP after Hasselmann et al. 1973 (formulas in spectrum.h).
 #include "core/error.h"
+#include "core/parallel.h"
 #include "core/simd.h"
 #include "ocean/fast_trig.h"
 #include "ocean/spectrum.h"
@@ -247,19 +248,25 @@ CascadeSpectrum::CascadeSpectrum(const OceanDef& def, int cascade)
     const WaveBand band = cascadeBand(def, cascade);
     const double dk = TWO_PI / m_patchSize;
     const int half = m_n / 2;
-    for (int m = -half + 1; m < half; ++m) {
-        for (int n = -half + 1; n < half; ++n) {
-            const double kx = waveNumber(n);
-            const double kz = waveNumber(m);
-            const double k = std::sqrt(kx * kx + kz * kz);
-            if (k < band.kMin || k >= band.kMax) continue;
-            const double ph = modeVariance(kx, kz, dk, params);
-            if (ph <= 0.0) continue;
-            const std::complex<double> xi = modeNoise(def.seed, cascade, n, m);
-            m_h0[index(n, m)] = std::complex<float>(xi * std::sqrt(ph / 2.0));
+    // Rows in parallel (a live change of the sea builds a whole spectrum in one step): every
+    // mode is a pure function of (seed, cascade, n, m), so the split changes no bit.
+    parallelFor(-half + 1, half, 16, [&](int mBegin, int mEnd) {
+        for (int m = mBegin; m < mEnd; ++m) {
+            for (int n = -half + 1; n < half; ++n) {
+                const double kx = waveNumber(n);
+                const double kz = waveNumber(m);
+                const double k = std::sqrt(kx * kx + kz * kz);
+                if (k < band.kMin || k >= band.kMax) continue;
+                const double ph = modeVariance(kx, kz, dk, params);
+                if (ph <= 0.0) continue;
+                const std::complex<double> xi = modeNoise(def.seed, cascade, n, m);
+                m_h0[index(n, m)] = std::complex<float>(xi * std::sqrt(ph / 2.0));
+            }
         }
-    }
-    for (size_t idx = 0; idx < m_h0.size(); ++idx) refreshMode(idx);
+    });
+    parallelFor(0, m_n, 16, [&](int rowBegin, int rowEnd) {
+        for (size_t idx = size_t(rowBegin) * m_n; idx < size_t(rowEnd) * m_n; ++idx) refreshMode(idx);
+    });
 }
 
 double CascadeSpectrum::waveNumber(int n) const { return TWO_PI * n / m_patchSize; }
@@ -283,6 +290,28 @@ void CascadeSpectrum::setH0(int n, int m, std::complex<float> value) {
 void CascadeSpectrum::clear() {
     std::fill(m_h0.begin(), m_h0.end(), std::complex<float>(0.0f, 0.0f));
     for (size_t idx = 0; idx < m_h0.size(); ++idx) refreshMode(idx);
+}
+
+void CascadeSpectrum::blend(const CascadeSpectrum& from, const CascadeSpectrum& to, float s) {
+    assert(from.m_n == m_n && to.m_n == m_n && from.m_patchSize == m_patchSize && to.m_patchSize == m_patchSize);
+    if (s <= 0.0f || s >= 1.0f) {
+        const CascadeSpectrum& whole = s <= 0.0f ? from : to;
+        m_h0 = whole.m_h0;
+        m_cosRe = whole.m_cosRe;
+        m_sinRe = whole.m_sinRe;
+        m_cosIm = whole.m_cosIm;
+        m_sinIm = whole.m_sinIm;
+        return;
+    }
+    const float r = 1.0f - s;
+    for (size_t i = 0; i < m_h0.size(); ++i) m_h0[i] = r * from.m_h0[i] + s * to.m_h0[i];
+    const auto mix = [&](std::vector<float>& out, const std::vector<float>& a, const std::vector<float>& b) {
+        for (size_t i = 0; i < out.size(); ++i) out[i] = r * a[i] + s * b[i];
+    };
+    mix(m_cosRe, from.m_cosRe, to.m_cosRe);
+    mix(m_sinRe, from.m_sinRe, to.m_sinRe);
+    mix(m_cosIm, from.m_cosIm, to.m_cosIm);
+    mix(m_sinIm, from.m_sinIm, to.m_sinIm);
 }
 
 double CascadeSpectrum::omega(int n, int m) const {

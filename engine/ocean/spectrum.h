@@ -148,6 +148,10 @@ public:
     void setH0(int n, int m, std::complex<float> value);
     /// Sets every h̃0 to 0.
     void clear();
+    /// Sets h̃0 = (1 − s)·from.h̃0 + s·to.h̃0 (both of this N and L; s in [0, 1]) with the
+    /// synthesis coefficients, linear in h̃0 and blended alike: a live change's cross-fade
+    /// (ocean/sea_fade.h). s = 0 and s = 1 copy `from` and `to` bit for bit.
+    void blend(const CascadeSpectrum& from, const CascadeSpectrum& to, float s);
 
     /// ω(k) = sqrt(g·k), rad/s (eq. 3), at signed wave indices.
     double omega(int n, int m) const;

@@ -49,6 +49,12 @@ int CompositeWater::fftRateOrder() const { return m_fft ? std::max(m_frameCount 
 
 // --- update: time, and the FFT frame ring behind the rates --------------------------------
 
+void CompositeWater::setWaves(std::span<const ocean::GerstnerWave> waves, float gravity) {
+    const double t = m_gerstner.time();
+    m_gerstner = ocean::GerstnerField(waves, gravity);
+    m_gerstner.setTime(t);
+}
+
 void CompositeWater::update(double t) {
     m_gerstner.setTime(t);
     if (!m_fft) return;

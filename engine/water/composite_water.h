@@ -78,6 +78,8 @@ public:
     /// Points the query at another CPU ocean of the same resolution and cascades (the double
     /// buffer of a prefetched step); update() then records its maps.
     void setFft(const ocean::OceanFftCpu* fft) { m_fft = fft; }
+    /// Replaces the Gerstner waves (a live change's cross-fade), keeping the time; gravity m/s².
+    void setWaves(std::span<const ocean::GerstnerWave> waves, float gravity);
     /// Sets the ripple layer (replaces any earlier hook).
     void setRipple(RippleHook hook);
     /// Sets the time, seconds, and records the FFT's new maps for its rates. Call once per

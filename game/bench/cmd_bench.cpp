@@ -203,14 +203,14 @@ int benchSpheres(const SpheresBenchArgs& a) {
 }
 
 void addBenchCommand(CLI::App& app, CommandAction& action, const std::string& commandLine) {
-    CLI::App* bench = app.add_subcommand("bench", "benchmarks that reproduce the papers' tables (spheres, fields, ocean, frame)");
+    CLI::App* bench = app.add_subcommand("bench", "benchmarks that reproduce the papers' tables (spheres, fields, ocean, frame, sea)");
     bench->require_subcommand(0, 1);
     bench->callback([&action, bench] {
         if (!bench->get_subcommands().empty()) return;
         std::string got;
         for (const std::string& word : bench->remaining()) got += (got.empty() ? "" : " ") + word;
         action = [got] {
-            throw InputError("bench: expected a kind, spheres, fields, ocean or frame" +
+            throw InputError("bench: expected a kind, spheres, fields, ocean, frame or sea" +
                              (got.empty() ? std::string() : ", got '" + got + "'"));
             return EXIT_BAD_INPUT;
         };
@@ -276,6 +276,21 @@ void addBenchCommand(CLI::App& app, CommandAction& action, const std::string& co
     r->add_option("--set", frame->sets, "override a scene key: key.path=value (repeatable)");
     addOutputFlags(r, frame->output);
     r->callback([&action, frame] { action = [frame] { return benchFrame(*frame); }; });
+
+    // bench sea [SCENE]
+    auto sea = std::make_shared<SeaBenchArgs>();
+    sea->output.command = commandLine;
+    CLI::App* e = bench->add_subcommand("sea", "frame times across a live change of the sea (cross-fade): max frame / median");
+    e->add_option("scene", sea->scene, "scene name (config/scenes/NAME.toml) or path (default: default)");
+    e->add_option("--size", sea->size, "framebuffer WxH (default: the scene's [window])");
+    e->add_option("--preset", sea->preset, "the change: calm, breeze or storm (default storm)")->check(CLI::IsMember({"calm", "breeze", "storm"}));
+    e->add_option("--before", sea->before, "measured frames before the change (default 60)");
+    e->add_option("--after", sea->after, "measured frames from the change on (default 150)");
+    e->add_option("--warmup", sea->warmup, "frames run before measuring (default 30)");
+    e->add_option("--runs", sea->runs, "runs, each a fresh world (default 3)");
+    e->add_option("--set", sea->sets, "override a scene key: key.path=value (repeatable)");
+    addOutputFlags(e, sea->output);
+    e->callback([&action, sea] { action = [sea] { return benchSea(*sea); }; });
 
     // A word that is no kind lands in bench's extras and is named in the message (set after
     // the subcommands, which would otherwise inherit it).

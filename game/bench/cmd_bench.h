@@ -3,6 +3,7 @@
 //   fields  — seed 001 Table 3, fps by scene and ripple field size, rendered and spheres only
 //   ocean   — seed 000 Tables 1–3, fps against spectrum size: sim + render, sim, FFT, FFTW
 //   frame   — every per-phase and per-pass time of one scene's frame
+//   sea     — frame times across a live change of the sea (the cross-fade): max frame / median
 // Each prints a Markdown table, and writes CSV (--out) and an SVG chart (--chart).
 #pragma once
 #include <CLI/CLI.hpp>
@@ -71,10 +72,24 @@ struct FrameBenchArgs {
     std::vector<std::string> sets;
 };
 
+/// `bench sea [SCENE]`.
+struct SeaBenchArgs {
+    BenchOutput output;
+    std::string scene = "default";  ///< scene name or path
+    std::string size;          ///< "" = the scene's [window]
+    std::string preset = "storm";  ///< the change: a preset (calm, breeze, storm) requested at the change frame
+    int before = 60;           ///< measured frames before the change
+    int after = 150;           ///< measured frames from the change on (the fade is 2 s: 120 steps at 60 Hz)
+    int warmup = 30;           ///< frames run first, not measured
+    int runs = 3;              ///< runs, each a fresh world; the table's last row is their median
+    std::vector<std::string> sets;
+};
+
 int benchSpheres(const SpheresBenchArgs& args);
 int benchFields(const FieldsBenchArgs& args);
 int benchOcean(const OceanBenchArgs& args);
 int benchFrame(const FrameBenchArgs& args);
+int benchSea(const SeaBenchArgs& args);
 
 /// Parses "WxH" (16..8192 each); throws ob::InputError naming the flag.
 std::pair<int, int> parseSize(const std::string& flag, const std::string& text);

@@ -17,6 +17,7 @@ OceanState::~OceanState() = default;
 void addOcean(ecs::World& world, const ocean::OceanDef& def, const ocean::GerstnerDef& gerstner) {
     auto state = std::make_unique<OceanState>();
     state->def = def;
+    state->gerstner = gerstner;
     state->waves = ocean::resolveWaves(gerstner, def);
     state->cpu = std::make_unique<ocean::OceanFftCpu>(def);
     state->water = std::make_unique<water::CompositeWater>(state->waves, def.gravity, state->cpu.get());
@@ -26,12 +27,51 @@ void addOcean(ecs::World& world, const ocean::OceanDef& def, const ocean::Gerstn
     world.setResource(std::move(state));
 }
 
+void changeSea(ecs::World& world, const ocean::OceanDef& def, const ocean::GerstnerDef& gerstner,
+               std::vector<ocean::GerstnerWave> waves, double now) {
+    OceanState* ocean = world.resource<OceanState>();
+    if (!ocean) return;
+    // Only the live keys change; the rest is what the maps were built with.
+    ocean::OceanDef next = ocean->def;
+    next.spectrum = def.spectrum;
+    next.amplitude = def.amplitude;
+    next.wind_speed = def.wind_speed;
+    next.wind_direction = def.wind_direction;
+    next.small_wave_cutoff = def.small_wave_cutoff;
+    next.choppiness = def.choppiness;
+    next.fetch = def.fetch;
+    next.peak_enhancement = def.peak_enhancement;
+    ocean->def = next;
+    ocean->gerstner = gerstner;
+    ocean->changed = true;
+    ocean->changeTime = now;
+    ocean->changeWaves = std::move(waves);
+}
+
 void oceanSystem(ecs::World& world, const ecs::Tick& tick) {
     OceanState* ocean = world.resource<OceanState>();
     if (!ocean) return;
     // The state after this step is the state at its end time.
     ocean->mapsTime = tick.end;
     if (ocean->prefetch.valid()) ocean->prefetch.get();
+    // --- a live change: one fade from the sea as last computed (mid-fade: the blend); the
+    // prefetched maps (made before the change) are thrown away
+    if (ocean->changed) {
+        ocean->fade = std::make_unique<ocean::SeaFade>(*ocean->cpu, ocean->waves, ocean->def, std::move(ocean->changeWaves),
+                                                       ocean->changeTime);
+        ocean->changed = false;
+        ocean->prefetchTime = -1.0;
+    }
+    // --- the fade's blend at the maps' time; it runs on until both map buffers (cpu, cpuNext)
+    // hold the new sea
+    const bool fading = ocean->fade && tick.time <= ocean->fade->end() + 2.0 * tick.dt;
+    const bool prefetched = ocean->cpuNext && ocean->prefetchTime == ocean->mapsTime;
+    if (fading) {
+        if (!prefetched) ocean->fade->apply(*ocean->cpu, ocean->mapsTime);  // a prefetched buffer took it before its update
+        ocean->waves = ocean->fade->waves(ocean->mapsTime);
+        ocean->water->setWaves(ocean->waves, ocean->def.gravity);
+        ++ocean->seaVersion;
+    }
     if (ocean->cpuNext && ocean->prefetchTime == ocean->mapsTime) {
         std::swap(ocean->cpu, ocean->cpuNext);
         ocean->water->setFft(ocean->cpu.get());
@@ -43,6 +83,7 @@ void oceanSystem(ecs::World& world, const ecs::Tick& tick) {
         // The next step's end time as the schedule will compute it (step / rate + step length);
         // should the bits differ, the next step computes its maps itself.
         ocean->prefetchTime = double(tick.step + 1) / (1.0 / tick.dt) + tick.dt;
+        if (fading) ocean->fade->apply(*ocean->cpuNext, ocean->prefetchTime);
         ocean->prefetch = std::async(std::launch::async, [fft = ocean->cpuNext.get(), t = ocean->prefetchTime] { fft->update(t); });
     }
 }

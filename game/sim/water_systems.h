@@ -3,7 +3,9 @@
 #pragma once
 #include "ecs/schedule.h"
 #include "interaction/ripple_def.h"
+#include "ocean/gerstner.h"
 #include "ocean/ocean_def.h"
+#include "ocean/sea_fade.h"
 
 #include <future>
 #include <memory>
@@ -11,8 +13,6 @@
 
 namespace ob::ocean {
 class OceanFftCpu;
-struct GerstnerDef;
-struct GerstnerWave;
 }
 namespace ob::water {
 class CompositeWater;
@@ -23,8 +23,16 @@ namespace ob::game {
 /// The ocean resource: the simulation state. The CPU maps always exist: they are the water
 /// physics queries (zero latency), whichever backend renders (view/water_view.h: OceanGpu).
 struct OceanState {
-    ocean::OceanDef def;
-    std::vector<ocean::GerstnerWave> waves;        ///< explicit + spectrum-generated Gerstner waves
+    ocean::OceanDef def;                           ///< the sea now (after a live change: the one it fades to)
+    ocean::GerstnerDef gerstner;                   ///< the [gerstner] of `def`
+    std::vector<ocean::GerstnerWave> waves;        ///< explicit + spectrum-generated Gerstner waves (mid-fade: the blend)
+    /// A live change of the sea (changeSea) is applied once, at the next ocean phase, whatever
+    /// the number of keys set in the step: one new spectrum built, one fade started.
+    bool changed = false;
+    double changeTime = 0.0;                       ///< start of the step that set the change, s
+    std::vector<ocean::GerstnerWave> changeWaves;  ///< the change's Gerstner waves (resolveWaves)
+    std::unique_ptr<ocean::SeaFade> fade;          ///< the cross-fade running (kept after its end: null only before the first change)
+    std::uint64_t seaVersion = 0;                  ///< counts the steps a fade changed h̃0, λ or the waves (the GPU twin follows)
     std::unique_ptr<ocean::OceanFftCpu> cpu;       ///< FFTW maps (the CPU backend, and the query's data)
     /// With the GPU backend the query's maps of the next step are computed on another thread
     /// while this frame renders (the step times are known ahead); null otherwise.
@@ -38,8 +46,15 @@ struct OceanState {
 
 /// Creates the ocean resource from the scene's [ocean] and [gerstner].
 void addOcean(ecs::World& world, const ocean::OceanDef& def, const ocean::GerstnerDef& gerstner);
-/// Ocean phase: the CPU maps at the end of this step.
+/// Ocean phase: the CPU maps at the end of this step (a live change's fade applied first).
 void oceanSystem(ecs::World& world, const ecs::Tick& tick);
+/// A live change of [ocean]/[gerstner] in the step starting at `now` s: from the next ocean
+/// phase on the sea cross-fades (ocean/sea_fade.h) from what it is to `def` and `gerstner`
+/// over ocean::SEA_FADE_SECONDS. Keys read once at start (resolution, patch size, cascades,
+/// gravity, backend) keep their values.
+/// `waves`: resolveWaves(gerstner, def), checked by the caller.
+void changeSea(ecs::World& world, const ocean::OceanDef& def, const ocean::GerstnerDef& gerstner,
+               std::vector<ocean::GerstnerWave> waves, double now);
 /// Creates the ripple patch resource from the scene's [ripples] (nothing when disabled) and
 /// adds it to the ocean's query; stepSeconds: the simulation step (s).
 void addRipples(ecs::World& world, const interaction::RippleDef& def, float stepSeconds);

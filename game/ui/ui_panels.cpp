@@ -1,5 +1,6 @@
-// Stats (per-phase ms and their graph), the player's ship and cannon, live settings (the
-// [render] keys), every other scene key on a copy applied by restarting, "save scene as".
+// Stats (per-phase ms and their graph), the player's ship and cannon, the sea (ui/sea_panel),
+// live settings (the [render] keys), every other scene key on a copy applied by restarting,
+// "save scene as".
 #include "ui/ui_panels.h"
 
 #include "world/camera.h"
@@ -11,6 +12,7 @@
 #include "gfx/ui_overlay.h"
 #include "world/tools.h"
 #include "behaviours/ship.h"
+#include "ui/sea_panel.h"
 
 #include <cfloat>
 #include <filesystem>
@@ -196,6 +198,7 @@ void drawPanels(ecs::World& world, SceneDef& scene, const ecs::FrameTimer& timer
     }
     if (ImGui::CollapsingHeader("timing graph")) timingGraph(timer);
     playerPanel(world);
+    seaPanel(world, scene);
     gfx::UiEditor editor;
     editor.section("render", scene.render);
     const SceneDef shown = sceneEditor(scene, restart);

@@ -75,6 +75,14 @@ gfx::WaterView prepareWaterView(ecs::World& world, double time) {
     if (!ocean || !side) return view;
     // The GPU backend synthesises at the render time; the CPU one uploads its latest step.
     double wanted = side->gpu ? time : ocean->mapsTime;
+    // A live change's fade: the GPU synthesises from the CPU's blended h̃0 and λ (at the step's
+    // end, within a step of the render time).
+    if (side->gpu && side->seaVersion != ocean->seaVersion) {
+        for (int c = 0; c < ocean->def.cascades; ++c) side->gpu->setSpectrum(c, ocean->cpu->spectrum(c));
+        side->gpu->setLambda(ocean->cpu->lambda());
+        side->seaVersion = ocean->seaVersion;
+        side->uploadedTime = -1.0;
+    }
     if (wanted >= 0.0 && wanted != side->uploadedTime) {
         if (side->gpu) side->gpu->update(time, *side->textures);
         else side->textures->upload(*ocean->cpu);
@@ -86,7 +94,7 @@ gfx::WaterView prepareWaterView(ecs::World& world, double time) {
     view.cascades = ocean->def.cascades;
     view.resolution = ocean->def.resolution;
     for (int c = 0; c < ocean->def.cascades; ++c) view.cascadeSize[size_t(c)] = float(ocean::cascadePatchSize(ocean->def, c));
-    view.lambda = -ocean->def.choppiness;
+    view.lambda = ocean->cpu->lambda();  // mid-fade: the blend
     view.gravity = ocean->def.gravity;
     // How far the grid must reach: the extremes of the CPU maps (at the step's end). The GPU
     // synthesises at the render time, up to a few steps from those maps; the extremes of the

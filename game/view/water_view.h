@@ -4,6 +4,7 @@
 #include "ecs/world.h"
 #include "gfx/renderer.h"
 
+#include <cstdint>
 #include <memory>
 
 namespace ob::ocean {
@@ -18,6 +19,7 @@ struct OceanGpu {
     std::unique_ptr<ocean::OceanTextures> textures;
     std::unique_ptr<ocean::OceanFftGpu> gpu;  ///< set when the GPU backend renders
     double uploadedTime = -1.0;               ///< time of the maps in the textures (s)
+    std::uint64_t seaVersion = 0;             ///< OceanState::seaVersion the GPU FFT's h̃0 and λ follow
     ~OceanGpu();
 };
 

@@ -89,7 +89,7 @@ static SceneDef readScene(TomlDocument& doc, const std::string& source, const st
     // Checks across keys and files, once every key is read and in range.
     if (errors.empty()) {
         for (const std::string& e : ocean::validate(scene.gerstner, &scene.ocean)) errors.push_back(source + ": " + e);
-        for (const std::string& e : validateEvents(scene, source)) errors.push_back(e);
+        for (const std::string& e : validateEvents(scene, source, &doc)) errors.push_back(e);
         if (scene.ripples.model == interaction::RippleModel::Kang2008 && scene.ripples.boundary == interaction::RippleBoundary::Periodic)
             errors.push_back(doc.where("ripples.boundary", source) +
                              ": ripples.boundary: \"periodic\" needs ripples.model = \"ewave\" (kang2008 has \"fixed\" "

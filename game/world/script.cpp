@@ -7,14 +7,17 @@
 #include "world/camera.h"
 #include "behaviours/cannon.h"
 #include "core/log.h"
+#include "core/toml_reader.h"
 #include "ecs/components.h"
 #include "behaviours/fish.h"
 #include "interaction/ripple_patch.h"
 #include "world/scene.h"
 #include "behaviours/ship.h"
+#include "sim/water_systems.h"
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <set>
 
 namespace ob::game {
@@ -58,11 +61,22 @@ struct KeySlot {
     bool found() const { return f || i || b; }
 };
 
-// Keys whose change reaches the running simulation (the rest are read once at start).
+// Keys whose change reaches the running world (the rest are read once at start). The sea's
+// keys cross-fade (changeSea); ripple damping and physics keys apply from the next step.
+const std::set<std::string> LIVE_KEYS{
+    "physics.water_density", "physics.linear_drag", "physics.quadratic_drag", "physics.angular_damping",
+    "physics.buoyancy_along_normal", "ripples.damping", "ripples.decay_time", "ripples.viscosity",
+    "ocean.wind_speed", "ocean.amplitude", "ocean.choppiness", "ocean.small_wave_cutoff", "ocean.fetch",
+    "ocean.peak_enhancement", "gerstner.amplitude_scale", "gerstner.count"};
+
+// A live-only key: the wind's heading in degrees, counter-clockwise from +x toward +z (a `set`
+// carries one number; ocean.wind_direction is a vector). It writes ocean.wind_direction =
+// [cos, sin].
+constexpr const char* WIND_DIRECTION_DEG = "ocean.wind_direction_deg";
+constexpr double WIND_DIRECTION_LIMIT = 3600.0;
+
 bool isLiveKey(const std::string& key) {
-    static const std::set<std::string> PHYSICS{"physics.water_density", "physics.linear_drag", "physics.quadratic_drag",
-                                               "physics.angular_damping", "physics.buoyancy_along_normal"};
-    return key.rfind("render.", 0) == 0 || key.rfind("camera.", 0) == 0 || key == "ripples.damping" || PHYSICS.count(key);
+    return key.rfind("render.", 0) == 0 || key.rfind("camera.", 0) == 0 || LIVE_KEYS.count(key) || key == WIND_DIRECTION_DEG;
 }
 
 // Checks `value` against the slot; "" when it fits.
@@ -74,23 +88,60 @@ std::string checkValue(const KeySlot& slot, float value) {
     return "";
 }
 
-void setKey(ecs::World& world, ScriptState& script, const EventDef& e) {
+// The one function through which a live key changes the running world: the timeline's `set`
+// events and requestLiveSet alike, inside the fixed step's script phase (the sea's keys take
+// effect at its end, finishSeaChange). The key and value are checked already.
+void applyLiveSet(ecs::World& world, ScriptState& script, const std::string& key, float value) {
     SceneDef& scene = *script.scene;
-    KeySlot slot(e.key);
-    describe(slot, scene);
-    if (!slot.found()) return;  // validated at load
-    if (slot.f) *slot.f = e.value;
-    if (slot.i) *slot.i = int(e.value);
-    if (slot.b) *slot.b = e.value != 0.0f;
-    // Hand the change to the systems that keep their own copy.
-    if (e.key.rfind("camera.", 0) == 0) {
+    const bool sea = key.rfind("ocean.", 0) == 0 || key.rfind("gerstner.", 0) == 0;
+    if (sea && !script.seaChanged) {  // the sea as the step found it, should its changes be refused
+        script.seaChanged = true;
+        script.oceanBefore = scene.ocean;
+        script.gerstnerBefore = scene.gerstner;
+    }
+    if (key == WIND_DIRECTION_DEG) {
+        const double rad = double(value) * std::numbers::pi / 180.0;
+        scene.ocean.wind_direction = {float(std::cos(rad)), float(std::sin(rad))};
+    } else {
+        KeySlot slot(key);
+        describe(slot, scene);
+        if (!slot.found()) return;  // checked before
+        if (slot.f) *slot.f = value;
+        if (slot.i) *slot.i = int(value);
+        if (slot.b) *slot.b = value != 0.0f;
+    }
+    // Hand the change to the systems that keep their own copy (the sea: once per step,
+    // finishSeaChange).
+    if (key.rfind("camera.", 0) == 0) {
         auto& rigs = world.pool<CameraRig>();
         for (size_t k = 0; k < rigs.size(); ++k) rigs.components()[k].def = scene.camera;
     }
-    if (e.key == "ripples.damping")
-        if (auto* patch = world.resource<interaction::RipplePatch>()) patch->setDamping(scene.ripples.damping);
-    if (e.key.rfind("physics.", 0) == 0)
+    if (key.rfind("ripples.", 0) == 0)
+        if (auto* patch = world.resource<interaction::RipplePatch>())
+            patch->setDamping(scene.ripples.damping, scene.ripples.decay_time, scene.ripples.viscosity);
+    if (key.rfind("physics.", 0) == 0)
         if (auto* physics = world.resource<physics::PhysicsDef>()) *physics = scene.physics;
+}
+
+// The step's changes of [ocean] and [gerstner], all keys together: one new swell drawn and
+// checked, one cross-fade. A swell that would fold (a generated wave with k·a ≥ 1) refuses the
+// step's sea changes as a whole (logged), the scene keeping the sea it had.
+void finishSeaChange(ecs::World& world, ScriptState& script, double now) {
+    if (!script.seaChanged) return;
+    script.seaChanged = false;
+    SceneDef& scene = *script.scene;
+    std::vector<ocean::GerstnerWave> waves = ocean::resolveWaves(scene.gerstner, scene.ocean);
+    for (size_t i = scene.gerstner.waves.size(); i < waves.size(); ++i) {
+        const double ka = std::hypot(double(waves[i].kx), double(waves[i].kz)) * double(waves[i].amplitude);
+        if (!(ka < 1.0)) {
+            logWarn("live change of the sea refused: generated Gerstner wave %zu would fold (k·a = %.3g ≥ 1); lower "
+                    "gerstner.amplitude_scale", i - scene.gerstner.waves.size(), ka);
+            scene.ocean = script.oceanBefore;
+            scene.gerstner = script.gerstnerBefore;
+            return;
+        }
+    }
+    changeSea(world, scene.ocean, scene.gerstner, std::move(waves), now);
 }
 
 void fireCannons(ecs::World& world, const std::string& target) {
@@ -131,7 +182,7 @@ void run(ecs::World& world, ScriptState& script, const EventDef& e, size_t index
     case EventAction::Fire: fireCannons(world, e.target); break;
     case EventAction::Spawn: spawnObject(world, e.object, script.seed * 7919ull + 1000000007ull + index); break;
     case EventAction::SetSpeed: setSpeed(world, e.target, e.value); break;
-    case EventAction::Set: setKey(world, script, e); break;
+    case EventAction::Set: applyLiveSet(world, script, e.key, e.value); break;
     case EventAction::Camera: moveCamera(world, e); break;
     case EventAction::Screenshot: script.screenshots.push_back(e.file); break;
     }
@@ -140,7 +191,7 @@ void run(ecs::World& world, ScriptState& script, const EventDef& e, size_t index
 
 } // namespace
 
-std::vector<std::string> validateEvents(SceneDef& scene, const std::string& source) {
+std::vector<std::string> validateEvents(SceneDef& scene, const std::string& source, const TomlDocument* doc) {
     std::vector<std::string> errors;
     std::set<std::string> names;
     for (const ObjectDef& o : scene.objects) names.insert(o.name);
@@ -148,26 +199,46 @@ std::vector<std::string> validateEvents(SceneDef& scene, const std::string& sour
         if (e.action == EventAction::Spawn) names.insert(e.object.name);
     for (size_t k = 0; k < scene.events.size(); ++k) {
         const EventDef& e = scene.events[k];
-        const std::string where = source + ": events[" + std::to_string(k) + "].";
-        if (e.action == EventAction::Set) {
-            KeySlot slot(e.key);
-            describe(slot, scene);
-            if (!slot.found()) errors.push_back(where + "key: '" + e.key + "' is not a number or switch of the scene");
-            else if (!isLiveKey(e.key))
-                errors.push_back(where + "key: '" + e.key + "' is read once at start; live keys: render.*, camera.*, ripples.damping, " +
-                                 "physics.water_density, physics.linear_drag, physics.quadratic_drag, physics.angular_damping, " +
-                                 "physics.buoyancy_along_normal");
-            else if (std::string m = checkValue(slot, e.value); !m.empty())
-                errors.push_back(where + "value: " + m);
-        }
+        const std::string path = "events[" + std::to_string(k) + "].";
+        // "file:line:column: events[k].field: " where the document has the field, else "file: …".
+        const auto at = [&](const std::string& field) { return (doc ? doc->where(path + field, source) : source) + ": " + path; };
+        if (e.action == EventAction::Set)
+            if (std::string m = checkLiveSet(scene, e.key, e.value); !m.empty()) errors.push_back(at(m.substr(0, m.find(':'))) + m);
         const bool named = e.action == EventAction::Fire || e.action == EventAction::SetSpeed || e.action == EventAction::Camera;
         if (named && !e.target.empty() && !names.count(e.target))
-            errors.push_back(where + "target: no object is named '" + e.target + "'");
+            errors.push_back(at("target") + "target: no object is named '" + e.target + "'");
         if (e.action == EventAction::SetSpeed && !(e.value >= 0.0f && e.value <= 100.0f))
-            errors.push_back(where + "value: a speed in [0, 100] m/s, got " + std::to_string(e.value));
-        if (e.action == EventAction::Screenshot && e.file.empty()) errors.push_back(where + "file: a screenshot needs a file name");
+            errors.push_back(at("value") + "value: a speed in [0, 100] m/s, got " + std::to_string(e.value));
+        if (e.action == EventAction::Screenshot && e.file.empty()) errors.push_back(at("file") + "file: a screenshot needs a file name");
     }
     return errors;
+}
+
+std::string liveKeyHelp() {
+    std::string keys = "render.*, camera.*, " + std::string(WIND_DIRECTION_DEG);
+    for (const std::string& k : LIVE_KEYS) keys += ", " + k;
+    return keys;
+}
+
+std::string checkLiveSet(SceneDef& scene, const std::string& key, float value) {
+    if (key == WIND_DIRECTION_DEG)
+        return std::abs(value) <= WIND_DIRECTION_LIMIT
+                   ? ""
+                   : "value: " + key + " takes degrees in [-3600, 3600], got " + std::to_string(value);
+    KeySlot slot(key);
+    describe(slot, scene);
+    if (!slot.found()) return "key: '" + key + "' is not a number or switch of the scene";
+    if (!isLiveKey(key)) return "key: '" + key + "' is read once at start; live keys: " + liveKeyHelp();
+    if (std::string m = checkValue(slot, value); !m.empty()) return "value: " + m + " (" + key + ")";
+    return "";
+}
+
+std::string requestLiveSet(ecs::World& world, const std::string& key, float value) {
+    auto* script = world.resource<ScriptState>();
+    if (!script) return "no timeline in this world";
+    if (std::string m = checkLiveSet(*script->scene, key, value); !m.empty()) return m;
+    script->requested.push_back({0.0, key, value});
+    return "";
 }
 
 void addScript(ecs::World& world, SceneDef& scene) {
@@ -188,6 +259,14 @@ void scriptSystem(ecs::World& world, const ecs::Tick& tick) {
         const size_t index = script->next++;
         run(world, *script, script->events[index], index);
     }
+    // The changes asked for from outside the step (the UI) since the last one, in order.
+    for (LiveChange& change : script->requested) {
+        change.time = tick.time;
+        applyLiveSet(world, *script, change.key, change.value);
+        script->liveChanges.push_back(std::move(change));
+    }
+    script->requested.clear();
+    finishSeaChange(world, *script, tick.time);
 }
 
 } // namespace ob::game

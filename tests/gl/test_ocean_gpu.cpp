@@ -3,6 +3,7 @@
 // single wave (eq. 2, 3, 6, 7); the CPU upload path (timings: tests/bench/bench_ocean.cpp).
 #include "gfx/gl.h"
 #include "ocean/ocean_fft_cpu.h"
+#include "ocean/sea_fade.h"
 #include "ocean/gpu/ocean_fft_gpu.h"
 #include "ocean/gpu/ocean_textures.h"
 #include "platform/platform.h"
@@ -302,4 +303,39 @@ TEST_CASE("the GPU backend rejects a resolution its shared-memory FFT cannot hol
     OceanDef def;
     def.resolution = 4096;
     CHECK_THROWS_WITH(OceanFftGpu(def), Catch::Contains("ocean.resolution"));
+}
+
+TEST_CASE("a live change of the sea reaches the GPU backend: mid-fade and after it, its maps are the CPU's",
+          "[ocean_gpu][sea_live]") {
+    // What view/water_view.cpp does each step of a fade: the CPU's blended h̃0 and λ handed to
+    // the GPU FFT (setSpectrum, setLambda), which then synthesises the same sea.
+    auto context = glContext();
+    const int errorsBefore = gfx::glErrorCount();
+    OceanDef def;
+    def.resolution = 64;
+    def.cascades = 2;
+    def.wind_speed = 8.0f;
+    OceanDef storm = def;
+    storm.wind_speed = 20.0f;
+    storm.wind_direction = {0.0f, 1.0f};
+    storm.choppiness = 1.6f;
+    OceanFftCpu cpu(def, 1);
+    OceanFftGpu gpu(def);
+    OceanTextures textures(def.resolution, def.cascades);
+    const SeaFade fade(cpu, {}, storm, GerstnerDef{}, 1.0);
+    for (double t : {2.0, 3.5}) {
+        fade.apply(cpu, t);
+        for (int c = 0; c < def.cascades; ++c) gpu.setSpectrum(c, cpu.spectrum(c));
+        gpu.setLambda(cpu.lambda());
+        cpu.update(t);
+        gpu.update(t, textures);
+        const GpuMaps maps = readMaps(textures);
+        for (int c = 0; c < def.cascades; ++c)
+            for (OceanChannel ch : CHANNELS) {
+                const float* expected = cpu.channel(c, ch);
+                checkDeviation(deviation(maps, c, ch, [&](size_t p) { return double(expected[p]); }), "GPU vs FFTW in a fade", ch, c, t);
+            }
+    }
+    CHECK(gpu.lambda() == -storm.choppiness);
+    CHECK(gfx::glErrorCount() == errorsBefore);
 }

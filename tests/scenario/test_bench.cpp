@@ -145,6 +145,19 @@ TEST_CASE("bench frame: one row per phase and timed span, as a bar chart", "[ben
     checkSvg(svg, 1);
 }
 
+TEST_CASE("bench sea: one row per run and their median, the change's frame and phase times", "[bench][sea_live]") {
+    const std::string csv = tempPath("sea.csv");
+    auto r = runOceanbox("bench sea default --size 64x48 --runs 2 --warmup 1 --before 3 --after 4 --preset calm "
+                         "--set ocean.resolution=32 --out " + csv);
+    INFO(r.output);
+    REQUIRE(r.exitCode == 0);
+    const Csv table = readCsv(csv);
+    CHECK(table.header == "run,median_ms,max_before_ms,max_change_ms,change_frame_ms,max_over_median,script_change_ms,"
+                          "ocean_median_ms,ocean_max_change_ms");
+    REQUIRE(table.rows.size() == 3);
+    CHECK(table.rows.back().at(0) == "median");
+}
+
 TEST_CASE("bench: bad flags exit 2 with a message naming the flag", "[bench]") {
     const struct {
         const char* args;
@@ -162,6 +175,8 @@ TEST_CASE("bench: bad flags exit 2 with a message naming the flag", "[bench]") {
         {"bench ocean --backend vulkan", "--backend"},
         {"bench frame", "scene"},
         {"bench frame default --frames 0", "--frames"},
+        {"bench sea --preset hurricane", "--preset"},
+        {"bench sea --runs 0", "--runs"},
         {"bench warp", "warp"},
         {"bench", "bench"},
     };

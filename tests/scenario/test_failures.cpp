@@ -145,3 +145,18 @@ TEST_CASE("every output path that cannot be written exits 2 in one line and leav
     CHECK(r.exitCode == 2);
     CHECK(r.output.find("--out '/proc/self/models'") != std::string::npos);
 }
+
+TEST_CASE("a bad live set in a scene's timeline exits 2 before the run with the file, line and key", "[failures][sea_live]") {
+    const std::string head = "[[events]]\nat = 1.0\naction = \"set\"\n";
+    const std::string unknown = writeFile(tempPath("set_unknown.toml"), head + "key = \"ocean.gale\"\nvalue = 3.0\n");
+    const std::string fixed = writeFile(tempPath("set_fixed.toml"), head + "key = \"ocean.resolution\"\nvalue = 128\n");
+    const std::string range = writeFile(tempPath("set_range.toml"), head + "key = \"ocean.wind_speed\"\nvalue = 80.0\n");
+    for (const auto& [file, expected] : {std::pair{unknown, unknown + ":4:7: events[0].key: 'ocean.gale'"},
+                                         std::pair{fixed, fixed + ":4:7: events[0].key: 'ocean.resolution' is read once"},
+                                         std::pair{range, range + ":5:9: events[0].value: value out of the key's range"}}) {
+        auto r = runOceanbox("run " + file + " --headless --frames 2 --size 32x32");
+        INFO(r.output);
+        CHECK(r.exitCode == 2);
+        CHECK(r.output.find(expected) != std::string::npos);
+    }
+}

@@ -241,10 +241,10 @@ TEST_CASE("scene errors in objects and events name the key path, events are chec
           "bad.toml:3:22: objects[0].waypoints: expected an array of [x, z] pairs");
     CHECK(sceneError("[[events]]\nat = 1\naction = \"explode\"\n") ==
           "bad.toml:3:10: events[0].action: must be one of \"fire\", \"spawn\", \"set_speed\", \"set\", \"camera\", \"screenshot\", got \"explode\"");
-    CHECK(sceneError("[[events]]\naction = \"fire\"\ntarget = \"nobody\"\n") == "bad.toml: events[0].target: no object is named 'nobody'");
+    CHECK(sceneError("[[events]]\naction = \"fire\"\ntarget = \"nobody\"\n") == "bad.toml:3:10: events[0].target: no object is named 'nobody'");
     CHECK(sceneError("[[events]]\naction = \"set\"\nkey = \"render.nope\"\n") ==
-          "bad.toml: events[0].key: 'render.nope' is not a number or switch of the scene");
-    CHECK(sceneError("[[events]]\naction = \"set\"\nkey = \"ocean.wind_speed\"\nvalue = 3\n").find("is read once at start") != std::string::npos);
+          "bad.toml:3:7: events[0].key: 'render.nope' is not a number or switch of the scene");
+    CHECK(sceneError("[[events]]\naction = \"set\"\nkey = \"ocean.resolution\"\nvalue = 32\n").find("is read once at start") != std::string::npos);
     CHECK(sceneError("[[events]]\naction = \"set\"\nkey = \"ripples.damping\"\nvalue = 3\n").find("events[0].value: value out of") !=
           std::string::npos);
     CHECK(sceneError("[[events]]\naction = \"spawn\"\nobject = { type = \"ship\", speed = -1 }\n") ==

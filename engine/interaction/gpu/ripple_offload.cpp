@@ -50,6 +50,7 @@ public:
     void step(float dt, float /*damping*/, bool cpuChanged) override {
         if (cpuChanged || m_scrolled) m_gpu.upload(m_field);
         m_scrolled = false;
+        m_gpu.setDamping(m_field.decayTime(), m_field.viscosity());  // a live change of ripples.decay_time or .viscosity
         m_gpu.step(dt);
         m_gpu.download(m_field.editHeight(), m_field.editVelocity());
         m_field.syncHeight();

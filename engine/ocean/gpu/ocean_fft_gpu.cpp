@@ -94,6 +94,11 @@ OceanFftGpu::OceanFftGpu(const OceanDef& def) {
     glProgramUniform1f(m_unpack.id(), LAMBDA_LOCATION, m_lambda);
 }
 
+void OceanFftGpu::setLambda(float lambda) {
+    m_lambda = lambda;
+    glProgramUniform1f(m_unpack.id(), LAMBDA_LOCATION, m_lambda);
+}
+
 void OceanFftGpu::setSpectrum(int cascade, const CascadeSpectrum& s) {
     assert(cascade >= 0 && cascade < cascadeCount() && s.resolution() == m_n);
     const int n = m_n, half = n / 2, quarter = half + 1;

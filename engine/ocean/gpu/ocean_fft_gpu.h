@@ -59,6 +59,8 @@ public:
     double patchSize(int cascade) const { return m_patchSizes[size_t(cascade)]; }
     /// λ of X + λ·D and of the Jacobian: −choppiness.
     float lambda() const { return m_lambda; }
+    /// Sets λ for the next update() (a live change of ocean.choppiness).
+    void setLambda(float lambda);
     /// Time of the last update(), seconds (0 before the first).
     double time() const { return m_time; }
 

@@ -1,0 +1,13 @@
+// The Sea panel of the overlay: wind, choppiness, swell, ripple damping, time of day and the
+// weather presets, applied live (each change a requestLiveSet: the next step applies it and
+// the sea cross-fades, so a recording can replay it).
+#pragma once
+#include "ecs/world.h"
+#include "world/scene.h"
+
+namespace ob::game {
+
+/// Draws the panel (inside an ImGui window) for the live scene.
+void seaPanel(ecs::World& world, const SceneDef& scene);
+
+} // namespace ob::game
