@@ -1,5 +1,6 @@
 // Stats (per-phase ms and their graph), the player's ship and cannon, live settings (the
-// [render] keys), every other scene key on a copy applied by restarting, "save scene as".
+// [render] keys), every other scene key on a copy applied by restarting, "save scene as", the
+// scene picker; the goal's HUD and result panel.
 #include "ui/ui_panels.h"
 
 #include "world/camera.h"
@@ -10,9 +11,12 @@
 #include "ecs/components.h"
 #include "gfx/ui_overlay.h"
 #include "behaviours/ship.h"
+#include "goals/goals.h"
 
 #include <cfloat>
+#include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <imgui.h>
 
 namespace ob::game {
@@ -53,6 +57,7 @@ static SceneDef sceneEditor(const SceneDef& scene, std::optional<SceneDef>& rest
     editor.section("physics", edited.physics);
     editor.section("splash", edited.splash);
     editor.section("foam", edited.foam);
+    editor.section("game", edited.game);
     editor.list("objects", edited.objects, "");
     editor.list("events", edited.events, "");
     if (ImGui::Button("restart with these settings")) {
@@ -79,7 +84,7 @@ std::vector<std::string> keyHelp(ecs::World& world) {
     if (cannon) lines.push_back("arrows aim  Space or left click: fire");
     lines.push_back(std::string("right drag ") + (flying ? "look" : "orbit") + "  wheel " + (flying ? "forward" : "zoom") +
                     "  C camera mode (now " + cameraMode(world) + ")");
-    lines.push_back("F fish  P pause  N step (paused)  F12 screenshot  H hide this  Esc quit");
+    lines.push_back("F fish  P pause  N step (paused)  R restart  F12 screenshot  H hide this  Esc quit");
     return lines;
 }
 
@@ -102,8 +107,137 @@ static void playerPanel(ecs::World& world) {
     for (const std::string& line : keyHelp(world)) ImGui::TextDisabled("%s", line.c_str());
 }
 
+// --- the goal: the HUD (top centre) while it runs, the result panel (centre) once it is over
+
+static const ImVec4 WON_COLOR{0.3f, 1.0f, 0.4f, 1.0f}, LOST_COLOR{1.0f, 0.35f, 0.3f, 1.0f}, MISSED_COLOR{1.0f, 0.4f, 0.3f, 1.0f};
+constexpr double MISSED_SHOWN_S = 4.0;  // how long "gate N missed" stays on the HUD
+
+// "12.3 s" or "12.3 / 60 s".
+static std::string clockText(double time, float limit) {
+    char text[64];
+    if (limit > 0.0f) std::snprintf(text, sizeof text, "%.1f / %.0f s", time, double(limit));
+    else std::snprintf(text, sizeof text, "%.1f s", time);
+    return text;
+}
+
+static void gameHud(const GameState& game) {
+    if (game.def.mode == GameMode::None || game.over()) return;
+    const ImVec2 screen = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos(ImVec2(screen.x * 0.5f, 10.0f), ImGuiCond_Always, ImVec2(0.5f, 0.0f));
+    ImGui::SetNextWindowBgAlpha(0.55f);
+    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoInputs |
+                                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav;
+    ImGui::Begin("goal", nullptr, flags);
+    ImGui::SetWindowFontScale(1.5f);
+    const std::string clock = clockText(game.time, game.def.time_limit);
+    switch (game.def.mode) {
+    case GameMode::None: break;
+    case GameMode::Targets:
+        ImGui::Text("TARGETS   hits %d / %zu   time %s", game.score, game.targets.size(), clock.c_str());
+        break;
+    case GameMode::Race: {
+        const size_t shown = std::min(game.nextGate + 1, game.gates.size());
+        ImGui::Text("RACE   gate %zu / %zu   time %s", shown, game.gates.size(), clock.c_str());
+        if (game.missed > 0 && game.def.race.missed_gate == MissedGate::Penalty)
+            ImGui::Text("%d missed: +%.0f s   race time %.1f s", game.missed, double(game.missed) * double(game.def.race.miss_penalty),
+                        game.raceTime());
+        if (game.time - game.lastMissedTime < MISSED_SHOWN_S) ImGui::TextColored(MISSED_COLOR, "%s", game.lastMissed.c_str());
+        break;
+    }
+    case GameMode::Herd:
+        ImGui::Text("HERD   crates in the ring %d / %d   time %s", game.score, game.needed, clock.c_str());
+        break;
+    }
+    ImGui::End();
+}
+
+static void resultPanel(const GameState& game) {
+    if (!game.over()) return;
+    const ImVec2 screen = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos(ImVec2(screen.x * 0.5f, screen.y * 0.4f), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+    ImGui::SetNextWindowBgAlpha(0.75f);
+    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
+                                   ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav;
+    ImGui::Begin("result", nullptr, flags);
+    ImGui::SetWindowFontScale(2.5f);
+    switch (game.result) {
+    case GameResult::Won: ImGui::TextColored(WON_COLOR, "YOU WON"); break;
+    case GameResult::Lost: ImGui::TextColored(LOST_COLOR, "%s", game.reason == "time is up" ? "TIME IS UP" : "LOST"); break;
+    default: ImGui::TextUnformatted("THE END"); break;
+    }
+    ImGui::SetWindowFontScale(1.5f);
+    if (!game.reason.empty()) ImGui::TextUnformatted(game.reason.c_str());
+    switch (game.def.mode) {
+    case GameMode::None: break;
+    case GameMode::Targets: ImGui::Text("score: %d of %zu targets hit", game.score, game.targets.size()); break;
+    case GameMode::Race:
+        ImGui::Text("score: %d of %zu gates passed, %d missed", game.score, game.gates.size(), game.missed);
+        ImGui::Text("race time %.1f s", game.raceTime());
+        break;
+    case GameMode::Herd: ImGui::Text("score: %d crates in the ring (%d to win)", game.score, game.needed); break;
+    }
+    ImGui::Text("time %s", clockText(game.time, game.def.time_limit).c_str());
+    ImGui::Separator();
+    ImGui::TextUnformatted("R restarts, Esc quits");
+    ImGui::End();
+}
+
+// --- the scene picker: config/scenes/*.toml, each with its first comment line
+
+struct SceneEntry {
+    std::string path, name, line;
+};
+
+static std::vector<SceneEntry> sceneFiles() {
+    namespace fs = std::filesystem;
+    std::vector<SceneEntry> scenes;
+    std::error_code ec;
+    for (const auto& entry : fs::directory_iterator(fs::path(defaultScenePath()).parent_path(), ec)) {
+        if (entry.path().extension() != ".toml") continue;
+        SceneEntry scene{entry.path().string(), entry.path().stem().string(), ""};
+        std::ifstream in(entry.path());
+        for (std::string text; std::getline(in, text);)
+            if (text.rfind('#', 0) == 0) {
+                scene.line = text.substr(text.find_first_not_of("# ") == std::string::npos ? text.size() : text.find_first_not_of("# "));
+                break;
+            }
+        scenes.push_back(scene);
+    }
+    std::sort(scenes.begin(), scenes.end(), [](const SceneEntry& a, const SceneEntry& b) { return a.name < b.name; });
+    return scenes;
+}
+
+// Choosing a scene loads it (a file that does not load says why and nothing restarts) and asks
+// for a restart with it.
+static void scenePicker(ecs::World& world, std::optional<SceneDef>& restart) {
+    static std::vector<SceneEntry> scenes;
+    static std::string problem;
+    if (!ImGui::CollapsingHeader("scenes (open one)")) return;
+    if (scenes.empty() || ImGui::SmallButton("refresh")) scenes = sceneFiles();
+    for (const SceneEntry& s : scenes) {
+        if (ImGui::Selectable(s.name.c_str())) {
+            try {
+                restart = loadScene(s.path);
+                if (auto* controls = world.resource<WindowControls>()) controls->sceneSwitch = s.path;
+                problem.clear();
+            } catch (const std::exception& e) {
+                problem = e.what();
+            }
+        }
+        if (!s.line.empty()) {
+            ImGui::SameLine(140.0f);
+            ImGui::TextDisabled("%s", s.line.c_str());
+        }
+    }
+    if (!problem.empty()) ImGui::TextWrapped("%s", problem.c_str());
+}
+
 void drawPanels(ecs::World& world, SceneDef& scene, const ecs::FrameTimer& timer, std::optional<float> dynamicScale,
                 std::optional<SceneDef>& restart) {
+    if (const GameState* game = gameState(world)) {
+        gameHud(*game);
+        resultPanel(*game);
+    }
     if (const auto* controls = world.resource<WindowControls>(); controls && !controls->showOverlay) return;
     ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
     ImGui::Begin("oceanbox");
@@ -135,6 +269,7 @@ void drawPanels(ecs::World& world, SceneDef& scene, const ecs::FrameTimer& timer
     }
     if (ImGui::CollapsingHeader("timing graph")) timingGraph(timer);
     playerPanel(world);
+    scenePicker(world, restart);
     gfx::UiEditor editor;
     editor.section("render", scene.render);
     const SceneDef shown = sceneEditor(scene, restart);

@@ -43,6 +43,7 @@ void controlsSystem(ecs::World& world, const ecs::Tick&) {
     }
     if (sim->paused) sim->stepRequests += input->pressCount(Key::N);
     if (input->wasPressed(Key::H)) controls->showOverlay = !controls->showOverlay;
+    if (input->wasPressed(Key::R)) controls->restart = true;
     for (int i = 0; i < input->pressCount(Key::C); ++i) cycleCameraMode(world);
     for (int i = 0; i < input->pressCount(Key::F12); ++i) {
         // The first free name in the current folder; the frame is written after it is drawn.
