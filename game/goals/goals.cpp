@@ -24,7 +24,7 @@ constexpr glm::vec3 NEXT_GATE_COLOR{1.0f, 0.75f, 0.05f}; // the gate to pass nex
 constexpr glm::vec3 PASSED_COLOR{0.1f, 0.6f, 0.15f};    // a gate passed, a crate in the zone: green
 constexpr glm::vec3 MISSED_COLOR{0.8f, 0.05f, 0.05f};   // a gate missed: red
 constexpr glm::vec3 MARKER_COLOR{1.0f, 0.45f, 0.05f};   // the herd zone's edge: orange
-constexpr float MARKER_RADIUS = 0.3f;                   // m
+constexpr float MARKER_RADIUS = 0.5f;                   // m
 constexpr float TOUCH_SLACK = 0.05f;                    // m a ball may stay off a target and still touch it (Bullet's contact margin)
 
 bool startsWith(const std::string& name, const std::string& prefix) {
@@ -153,7 +153,7 @@ GameResult judgeHerd(ecs::World& world, GameState& game) {
         game.score += in ? 1 : 0;
     }
     if (game.score >= game.needed) {
-        game.reason = std::to_string(game.score) + " crates in the zone";
+        game.reason = std::to_string(game.score) + " crates in the ring";
         return GameResult::Won;
     }
     return GameResult::Running;

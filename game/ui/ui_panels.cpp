@@ -120,10 +120,11 @@ static std::string clockText(double time, float limit) {
     return text;
 }
 
+// Top right: the overlay's panel holds the top left.
 static void gameHud(const GameState& game) {
     if (game.def.mode == GameMode::None || game.over()) return;
     const ImVec2 screen = ImGui::GetIO().DisplaySize;
-    ImGui::SetNextWindowPos(ImVec2(screen.x * 0.5f, 10.0f), ImGuiCond_Always, ImVec2(0.5f, 0.0f));
+    ImGui::SetNextWindowPos(ImVec2(screen.x - 10.0f, 10.0f), ImGuiCond_Always, ImVec2(1.0f, 0.0f));
     ImGui::SetNextWindowBgAlpha(0.55f);
     const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoInputs |
                                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav;
@@ -154,10 +155,11 @@ static void gameHud(const GameState& game) {
 static void resultPanel(const GameState& game) {
     if (!game.over()) return;
     const ImVec2 screen = ImGui::GetIO().DisplaySize;
-    ImGui::SetNextWindowPos(ImVec2(screen.x * 0.5f, screen.y * 0.4f), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+    ImGui::SetNextWindowPos(ImVec2(screen.x * 0.5f, screen.y * 0.08f), ImGuiCond_Always, ImVec2(0.5f, 0.0f));  // over the sky
     ImGui::SetNextWindowBgAlpha(0.75f);
+    ImGui::SetNextWindowFocus();  // over the overlay's panel
     const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
-                                   ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav;
+                                   ImGuiWindowFlags_NoNav;
     ImGui::Begin("result", nullptr, flags);
     ImGui::SetWindowFontScale(2.5f);
     switch (game.result) {
@@ -166,7 +168,7 @@ static void resultPanel(const GameState& game) {
     default: ImGui::TextUnformatted("THE END"); break;
     }
     ImGui::SetWindowFontScale(1.5f);
-    if (!game.reason.empty()) ImGui::TextUnformatted(game.reason.c_str());
+    if (!game.reason.empty() && game.reason != "time is up") ImGui::TextUnformatted(game.reason.c_str());
     switch (game.def.mode) {
     case GameMode::None: break;
     case GameMode::Targets: ImGui::Text("score: %d of %zu targets hit", game.score, game.targets.size()); break;
@@ -207,12 +209,19 @@ static std::vector<SceneEntry> sceneFiles() {
     return scenes;
 }
 
-// Choosing a scene loads it (a file that does not load says why and nothing restarts) and asks
-// for a restart with it.
+// Its own window at the bottom left, folded at first. Choosing a scene loads it (a file that
+// does not load says why and nothing restarts) and asks for a restart with it.
 static void scenePicker(ecs::World& world, std::optional<SceneDef>& restart) {
     static std::vector<SceneEntry> scenes;
     static std::string problem;
-    if (!ImGui::CollapsingHeader("scenes (open one)")) return;
+    const ImVec2 screen = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos(ImVec2(10.0f, screen.y - 10.0f), ImGuiCond_Always, ImVec2(0.0f, 1.0f));
+    ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);
+    const bool open = ImGui::Begin("scenes: click one to open it", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings);
+    if (!open) {
+        ImGui::End();
+        return;
+    }
     if (scenes.empty() || ImGui::SmallButton("refresh")) scenes = sceneFiles();
     for (const SceneEntry& s : scenes) {
         if (ImGui::Selectable(s.name.c_str())) {
@@ -230,6 +239,7 @@ static void scenePicker(ecs::World& world, std::optional<SceneDef>& restart) {
         }
     }
     if (!problem.empty()) ImGui::TextWrapped("%s", problem.c_str());
+    ImGui::End();
 }
 
 void drawPanels(ecs::World& world, SceneDef& scene, const ecs::FrameTimer& timer, std::optional<float> dynamicScale,
@@ -269,7 +279,6 @@ void drawPanels(ecs::World& world, SceneDef& scene, const ecs::FrameTimer& timer
     }
     if (ImGui::CollapsingHeader("timing graph")) timingGraph(timer);
     playerPanel(world);
-    scenePicker(world, restart);
     gfx::UiEditor editor;
     editor.section("render", scene.render);
     const SceneDef shown = sceneEditor(scene, restart);
@@ -285,6 +294,7 @@ void drawPanels(ecs::World& world, SceneDef& scene, const ecs::FrameTimer& timer
     }
     if (!status.empty()) ImGui::TextUnformatted(status.c_str());
     ImGui::End();
+    scenePicker(world, restart);
 }
 
 } // namespace ob::game
