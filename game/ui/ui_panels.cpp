@@ -157,7 +157,6 @@ static void resultPanel(const GameState& game) {
     const ImVec2 screen = ImGui::GetIO().DisplaySize;
     ImGui::SetNextWindowPos(ImVec2(screen.x * 0.5f, screen.y * 0.08f), ImGuiCond_Always, ImVec2(0.5f, 0.0f));  // over the sky
     ImGui::SetNextWindowBgAlpha(0.75f);
-    ImGui::SetNextWindowFocus();  // over the overlay's panel
     const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
                                    ImGuiWindowFlags_NoNav;
     ImGui::Begin("result", nullptr, flags);
@@ -176,7 +175,7 @@ static void resultPanel(const GameState& game) {
         ImGui::Text("score: %d of %zu gates passed, %d missed", game.score, game.gates.size(), game.missed);
         ImGui::Text("race time %.1f s", game.raceTime());
         break;
-    case GameMode::Herd: ImGui::Text("score: %d crates in the ring (%d to win)", game.score, game.needed); break;
+    case GameMode::Herd: ImGui::Text("score: %d in the ring, %d needed", game.score, game.needed); break;
     }
     ImGui::Text("time %s", clockText(game.time, game.def.time_limit).c_str());
     ImGui::Separator();
@@ -244,13 +243,16 @@ static void scenePicker(ecs::World& world, std::optional<SceneDef>& restart) {
 
 void drawPanels(ecs::World& world, SceneDef& scene, const ecs::FrameTimer& timer, std::optional<float> dynamicScale,
                 std::optional<SceneDef>& restart) {
-    if (const GameState* game = gameState(world)) {
-        gameHud(*game);
-        resultPanel(*game);
-    }
-    if (const auto* controls = world.resource<WindowControls>(); controls && !controls->showOverlay) return;
+    // The goal's windows come last, in front; the panel never comes before them.
+    const auto goal = [&world] {
+        if (const GameState* game = gameState(world)) {
+            gameHud(*game);
+            resultPanel(*game);
+        }
+    };
+    if (const auto* controls = world.resource<WindowControls>(); controls && !controls->showOverlay) return goal();
     ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
-    ImGui::Begin("oceanbox");
+    ImGui::Begin("oceanbox", nullptr, ImGuiWindowFlags_NoBringToFrontOnFocus);
     const auto& frames = timer.frameSamples();
     double frameMs = frames.empty() ? 0.0 : frames.back();
     ImGui::Text("frame %.2f ms (%.0f fps)", frameMs, frameMs > 0 ? 1000.0 / frameMs : 0.0);
@@ -295,6 +297,7 @@ void drawPanels(ecs::World& world, SceneDef& scene, const ecs::FrameTimer& timer
     if (!status.empty()) ImGui::TextUnformatted(status.c_str());
     ImGui::End();
     scenePicker(world, restart);
+    goal();
 }
 
 } // namespace ob::game
