@@ -30,12 +30,17 @@ private:
 /// the step that holds t, whatever the frame's length).
 class FixedStepClock final : public Clock {
 public:
-    /// `frameSeconds`: simulated time per frame (s), > 0.
-    explicit FixedStepClock(double frameSeconds) : m_frameSeconds(frameSeconds) {}
-    double now() override { return double(++m_frames) * m_frameSeconds; }
+    /// `frameSeconds`: simulated time per frame (s), > 0; `end` > 0: the clock stops there
+    /// (s), so the last frame of a run of a set number of steps runs only those left.
+    explicit FixedStepClock(double frameSeconds, double end = 0.0) : m_frameSeconds(frameSeconds), m_end(end) {}
+    double now() override {
+        const double t = double(++m_frames) * m_frameSeconds;
+        return m_end > 0.0 && t > m_end ? m_end : t;
+    }
 
 private:
     double m_frameSeconds;
+    double m_end;
     long long m_frames = 0;
 };
 

@@ -48,6 +48,26 @@ Mesh makeSphereMesh(int rings) {
     return upload("sphere mesh", v, idx);
 }
 
+Mesh makeRingMesh() {
+    constexpr int SEGMENTS = 64, SIDES = 8;
+    constexpr float TUBE = 0.04f;
+    std::vector<glm::vec3> v;
+    std::vector<uint32_t> idx;
+    for (int s = 0; s <= SEGMENTS; ++s)
+        for (int k = 0; k <= SIDES; ++k) {
+            const float a = 2.0f * float(M_PI) * float(s) / float(SEGMENTS), b = 2.0f * float(M_PI) * float(k) / float(SIDES);
+            const glm::vec3 out(std::cos(a), 0.0f, std::sin(a));
+            const glm::vec3 n = std::cos(b) * out + glm::vec3(0.0f, std::sin(b), 0.0f);
+            v.insert(v.end(), {out + TUBE * n, n, glm::vec3(1.0f)});
+        }
+    for (int s = 0; s < SEGMENTS; ++s)
+        for (int k = 0; k < SIDES; ++k) {
+            uint32_t a = uint32_t(s * (SIDES + 1) + k), b = a + 1, c = a + uint32_t(SIDES + 1), d = c + 1;
+            idx.insert(idx.end(), {a, c, b, b, c, d});  // counter-clockwise seen from outside
+        }
+    return upload("ring mesh", v, idx);
+}
+
 // Each face is a grid of BOX_FACE_CELLS² quads, not one: the reflection and refraction
 // passes cut and mirror objects at the wavy surface vertex by vertex.
 constexpr int BOX_FACE_CELLS = 4;

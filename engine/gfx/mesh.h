@@ -20,6 +20,8 @@ struct Mesh {
 
 /// A sphere of radius 1 (latitude/longitude, `rings` × 2·`rings` quads).
 Mesh makeSphereMesh(int rings);
+/// A ring in the xz plane: a torus of radius 1 about +y whose tube is 0.04 thick.
+Mesh makeRingMesh();
 /// A box from −1 to 1 on each axis (flat-shaded faces).
 Mesh makeBoxMesh();
 /// A model's triangles (labelled with its file name).

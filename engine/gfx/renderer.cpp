@@ -51,6 +51,8 @@ constexpr float MAX_SURFACE_SLOPE = 1.0f;
 // Objects within this radius (m: fish, cannonballs) are cut at the surface's tangent plane
 // under their origin, larger ones (ships) at the surface evaluated vertex by vertex.
 constexpr float TANGENT_PLANE_RADIUS = 1.0f;
+// A highlighted object's colour is multiplied by this (the body under the player's cursor).
+constexpr glm::vec3 HIGHLIGHT_TINT{1.9f, 1.7f, 1.0f};
 // A model's far twin (X.lod1.gltf) is drawn where the object's bounding sphere spans fewer
 // than this many pixels of radius: the default scene's fish (0.4 m) 20 m away span 12 px at
 // 720 rows (whole) and 3 px at scale 0.25 (the twin, a tenth of the triangles).
@@ -95,6 +97,7 @@ Renderer::Renderer(const RenderDef& def)
                      loadProgram("fxaa on the edges", {"common_fullscreen.vert", "post_fxaa.frag"})},
       m_sphereMesh(makeSphereMesh(16)),
       m_boxMesh(makeBoxMesh()),
+      m_ringMesh(makeRingMesh()),
       m_emptyVao(createVertexArray("fullscreen triangle")),
       m_frameUniforms{createBuffer("frame uniforms: camera", sizeof(FrameUniforms)),
                       createBuffer("frame uniforms: reflection", sizeof(FrameUniforms)),
@@ -404,7 +407,12 @@ static float boundingRadius(const ObjectDraw& o, const Mesh& mesh) {
 // The mesh to draw in a view: a model's far twin where the object's bounding sphere spans
 // fewer than LOD_RADIUS_PX pixels of radius in that view's target.
 const Mesh& Renderer::meshFor(const ObjectDraw& object, View view) {
-    if (object.modelFile.empty()) return object.mesh == MeshKind::Sphere ? m_sphereMesh : m_boxMesh;
+    if (object.modelFile.empty())
+        switch (object.mesh) {
+        case MeshKind::Sphere: return m_sphereMesh;
+        case MeshKind::Box: return m_boxMesh;
+        case MeshKind::Ring: return m_ringMesh;
+        }
     const ModelMeshes& meshes = meshesFor(object.modelFile);
     if (!meshes.far) return meshes.near;
     const float distance = std::max(glm::length(glm::vec3(object.model[3]) - m_eye), 1e-3f);
@@ -444,7 +452,8 @@ void Renderer::drawObjects(const std::vector<ObjectDraw>& objects, View view) {
         const bool perVertex = view != MAIN_VIEW && side == Side::Across && boundingRadius(o, mesh) > TANGENT_PLANE_RADIUS;
         const GLuint program = perVertex ? m_objectWaterlineProgram.id() : m_objectProgram.id();
         const glm::vec3 plane(o.waterHeight, o.waterSlope);
-        const glm::vec3 tint = o.modelFile.empty() ? o.color : glm::vec3(1.0f);  // models carry their own colours
+        // Models carry their own colours; a highlighted object is drawn brighter and warmer.
+        const glm::vec3 tint = (o.modelFile.empty() ? o.color : glm::vec3(1.0f)) * (o.highlight ? HIGHLIGHT_TINT : glm::vec3(1.0f));
         glUseProgram(program);
         glProgramUniformMatrix4fv(program, 0, 1, GL_FALSE, &o.model[0][0]);
         glProgramUniform3fv(program, 1, 1, &tint.x);

@@ -162,7 +162,7 @@ private:
     RenderDef m_def;
     Program m_skyBakeProgram, m_skyProgram, m_objectProgram, m_objectWaterlineProgram, m_upscaleProgram;
     Program m_fxaaPrograms[2];  // post_fxaa.frag off the edges, then on them
-    Mesh m_sphereMesh, m_boxMesh;
+    Mesh m_sphereMesh, m_boxMesh, m_ringMesh;
     std::map<std::string, ModelMeshes> m_models;  // glTF meshes by file, loaded on first draw
     VertexArray m_emptyVao;
     Buffer m_frameUniforms[VIEW_COUNT];

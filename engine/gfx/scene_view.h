@@ -22,7 +22,7 @@ struct CameraView {
 };
 
 /// The built-in shapes an object can be drawn as.
-enum class MeshKind : uint8_t { Sphere, Box };
+enum class MeshKind : uint8_t { Sphere, Box, Ring };
 
 /// One opaque object to draw this frame.
 struct ObjectDraw {
@@ -32,6 +32,7 @@ struct ObjectDraw {
     std::string modelFile;          ///< glTF file drawn instead of `mesh` ("" = built-in)
     float waterHeight = 0.0f;       ///< the water surface's height under the object's origin (m)
     glm::vec2 waterSlope{0.0f};     ///< and its slope there (dh/dx, dh/dz)
+    bool highlight = false;         ///< lit up (the body under the player's cursor)
 };
 
 /// One splash drop to draw: world centre (xyz, m) and radius (w, m).

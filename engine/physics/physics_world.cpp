@@ -36,6 +36,7 @@ struct PhysicsWorld::Impl {
         b.body->setLinearVelocity(bt(s.linearVelocity));
         b.body->setAngularVelocity(bt(s.angularVelocity));
         b.body->setActivationState(DISABLE_DEACTIVATION);  // the water never lets a body sleep
+        b.body->setUserIndex(int(bodies.size()));          // its BodyId, for ray casts
         b.shape = std::move(shape);
         world.addRigidBody(b.body.get());
         bodies.push_back(std::move(b));
@@ -74,6 +75,22 @@ void PhysicsWorld::remove(BodyId id) {
 
 void PhysicsWorld::applyForce(BodyId id, const glm::vec3& force, const glm::vec3& worldPoint) {
     if (btRigidBody* body = m_impl->get(id)) body->applyForce(bt(force), bt(worldPoint) - body->getCenterOfMassPosition());
+}
+
+void PhysicsWorld::setLinearVelocity(BodyId id, const glm::vec3& velocity) {
+    if (btRigidBody* body = m_impl->get(id)) body->setLinearVelocity(bt(velocity));
+}
+
+std::optional<RayHit> PhysicsWorld::rayCast(const glm::vec3& from, const glm::vec3& to) const {
+    btCollisionWorld::ClosestRayResultCallback closest(bt(from), bt(to));
+    m_impl->world.rayTest(bt(from), bt(to), closest);
+    if (!closest.hasHit() || !closest.m_collisionObject) return std::nullopt;
+    RayHit hit;
+    hit.id = BodyId(uint32_t(closest.m_collisionObject->getUserIndex()));
+    hit.point = gl(closest.m_hitPointWorld);
+    hit.normal = gl(closest.m_hitNormalWorld.normalized());
+    hit.fraction = float(closest.m_closestHitFraction);
+    return hit;
 }
 
 void PhysicsWorld::dampAngular(BodyId id, float factor) {

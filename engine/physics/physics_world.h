@@ -7,6 +7,7 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/vec3.hpp>
 #include <memory>
+#include <optional>
 
 namespace ob::physics {
 
@@ -19,6 +20,14 @@ struct BodyState {
     glm::quat rotation{1.0f, 0.0f, 0.0f, 0.0f};
     glm::vec3 linearVelocity{0.0f};   ///< m/s
     glm::vec3 angularVelocity{0.0f};  ///< rad/s
+};
+
+/// Where a ray first meets a body.
+struct RayHit {
+    BodyId id = BodyId::None;
+    glm::vec3 point{0.0f};       ///< world m
+    glm::vec3 normal{0, 1, 0};   ///< the body's outward unit normal there
+    float fraction = 1.0f;       ///< of the way from the ray's start to its end
 };
 
 class PhysicsWorld {
@@ -37,6 +46,10 @@ public:
 
     /// Adds a force (N) at a world point for the next step.
     void applyForce(BodyId id, const glm::vec3& force, const glm::vec3& worldPoint);
+    /// Sets a body's linear velocity (m/s), as a throw does.
+    void setLinearVelocity(BodyId id, const glm::vec3& velocity);
+    /// The first body the segment from `from` to `to` (world m) meets, if any.
+    std::optional<RayHit> rayCast(const glm::vec3& from, const glm::vec3& to) const;
     /// Multiplies the angular velocity by `factor` (water damping).
     void dampAngular(BodyId id, float factor);
     /// Advances by dt seconds (def.substeps fixed sub-steps); forces are cleared after.

@@ -43,9 +43,10 @@ void InputQueue::push(InputEvent e) {
     m_step.push_back(e);
 }
 
-void InputQueue::drain(std::deque<InputEvent>& q, double until, InputState& state) {
+void InputQueue::drain(std::deque<InputEvent>& q, double until, InputState& state, std::vector<InputEvent>* consumed) {
     while (!q.empty() && q.front().time <= until) {
         state.apply(q.front());
+        if (consumed) consumed->push_back(q.front());
         q.pop_front();
     }
 }

@@ -8,6 +8,7 @@
 #include <deque>
 #include <glm/vec2.hpp>
 #include <string>
+#include <vector>
 
 namespace ob::platform {
 
@@ -73,11 +74,13 @@ public:
     void drainFrame(double until, InputState& state) { drain(m_frame, until, state); }
     /// Applies to `state` every event not yet given to the steps whose time is < `until`
     /// (an event exactly at a step's end belongs to the next step).
-    void drainStep(double until, InputState& state) { drain(m_step, until - 1e-6, state); }
+    void drainStep(double until, InputState& state, std::vector<InputEvent>* consumed = nullptr) {
+        drain(m_step, until - 1e-6, state, consumed);
+    }
     bool empty() const { return m_frame.empty() && m_step.empty(); }
 
 private:
-    static void drain(std::deque<InputEvent>& q, double until, InputState& state);
+    static void drain(std::deque<InputEvent>& q, double until, InputState& state, std::vector<InputEvent>* consumed = nullptr);
     std::deque<InputEvent> m_frame, m_step;
     double m_last = -1e300;
 };

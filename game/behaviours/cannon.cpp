@@ -108,7 +108,7 @@ void cannonSystem(ecs::World& world, const ecs::Tick& tick) {
             c.yawDeg += AIM_RATE_DEG_S * dt * float(input->isDown(Key::Left) - input->isDown(Key::Right));
             c.elevationDeg = std::clamp(c.elevationDeg + AIM_RATE_DEG_S * dt * float(input->isDown(Key::Up) - input->isDown(Key::Down)),
                                         -10.0f, 89.0f);
-            c.fireRequested = c.fireRequested || input->wasPressed(Key::Space) || input->wasClicked(platform::MouseButton::Left);
+            c.fireRequested = c.fireRequested || input->wasPressed(Key::Space);
         }
         Cannon& c = cannons.components()[i];
         ecs::Transform& pivot = world.get<ecs::Transform>(e);

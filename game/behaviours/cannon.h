@@ -11,7 +11,7 @@ namespace ob::game {
 
 /// A cannon's behaviour state (its entity's Transform is the barrel's pivot and aim).
 struct Cannon {
-    bool player = false;          ///< aimed with the arrow keys, fired with Space or a left click
+    bool player = false;          ///< aimed with the arrow keys, fired with Space (and the cannon tool's click)
     float yawDeg = 0.0f;          ///< aim azimuth, deg about +y, 0 faces +z
     float elevationDeg = 30.0f;   ///< barrel above the horizon, deg
     float muzzleSpeed = 25.0f;    ///< m/s

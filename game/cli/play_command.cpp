@@ -19,7 +19,11 @@ const char* const PLAY_KEYS = R"(Keys and mouse (H shows and hides the overlay, 
   W/S  A/D      ship: throttle, rudder (fly mode: move the camera)
   Q/E  Shift    fly mode: down, up; Shift x4 speed; hold Q at the surface to dive
   arrows        cannon: aim (yaw, elevation)
-  Space, click  cannon: fire one ball per press
+  Space         cannon: fire one ball per press
+  1-5           the left button's tool: 1 grab (drag a body, release throws; wheel: distance),
+                2 stir (hold on the water; wheel: radius, Shift+wheel: depth), 3 drop (click on
+                the water; 3 again: next object), 4 erase (click a body), 5 cannon (click on the
+                water: aim there and fire)
   F             a school of fish where the camera looks
   P  N          pause and resume; one step while paused
   R             restart the scene (the goal's result panel: R again, Esc quits)
@@ -35,6 +39,7 @@ void addPlayCommand(CLI::App& app, CommandAction& action) {
     CLI::App* cmd = app.add_subcommand("play", "open a scene in a window (headless with a screenshot where there is no display)");
     cmd->add_option("scene", play->scene, "scene file (default: config/scenes/default.toml)");
     play->addTo(cmd, 0);
+    cmd->add_option("--record", play->record, "write every input the simulation consumed to this TOML file (run --input replays it)");
     cmd->footer(PLAY_KEYS);
     cmd->callback([&action, play] {
         action = [play] {
@@ -45,6 +50,7 @@ void addPlayCommand(CLI::App& app, CommandAction& action) {
             else if (!scene.info.note.empty())
                 logInfo("%s", scene.info.note.c_str());
             RunOptions o = play->options();
+            o.record = play->record;
             o.realTime = true;
             o.dynamicResolution = true;
             if (o.frames == 0) o.frames = -1;

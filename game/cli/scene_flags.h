@@ -22,6 +22,7 @@ struct SceneFlags {
     std::string screenshot;
     std::string stats;
     std::string input;
+    std::string record;  // play only
     int stepsPerFrame = 1;
 
     void addTo(CLI::App* cmd, long defaultFrames) {

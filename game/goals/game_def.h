@@ -82,7 +82,7 @@ struct GameDef {
     float time_limit = 60.0f;        ///< s of simulated time to reach the goal, [0, 1e6] (0: none); lost when it runs out
     float mooring_period = 3.0f;     ///< targets and gate buoys are moored where they start: a horizontal spring of this
                                      ///< period, critically damped (s, [0, 1000]; 0: they drift free)
-    // The tool the player holds at start (`tool`) belongs here, beside the mode.
+    // The tool the player holds at start is [tools] tool (world/tools.h).
     TargetsGameDef targets;
     RaceGameDef race;
     HerdGameDef herd;

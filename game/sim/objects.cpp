@@ -224,7 +224,7 @@ void physicsSystem(ecs::World& world, const ecs::Tick& tick) {
     }
 }
 
-std::vector<gfx::ObjectDraw> objectDraws(ecs::World& world) {
+std::vector<gfx::ObjectDraw> objectDraws(ecs::World& world, ecs::Entity highlighted) {
     std::vector<gfx::ObjectDraw> draws;
     auto& renderables = world.pool<Renderable>();
     for (size_t i = 0; i < renderables.size(); ++i) {
@@ -232,7 +232,8 @@ std::vector<gfx::ObjectDraw> objectDraws(ecs::World& world) {
         const ecs::Transform* t = world.find<ecs::Transform>(renderables.entities()[i]);
         if (!t) continue;
         glm::mat4 model = glm::translate(glm::mat4(1.0f), t->position) * glm::mat4_cast(t->rotation) * glm::scale(glm::mat4(1.0f), r.scale);
-        draws.push_back({r.mesh, model, r.color, r.model});
+        gfx::ObjectDraw& d = draws.emplace_back(gfx::ObjectDraw{r.mesh, model, r.color, r.model});
+        d.highlight = renderables.entities()[i] == highlighted;
     }
     return draws;
 }

@@ -14,6 +14,7 @@
 #include "behaviours/cannon.h"
 #include "behaviours/fish.h"
 #include "goals/goals.h"
+#include "world/controls.h"
 #include "world/input_script.h"
 #include "sim/objects.h"
 #include "view/sandbox_view.h"
@@ -148,6 +149,7 @@ static void writeStats(const std::string& path, Sandbox& sandbox, const std::str
 static void checkOutputs(const SceneDef& scene, const RunOptions& options) {
     if (!options.screenshot.empty()) checkWritable(options.screenshot, "screenshot");
     if (!options.stats.empty()) checkWritable(options.stats, "stats");
+    if (!options.record.empty()) checkWritable(options.record, "recording");
     for (const EventDef& e : scene.events)
         if (e.action == EventAction::Screenshot) checkWritable(e.file, "event screenshot");
 }
@@ -186,13 +188,14 @@ int runScene(const SceneDef& scene, const std::string& scenePath, const RunOptio
         auto made = std::make_unique<Sandbox>(withSteps(s));
         made->attachPlatform(*platform, !platform->headless());
         made->setScriptedInput(scripted);
+        if (!options.record.empty()) made->world().setResource(std::make_unique<InputRecorder>());
         if (options.dynamicResolution) made->enableDynamicResolution();
         if (!options.realTime) made->schedule().setFirstFrameSeconds(options.stepsPerFrame / double(s.sim.step_hz));
         return made;
     };
     auto makeClock = [&](const SceneDef& s) -> std::unique_ptr<Clock> {
         if (options.realTime) return std::make_unique<SteadyClock>();
-        return std::make_unique<FixedStepClock>(options.stepsPerFrame / double(s.sim.step_hz));
+        return std::make_unique<FixedStepClock>(options.stepsPerFrame / double(s.sim.step_hz), double(options.steps) / double(s.sim.step_hz));
     };
     auto sandbox = makeSandbox(scene);
     std::unique_ptr<Clock> clock = makeClock(scene);
@@ -210,6 +213,9 @@ int runScene(const SceneDef& scene, const std::string& scenePath, const RunOptio
     for (long f = 0; bounded || !sandbox->quitRequested(); ++f) {
         const double now = clock->now();
         sandbox->frame(now);
+        // The wall clock starts once the first frame is drawn (shaders compiled, maps made):
+        // the simulation does not make up for the loading time with a burst of steps.
+        if (options.realTime && sandbox->schedule().frames() == 1) clock = makeClock(sandbox->scene());
         if (sandbox->quitRequested()) break;
         const bool last = (options.frames > 0 && f + 1 >= options.frames) ||
                           (options.endTime > 0.0 && sandbox->schedule().simTime() >= options.endTime - 1e-9) ||
@@ -255,6 +261,17 @@ int runScene(const SceneDef& scene, const std::string& scenePath, const RunOptio
         logWarn("--screenshot needs --frames N (or [sim] end_time); no screenshot written");
 
     if (!options.stats.empty()) writeStats(options.stats, *sandbox, runningPath, *platform);
+    if (!options.record.empty()) {
+        const auto* recorder = sandbox->world().resource<InputRecorder>();
+        const auto* viewport = sandbox->world().resource<Viewport>();
+        InputScriptDef recording = recordedScript(recorder->events, sandbox->schedule().steps(), sandbox->schedule().stepSeconds(),
+                                                  viewport ? viewport->size : platform->framebufferSize());
+        writeTextFile(options.record,
+                      "# oceanbox input recorded from " + runningPath + ": `oceanbox run SCENE --input FILE` replays it\n" +
+                          writeToml(recording),
+                      "recording");
+        logInfo("input recorded to %s (%llu steps)", options.record.c_str(), static_cast<unsigned long long>(recording.steps));
+    }
     if (!options.screenshot.empty() && bounded) logInfo("screenshot written to %s", options.screenshot.c_str());
     if (gfx::glErrorCount() > 0) {
         logWarn("%d GL error(s) were reported during the run", gfx::glErrorCount());

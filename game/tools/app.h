@@ -19,7 +19,9 @@ struct RunOptions {
     std::string stats;           ///< JSON summary ("" = none)
     std::string fallbackNote;    ///< what to say when falling back to headless
     std::string input;           ///< scripted input file (TOML, game/world/input_script.h; "" = none)
+    std::string record;          ///< write the steps' input here at the end, in the input format ("" = none)
     int stepsPerFrame = 1;       ///< fixed clock only: simulation steps each rendered frame advances
+    uint64_t steps = 0;          ///< fixed clock: the run ends after exactly this many steps (a recording's; 0: frames decide)
     bool dynamicResolution = false;  ///< the internal scale holds [render] target_fps
 };
 

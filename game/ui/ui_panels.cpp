@@ -10,6 +10,7 @@
 #include "core/error.h"
 #include "ecs/components.h"
 #include "gfx/ui_overlay.h"
+#include "world/tools.h"
 #include "behaviours/ship.h"
 #include "goals/goals.h"
 
@@ -81,7 +82,8 @@ std::vector<std::string> keyHelp(ecs::World& world) {
     std::vector<std::string> lines;
     if (flying) lines.push_back("W/S/A/D move  Q/E down/up  Shift fast  hold Q at the surface: dive");
     else if (ship) lines.push_back("W/S throttle  A/D rudder");
-    if (cannon) lines.push_back("arrows aim  Space or left click: fire");
+    if (cannon) lines.push_back("arrows aim  Space fire");
+    lines.push_back("left button: the tool  1 grab  2 stir  3 drop (again: next object)  4 erase  5 cannon");
     lines.push_back(std::string("right drag ") + (flying ? "look" : "orbit") + "  wheel " + (flying ? "forward" : "zoom") +
                     "  C camera mode (now " + cameraMode(world) + ")");
     lines.push_back("F fish  P pause  N step (paused)  R restart  F12 screenshot  H hide this  Esc quit");
@@ -107,7 +109,7 @@ static void playerPanel(ecs::World& world) {
     for (const std::string& line : keyHelp(world)) ImGui::TextDisabled("%s", line.c_str());
 }
 
-// --- the goal: the HUD (top centre) while it runs, the result panel (centre) once it is over
+// --- the goal: the HUD (top right) while it runs, the result panel (over the sky) once it is over
 
 static const ImVec4 WON_COLOR{0.3f, 1.0f, 0.4f, 1.0f}, LOST_COLOR{1.0f, 0.35f, 0.3f, 1.0f}, MISSED_COLOR{1.0f, 0.4f, 0.3f, 1.0f};
 constexpr double MISSED_SHOWN_S = 4.0;  // how long "gate N missed" stays on the HUD
@@ -241,8 +243,66 @@ static void scenePicker(ecs::World& world, std::optional<SceneDef>& restart) {
     ImGui::End();
 }
 
+// A key press as the window would give it: the palette's choices go through the input queue,
+// so the steps see them when they see keys and a recording holds them.
+static void pressKey(ecs::World& world, platform::Key key, double now) {
+    if (auto* queue = world.resource<platform::InputQueue>()) {
+        queue->push({platform::InputEvent::Type::KeyDown, now, key});
+        queue->push({platform::InputEvent::Type::KeyUp, now, key});
+    }
+}
+
+// The tools' palette: the tool (keys 1–5), what it drops, its sizes, what it last said.
+static void toolsPanel(ecs::World& world, double now) {
+    auto* tools = world.resource<PlayerTools>();
+    if (!tools) return;
+    const ImGuiViewport* viewport = ImGui::GetMainViewport();
+    ImGui::SetNextWindowPos(ImVec2(viewport->WorkPos.x + viewport->WorkSize.x - 10, viewport->WorkPos.y + viewport->WorkSize.y - 10),
+                            ImGuiCond_Always, ImVec2(1.0f, 1.0f));  // bottom right, clear of the main panel
+    ImGui::Begin("tools", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove);
+    constexpr platform::Key KEYS[] = {platform::Key::Num1, platform::Key::Num2, platform::Key::Num3, platform::Key::Num4,
+                                      platform::Key::Num5};
+    for (size_t k = 0; k < std::size(KEYS); ++k) {
+        if (k > 0) ImGui::SameLine();
+        const std::string label = std::to_string(k + 1) + " " + enumNames<Tool>[k];
+        if (ImGui::RadioButton(label.c_str(), tools->def.tool == Tool(k)) && tools->def.tool != Tool(k)) pressKey(world, KEYS[k], now);
+    }
+    ToolsDef& def = tools->def;
+    switch (def.tool) {
+    case Tool::Grab:
+        ImGui::TextDisabled("left drag a body; wheel: nearer/farther; release throws");
+        ImGui::SliderFloat("spring Hz", &def.grab_frequency_hz, 0.1f, 20.0f, "%.1f");
+        break;
+    case Tool::Stir:
+        ImGui::TextDisabled("hold left on the water; wheel: radius, Shift + wheel: depth");
+        ImGui::SliderFloat("radius m", &def.stir_radius, 0.05f, 10.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
+        ImGui::SliderFloat("depth m", &def.stir_depth, -10.0f, 10.0f, "%.2f");
+        break;
+    case Tool::Drop: {
+        ImGui::TextDisabled("left click on the water drops it %.0f m above", double(def.drop_height));
+        const size_t count = enumNames<DropKind>.size();
+        for (size_t k = 0; k < count; ++k) {
+            if (k > 0 && k % 4 != 0) ImGui::SameLine();
+            if (ImGui::RadioButton(enumNames<DropKind>[k], def.drop == DropKind(k)))
+                for (size_t n = (k + count - size_t(def.drop)) % count; n > 0; --n) pressKey(world, platform::Key::Num3, now);
+        }
+        if (def.drop == DropKind::Ball) {
+            ImGui::SliderFloat("ball radius m", &def.ball_radius, 0.05f, 5.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
+            ImGui::SliderFloat("density kg/m3", &def.ball_density, 10.0f, 20000.0f, "%.0f", ImGuiSliderFlags_Logarithmic);
+            ImGui::TextDisabled(def.ball_density < 1025.0f ? "floats (water: 1025 kg/m3)" : "sinks (water: 1025 kg/m3)");
+        }
+        break;
+    }
+    case Tool::Erase: ImGui::TextDisabled("left click removes the body under the cursor (a ship, a school)"); break;
+    case Tool::Cannon: ImGui::TextDisabled("left click on the water: the cannon aims there and fires"); break;
+    }
+    ImGui::Text("drops %d  throws %d  erased %d  shots %d", tools->drops, tools->throws, tools->erased, tools->shots);
+    if (!tools->message.empty()) ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "%s", tools->message.c_str());
+    ImGui::End();
+}
+
 void drawPanels(ecs::World& world, SceneDef& scene, const ecs::FrameTimer& timer, std::optional<float> dynamicScale,
-                std::optional<SceneDef>& restart) {
+                std::optional<SceneDef>& restart, double now) {
     // The goal's windows come last, in front; the panel never comes before them.
     const auto goal = [&world] {
         if (const GameState* game = gameState(world)) {
@@ -251,6 +311,7 @@ void drawPanels(ecs::World& world, SceneDef& scene, const ecs::FrameTimer& timer
         }
     };
     if (const auto* controls = world.resource<WindowControls>(); controls && !controls->showOverlay) return goal();
+    toolsPanel(world, now);
     ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
     ImGui::Begin("oceanbox", nullptr, ImGuiWindowFlags_NoBringToFrontOnFocus);
     const auto& frames = timer.frameSamples();

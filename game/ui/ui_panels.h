@@ -14,7 +14,7 @@ namespace ob::game {
 /// resolution holds now, when it is on. [render] keys apply live; the other sections are
 /// edited on a copy that "restart with these settings" hands to `restart` once valid.
 void drawPanels(ecs::World& world, SceneDef& scene, const ecs::FrameTimer& timer, std::optional<float> dynamicScale,
-                std::optional<SceneDef>& restart);
+                std::optional<SceneDef>& restart, double now);
 
 /// The keys and mouse actions that do something in this world now (the overlay's help).
 std::vector<std::string> keyHelp(ecs::World& world);

@@ -3,6 +3,7 @@
 #include "platform/platform.h"
 
 #include "behaviours/fish.h"
+#include "world/tools.h"
 #include "gfx/gl.h"
 #include "gfx/renderer.h"
 #include "gfx/ui_overlay.h"
@@ -36,6 +37,9 @@ void SandboxView::pollInput(ecs::World& world, const ecs::Tick& tick) {
     auto* queue = world.resource<platform::InputQueue>();
     if (!input || !queue) return;
     if (m_ui) m_ui->captureFlags(input->uiCapturesMouse, input->uiCapturesKeyboard);
+    // The tools' rays are cast in the framebuffer the player sees.
+    if (auto* viewport = world.resource<Viewport>(); viewport && m_platform.framebufferSize().x > 0)
+        viewport->size = m_platform.framebufferSize();
     std::vector<platform::InputEvent> events;
     m_platform.pollEvents(events);
     using T = platform::InputEvent::Type;
@@ -72,8 +76,9 @@ void SandboxView::render(ecs::World& world, const ecs::Tick& tick) {
     gfx::CameraView camera = cameraView(world, size);
     if (const OceanState* ocean = world.resource<OceanState>(); ocean && ocean->water)
         camera.waterHeight = ocean->water->sample(camera.position.x, camera.position.z).height;
-    std::vector<gfx::ObjectDraw> draws = objectDraws(world);
+    std::vector<gfx::ObjectDraw> draws = objectDraws(world, highlightedBody(world));
     appendFishDraws(world, draws);
+    appendToolDraws(world, draws, camera.position);
     if (const OceanState* ocean = world.resource<OceanState>(); ocean && ocean->water)
         for (gfx::ObjectDraw& d : draws) {
             const water::WaterSample s = ocean->water->sample(d.model[3].x, d.model[3].z);
@@ -99,7 +104,7 @@ void SandboxView::render(ecs::World& world, const ecs::Tick& tick) {
         std::optional<float> dynamicScale;
         if (const auto* dynamic = world.resource<DynamicScale>(); dynamic && dynamic->control && m_scene.render.target_fps > 0.0f)
             dynamicScale = dynamic->control->scale();
-        drawPanels(world, m_scene, m_timer, dynamicScale, m_restart);
+        drawPanels(world, m_scene, m_timer, dynamicScale, m_restart, tick.clock);
         m_ui->end();
     }
     glFlush();

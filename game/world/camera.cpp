@@ -8,6 +8,7 @@
 #include "sim/objects.h"
 #include "platform/input.h"
 #include "behaviours/ship.h"
+#include "behaviours/step_input.h"
 #include "water/composite_water.h"
 #include "sim/water_systems.h"
 
@@ -121,19 +122,19 @@ void fly(ecs::World& world, CameraRig& rig, ecs::Transform& t, const platform::I
 
 } // namespace
 
-void cameraSystem(ecs::World& world, const ecs::Tick& tick) {
+// Moves every camera from `input` over `dt` seconds (the player's steering, the follow
+// camera's easing) and to simulated time `time` (the orbit's automatic motion).
+static void steerCameras(ecs::World& world, const platform::InputState* input, float dt, double time) {
     auto& rigs = world.pool<CameraRig>();
     const platform::InputState none;
-    const platform::InputState* input = world.resource<platform::InputState>();
     if (!input) input = &none;
-    const float dt = float(tick.dt);  // the frame's clock time: the player steers while paused too
     const glm::vec2 drag = input->isDown(platform::MouseButton::Right) ? input->mouseDelta : glm::vec2(0.0f);
     const float zoom = std::pow(ZOOM_PER_STEP, input->scroll);
     for (size_t i = 0; i < rigs.size(); ++i) {
         CameraRig& rig = rigs.components()[i];
         ecs::Transform& t = world.get<ecs::Transform>(rigs.entities()[i]);
-        const float simDt = float(tick.time - rig.lastSimTime);  // automatic motion stops with the simulation
-        rig.lastSimTime = tick.time;
+        const float simDt = float(time - rig.lastSimTime);  // automatic motion stops with the simulation
+        rig.lastSimTime = time;
         if (rig.def.mode == CameraMode::Fixed || rig.def.mode == CameraMode::Orbit) {
             // Rotate the eye about the vertical axis through the target (orbit: at its speed),
             // and by the player's drag and wheel.
@@ -175,6 +176,15 @@ void cameraSystem(ecs::World& world, const ecs::Tick& tick) {
         }
         t.rotation = glm::quatLookAtRH(forwardOf(rig.yaw, rig.pitch), glm::vec3(0, 1, 0));
     }
+}
+
+void cameraSystem(ecs::World& world, const ecs::Tick& tick) {
+    steerCameras(world, world.resource<StepInput>(), float(tick.dt), tick.time);
+}
+
+void pausedCameraSystem(ecs::World& world, const ecs::Tick& tick) {
+    const auto* control = world.resource<ecs::SimControl>();
+    if (control && control->paused) steerCameras(world, world.resource<platform::InputState>(), float(tick.dt), tick.time);
 }
 
 void cycleCameraMode(ecs::World& world) {

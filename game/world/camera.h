@@ -77,10 +77,14 @@ struct CameraRig {
 ecs::Entity spawnCamera(ecs::World& world, const CameraDef& def);
 /// Points the camera at `target` from `eye` (events, the UI).
 void placeCamera(CameraRig& rig, ecs::Transform& transform, glm::vec3 eye, glm::vec3 target);
-/// Render phase, before drawing (once per frame, also while paused): moves the camera from
-/// the frame's input (right drag orbits or looks, wheel zooms, fly keys) and its mode's
-/// motion (orbit, follow), and keeps it above the water unless the player dived.
+/// Script phase, every step (so a recorded session replays the camera, and what the player's
+/// tools pick, exactly): moves the camera from the steps' input (right drag orbits or looks,
+/// wheel zooms, fly keys) and its mode's motion (orbit, follow), and keeps it above the
+/// water unless the player dived.
 void cameraSystem(ecs::World& world, const ecs::Tick& tick);
+/// Render phase: while the simulation is paused, the same from the frame's input (the player
+/// looks around a frozen world; nothing of it is recorded).
+void pausedCameraSystem(ecs::World& world, const ecs::Tick& tick);
 /// C: the next mode of follow (when there is a ship to follow) → orbit → fly (→ fixed when
 /// the scene starts fixed).
 void cycleCameraMode(ecs::World& world);

@@ -7,6 +7,7 @@
 #include "behaviours/spawning.h"
 #include "world/script.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 
@@ -31,7 +32,7 @@ void frameInputSystem(ecs::World& world, const ecs::Tick& tick) {
     queue->drainFrame(tick.clock, *input);
 }
 
-void controlsSystem(ecs::World& world, const ecs::Tick&) {
+void controlsSystem(ecs::World& world, const ecs::Tick& tick) {
     const auto* input = world.resource<platform::InputState>();
     auto* controls = world.resource<WindowControls>();
     auto* sim = world.resource<ecs::SimControl>();
@@ -44,7 +45,13 @@ void controlsSystem(ecs::World& world, const ecs::Tick&) {
     if (sim->paused) sim->stepRequests += input->pressCount(Key::N);
     if (input->wasPressed(Key::H)) controls->showOverlay = !controls->showOverlay;
     if (input->wasPressed(Key::R)) controls->restart = true;
-    for (int i = 0; i < input->pressCount(Key::C); ++i) cycleCameraMode(world);
+    if (sim->paused) {
+        // The steps would see this frame's events after the pause: they are the frame's alone
+        // (held keys stay held), and C, a step's key, works here.
+        for (int i = 0; i < input->pressCount(Key::C); ++i) cycleCameraMode(world);
+        if (auto* queue = world.resource<platform::InputQueue>(); queue && world.resource<StepInput>())
+            queue->drainStep(tick.clock + 1e-6, *world.resource<StepInput>());
+    }
     for (int i = 0; i < input->pressCount(Key::F12); ++i) {
         // The first free name in the current folder; the frame is written after it is drawn.
         std::string name;
@@ -62,9 +69,36 @@ void stepInputSystem(ecs::World& world, const ecs::Tick& tick) {
     auto* input = world.resource<StepInput>();
     if (!queue || !input) return;
     input->beginConsume();
-    queue->drainStep(tick.clock, *input);
+    auto* recorder = world.resource<InputRecorder>();
+    const size_t recorded = recorder ? recorder->events.size() : 0;
+    queue->drainStep(tick.clock, *input, recorder ? &recorder->events : nullptr);
+    if (recorder) {
+        using platform::Key;
+        using T = platform::InputEvent::Type;
+        const auto windowKey = [](const platform::InputEvent& e) {
+            const bool key = e.type == T::KeyDown || e.type == T::KeyUp;
+            return e.type == T::Close ||
+                   (key && (e.key == Key::Escape || e.key == Key::P || e.key == Key::N || e.key == Key::H || e.key == Key::F12));
+        };
+        auto& events = recorder->events;
+        events.erase(std::remove_if(events.begin() + long(recorded), events.end(), windowKey), events.end());
+        for (size_t i = recorded; i < events.size(); ++i) events[i].time = tick.time + 0.5 * tick.dt;
+    }
+    for (int i = 0; i < input->pressCount(platform::Key::C); ++i) cycleCameraMode(world);
     input->keysMoveCamera = cameraFlies(world);
     if (auto* controls = world.resource<WindowControls>()) controls->spawnFish += input->pressCount(platform::Key::F);
+}
+
+ObjectDef fishSchoolOf(const ControlsDef& def) {
+    ObjectDef fish;
+    fish.type = ObjectType::FishSchool;
+    fish.school.radius = def.fish_radius;
+    fish.school.count = def.fish_count;
+    fish.school.speed = def.fish_speed;
+    fish.school.jump_interval = def.fish_jump_interval;
+    fish.school.length = def.fish_length;
+    fish.color = def.fish_color;
+    return fish;
 }
 
 void spawnRequestsSystem(ecs::World& world, const ecs::Tick& tick) {
@@ -74,16 +108,8 @@ void spawnRequestsSystem(ecs::World& world, const ecs::Tick& tick) {
     auto& rigs = world.pool<CameraRig>();
     if (rigs.size() > 0) focus = rigs.components()[0].focus;
     for (; controls->spawnFish > 0; --controls->spawnFish) {
-        const ControlsDef& def = controls->def;
-        ObjectDef fish;
-        fish.type = ObjectType::FishSchool;
+        ObjectDef fish = fishSchoolOf(controls->def);
         fish.position = focus;
-        fish.school.radius = def.fish_radius;
-        fish.school.count = def.fish_count;
-        fish.school.speed = def.fish_speed;
-        fish.school.jump_interval = def.fish_jump_interval;
-        fish.school.length = def.fish_length;
-        fish.color = def.fish_color;
         spawnObject(world, fish, tick.step * 31ull + uint64_t(controls->spawnFish));
         logInfo("fish school spawned at (%.0f, %.0f)", double(focus.x), double(focus.z));
     }

@@ -1,10 +1,11 @@
-// The player's controls: the frame's keys (pause P, step N, screenshot F12, camera mode C,
-// overlay H, restart R, quit Esc) and the simulation's input (held keys and presses, per fixed step).
+// The player's controls: the frame's keys (pause P, step N, screenshot F12, overlay H, restart
+// R, quit Esc) and the simulation's input (held keys and presses, per fixed step; camera mode C).
 #pragma once
 #include "behaviours/step_input.h"
 #include "core/schema.h"
 #include "ecs/schedule.h"
 #include "platform/input.h"
+#include "sim/objects.h"
 
 #include <glm/vec3.hpp>
 #include <string>
@@ -39,6 +40,14 @@ struct ScriptedInput {
     size_t next = 0;
 };
 
+/// The input the simulation steps consumed (a resource while `play --record` records), each
+/// event stamped with the middle of its step's simulated interval, so `run --input` feeds it
+/// to the same step. The window's own keys (Esc, P, N, H, F12) are left out: a recording
+/// replays the steps, not the pauses.
+struct InputRecorder {
+    std::vector<platform::InputEvent> events;
+};
+
 /// Requests the frame's keys make of the simulation, and the overlay switch (a resource).
 struct WindowControls {
     ControlsDef def;          ///< the scene's [controls]
@@ -55,11 +64,13 @@ void addControls(ecs::World& world, const ControlsDef& def);
 /// Input phase: queues the scripted events due by this frame's clock, then gives the frame
 /// its events (call after the platform's events are queued).
 void frameInputSystem(ecs::World& world, const ecs::Tick& tick);
-/// Input phase, after frameInputSystem: P, N, F12, H, C, R.
+/// Input phase, after frameInputSystem: P, N, F12, H, R (and C while paused).
 void controlsSystem(ecs::World& world, const ecs::Tick& tick);
-/// Script phase, first: the events due by this step's clock time into StepInput; F asks for
-/// a fish school.
+/// Script phase, first: the events due by this step's clock time into StepInput; C cycles the
+/// camera's mode, F asks for a fish school.
 void stepInputSystem(ecs::World& world, const ecs::Tick& tick);
+/// The school F spawns (and the drop tool drops), at the origin.
+ObjectDef fishSchoolOf(const ControlsDef& def);
 /// Script phase: spawns the fish schools asked for.
 void spawnRequestsSystem(ecs::World& world, const ecs::Tick& tick);
 

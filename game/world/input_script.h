@@ -27,12 +27,14 @@ template <class V> void describe(V& v, PressDef& d) {
 enum class ScriptButton : uint8_t { Left, Right, None };
 constexpr std::array<const char*, 3> names(ScriptButton) { return {"left", "right", "none"}; }
 
-/// One [[mouse]]: a button held for `hold` seconds (optional), the cursor dragged by `drag`
-/// pixels halfway through, the wheel turned by `scroll` steps at `at`.
+/// One [[mouse]]: the cursor put at `pos` (when given), a button held for `hold` seconds
+/// (optional), the cursor dragged by `drag` pixels halfway through and kept there to the
+/// release, the wheel turned by `scroll` steps at `at`.
 struct MouseDef {
     float at = 0.0f;              ///< clock time (s), [0, 1e6]
     ScriptButton button = ScriptButton::Left;  ///< "left", "right" or "none"
     float hold = 0.05f;           ///< seconds the button is held, [0, 1e6]
+    glm::vec2 pos{-1.0f};         ///< where the press happens (framebuffer px, origin top left); [-1, -1]: where the cursor is
     glm::vec2 drag{0.0f};         ///< cursor motion (px, +x right, +y down), at at + hold/2
     float scroll = 0.0f;          ///< wheel steps (+: away from the user), at `at`
 };
@@ -41,19 +43,41 @@ template <class V> void describe(V& v, MouseDef& d) {
     v.field("at", d.at, range(0, 1e6), "clock time (s)");
     v.field("button", d.button, "button held");
     v.field("hold", d.hold, range(0, 1e6), "seconds the button is held");
-    v.field("drag", d.drag, any(), "cursor motion (px), halfway through the hold");
+    v.field("pos", d.pos, range(-1, 1e5), "where the press happens, framebuffer px from the top left ([-1, -1]: where the cursor is)");
+    v.field("drag", d.drag, range(-1e5, 1e5), "cursor motion (px), halfway through the hold");
     v.field("scroll", d.scroll, range(-1000, 1000), "wheel steps");
 }
 
-/// An input script file.
+/// One [[move]]: the cursor moves by `drag` pixels to `pos` at `at` (what a recording writes
+/// of every motion; a script may give either).
+struct MoveDef {
+    float at = 0.0f;       ///< clock time (s), [0, 1e6]
+    glm::vec2 pos{-1.0f};  ///< where the cursor arrives (framebuffer px); [-1, -1]: unknown (pos + drag)
+    glm::vec2 drag{0.0f};  ///< the motion (px; what right drag steers the camera by)
+};
+
+template <class V> void describe(V& v, MoveDef& d) {
+    v.field("at", d.at, range(0, 1e6), "clock time (s)");
+    v.field("pos", d.pos, range(-1, 1e5), "where the cursor arrives, framebuffer px ([-1, -1]: unknown)");
+    v.field("drag", d.drag, range(-1e5, 1e5), "the cursor's motion, px");
+}
+
+/// An input script file; a recording (`play --record`) also says how long the session ran
+/// and in what framebuffer.
 struct InputScriptDef {
+    uint64_t steps = 0;          ///< simulation steps the recorded session ran (0: not a recording); `run` runs as many
+    glm::vec2 size{0.0f};        ///< the recorded framebuffer (px; 0: none): `run` renders at it, so the cursor's rays are the same
     std::vector<PressDef> press;
     std::vector<MouseDef> mouse;
+    std::vector<MoveDef> move;
 };
 
 template <class V> void describe(V& v, InputScriptDef& d) {
+    v.field("steps", d.steps, "simulation steps the recorded session ran (run runs as many)");
+    v.field("size", d.size, range(0, 16384), "the recorded framebuffer, px (run renders at it)");
     v.list("press", d.press, "key presses");
     v.list("mouse", d.mouse, "mouse actions");
+    v.list("move", d.move, "cursor motions");
 }
 
 /// Reads an input script; every problem (file:line:column: key: message) in one
@@ -61,5 +85,12 @@ template <class V> void describe(V& v, InputScriptDef& d) {
 InputScriptDef loadInputScript(const std::string& path);
 /// The script's events, in time order (a key's up after its down when both fall together).
 std::vector<platform::InputEvent> scriptEvents(const InputScriptDef& script);
+/// A recording as a script: each key's down and up become a [[press]], each button's a
+/// [[mouse]] at the cursor's position, each wheel turn a [[mouse]] with button "none", each
+/// motion a [[move]]; scriptEvents() of it gives the events back in an order the steps
+/// consume alike. `events` in time order; a key or button still down at the end is released
+/// at the end of the last step.
+InputScriptDef recordedScript(const std::vector<platform::InputEvent>& events, uint64_t steps, double stepSeconds,
+                              glm::ivec2 size);
 
 } // namespace ob::game

@@ -13,6 +13,7 @@
 #include "behaviours/spawning.h"
 #include "ocean/ocean_fft_cpu.h"
 #include "world/script.h"
+#include "world/tools.h"
 #include "behaviours/ship.h"
 #include "sim/splash_foam_system.h"
 #include "sim/stamp_sources.h"
@@ -43,6 +44,8 @@ const ecs::SystemEntry SYSTEMS[] = {
     {Phase::Input, Rate::Frame, "frame input", frameInputSystem},
     {Phase::Input, Rate::Frame, "controls", controlsSystem},
     {Phase::Script, Rate::Step, "step input", stepInputSystem},
+    {Phase::Script, Rate::Step, "tools", toolsSystem},
+    {Phase::Script, Rate::Step, "camera", cameraSystem},
     {Phase::Script, Rate::Step, "events", scriptSystem},
     {Phase::Script, Rate::Step, "spawn requests", spawnRequestsSystem},
     {Phase::Script, Rate::Step, "ships", shipSystem},
@@ -54,7 +57,7 @@ const ecs::SystemEntry SYSTEMS[] = {
     {Phase::Interaction, Rate::Step, "ripples", interactionSystem},
     {Phase::Interaction, Rate::Step, "splashes and foam", splashFoamSystem},
     {Phase::Ocean, Rate::Step, "ocean", oceanSystem},
-    {Phase::Render, Rate::Frame, "camera", cameraSystem},
+    {Phase::Render, Rate::Frame, "paused camera", pausedCameraSystem},
     {Phase::Render, Rate::Frame, "render", renderSystem},
 };
 
@@ -70,6 +73,8 @@ Sandbox::Sandbox(const SceneDef& scene) : m_scene(scene), m_schedule(scene.sim) 
     for (const StampSource& source : {bodySource(), cannonSource(), fishSource()}) addStampSource(m_world, source);
     spawnObjects(m_world, m_scene.physics, m_scene.objects, m_scene.sim.seed);
     addScript(m_world, m_scene);
+    addPlayerTools(m_world, m_scene.tools, {m_scene.window.width, m_scene.window.height}, fishSchoolOf(m_scene.controls),
+                   droppedShip(m_scene));
     addGame(m_world, m_scene);
 }
 

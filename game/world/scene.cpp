@@ -97,6 +97,23 @@ SceneDef parseScene(const std::string& text, const std::string& sourceName, cons
     return readScene(doc, sourceName, "", errors, overrides);
 }
 
+ObjectDef droppedShip(const SceneDef& scene) {
+    ObjectDef ship;
+    ship.type = ObjectType::Ship;
+    ship.model = resolveModel("assets/models/ship.gltf", "");
+    ship.color = {0.6f, 0.15f, 0.1f};
+    for (const ObjectDef& o : scene.objects)
+        if (o.type == ObjectType::Ship) {
+            ship = o;
+            break;
+        }
+    ship.ship.player = false;
+    ship.ship.waypoints.clear();
+    ship.ship.speed = 3.0f;
+    ship.ship.velocity = glm::vec3(0.0f);
+    return ship;
+}
+
 std::string defaultScenePath() {
     const char* relative = "config/scenes/default.toml";
     if (std::filesystem::exists(relative)) return relative;

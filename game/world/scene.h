@@ -12,6 +12,7 @@
 #include "ocean/ocean_def.h"
 #include "platform/window_def.h"
 #include "world/script.h"
+#include "world/tools.h"
 #include "splash/splash_def.h"
 
 #include <string>
@@ -41,6 +42,7 @@ struct SceneDef {
     platform::WindowDef window;   ///< [window]
     CameraDef camera;             ///< [camera]
     ControlsDef controls;         ///< [controls]
+    ToolsDef tools;               ///< [tools]
     gfx::RenderDef render;        ///< [render]
     ocean::OceanDef ocean;        ///< [ocean]
     ocean::GerstnerDef gerstner;  ///< [gerstner]
@@ -59,6 +61,7 @@ template <class V> void describe(V& v, SceneDef& s) {
     v.section("window", s.window);
     v.section("camera", s.camera);
     v.section("controls", s.controls);
+    v.section("tools", s.tools);
     v.section("render", s.render);
     v.section("ocean", s.ocean);
     v.section("gerstner", s.gerstner);
@@ -80,6 +83,10 @@ SceneDef loadScene(const std::string& path, const std::vector<std::string>& over
 /// As loadScene, from text (`sourceName` names it in messages; relative model paths start
 /// at the current folder).
 SceneDef parseScene(const std::string& text, const std::string& sourceName, const std::vector<std::string>& overrides = {});
+
+/// The ship the drop tool drops: the scene's first ship (its model and hull), else one with
+/// the project's ship model when it is found; scripted, cruising at 3 m/s.
+ObjectDef droppedShip(const SceneDef& scene);
 
 /// The scene `play` opens with no argument: config/scenes/default.toml (from the current
 /// folder if it has one, else from the source tree).

@@ -35,10 +35,12 @@ int shots(const nlohmann::json& stats) { return stats["cannons"][0]["shots"].get
 
 } // namespace
 
-TEST_CASE("one scripted Space press fires one ball at 1, 3 and 8 steps a frame, a 5 ms tap fires", "[input]") {
+TEST_CASE("one scripted Space press fires one ball at 1, 3 and 8 steps a frame, a 5 ms tap fires, and a click of the cannon tool", "[input]") {
     const std::string press = "[[press]]\nat = 1.0\nkey = \"space\"\nhold = 0.3\n";
     const std::string tap = "[[press]]\nat = 1.01\nkey = \"space\"\nhold = 0.005\n";
-    const std::string click = "[[mouse]]\nat = 1.5\nbutton = \"left\"\nhold = 0.2\n";
+    // The cannon tool (5): a left click on the water aims there and fires.
+    const std::string click = "[[press]]\nat = 1.4\nkey = \"5\"\nhold = 0.02\n"
+                              "[[mouse]]\nat = 1.5\nbutton = \"left\"\nhold = 0.2\npos = [32, 30]\n";
     for (int k : {1, 3, 8}) {
         INFO("steps per frame " << k);
         const nlohmann::json quiet = run(CALM + CANNON, "", k, 120);

@@ -52,7 +52,7 @@ TEST_CASE("camera: right drag orbits the target at a constant radius, the wheel 
     CHECK(std::abs(std::remainder(turned, 2.0f * float(M_PI))) == Approx(0.5f).epsilon(1e-4));
     // The camera still looks at the target.
     CHECK(camera(sandbox).rig->focus == glm::vec3(0.0f));
-    push(sandbox, {T::Scroll, 2.0 / 60.0, platform::Key::W, platform::MouseButton::Left, {0.0f, 2.0f}});
+    push(sandbox, {T::Scroll, 1.5 / 60.0, platform::Key::W, platform::MouseButton::Left, {0.0f, 2.0f}});
     sandbox.frame(2.0 / 60.0);
     CHECK(glm::length(camera(sandbox).transform->position) == Approx(radius * 0.81f).epsilon(1e-4));
 }
