@@ -5,12 +5,12 @@
 
 #include "assets/gltf_library.h"
 #include "core/error.h"
+#include "core/file_read.h"
 
 #include <cmath>
 #include <algorithm>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -382,49 +382,123 @@ std::string oneLine(std::string text) {
     return text.empty() ? "unknown error" : text;
 }
 
-// Images are not used: accept them without decoding.
+// Images are not used: accept them without decoding (external images are never opened:
+// TINYGLTF_NO_EXTERNAL_IMAGE, gltf_library.h).
 bool ignoreImage(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
     return true;
 }
 
+// Extensions a file may require (glTF 2.0 §3.12: a loader refuses a file that requires one
+// it does not implement). None: the loader reads core glTF 2.0 only.
+constexpr const char* SUPPORTED_REQUIRED_EXTENSIONS[] = {""};
+
+// The file system as the model's external files see it: only regular files in the model's
+// folder or below, after percent-decoding (tinygltf's) and symlink resolution (ours); no `~`
+// or variable expansion. The first refusal is kept for the message.
+struct ConfinedFiles {
+    std::filesystem::path root;  // canonical folder of the model
+    std::string problem;         // the first refusal, "" when none
+
+    static bool exists(const std::string&, void*) { return true; }  // ReadWholeFile says why not
+    static std::string expand(const std::string& path, void*) { return path; }
+    static bool write(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
+        if (err) *err += "writing is not allowed";
+        return false;
+    }
+
+    static bool read(std::vector<unsigned char>* out, std::string* err, const std::string& joined, void* user) {
+        auto* self = static_cast<ConfinedFiles*>(user);
+        const std::string root = self->root.string();
+        // tinygltf joins the folder and the decoded uri: the uri is what follows.
+        const std::string uri = joined.rfind(root + "/", 0) == 0 ? joined.substr(root.size() + 1) : joined;
+        std::string why;
+        try {
+            if (uri.find('\0') != std::string::npos) throw InputError("the uri holds a NUL character");
+            namespace fs = std::filesystem;
+            std::error_code ec;
+            const fs::path target = fs::weakly_canonical(self->root / uri, ec);
+            if (ec) throw InputError(ec.message());
+            const auto [rootEnd, targetAt] = std::mismatch(self->root.begin(), self->root.end(), target.begin(), target.end());
+            if (rootEnd != self->root.end() || targetAt == target.end())
+                throw InputError("leads outside the model's folder " + root +
+                                 " (a model reads only files in its own folder or below)");
+            const std::string bytes = readRegularFile(target.string(), MAX_FILE_BYTES);
+            out->assign(bytes.begin(), bytes.end());
+            return true;
+        } catch (const InputError& e) {
+            why = e.what();
+        } catch (const std::exception& e) {
+            why = e.what();
+        }
+        if (self->problem.empty()) self->problem = "external file uri '" + uri + "': " + why;
+        if (err) *err += why;
+        return false;
+    }
+};
+
+// The glTF version rules the parser leaves to us: the GLB container's version (2), the
+// asset's version (2.x) and minVersion, and the extensions the file requires.
+void checkVersions(const std::vector<unsigned char>& bytes, bool binary, const tinygltf::Model& m) {
+    if (binary) {
+        uint32_t version = 0;
+        if (bytes.size() >= 8) std::memcpy(&version, bytes.data() + 4, 4);
+        if (version != 2) throw Corrupt("GLB container version " + std::to_string(version) + " (only version 2 is read)");
+    }
+    if (m.asset.version.rfind("2.", 0) != 0)
+        throw Corrupt("asset.version \"" + m.asset.version + "\" is not 2.x (oceanbox reads glTF 2.0)");
+    if (!m.asset.minVersion.empty() && m.asset.minVersion != "2.0")
+        throw Corrupt("asset.minVersion \"" + m.asset.minVersion + "\" is newer than glTF 2.0");
+    for (const std::string& extension : m.extensionsRequired) {
+        bool supported = false;
+        for (const char* known : SUPPORTED_REQUIRED_EXTENSIONS) supported = supported || (*known && extension == known);
+        if (!supported)
+            throw Corrupt("requires the extension \"" + extension +
+                          "\", which oceanbox does not implement (extensionsRequired: a loader must refuse the file)");
+    }
+}
+
 } // namespace
 
+std::string lodTwinPath(const std::string& file) {
+    std::filesystem::path far(file);
+    far.replace_extension(".lod1" + far.extension().string());
+    return far.string();
+}
+
 ModelData loadGltfModel(const std::string& path) {
-    namespace fs = std::filesystem;
-    std::error_code ec;
-    const fs::file_status status = fs::status(path, ec);
-    if (!fs::exists(status)) throw InputError(path + ": file not found");
-    if (!fs::is_regular_file(status)) throw InputError(path + ": not a regular file");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(path + ": cannot open the file");
-    std::vector<unsigned char> bytes;
-    char chunk[65536];
-    while (in.read(chunk, sizeof chunk) || in.gcount() > 0) {
-        bytes.insert(bytes.end(), chunk, chunk + in.gcount());
-        if (bytes.size() > MAX_FILE_BYTES) throw InputError(path + ": larger than 1 GiB");
-    }
-    if (in.bad()) throw InputError(path + ": cannot read the file");
-    return parseGltfModel(bytes, path, fs::path(path).parent_path().string());
+    // A regular file only (a named pipe would block, a device read forever).
+    const std::string text = readRegularFile(path, MAX_FILE_BYTES);
+    const std::vector<unsigned char> bytes(text.begin(), text.end());
+    return parseGltfModel(bytes, path, std::filesystem::path(path).parent_path().string());
 }
 
 ModelData parseGltfModel(const std::vector<unsigned char>& bytes, const std::string& path, const std::string& baseDir) {
     if (bytes.empty()) throw InputError(path + ": the file is empty");
     if (bytes.size() > MAX_FILE_BYTES) throw InputError(path + ": larger than 1 GiB");
+    ConfinedFiles files;
+    {
+        std::error_code ec;
+        files.root = std::filesystem::weakly_canonical(std::filesystem::absolute(baseDir.empty() ? "." : baseDir, ec), ec);
+        if (ec) throw InputError(path + ": cannot resolve the model's folder '" + baseDir + "': " + ec.message());
+    }
     tinygltf::TinyGLTF gltf;
     gltf.SetImageLoader(&ignoreImage, nullptr);
+    gltf.SetFsCallbacks({&ConfinedFiles::exists, &ConfinedFiles::expand, &ConfinedFiles::read, &ConfinedFiles::write, &files});
     tinygltf::Model model;
     std::string err, warn;
     const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
     bool ok = false;
     try {
-        ok = binary ? gltf.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), unsigned(bytes.size()), baseDir)
+        ok = binary ? gltf.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), unsigned(bytes.size()), files.root.string())
                     : gltf.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(bytes.data()),
-                                               unsigned(bytes.size()), baseDir);
+                                               unsigned(bytes.size()), files.root.string());
     } catch (const std::exception& e) {
         err = e.what();
     }
+    if (!files.problem.empty()) throw InputError(path + ": " + oneLine(files.problem));
     if (!ok) throw InputError(path + ": not a valid glTF 2.0 " + (binary ? "binary (.glb)" : "file") + ": " + oneLine(err));
     try {
+        checkVersions(bytes, binary, model);
         return flatten(model);
     } catch (const Corrupt& e) {
         throw InputError(path + ": " + e.what());

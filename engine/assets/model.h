@@ -18,13 +18,20 @@ struct ModelData {
 };
 
 /// Loads a .gltf (JSON + external or embedded buffers) or .glb file.
-/// Throws ob::InputError "<path>: <what is wrong>" for a missing, unreadable or corrupt file
-/// or one with no triangle mesh.
+/// Throws ob::InputError "<path>: <what is wrong>" for a missing, unreadable or corrupt file,
+/// one that is not a regular file (a named pipe, device, folder), one with no triangle mesh,
+/// a glTF version other than 2.x (GLB container version other than 2), a required extension
+/// (`extensionsRequired`), or an external file (buffer uri) that is not a regular file in the
+/// model's folder or below (after percent-decoding and symlinks).
 ModelData loadGltfModel(const std::string& path);
 
 /// As loadGltfModel, from the bytes of a .gltf or .glb (told apart by the "glTF" magic);
-/// `sourceName` names it in messages, external buffers are looked for in `baseDir`.
+/// `sourceName` names it in messages, external buffers are looked for in `baseDir` (the
+/// current folder when empty) and below, never elsewhere.
 ModelData parseGltfModel(const std::vector<unsigned char>& bytes, const std::string& sourceName,
                          const std::string& baseDir = "");
+
+/// The far twin of a model drawn at a distance: X.lod1.gltf beside X.gltf (X.lod1.glb beside X.glb).
+std::string lodTwinPath(const std::string& file);
 
 } // namespace ob::assets

@@ -2,13 +2,13 @@
 #include "core/npy.h"
 
 #include "core/error.h"
+#include "core/file_read.h"
 #include "core/file_write.h"
 
 #include <bit>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
 #include <limits>
 
 static_assert(std::endian::native == std::endian::little, "npy I/O assumes a little-endian host");
@@ -125,27 +125,25 @@ std::string shapeText(const std::vector<size_t>& shape) {
 } // namespace
 
 NpyArray readNpy(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) bad(path, "cannot open .npy file (missing or unreadable)");
-    in.seekg(0, std::ios::end);
-    const auto fileSize = static_cast<uint64_t>(in.tellg());
-    in.seekg(0, std::ios::beg);
+    // A regular file only (a named pipe would block, a device read forever), read whole.
+    return parseNpy(readRegularFile(path), path);
+}
 
-    unsigned char pre[8];
-    if (!in.read(reinterpret_cast<char*>(pre), 8) || std::memcmp(pre, MAGIC, 6) != 0)
-        bad(path, "not a .npy file (bad magic; expected \\x93NUMPY)");
-    const int major = pre[6], minor = pre[7];
+NpyArray parseNpy(const std::string& file, const std::string& path) {
+    const uint64_t fileSize = file.size();
+    const auto* bytes = reinterpret_cast<const unsigned char*>(file.data());
+
+    if (fileSize < 8 || std::memcmp(bytes, MAGIC, 6) != 0) bad(path, "not a .npy file (bad magic; expected \\x93NUMPY)");
+    const int major = bytes[6], minor = bytes[7];
     uint64_t headerLen = 0;
     size_t lenBytes = 0;
     if (major == 1 && minor == 0) {
-        unsigned char b[2];
-        if (!in.read(reinterpret_cast<char*>(b), 2)) bad(path, "truncated .npy header");
-        headerLen = uint64_t(b[0]) | uint64_t(b[1]) << 8;
+        if (fileSize < 10) bad(path, "truncated .npy header");
+        headerLen = uint64_t(bytes[8]) | uint64_t(bytes[9]) << 8;
         lenBytes = 2;
     } else if (major == 2 && minor == 0) {
-        unsigned char b[4];
-        if (!in.read(reinterpret_cast<char*>(b), 4)) bad(path, "truncated .npy header");
-        headerLen = uint64_t(b[0]) | uint64_t(b[1]) << 8 | uint64_t(b[2]) << 16 | uint64_t(b[3]) << 24;
+        if (fileSize < 12) bad(path, "truncated .npy header");
+        headerLen = uint64_t(bytes[8]) | uint64_t(bytes[9]) << 8 | uint64_t(bytes[10]) << 16 | uint64_t(bytes[11]) << 24;
         lenBytes = 4;
     } else {
         bad(path, "unsupported .npy version " + std::to_string(major) + "." + std::to_string(minor) +
@@ -153,8 +151,7 @@ NpyArray readNpy(const std::string& path) {
     }
     const uint64_t dataOffset = 8 + lenBytes + headerLen;
     if (dataOffset > fileSize) bad(path, "truncated .npy header");
-    std::string header(headerLen, '\0');
-    if (!in.read(header.data(), std::streamsize(headerLen))) bad(path, "truncated .npy header");
+    const std::string header = file.substr(8 + lenBytes, size_t(headerLen));
 
     Header h;
     if (std::string problem = HeaderParser(header).parse(h); !problem.empty()) bad(path, problem);
@@ -177,8 +174,7 @@ NpyArray readNpy(const std::string& path) {
     NpyArray arr;
     arr.shape = std::move(h.shape);
     arr.data.resize(count);
-    if (count && !in.read(reinterpret_cast<char*>(arr.data.data()), std::streamsize(need)))
-        bad(path, "truncated data");
+    if (count) std::memcpy(arr.data.data(), bytes + dataOffset, size_t(need));
     return arr;
 }
 

@@ -14,12 +14,15 @@ struct NpyArray {
 };
 
 /// Reads a .npy file holding '<f4' data in C order. Throws ob::InputError naming the file
-/// for a missing file, bad magic, unsupported version, bad header, other dtype,
+/// for a missing file or one that is not a regular file (a named pipe, device, folder), bad magic, unsupported version, bad header, other dtype,
 /// fortran_order True or truncated data.
 NpyArray readNpy(const std::string& path);
 
+/// As readNpy, from the bytes of a .npy file; `sourceName` names it in messages.
+NpyArray parseNpy(const std::string& bytes, const std::string& sourceName);
+
 /// Writes a version 1.0 .npy file ('<f4', C order) holding product(shape) values from data.
-/// Writes path + ".tmp" and renames it over path, so a failed write leaves no half file.
+/// Written whole or not at all (writeFileWhole: a temporary beside it, renamed over it).
 /// Throws ob::InputError if the path cannot be created (the user's choice: exit 2),
 /// ob::RuntimeError if writing fails part way (disk full).
 void writeNpy(const std::string& path, const std::vector<size_t>& shape, const float* data);

@@ -2,12 +2,16 @@
 // unknown keys rejected. Every error is collected; nothing stops at the first.
 #include "core/toml_reader.h"
 
+#include "core/error.h"
+#include "core/file_read.h"
+
+#include <algorithm>
 #include <charconv>
+#include <climits>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
-#include <regex>
 #include <set>
 #include <toml++/toml.h>
 
@@ -36,33 +40,21 @@ static std::string parseErrorText(const toml::parse_error& e) {
 
 TomlDocument TomlDocument::fromFile(const std::string& path, std::vector<std::string>& errors) {
     TomlDocument doc;
-    // What is not a readable, non-empty regular file says so (a folder would read as an
-    // error deep in the parser, a device could block or read forever, an empty file would
-    // silently be all defaults).
-    namespace fs = std::filesystem;
-    std::error_code ec;
-    const fs::file_status status = fs::status(path, ec);
-    if (fs::is_directory(status)) {
-        errors.push_back(path + ": is a folder, not a TOML file");
+    // Only a regular file is read (a device could block or read forever); an empty file
+    // would silently be all defaults.
+    std::string text;
+    try {
+        text = readRegularFile(path);
+    } catch (const InputError& e) {
+        errors.push_back(e.what());
         return doc;
     }
-    if (fs::exists(status) && !fs::is_regular_file(status)) {
-        errors.push_back(path + ": is not a regular file (a device, pipe or socket); give a TOML file");
-        return doc;
-    }
-    FILE* f = std::fopen(path.c_str(), "rb");
-    if (!f) {
-        errors.push_back(path + ": cannot open file (" + (fs::exists(status) ? "no read permission" : "no such file") + ")");
-        return doc;
-    }
-    const bool empty = std::fgetc(f) == EOF;
-    std::fclose(f);
-    if (empty) {
+    if (text.empty()) {
         errors.push_back(path + ": is empty (a TOML file with at least one key is expected)");
         return doc;
     }
     try {
-        doc.m_impl->root = toml::parse_file(path);
+        doc.m_impl->root = toml::parse(text, path);
     } catch (const toml::parse_error& e) {
         errors.push_back(parseErrorText(e));
     }
@@ -97,67 +89,109 @@ static bool mergeInto(toml::table& into, toml::table& from, const std::string& s
     return true;
 }
 
-// The table a `--set` path's element part names ("objects[1]" or "a.b[0].c[2]"): each
-// dotted segment is a table, each [i] an element of an array of tables. Null (and an error)
-// when a segment is missing.
-static toml::table* elementTable(toml::table& root, const std::string& head, const std::string& source,
-                                 std::vector<std::string>& errors) {
-    static const std::regex SEGMENT(R"(([A-Za-z0-9_-]+)(?:\[([0-9]+)\])?)");
+// One segment of a `--set` key path: a key, and the element of an array of tables it may pick.
+struct PathSegment {
+    std::string_view key;    // [A-Za-z0-9_-]+
+    std::string_view index;  // the digits of [i]; empty when the segment has none
+};
+
+// Splits a key path ("objects[0].ship.speed") into segments, one pass, no recursion; "" or
+// what is wrong. Long paths are refused before any work (no scene key comes near the limits).
+static std::string scanKeyPath(std::string_view path, std::vector<PathSegment>& segments) {
+    if (path.size() > MAX_KEY_PATH_CHARS)
+        return "the key path has " + std::to_string(path.size()) + " characters (at most " +
+               std::to_string(MAX_KEY_PATH_CHARS) + ")";
+    auto isKeyChar = [](char c) {
+        return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == '-';
+    };
+    auto isDigit = [](char c) { return c >= '0' && c <= '9'; };
+    size_t i = 0;
+    for (;;) {
+        PathSegment seg;
+        const size_t keyStart = i;
+        while (i < path.size() && isKeyChar(path[i])) ++i;
+        if (i == keyStart) return "expected key.path=value";
+        seg.key = path.substr(keyStart, i - keyStart);
+        if (i < path.size() && path[i] == '[') {
+            const size_t digits = ++i;
+            while (i < path.size() && isDigit(path[i])) ++i;
+            if (i == digits || i >= path.size() || path[i] != ']') return "expected key.path=value";
+            seg.index = path.substr(digits, i - digits);
+            ++i;
+        }
+        segments.push_back(seg);
+        if (segments.size() > MAX_KEY_PATH_SEGMENTS)
+            return "the key path has more than " + std::to_string(MAX_KEY_PATH_SEGMENTS) + " segments";
+        if (i == path.size()) return "";
+        if (path[i] != '.') return "expected key.path=value";
+        ++i;
+    }
+}
+
+// The table segments [0, end) name: each a table, or with [i] an element of an array of
+// tables. Null (and an error) when one is missing.
+static toml::table* elementTable(toml::table& root, const std::vector<PathSegment>& segments, size_t end,
+                                 const std::string& source, std::vector<std::string>& errors) {
     toml::table* table = &root;
-    size_t start = 0;
-    while (start <= head.size()) {
-        size_t dot = head.find('.', start);
-        std::string segment = head.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
-        std::smatch m;
-        std::regex_match(segment, m, SEGMENT);
-        toml::node* node = table->get(m[1].str());
-        if (m[2].matched) {
+    for (size_t s = 0; s < end; ++s) {
+        const PathSegment& seg = segments[s];
+        const std::string key(seg.key);
+        toml::node* node = table->get(key);
+        if (!seg.index.empty()) {
             // An index too large for size_t (a fuzzer's 30 digits) names no element either.
-            const std::string digits = m[2].str();
             size_t index = SIZE_MAX;
-            std::from_chars(digits.data(), digits.data() + digits.size(), index);
+            std::from_chars(seg.index.data(), seg.index.data() + seg.index.size(), index);
             toml::array* array = node ? node->as_array() : nullptr;
             toml::node* item = array && index < array->size() ? array->get(index) : nullptr;
             if (!item || !item->is_table()) {
-                errors.push_back(source + ": '" + m[1].str() + "' has no element [" + m[2].str() + "]");
+                errors.push_back(source + ": '" + key + "' has no element [" + std::string(seg.index) + "]");
                 return nullptr;
             }
             table = item->as_table();
         } else {
             if (!node || !node->is_table()) {
-                errors.push_back(source + ": '" + m[1].str() + "' is not a section");
+                errors.push_back(source + ": '" + key + "' is not a section");
                 return nullptr;
             }
             table = node->as_table();
         }
-        if (dot == std::string::npos) break;
-        start = dot + 1;
     }
     return table;
 }
 
 void TomlDocument::applyOverride(const std::string& assignment, std::vector<std::string>& errors) {
-    const std::string source = "--set " + assignment;
-    size_t eq = assignment.find('=');
+    // A long assignment is named by its start only: the message stays one line.
+    const std::string source =
+        "--set " + (assignment.size() > 2 * MAX_KEY_PATH_CHARS ? assignment.substr(0, MAX_KEY_PATH_CHARS) + "..." : assignment);
+    const size_t eq = assignment.find('=');
     // Dotted keys; a segment may pick an element of an array of tables: objects[0].count.
-    static const std::regex KEY_PATH(R"([A-Za-z0-9_-]+(\[[0-9]+\])?(\.[A-Za-z0-9_-]+(\[[0-9]+\])?)*)");
-    if (eq == std::string::npos || !std::regex_match(assignment.substr(0, eq), KEY_PATH)) {
+    std::vector<PathSegment> segments;
+    const std::string_view keyPath = std::string_view(assignment).substr(0, eq);
+    if (eq == std::string::npos) {
         errors.push_back(source + ": expected key.path=value");
         return;
     }
-    std::string path = assignment.substr(0, eq);
-    std::string text = assignment.substr(eq + 1);
+    if (std::string problem = scanKeyPath(keyPath, segments); !problem.empty()) {
+        errors.push_back(source + ": " + problem);
+        return;
+    }
+    const std::string text = assignment.substr(eq + 1);
     // Up to the last [i]: the element table the rest of the path is set in.
+    size_t last = segments.size();
+    while (last > 0 && segments[last - 1].index.empty()) --last;
     toml::table* target = &m_impl->root;
-    size_t close = path.rfind(']');
-    if (close != std::string::npos) {
-        if (close + 1 == path.size()) {
-            errors.push_back(source + ": expected key.path=value (a key inside the element: " + path + ".key=value)");
-            return;
-        }
-        target = elementTable(m_impl->root, path.substr(0, close + 1), source, errors);
+    if (last == segments.size() && last > 0) {
+        errors.push_back(source + ": expected key.path=value (a key inside the element: " + std::string(keyPath) + ".key=value)");
+        return;
+    }
+    if (last > 0) {
+        target = elementTable(m_impl->root, segments, last, source, errors);
         if (!target) return;
-        path = path.substr(close + 2);
+    }
+    std::string path;
+    for (size_t s = last; s < segments.size(); ++s) {
+        if (!path.empty()) path += '.';
+        path += segments[s].key;
     }
     // The value in TOML syntax; a bare word that is no TOML value is taken as a string.
     // The key path is a TOML dotted key, so the parse builds the nested tables itself.
@@ -232,9 +266,11 @@ static const char* typeName(const toml::node& n) {
     }
 }
 
+// A number as the user wrote it: an integral value in full (4294967296, not 4.29497e+09).
 static std::string num(double v) {
     char buf[32];
-    std::snprintf(buf, sizeof buf, "%g", v);
+    if (v == std::floor(v) && std::fabs(v) < 1e15) std::snprintf(buf, sizeof buf, "%.0f", v);
+    else std::snprintf(buf, sizeof buf, "%g", v);
     return buf;
 }
 
@@ -267,6 +303,21 @@ static bool checkRange(TomlReader::State& s, const toml::node& node, const char*
     if (inRange && pow2) return true;
     s.error(node, key, std::string("must be ") + (l.powerOfTwo ? "a power of two " : "") + rangeText(l) + ", got " + num(v));
     return false;
+}
+
+// The number as the float it is stored in: a finite double beyond a float's range (1e308)
+// would become infinity there, and NaN a step later.
+static bool checkFloat(TomlReader::State& s, const toml::node& node, const char* key, double v, float& out) {
+    out = float(v);
+    if (std::isfinite(out)) return true;
+    s.error(node, key, "must be a finite number within a 32-bit float's range (|x| <= 3.4e38), got " + num(v));
+    return false;
+}
+
+// A number in range, stored as a float: readNumber, checkRange and checkFloat.
+static bool readFloat(TomlReader::State& s, const toml::node& node, const char* key, const Limits& l, float& out) {
+    double v;
+    return readNumber(s, node, key, v) && checkRange(s, node, key, v, l) && checkFloat(s, node, key, v, out);
 }
 
 TomlReader::TomlReader(const TomlDocument& doc, std::vector<std::string>& errors)
@@ -341,8 +392,9 @@ void TomlReader::field(const char* key, int& value, Limits limits, const char*) 
         m_state->error(*node, key, std::string("expected an integer, got ") + typeName(*node));
         return;
     }
-    double v = double(i->get());
-    if (checkRange(*m_state, *node, key, v, limits)) value = int(i->get());
+    const double v = double(i->get());
+    const Limits within{std::max(limits.min, double(INT_MIN)), std::min(limits.max, double(INT_MAX)), limits.powerOfTwo, false};
+    if (checkRange(*m_state, *node, key, v, within)) value = int(i->get());
 }
 
 void TomlReader::field(const char* key, uint64_t& value, const char*) {
@@ -359,8 +411,8 @@ void TomlReader::field(const char* key, uint64_t& value, const char*) {
 void TomlReader::field(const char* key, float& value, Limits limits, const char*) {
     const toml::node* node = m_state->lookup(key);
     if (!node) return;
-    double v;
-    if (readNumber(*m_state, *node, key, v) && checkRange(*m_state, *node, key, v, limits)) value = float(v);
+    float v;
+    if (readFloat(*m_state, *node, key, limits, v)) value = v;
 }
 
 template <int N>
@@ -372,17 +424,17 @@ static void readVector(TomlReader::State& s, const char* key, float* out, const 
         s.error(*node, key, "expected an array of " + std::to_string(N) + " numbers");
         return;
     }
-    double v[N];
+    float v[N];
     bool zero = true;
     for (int i = 0; i < N; ++i) {
-        if (!readNumber(s, *arr->get(size_t(i)), key, v[i]) || !checkRange(s, *arr->get(size_t(i)), key, v[i], limits)) return;
-        zero = zero && v[i] == 0.0;
+        if (!readFloat(s, *arr->get(size_t(i)), key, limits, v[i])) return;
+        zero = zero && v[i] == 0.0f;
     }
     if (limits.nonZero && zero) {
         s.error(*node, key, "must not be the zero vector (it is a direction)");
         return;
     }
-    for (int i = 0; i < N; ++i) out[i] = float(v[i]);
+    for (int i = 0; i < N; ++i) out[i] = v[i];
 }
 
 void TomlReader::field(const char* key, glm::vec2& value, Limits limits, const char*) {
@@ -440,10 +492,10 @@ void TomlReader::field(const char* key, std::vector<glm::vec2>& points, Limits l
             s.error(item, key, "expected an array of [x, z] pairs");
             return;
         }
-        double v[2];
+        float v[2];
         for (size_t i = 0; i < 2; ++i)
-            if (!readNumber(s, *pair->get(i), key, v[i]) || !checkRange(s, *pair->get(i), key, v[i], limits)) return;
-        out.emplace_back(float(v[0]), float(v[1]));
+            if (!readFloat(s, *pair->get(i), key, limits, v[i])) return;
+        out.emplace_back(v[0], v[1]);
     }
     points = std::move(out);
 }

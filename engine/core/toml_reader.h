@@ -9,6 +9,10 @@
 
 namespace ob {
 
+/// A `--set` key path's longest length and most segments (no scene key comes near either).
+constexpr size_t MAX_KEY_PATH_CHARS = 256;
+constexpr size_t MAX_KEY_PATH_SEGMENTS = 16;
+
 /// One parsed TOML document (opaque here: toml++ stays inside toml_reader.cpp).
 class TomlDocument {
 public:
@@ -16,7 +20,8 @@ public:
     static TomlDocument fromFile(const std::string& path, std::vector<std::string>& errors);
     /// Parses text; `sourceName` is what error messages call it.
     static TomlDocument fromString(const std::string& text, const std::string& sourceName, std::vector<std::string>& errors);
-    /// Applies one `--set key.path=value` override (value in TOML syntax; a bare word is a string).
+    /// Applies one `--set key.path=value` override (value in TOML syntax; a bare word is a
+    /// string). A key path longer than MAX_KEY_PATH_CHARS or MAX_KEY_PATH_SEGMENTS is an error.
     void applyOverride(const std::string& assignment, std::vector<std::string>& errors);
     /// Where the value at `keyPath` ("objects[0].model") was written: "file:line:column" (or
     /// the --set assignment); `fallback` if the document has no such key.

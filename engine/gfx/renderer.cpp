@@ -392,9 +392,8 @@ const Renderer::ModelMeshes& Renderer::meshesFor(const std::string& file) {
     auto it = m_models.find(file);
     if (it == m_models.end()) {
         ModelMeshes meshes{makeMesh(file, assets::loadGltfModel(file)), std::nullopt};
-        std::filesystem::path far(file);
-        far.replace_extension(".lod1" + far.extension().string());
-        if (std::filesystem::exists(far)) meshes.far = makeMesh(far.string(), assets::loadGltfModel(far.string()));
+        const std::string far = assets::lodTwinPath(file);  // checked with the scene (world/scene.cpp)
+        if (std::filesystem::exists(far)) meshes.far = makeMesh(far, assets::loadGltfModel(far));
         it = m_models.emplace(file, std::move(meshes)).first;
     }
     return it->second;

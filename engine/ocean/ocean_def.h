@@ -35,7 +35,7 @@ struct OceanDef {
 template <class V> void describe(V& v, OceanDef& d) {
     v.field("backend", d.backend, "where the ocean FFT runs");
     v.field("spectrum", d.spectrum, "wave spectrum: Phillips (eq. 5) or JONSWAP");
-    v.field("resolution", d.resolution, powerOfTwo(16, 2048), "grid points per side (N)");
+    v.field("resolution", d.resolution, powerOfTwo(16, 2048), "grid points per side (N); memory grows as N² (every grid of a scene at its maximum: ~5.6 GB)");
     v.field("patch_size", d.patch_size, range(1, 100000), "side of the largest tile, metres (L)");
     v.field("amplitude", d.amplitude, range(0, 1), "Phillips constant A (dimensionless)");
     v.field("wind_speed", d.wind_speed, range(0, 60), "wind speed at 10 m, m/s (V)");

@@ -1,5 +1,6 @@
 // `oceanbox bench`: the subcommands' flags, and the spheres bench (seed 001 Table 5).
 #include "bench/cmd_bench.h"
+#include "cli/cli_checks.h"
 #include "cli/commands.h"
 
 #include "core/file_write.h"
@@ -57,8 +58,8 @@ void checkRange(const char* flag, long v, long lo, long hi) {
 namespace {
 
 void addOutputFlags(CLI::App* cmd, BenchOutput& o) {
-    cmd->add_option("--out", o.out, "write the table as CSV (machine and settings in # lines)");
-    cmd->add_option("--chart", o.chart, "write an SVG chart, with the paper's numbers where it has them");
+    cmd->add_option("--out", o.out, "write the table as CSV (machine and settings in # lines)")->check(NON_EMPTY_PATH);
+    cmd->add_option("--chart", o.chart, "write an SVG chart, with the paper's numbers where it has them")->check(NON_EMPTY_PATH);
 }
 
 using Ms = std::chrono::duration<double, std::milli>;
@@ -223,7 +224,7 @@ void addBenchCommand(CLI::App& app, CommandAction& action, const std::string& co
     s->add_flag("--render", spheres->render, "also draw the water with the ripple layer each frame (headless)");
     s->add_option("--size", spheres->size, "framebuffer WxH with --render (default 800x600, the paper's)");
     s->add_option("--field", spheres->field, "ripple field cells per side (default 128)");
-    s->add_option("--radius-cells", spheres->radiusCells, "sphere radius SR in cells (default 20)");
+    s->add_option("--radius-cells", spheres->radiusCells, "sphere radius SR in cells (default 20)")->check(FINITE_NUMBER);
     s->add_option("--frames", spheres->frames, "measured frames per count (default 60)");
     s->add_option("--warmup", spheres->warmup, "frames run before measuring (default 20)");
     s->add_option("--stamping", spheres->stamping, "batched (default) or sequential (stepSphere per fish, the reference)")

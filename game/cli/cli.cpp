@@ -15,6 +15,9 @@ int runCli(int argc, char** argv) {
                  "interactive ripples, buoyant bodies)",
                  "oceanbox"};
     app.require_subcommand(1);
+    app.footer("Outputs (--stats, --screenshot, --out) are written whole to a regular file at the path given: a device, "
+               "a named pipe, a folder or a symbolic link there (/dev/null, /dev/stdout) is refused with exit 2 before the "
+               "run. Inputs must be regular files.");
     app.fallthrough(false);
     CommandAction action;
     std::string commandLine = "oceanbox";
@@ -35,6 +38,13 @@ int runCli(int argc, char** argv) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
         std::string what = e.what();
+        // A first word that is no option and no subcommand: say which word, and the valid ones.
+        if (argc > 1 && argv[1][0] != '-' && app.get_subcommands([&](CLI::App* sub) { return sub->check_name(argv[1]); }).empty()) {
+            std::string names;
+            for (const CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; }))
+                names += (names.empty() ? "" : ", ") + sub->get_name();
+            what = "unknown subcommand '" + std::string(argv[1]) + "' (the subcommands: " + names + ")";
+        }
         std::fprintf(stderr, "oceanbox: %s\nRun 'oceanbox --help' (or 'oceanbox SUBCOMMAND --help') for usage.\n", what.c_str());
         return EXIT_BAD_INPUT;
     }

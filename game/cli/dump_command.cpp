@@ -1,4 +1,5 @@
 // oceanbox dump LAYER SCENE: a layer of the water as a NumPy .npy field (SPEC §4).
+#include "cli/cli_checks.h"
 #include "cli/commands.h"
 #include "cli/scene_flags.h"
 #include "ocean/ocean_fft_cpu.h"
@@ -54,14 +55,14 @@ void addDumpCommand(CLI::App& app, CommandAction& action) {
                     "ripples: the ripple field Vh(t) [N, N] after --frames K")
         ->required()->check(CLI::IsMember({"ocean", "gerstner", "surface", "ripples"}));
     cmd->add_option("scene", a->scene.scene, "scene file")->required();
-    cmd->add_option("--time", a->time, "simulated time (s)")->check(CLI::Range(0.0, 1e9));
-    cmd->add_option("--out", a->out, "output .npy file")->required();
+    cmd->add_option("--time", a->time, "simulated time (s)")->check(FINITE_NUMBER)->check(CLI::Range(0.0, 1e9));
+    cmd->add_option("--out", a->out, "output .npy file")->required()->check(NON_EMPTY_PATH);
     cmd->add_option("--grid", a->grid, "gerstner: rest points per side N");
-    cmd->add_option("--extent", a->extent, "gerstner: side E of the rest grid (m)");
-    cmd->add_option("--points", a->points, "surface: float32 .npy [K, 2] of world (x, z)");
-    cmd->add_option("--frames", a->frames, "ripples: frames (simulation steps) to run first")->check(CLI::NonNegativeNumber);
+    cmd->add_option("--extent", a->extent, "gerstner: side E of the rest grid (m)")->check(FINITE_NUMBER);
+    cmd->add_option("--points", a->points, "surface: float32 .npy [K, 2] of world (x, z)")->check(NON_EMPTY_PATH);
+    cmd->add_option("--frames", a->frames, "ripples: frames (simulation steps) to run first")->check(NON_NEGATIVE);
     cmd->add_option("--set", a->scene.sets, "override a scene key: key.path=value (repeatable)");
-    cmd->add_option("--seed", a->scene.seed, "scene seed (same as --set sim.seed=N)")->check(CLI::NonNegativeNumber);
+    cmd->add_option("--seed", a->scene.seed, "scene seed (same as --set sim.seed=N)")->check(NON_NEGATIVE);
     cmd->callback([&action, a] { action = [a] { return dump(*a); }; });
 }
 

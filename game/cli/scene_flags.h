@@ -1,5 +1,6 @@
 // The flags every scene subcommand shares (play, run, dump, soak) and what they become.
 #pragma once
+#include "cli/cli_checks.h"
 #include "core/error.h"
 #include "tools/app.h"
 #include "world/scene.h"
@@ -31,10 +32,12 @@ struct SceneFlags {
         cmd->add_flag("--headless", headless, "render off-screen with OSMesa (no window)");
         cmd->add_option("--size", size, "framebuffer size WxH in pixels (default: the scene's [window])");
         cmd->add_option("--frames", frames, "frames to run")->check(CLI::Range(1L, 100000000L));
-        cmd->add_option("--seed", seed, "scene seed (same as --set sim.seed=N)")->check(CLI::NonNegativeNumber);
-        cmd->add_option("--screenshot", screenshot, "write the last frame to this PNG");
-        cmd->add_option("--stats", stats, "write a JSON summary (frames, per-phase ms, entities, state hash)");
-        cmd->add_option("--input", input, "scripted input: a TOML file of [[press]] and [[mouse]] entries (README)");
+        cmd->add_option("--seed", seed, "scene seed (same as --set sim.seed=N)")->check(NON_NEGATIVE);
+        cmd->add_option("--screenshot", screenshot, "write the last frame to this PNG")->check(NON_EMPTY_PATH);
+        cmd->add_option("--stats", stats, "write a JSON summary (frames, per-phase ms, entities, state hash)")
+            ->check(NON_EMPTY_PATH);
+        cmd->add_option("--input", input, "scripted input: a TOML file of [[press]] and [[mouse]] entries (README)")
+            ->check(NON_EMPTY_PATH);
         cmd->add_option("--steps-per-frame", stepsPerFrame,
                         "fixed clock: simulation steps each rendered frame advances (a slow machine's frame), 1-64")
             ->check(CLI::Range(1, 64));

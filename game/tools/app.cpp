@@ -23,6 +23,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -207,7 +208,10 @@ int runScene(const SceneDef& scene, const std::string& scenePath, const RunOptio
 
     // The run ends after `frames` frames, or once the simulation reaches `endTime`.
     const bool bounded = options.frames > 0 || options.endTime > 0.0;
-    const bool progress = bounded && platform->headless() && isatty(STDERR_FILENO);
+    // Where a headless run is: a line that rewrites itself on a terminal, else one line every 10 s.
+    const bool progress = bounded && platform->headless();
+    const bool terminal = isatty(STDERR_FILENO);
+    auto lastProgress = std::chrono::steady_clock::now();
     const long expected = options.frames > 0 ? options.frames
                                              : long(std::ceil(options.endTime * scene.sim.step_hz / options.stepsPerFrame - 1e-6));
     for (long f = 0; bounded || !sandbox->quitRequested(); ++f) {
@@ -227,9 +231,14 @@ int runScene(const SceneDef& scene, const std::string& scenePath, const RunOptio
             logInfo("screenshot written to %s", file.c_str());
         }
         if (last && !options.screenshot.empty()) gfx::writeScreenshot(options.screenshot, platform->framebufferSize());
-        if (progress && (f % 10 == 0 || last))
+        if (progress && terminal && (f % 10 == 0 || last))
             std::fprintf(stderr, "\roceanbox: frame %ld/%ld (%3.0f%%)%s", f + 1, expected,
                          100.0 * double(f + 1) / double(std::max(expected, 1L)), last ? "\n" : "");
+        if (progress && !terminal && std::chrono::steady_clock::now() - lastProgress > std::chrono::seconds(10)) {
+            lastProgress = std::chrono::steady_clock::now();
+            std::fprintf(stderr, "oceanbox: frame %ld/%ld (%3.0f%%)\n", f + 1, expected,
+                         100.0 * double(f + 1) / double(std::max(expected, 1L)));
+        }
         if (last) break;
         // A new world on the same window: the UI's "restart with these settings", the scene
         // picker's file, or R (the scene again, as this world started).

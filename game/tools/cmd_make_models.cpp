@@ -109,10 +109,21 @@ std::string gltfText(const ShapeModel& model) {
 
 int makeModels(const std::string& outDir) {
     namespace fs = std::filesystem;
+    // The folder itself is made, never its parents: a mistyped path fails instead of growing
+    // a tree of folders somewhere.
+    const fs::path parent = fs::path(outDir).parent_path().empty() ? fs::path(".") : fs::path(outDir).parent_path();
     std::error_code ec;
-    fs::create_directories(outDir, ec);
-    if (!fs::is_directory(outDir)) throw InputError("--out '" + outDir + "': cannot create the folder");
-    for (const ShapeModel& model : buildProjectModels()) {
+    if (!fs::is_directory(outDir, ec)) {
+        if (!fs::is_directory(parent, ec))
+            throw InputError("--out '" + outDir + "': folder '" + parent.string() +
+                             "' does not exist (create it, or choose another path; make-models makes only the last folder)");
+        fs::create_directory(outDir, ec);
+        if (!fs::is_directory(outDir, ec))
+            throw InputError("--out '" + outDir + "': cannot create the folder" + (ec ? " (" + ec.message() + ")" : std::string()));
+    }
+    const std::vector<ShapeModel> models = buildProjectModels();
+    for (const ShapeModel& model : models) checkWritable((fs::path(outDir) / (model.name + ".gltf")).string(), "model");
+    for (const ShapeModel& model : models) {
         const std::string path = (fs::path(outDir) / (model.name + ".gltf")).string();
         const std::string text = gltfText(model);
         writeTextFile(path, text, "model");

@@ -29,6 +29,36 @@ std::string numberText(float v) {
     return buf;
 }
 
+// Where the first value that is not a finite number lies in a [rows, cols] field; false when none.
+bool firstNonFinite(const float* data, size_t count, size_t cols, size_t& row, size_t& col) {
+    for (size_t i = 0; i < count; ++i)
+        if (!std::isfinite(data[i])) {
+            row = i / cols;
+            col = i % cols;
+            return true;
+        }
+    return false;
+}
+
+// A field read from a file holds finite numbers only: one NaN or inf spreads over the field.
+void checkFinite(const NpyArray& a, const std::string& path) {
+    size_t row = 0, col = 0;
+    if (a.shape.size() == 2 && firstNonFinite(a.data.data(), a.data.size(), a.shape[1], row, col))
+        throw InputError(path + ": the value at (row " + std::to_string(row) + ", column " + std::to_string(col) + ") is " +
+                         numberText(a.data[row * a.shape[1] + col]) + ", not a finite number");
+}
+
+// The solved field is finite: values near a float's limit (3e38) or flags that make the
+// step's factors overflow (--cell-size 1e-30) would write NaN or inf. Exit 2: the input did it.
+void checkSolved(const float* data, const std::vector<size_t>& shape, const RippleArgs& args, const std::string& flags) {
+    size_t row = 0, col = 0;
+    if (firstNonFinite(data, shape[0] * shape[1], shape[1], row, col))
+        throw InputError("ripple: after " + std::to_string(args.steps) + " steps the field at (row " + std::to_string(row) +
+                         ", column " + std::to_string(col) + ") is " + numberText(data[row * shape[1] + col]) +
+                         ", not a finite number: the values of --in " + args.in + flags +
+                         " make the step overflow (give smaller values); nothing written");
+}
+
 NpyArray readField(const std::string& path, size_t minSide) {
     NpyArray h = readNpy(path);
     if (h.shape.size() != 2 || h.shape[0] < minSide || h.shape[1] < minSide)
@@ -36,6 +66,7 @@ NpyArray readField(const std::string& path, size_t minSide) {
                          ", got shape " + shapeText(h.shape));
     if (h.shape[0] > size_t(INT_MAX) || h.shape[1] > size_t(INT_MAX))
         throw InputError(path + ": shape " + shapeText(h.shape) + " is too large");
+    checkFinite(h, path);
     return h;
 }
 
@@ -44,6 +75,7 @@ NpyArray readSameShape(const std::string& path, const std::string& flag, const N
     if (p.shape != like.shape)
         throw InputError(path + ": shape " + shapeText(p.shape) + " (" + flag + ") differs from --in " + likePath + " shape " +
                          shapeText(like.shape));
+    checkFinite(p, path);
     return p;
 }
 
@@ -73,6 +105,9 @@ int ewaveCommand(const RippleArgs& args) {
     if (!v.data.empty()) std::copy(v.data.begin(), v.data.end(), field.editVelocity().begin());
     field.syncHeight();
     for (int k = 0; k < args.steps; ++k) field.step(args.dt);
+    checkSolved(field.height().data(), h.shape, args,
+                (args.vel.empty() ? "" : ", --vel " + args.vel) + ", --cell-size " + numberText(args.cellSize) + ", --dt " +
+                    numberText(args.dt));
 
     writeNpy(args.out, h.shape, field.height().data());
     return 0;
@@ -106,6 +141,7 @@ int rippleCommand(const RippleArgs& args) {
     const std::vector<float>& prevData = args.prev.empty() ? h.data : p.data;
     std::copy(prevData.begin(), prevData.end(), field.previous().begin());
     for (int k = 0; k < args.steps; ++k) field.step(args.damping);
+    checkSolved(field.current().data(), h.shape, args, args.prev.empty() ? "" : ", --prev " + args.prev);
 
     writeNpy(args.out, h.shape, field.current().data());
     return 0;

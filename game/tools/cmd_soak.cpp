@@ -13,6 +13,7 @@
 #include "ocean/ocean_fft_cpu.h"
 #include "physics/physics_def.h"
 #include "world/sandbox.h"
+#include "world/script.h"
 #include "water/composite_water.h"
 #include "sim/water_systems.h"
 
@@ -314,7 +315,7 @@ int soakCommand(const SceneDef& scene, const std::string& scenePath, const SoakO
     // a damped random walk with no a-priori bound. Until then only finiteness is checked; after
     // it, the larger of the stamp bound and 4 × the warm-up's maximum, which a blow-up (growth
     // without bound) crosses and the stationary walk does not.
-    const SoakBounds sceneBounds = soakBounds(sandbox);
+    SoakBounds sceneBounds = soakBounds(sandbox);
     SoakBounds bounds = sceneBounds;
     bounds.ripple = bounds.surface = std::numeric_limits<float>::infinity();
     const uint64_t steps = uint64_t(std::llround(options.seconds * double(scene.sim.step_hz)));
@@ -335,11 +336,27 @@ int soakCommand(const SceneDef& scene, const std::string& scenePath, const SoakO
     report.rssStartMiB = report.rssMaxMiB = residentMiB();
     report.rssWarmMiB = report.rssStartMiB;
     checkSoakInvariants(sandbox, bounds, report);
-    const bool progress = isatty(STDERR_FILENO);
+    const bool terminal = isatty(STDERR_FILENO);
     const auto start = std::chrono::steady_clock::now();
     auto lastProgress = start;
+    int eventsRun = 0;
     for (uint64_t s = 1; s <= steps; ++s) {
         sandbox.step();
+        // A body an [[events]] entry spawns stamps too: once one enters, the stamp bound counts
+        // it (the scene's objects, cannon balls and fish count from the start).
+        if (const auto* script = sandbox.world().resource<ScriptState>(); script && script->fired != eventsRun) {
+            eventsRun = script->fired;
+            const float stamps = std::max(1e-3f, RIPPLE_STAMPS * largestStamp(sandbox.world()));
+            if (stamps > sceneBounds.ripple) {
+                const float grown = stamps - sceneBounds.ripple;
+                sceneBounds.ripple = stamps;
+                sceneBounds.surface += grown;
+                if (std::isfinite(bounds.ripple)) {
+                    bounds.ripple = std::max(bounds.ripple, stamps);
+                    bounds.surface = sceneBounds.surface - sceneBounds.ripple + bounds.ripple;
+                }
+            }
+        }
         if (s % uint64_t(options.checkEvery) == 0 || s == steps) {
             checkSoakInvariants(sandbox, bounds, report);
             for (size_t i = 0; i < bodies.size() && i < ceiling.size(); ++i) {
@@ -360,13 +377,15 @@ int soakCommand(const SceneDef& scene, const std::string& scenePath, const SoakO
             }
             if (s == steps) report.rssEndMiB = rss;
         }
-        if (progress && std::chrono::steady_clock::now() - lastProgress > std::chrono::seconds(1)) {
+        // Where the run is: a line that rewrites itself on a terminal, else one line every 10 s.
+        if (std::chrono::steady_clock::now() - lastProgress > (terminal ? std::chrono::seconds(1) : std::chrono::seconds(10))) {
             lastProgress = std::chrono::steady_clock::now();
-            std::fprintf(stderr, "\roceanbox: soak step %llu/%llu (%3.0f%%)", static_cast<unsigned long long>(s),
-                         static_cast<unsigned long long>(steps), 100.0 * double(s) / double(steps));
+            std::fprintf(stderr, "%soceanbox: soak step %llu/%llu (%3.0f%%)%s", terminal ? "\r" : "",
+                         static_cast<unsigned long long>(s), static_cast<unsigned long long>(steps),
+                         100.0 * double(s) / double(steps), terminal ? "" : "\n");
         }
     }
-    if (progress) std::fprintf(stderr, "\n");
+    if (terminal && std::chrono::steady_clock::now() - start > std::chrono::seconds(1)) std::fprintf(stderr, "\n");
     report.steps = steps;
     report.simulatedSeconds = sandbox.schedule().simTime();
     report.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -77,8 +77,8 @@ struct CameraRig {
 ecs::Entity spawnCamera(ecs::World& world, const CameraDef& def);
 /// Points the camera at `target` from `eye` (events, the UI).
 void placeCamera(CameraRig& rig, ecs::Transform& transform, glm::vec3 eye, glm::vec3 target);
-/// Script phase, every step (so a recorded session replays the camera, and what the player's
-/// tools pick, exactly): moves the camera from the steps' input (right drag orbits or looks,
+/// Ocean phase, last, every step (so a recorded session replays the camera, and what the
+/// player's tools pick, exactly; after the ocean, so it keeps above the water drawn): moves the camera from the steps' input (right drag orbits or looks,
 /// wheel zooms, fly keys) and its mode's motion (orbit, follow), and keeps it above the
 /// water unless the player dived.
 void cameraSystem(ecs::World& world, const ecs::Tick& tick);

@@ -45,7 +45,6 @@ const ecs::SystemEntry SYSTEMS[] = {
     {Phase::Input, Rate::Frame, "controls", controlsSystem},
     {Phase::Script, Rate::Step, "step input", stepInputSystem},
     {Phase::Script, Rate::Step, "tools", toolsSystem},
-    {Phase::Script, Rate::Step, "camera", cameraSystem},
     {Phase::Script, Rate::Step, "events", scriptSystem},
     {Phase::Script, Rate::Step, "spawn requests", spawnRequestsSystem},
     {Phase::Script, Rate::Step, "ships", shipSystem},
@@ -57,6 +56,7 @@ const ecs::SystemEntry SYSTEMS[] = {
     {Phase::Interaction, Rate::Step, "ripples", interactionSystem},
     {Phase::Interaction, Rate::Step, "splashes and foam", splashFoamSystem},
     {Phase::Ocean, Rate::Step, "ocean", oceanSystem},
+    {Phase::Ocean, Rate::Step, "camera", cameraSystem},
     {Phase::Render, Rate::Frame, "paused camera", pausedCameraSystem},
     {Phase::Render, Rate::Frame, "render", renderSystem},
 };

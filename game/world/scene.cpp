@@ -19,39 +19,64 @@ namespace ob::game {
 static std::string resolveModel(const std::string& model, const std::string& sceneDir) {
     namespace fs = std::filesystem;
     std::error_code ec;
-    if (fs::path(model).is_absolute()) return fs::exists(model, ec) ? model : "";
+    // A link counts as there even when it dangles or loops: the loader then says which.
+    auto present = [&](const fs::path& p) { return fs::exists(fs::symlink_status(p, ec)); };
+    if (fs::path(model).is_absolute()) return present(model) ? model : "";
     std::vector<fs::path> candidates;
     if (!sceneDir.empty()) candidates.push_back(fs::path(sceneDir) / model);
     candidates.push_back(fs::path(model));
     candidates.push_back(fs::path(OCEANBOX_SOURCE_DIR) / model);
     for (const fs::path& c : candidates)
-        if (fs::exists(c, ec)) return fs::absolute(c, ec).lexically_normal().string();
+        if (present(c)) return fs::absolute(c, ec).lexically_normal().string();
     return "";
 }
 
-// Resolves every object's model path in place and loads the file once to check it (the
-// renderer loads its own copy); each problem becomes one error naming objects[i].model.
+// One model key (`key`, "objects[0].model"): the path resolved in place, and the file and
+// its far twin (X.lod1.gltf, drawn at a distance) loaded once to check them (the renderer
+// loads its own copy), so a bad file fails here with the scene's location, not when drawn.
+static void checkModel(std::string& model, const std::string& key, const TomlDocument& doc, const std::string& source,
+                       const std::string& sceneDir, std::vector<std::string>& errors) {
+    if (model.empty()) return;
+    const std::string at = doc.where(key, source) + ": " + key + ": ";
+    const std::string path = resolveModel(model, sceneDir);
+    if (path.empty()) {
+        errors.push_back(at + "glTF file '" + model + "' not found" +
+                         (std::filesystem::path(model).is_absolute()
+                              ? std::string()
+                              : " (looked next to the scene, in the current folder and in the source tree)"));
+        return;
+    }
+    try {
+        assets::loadGltfModel(path);
+        const std::string far = assets::lodTwinPath(path);
+        std::error_code ec;
+        if (std::filesystem::exists(far, ec)) assets::loadGltfModel(far);
+        model = path;
+    } catch (const InputError& e) {
+        errors.push_back(at + e.what());
+    }
+}
+
+// Every model of the scene: the objects' and those spawn events add.
 static void checkModels(SceneDef& scene, const TomlDocument& doc, const std::string& source, const std::string& sceneDir,
                         std::vector<std::string>& errors) {
-    for (size_t i = 0; i < scene.objects.size(); ++i) {
-        std::string& model = scene.objects[i].model;
-        if (model.empty()) continue;
-        const std::string key = "objects[" + std::to_string(i) + "].model";
-        const std::string at = doc.where(key, source) + ": " + key + ": ";
-        const std::string path = resolveModel(model, sceneDir);
-        if (path.empty()) {
-            errors.push_back(at + "glTF file '" + model + "' not found" +
-                             (std::filesystem::path(model).is_absolute()
-                                  ? std::string()
-                                  : " (looked next to the scene, in the current folder and in the source tree)"));
-            continue;
-        }
-        try {
-            assets::loadGltfModel(path);
-            model = path;
-        } catch (const InputError& e) {
-            errors.push_back(at + e.what());
-        }
+    for (size_t i = 0; i < scene.objects.size(); ++i)
+        checkModel(scene.objects[i].model, "objects[" + std::to_string(i) + "].model", doc, source, sceneDir, errors);
+    for (size_t k = 0; k < scene.events.size(); ++k)
+        if (scene.events[k].action == EventAction::Spawn)
+            checkModel(scene.events[k].object.model, "events[" + std::to_string(k) + "].object.model", doc, source, sceneDir, errors);
+}
+
+// A spawn event names the object it adds: without `object` it would add a default sphere
+// nobody asked for.
+static void checkSpawnObjects(const SceneDef& scene, const TomlDocument& doc, const std::string& source,
+                              std::vector<std::string>& errors) {
+    for (size_t k = 0; k < scene.events.size(); ++k) {
+        const std::string key = "events[" + std::to_string(k) + "]";
+        if (scene.events[k].action == EventAction::Spawn && doc.where(key + ".object", "").empty())
+            errors.push_back(doc.where(key + ".action", source) + ": " + key +
+                             ".object: a spawn event needs the object it adds (object = { type = \"sphere\", ... }, "
+                             "the keys of an [[objects]] entry)");
     }
 }
 
@@ -72,6 +97,7 @@ static SceneDef readScene(TomlDocument& doc, const std::string& source, const st
             errors.push_back(doc.where("ripples.boundary", source) +
                              ": ripples.boundary: \"periodic\" needs ripples.model = \"ewave\" (kang2008 has \"fixed\" "
                              "or \"absorbing\")");
+        checkSpawnObjects(scene, doc, source, errors);
         checkModels(scene, doc, source, sceneDir, errors);
     }
     if (!errors.empty()) {
@@ -125,8 +151,12 @@ std::string saveScene(SceneDef scene, const std::string& path) {
     // scene and its models move together.
     namespace fs = std::filesystem;
     const fs::path folder = fs::absolute(fs::path(path)).parent_path();
-    for (ObjectDef& o : scene.objects)
+    auto relative = [&](ObjectDef& o) {
         if (!o.model.empty() && fs::path(o.model).is_absolute()) o.model = fs::path(o.model).lexically_relative(folder).string();
+    };
+    for (ObjectDef& o : scene.objects) relative(o);
+    for (EventDef& e : scene.events)
+        if (e.action == EventAction::Spawn) relative(e.object);
     try {
         writeFileWhole(path, "scene", [&](std::ostream& out) {
             out << "# Saved from oceanbox: the keys that differ from the defaults.\n" << writeToml(scene);

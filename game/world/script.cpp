@@ -160,7 +160,7 @@ std::vector<std::string> validateEvents(SceneDef& scene, const std::string& sour
             else if (std::string m = checkValue(slot, e.value); !m.empty())
                 errors.push_back(where + "value: " + m);
         }
-        const bool named = e.action == EventAction::Fire || e.action == EventAction::SetSpeed || (e.action == EventAction::Camera && e.mode == CameraMode::Follow);
+        const bool named = e.action == EventAction::Fire || e.action == EventAction::SetSpeed || e.action == EventAction::Camera;
         if (named && !e.target.empty() && !names.count(e.target))
             errors.push_back(where + "target: no object is named '" + e.target + "'");
         if (e.action == EventAction::SetSpeed && !(e.value >= 0.0f && e.value <= 100.0f))

@@ -28,6 +28,7 @@ constexpr float PICK_DISTANCE_M = 3000.0f;   // farther than this the cursor poi
 constexpr float WHEEL_FACTOR = 1.1f;         // one wheel step scales a radius or distance by this
 constexpr float THROW_SMOOTHING_S = 0.08f;   // the throw's velocity: the cursor's over about this long
 constexpr float MAX_THROW_M_S = 60.0f;
+constexpr float MAX_GRAB_ACCEL = 60.0f;      // m/s² the grab's spring gives at most (about 6 g)
 constexpr float MIN_ELEVATION_DEG = -10.0f;  // a cannon's barrel goes no lower (CannonDef)
 constexpr glm::vec3 MARKER_COLOR{1.0f, 0.85f, 0.2f};
 constexpr glm::vec3 RING_COLOR{0.3f, 0.9f, 1.0f};
@@ -66,7 +67,9 @@ void pullGrabbed(ecs::World& world, PlayerTools& tools, float dt) {
     const float omega = 2.0f * float(M_PI) * tools.def.grab_frequency_hz;
     // The spring cannot be stiffer than the step resolves (ω·dt ≤ 1 keeps it stable).
     const float w = std::min(omega, 1.0f / std::max(dt, 1e-6f));
-    const glm::vec3 accel = w * w * (tools.target - point) - 2.0f * w * (pointVelocity - tools.targetVelocity);
+    glm::vec3 accel = w * w * (tools.target - point) - 2.0f * w * (pointVelocity - tools.targetVelocity);
+    // A hand, not a crane: a body taken far from the cursor is not flung there.
+    if (glm::length(accel) > MAX_GRAB_ACCEL) accel *= MAX_GRAB_ACCEL / glm::length(accel);
     body->forces.push_back({mass * (accel + glm::vec3(0.0f, gravityOf(world), 0.0f)), point});
     physicsWorld->dampAngular(body->id, std::exp(-dt / 0.5f));  // a held body stops spinning in about 0.5 s
 }

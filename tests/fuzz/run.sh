@@ -1,7 +1,8 @@
 #!/bin/sh
 # Builds the libFuzzer targets (clang, -fsanitize=fuzzer,address,undefined) in build-fuzz/
 # and runs each for SECONDS (default 60) on its seeds: tests/fuzz/corpus/<target>/ plus the
-# project's scenes (config/scenes) and models (assets/models). New inputs go to
+# project's scenes (config/scenes) and models (assets/models); the --set key-path parser and
+# the .npy reader from their seeds alone. New inputs go to
 # build-fuzz/corpus/<target>/, findings to build-fuzz/findings/<target>/; the script fails
 # on the first target that finds one. Usage: tests/fuzz/run.sh [SECONDS] [BUILD_DIR]
 set -e
@@ -12,13 +13,15 @@ jobs=${OCEANBOX_FUZZ_BUILD_JOBS:-2}
 
 cmake -S "$root" -B "$build" -DOCEANBOX_FUZZ=ON -DOCEANBOX_TESTS=OFF \
   -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo > /dev/null
-cmake --build "$build" -j"$jobs" --target fuzz_scene fuzz_gltf
+cmake --build "$build" -j"$jobs" --target fuzz_scene fuzz_gltf fuzz_keypath fuzz_npy
 
 status=0
-for target in scene gltf; do
+for target in scene gltf keypath npy; do
   case $target in
     scene) seeds="$root/tests/fuzz/corpus/scene $root/config/scenes" ;;
     gltf) seeds="$root/tests/fuzz/corpus/gltf $root/assets/models" ;;
+    keypath) seeds="$root/tests/fuzz/corpus/keypath" ;;
+    npy) seeds="$root/tests/fuzz/corpus/npy" ;;
   esac
   mkdir -p "$build/corpus/$target" "$build/findings/$target"
   echo "fuzz_$target: ${seconds} s"

@@ -32,7 +32,7 @@ nlohmann::json play(const std::string& scene, const std::string& input, long fra
 
 } // namespace
 
-TEST_CASE("targets.toml: the scripted aim hits all five targets and wins; no input loses at the time limit", "[goals][scenes]") {
+TEST_CASE("targets.toml: the scripted aim hits all five targets and wins, no input loses at the time limit", "[goals][scenes]") {
     const nlohmann::json won = play("config/scenes/targets.toml", DATA + "targets_win.toml", 3000);
     const nlohmann::json& game = won["game"];
     INFO(game.dump());
@@ -54,7 +54,7 @@ TEST_CASE("targets.toml: the scripted aim hits all five targets and wins; no inp
     CHECK(lost["steps"] == 300);
 }
 
-TEST_CASE("race.toml: the scripted slalom passes the four gates in order and wins; no input loses", "[goals][scenes]") {
+TEST_CASE("race.toml: the scripted slalom passes the four gates in order and wins, no input loses", "[goals][scenes]") {
     const nlohmann::json won = play("config/scenes/race.toml", DATA + "race_win.toml", 3000);
     const nlohmann::json& game = won["game"];
     INFO(game.dump());

@@ -132,7 +132,7 @@ TEST_CASE("bad input scripts and record paths are exit 2 naming the file, line a
     };
     auto unknownKey = run("[[mouse]]\nat = 1.0\nposition = [3, 4]\n");
     CHECK(unknownKey.exitCode == 2);
-    CHECK(unknownKey.output.find("record_bad.toml:2") != std::string::npos);
+    CHECK(unknownKey.output.find("record_bad.toml:3") != std::string::npos);
     CHECK(unknownKey.output.find("position") != std::string::npos);
     auto unknownTool = run("[[press]]\nat = 1.0\nkey = \"7x\"\n");
     CHECK(unknownTool.exitCode == 2);

@@ -1,10 +1,16 @@
 // Shared test helpers.
 #include "support/test_support.h"
 
+#include "core/error.h"
+
 #include <array>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <future>
+#include <memory>
+#include <thread>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -16,6 +22,7 @@ ProcessResult runShell(const std::string& command) {
     std::string cmd = std::string("cd '") + OCEANBOX_SOURCE_DIR + "' && OCEANBOX='" + OCEANBOX_EXE + "' && { " + command +
                       "; } 2>&1";
     ProcessResult result;
+    const auto start = std::chrono::steady_clock::now();
     FILE* pipe = popen(cmd.c_str(), "r");
     if (!pipe) return result;
     std::array<char, 4096> buf{};
@@ -23,7 +30,25 @@ ProcessResult runShell(const std::string& command) {
     while ((n = fread(buf.data(), 1, buf.size(), pipe)) > 0) result.output.append(buf.data(), n);
     int status = pclose(pipe);
     if (WIFEXITED(status)) result.exitCode = WEXITSTATUS(status);
+    result.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;
+}
+
+std::optional<std::string> inputErrorWithin(double seconds, std::function<void()> load) {
+    auto done = std::make_shared<std::promise<std::string>>();
+    std::future<std::string> message = done->get_future();
+    std::thread([done, load] {
+        try {
+            load();
+            done->set_value("");
+        } catch (const InputError& e) {
+            done->set_value(e.what());
+        } catch (const std::exception& e) {
+            done->set_value(std::string("not an InputError: ") + e.what());
+        }
+    }).detach();
+    if (message.wait_for(std::chrono::duration<double>(seconds)) != std::future_status::ready) return std::nullopt;
+    return message.get();
 }
 
 std::string tempPath(const std::string& name) {

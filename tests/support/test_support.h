@@ -1,5 +1,7 @@
 // Shared test helpers: run the oceanbox executable, temporary files.
 #pragma once
+#include <functional>
+#include <optional>
 #include <string>
 
 namespace ob::test {
@@ -7,6 +9,7 @@ namespace ob::test {
 struct ProcessResult {
     int exitCode = -1;   ///< process exit status (-1 if it did not exit normally)
     std::string output;  ///< stdout and stderr together
+    double wallSeconds = 0.0;  ///< how long it ran
 };
 
 /// Runs build/bin/oceanbox with the given argument string (shell-quoted by the caller),
@@ -16,6 +19,11 @@ ProcessResult runOceanbox(const std::string& args);
 /// Runs a shell command line from the repository root; `$OCEANBOX` in it names the
 /// executable (build/bin/oceanbox).
 ProcessResult runShell(const std::string& command);
+
+/// Runs `load` on a thread of its own: the ob::InputError message it throws ("" when it
+/// returns, "not an InputError: ..." for another exception), or nullopt when it has not
+/// returned after `seconds` (a hang: the thread is left blocked, the test fails instead).
+std::optional<std::string> inputErrorWithin(double seconds, std::function<void()> load);
 
 /// A fresh path under the system temp folder (the file does not exist yet).
 std::string tempPath(const std::string& name);

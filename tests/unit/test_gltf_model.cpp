@@ -13,6 +13,7 @@
 #include <glm/glm.hpp>
 #include <map>
 #include <random>
+#include <sys/stat.h>
 #include <tuple>
 
 using ob::InputError;
@@ -315,7 +316,7 @@ TEST_CASE("missing, truncated, short, out-of-range and non-triangle files each r
         CHECK(e.find(part) != std::string::npos);
         CHECK(e.find('\n') == std::string::npos);
     };
-    expectError(tempPath("nowhere.gltf"), "not found");
+    expectError(tempPath("nowhere.gltf"), "cannot open file (no such file)");
     expectError(writeFile(tempPath("empty.gltf"), ""), "empty");
 
     const std::string text = tetraJson({});
@@ -347,6 +348,75 @@ TEST_CASE("missing, truncated, short, out-of-range and non-triangle files each r
     expectError(writeFile(tempPath("not.glb"), glb("{", "")), "glTF");
     std::string glbBytes = glb(tetraJson({}), tetraBytes());
     expectError(writeFile(tempPath("cut.glb"), glbBytes.substr(0, glbBytes.size() - 30)), "glTF");
+}
+
+TEST_CASE("a buffer uri that leaves the model's folder is refused: plain, percent-encoded, absolute or through a symlink",
+          "[gltf][hostile]") {
+    namespace fs = std::filesystem;
+    const std::string root = tempPath("confined");
+    fs::create_directories(root + "/models/sub");
+    // A valid buffer outside the model's folder: loading it would succeed, so a model that
+    // loads has read outside.
+    writeFile(root + "/secret.bin", tetraBytes());
+    writeFile(root + "/models/sub/tetra.bin", tetraBytes());
+    fs::create_symlink(root + "/secret.bin", root + "/models/link.bin");
+    auto model = [&](const std::string& uri, const std::string& name) {
+        TetraOptions o;
+        o.uri = uri;
+        return writeFile(root + "/models/" + name, tetraJson(o));
+    };
+    CHECK(loadError(model("sub/tetra.bin", "below.gltf")).empty());
+    CHECK(loadError(model("sub/%74etra.bin", "encoded_below.gltf")).empty());
+    const std::pair<std::string, std::string> escapes[] = {
+        {"../secret.bin", "up.gltf"},           {"%2E%2E/secret.bin", "encoded.gltf"}, {"%2e%2e%2fsecret.bin", "slash.gltf"},
+        {root + "/secret.bin", "absolute.gltf"}, {"link.bin", "symlink.gltf"},      {"sub/../../secret.bin", "round.gltf"},
+        {"../../../../../../../../etc/passwd", "passwd.gltf"}};
+    for (const auto& [uri, name] : escapes) {
+        const std::string path = model(uri, name);
+        const std::string e = loadError(path);
+        INFO(uri << ": " << e);
+        CHECK(e.rfind(path + ": external file uri '", 0) == 0);
+        CHECK(e.find("leads outside the model's folder " + fs::canonical(root + "/models").string()) != std::string::npos);
+    }
+}
+
+TEST_CASE("a buffer that is a named pipe or a folder is refused at once", "[gltf][hostile]") {
+    namespace fs = std::filesystem;
+    const std::string folder = tempPath("pipe_model");
+    fs::create_directories(folder + "/dir.bin");
+    REQUIRE(::mkfifo((folder + "/pipe.bin").c_str(), 0644) == 0);
+    TetraOptions o;
+    o.uri = "pipe.bin";
+    const std::string piped = writeFile(folder + "/piped.gltf", tetraJson(o));
+    const std::optional<std::string> e = ob::test::inputErrorWithin(5.0, [&] { loadGltfModel(piped); });
+    REQUIRE(e.has_value());  // no hang
+    CHECK(e->find(piped + ": external file uri 'pipe.bin': ") == 0);
+    CHECK(e->find("is not a regular file (a named pipe (FIFO))") != std::string::npos);
+    o.uri = "dir.bin";
+    CHECK(loadError(writeFile(folder + "/dir.gltf", tetraJson(o))).find("is a folder") != std::string::npos);
+    // The model itself.
+    CHECK(loadError(folder + "/pipe.bin") == folder + "/pipe.bin: is not a regular file (a named pipe (FIFO)); give a file");
+}
+
+TEST_CASE("a required extension, a glTF 1.x asset and a version 1 GLB are refused (glTF 2.0 §3.12, §4.4)", "[gltf][hostile]") {
+    TetraOptions required;
+    required.extraJson = R"(, "extensionsUsed": ["KHR_draco_mesh_compression"], "extensionsRequired": ["KHR_draco_mesh_compression"])";
+    CHECK(loadError(writeTetra(required, "required.gltf"))
+              .find("requires the extension \"KHR_draco_mesh_compression\", which oceanbox does not implement") != std::string::npos);
+    TetraOptions used;  // used but not required: ignored, the file loads
+    used.extraJson = R"(, "extensionsUsed": ["KHR_materials_unlit"])";
+    CHECK(loadError(writeTetra(used, "used.gltf")).empty());
+
+    const std::string old = replaced(tetraJson({}), R"("version": "2.0")", R"("version": "1.0")");
+    CHECK(loadError(writeFile(tempPath("old.gltf"), old)).find("asset.version \"1.0\" is not 2.x") != std::string::npos);
+
+    TetraOptions embeddedBin;
+    embeddedBin.uri = "x";
+    std::string json = replaced(tetraJson(embeddedBin), R"(, "uri": "x")", "");
+    std::string v1 = glb(json, tetraBytes());
+    v1[4] = 1;
+    CHECK(loadError(writeFile(tempPath("v1.glb"), v1)).find("GLB container version 1 (only version 2 is read)") != std::string::npos);
+    CHECK(loadError(writeFile(tempPath("v2.glb"), glb(json, tetraBytes()))).empty());
 }
 
 TEST_CASE("ten thousand corrupted copies of a valid file load or raise InputError, never anything else", "[gltf]") {

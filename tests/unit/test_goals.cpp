@@ -70,7 +70,7 @@ TEST_CASE("a gate is crossed the right way with its port buoy on the left hand, 
     CHECK(gateCrossing({20, -4}, {20, 4}, {19.8f, 0}, {20.2f, 0}) == 1);
 }
 
-TEST_CASE("a cannonball that touches a target counts it exactly once; a ball that misses counts nothing", "[goals]") {
+TEST_CASE("a cannonball that touches a target counts it exactly once, a ball that misses counts nothing", "[goals]") {
     // A target 12 m out at the cannon's height: the ball (fired level, fast) hits its face,
     // bounces, falls and sinks along it; the target is counted at the first touch only. A
     // second target far away keeps the game running.

@@ -230,7 +230,7 @@ TEST_CASE("overrides (--set) reach into [[objects]] by index: objects[1].count=N
     // An index beyond size_t (found by fuzz_scene: std::stoul threw out_of_range) is no element either.
     CHECK(sceneError(text, {"objects[99999999999999999999999].count=1"}) ==
           "--set objects[99999999999999999999999].count=1: 'objects' has no element [99999999999999999999999]");
-    CHECK(sceneError(text, {"objects[1].count=0"}) == "--set objects[1].count=0: objects[1].count: must be in [1, 1e+06], got 0");
+    CHECK(sceneError(text, {"objects[1].count=0"}) == "--set objects[1].count=0: objects[1].count: must be in [1, 1000000], got 0");
     CHECK(sceneError(text, {"objects[1]=3"}).rfind("--set objects[1]=3: expected key.path=value", 0) == 0);
 }
 
