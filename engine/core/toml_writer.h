@@ -59,7 +59,8 @@ public:
     void field(const char* key, std::string& v, const char*) { add(key, tomlValue(v)); }
     template <NamedEnum E> void field(const char* key, E& v, const char*) { add(key, tomlValue(std::string(enumName(v)))); }
     void field(const char* key, std::vector<glm::vec2>& v, Limits, const char*) { add(key, tomlValue(v)); }
-    /// Another Def's keys in this table, those that differ from its own defaults.
+    /// Another Def's keys in this table, those that differ from its own defaults (its
+    /// sections and lists too: [[game.gates]] of a race's settings).
     template <class Def> void fields(Def& def) {
         TomlNode mine, defaults;
         TomlCollector c(mine), d(defaults);
@@ -68,6 +69,8 @@ public:
         describe(d, fresh);
         pruneDefaults(mine, defaults);
         m_node.keys.insert(m_node.keys.end(), mine.keys.begin(), mine.keys.end());
+        for (auto& s : mine.sections) m_node.sections.push_back(std::move(s));
+        for (auto& l : mine.lists) m_node.lists.push_back(std::move(l));
     }
     template <class Def> void section(const char* key, Def& def) {
         TomlNode child;

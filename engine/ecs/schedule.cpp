@@ -83,15 +83,21 @@ void Schedule::runFrame(World& world, double now) {
     // --- simulation: the fixed steps due by now, at most max_steps_per_frame (the rest is
     // dropped). Step j of n reaches the clock at before + (j+1)/n of the frame, so the
     // input of the frame is spread over its steps in the order it came.
-    if (SimControl* control = world.resource<SimControl>(); control && control->paused) {
+    SimControl* control = world.resource<SimControl>();
+    const auto stopped = [control] { return control && control->stopped; };
+    if (stopped()) {
+        // Over: time stands still for good (a step of the frame may have stopped it).
+        m_accumulator = 0;
+        if (control) control->stepRequests = 0;
+    } else if (control && control->paused) {
         // Paused: time stands still; each request runs exactly one step.
         m_accumulator = 0;
-        for (; control->stepRequests > 0; --control->stepRequests) runStep(world, now);
+        for (; control->stepRequests > 0 && !stopped(); --control->stepRequests) runStep(world, now);
     } else {
         m_accumulator += frameDt;
         int due = 0;
         for (double a = m_accumulator; a >= h * (1.0 - 1e-9) && due < m_def.max_steps_per_frame; a -= h) ++due;
-        for (int j = 0; j < due; ++j) {
+        for (int j = 0; j < due && !stopped(); ++j) {
             runStep(world, j + 1 == due ? now : before + frameDt * double(j + 1) / double(due));
             m_accumulator -= h;
         }

@@ -22,14 +22,15 @@ struct SimDef {
     float step_hz = 60.0f;          ///< fixed simulation rate (Hz), [1, 1000]
     int max_steps_per_frame = 8;    ///< catch-up limit when a frame is slow, [1, 64]
     uint64_t seed = 1;              ///< seed for every random choice of the scene
-    float end_time = 0.0f;          ///< simulated seconds a `run` without --frames lasts, [0, 1e6] (0: --frames, default 600)
+    float end_time = 0.0f;          ///< simulated seconds a run lasts, [0, 1e6] (0: none): `run` without --frames stops there; a
+                                    ///< goal still running is lost; `play` stops stepping and shows the result
 };
 
 template <class V> void describe(V& v, SimDef& d) {
     v.field("step_hz", d.step_hz, range(1, 1000), "fixed simulation rate (Hz)");
     v.field("max_steps_per_frame", d.max_steps_per_frame, range(1, 64), "catch-up limit when a frame is slow");
     v.field("seed", d.seed, "seed for every random choice of the scene");
-    v.field("end_time", d.end_time, range(0, 1e6), "simulated seconds a run without --frames lasts (0: none)");
+    v.field("end_time", d.end_time, range(0, 1e6), "simulated seconds a run lasts; play then shows the result (0: none)");
 }
 
 /// The phases of a frame, in execution order.
@@ -39,10 +40,12 @@ constexpr int PHASE_COUNT = int(Phase::Count);
 const char* phaseName(Phase p);
 
 /// Pause and single steps, a resource the input phase may set (window controls): while
-/// paused, frames run input and render only, plus one step per request.
+/// paused, frames run input and render only, plus one step per request; once stopped (by a
+/// system, checked before every step) no step runs again.
 struct SimControl {
     bool paused = false;   ///< no simulation steps while true
     int stepRequests = 0;  ///< steps to run while paused (consumed by the schedule)
+    bool stopped = false;  ///< the run is over (a goal's result, [sim] end_time): no more steps, not even asked for
 };
 
 /// What a system sees of time. For per-frame systems dt is the frame's clock time.

@@ -26,6 +26,7 @@ const char* const PLAY_KEYS = R"(Keys and mouse (H shows and hides the overlay, 
                 water: aim there and fire)
   F             a school of fish where the camera looks
   P  N          pause and resume; one step while paused
+  R             restart the scene (the goal's result panel: R again, Esc quits)
   F12           screenshot (oceanbox_shot_NNN.png)
   H             show or hide the overlay
   Esc           quit)";

@@ -13,6 +13,7 @@
 #include "ecs/components.h"
 #include "behaviours/cannon.h"
 #include "behaviours/fish.h"
+#include "goals/goals.h"
 #include "world/controls.h"
 #include "world/input_script.h"
 #include "sim/objects.h"
@@ -43,6 +44,40 @@ static bool sameCamera(const CameraDef& a, const CameraDef& b) {
 
 static nlohmann::json phaseStats(const std::vector<double>& samples) {
     return {{"mean_ms", ecs::mean(samples)}, {"median_ms", ecs::median(samples)}};
+}
+
+// The goal's result and what the mode counts (docs/games.md).
+static nlohmann::json gameStats(const GameState& game) {
+    nlohmann::json j = {{"mode", enumName(game.def.mode)}, {"result", enumName(game.result)}, {"score", game.score},
+                        {"time_s", game.time}, {"time_limit_s", game.def.time_limit}, {"reason", game.reason}};
+    switch (game.def.mode) {
+    case GameMode::None: break;
+    case GameMode::Targets: {
+        j["targets"] = game.targets.size();
+        j["hits"] = game.score;
+        j["hit"] = nlohmann::json::array();
+        for (const GameTarget& t : game.targets)
+            if (t.hit) j["hit"].push_back({{"name", t.name}, {"time_s", t.hitTime}});
+        break;
+    }
+    case GameMode::Race: {
+        j["gates"] = game.gates.size();
+        j["passed"] = game.score;
+        j["next_gate"] = game.nextGate + 1;  // numbered from 1, as the HUD shows them
+        j["missed_gates"] = nlohmann::json::array();
+        for (size_t g = 0; g < game.gates.size(); ++g)
+            if (game.gates[g].state == GateState::Missed) j["missed_gates"].push_back(g + 1);
+        j["race_time_s"] = game.raceTime();
+        break;
+    }
+    case GameMode::Herd: {
+        j["crates"] = game.crates.size();
+        j["inside"] = game.score;
+        j["needed"] = game.needed;
+        break;
+    }
+    }
+    return j;
 }
 
 static void writeStats(const std::string& path, Sandbox& sandbox, const std::string& scenePath,
@@ -103,6 +138,7 @@ static void writeStats(const std::string& path, Sandbox& sandbox, const std::str
                                      {"stamps", s.stamps}, {"airborne", airborne}});
     }
     if (const auto* script = sandbox.world().resource<ScriptState>()) j["events_run"] = script->fired;
+    if (const GameState* game = gameState(sandbox.world())) j["game"] = gameStats(*game);
     char hash[32];
     std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(sandbox.stateHash()));
     j["state_hash"] = hash;
@@ -164,6 +200,11 @@ int runScene(const SceneDef& scene, const std::string& scenePath, const RunOptio
     };
     auto sandbox = makeSandbox(scene);
     std::unique_ptr<Clock> clock = makeClock(scene);
+    // What R restarts (the scene this world started from) and the file it came from.
+    SceneDef started = scene;
+    std::string runningPath = scenePath;
+    // A window in real time stays open on the result panel; any other run ends with the goal.
+    const bool staysOpen = options.realTime && !platform->headless();
 
     // The run ends after `frames` frames, or once the simulation reaches `endTime`.
     const bool bounded = options.frames > 0 || options.endTime > 0.0;
@@ -174,13 +215,15 @@ int runScene(const SceneDef& scene, const std::string& scenePath, const RunOptio
     const long expected = options.frames > 0 ? options.frames
                                              : long(std::ceil(options.endTime * scene.sim.step_hz / options.stepsPerFrame - 1e-6));
     for (long f = 0; bounded || !sandbox->quitRequested(); ++f) {
-        sandbox->frame(clock->now());
+        const double now = clock->now();
+        sandbox->frame(now);
         // The wall clock starts once the first frame is drawn (shaders compiled, maps made):
         // the simulation does not make up for the loading time with a burst of steps.
         if (options.realTime && sandbox->schedule().frames() == 1) clock = makeClock(sandbox->scene());
         if (sandbox->quitRequested()) break;
         const bool last = (options.frames > 0 && f + 1 >= options.frames) ||
-                          (options.endTime > 0.0 && sandbox->schedule().simTime() >= options.endTime - 1e-9);
+                          (options.endTime > 0.0 && sandbox->schedule().simTime() >= options.endTime - 1e-9) ||
+                          (!staysOpen && sandbox->over());
         // Read back before present: the window's back buffer is undefined after a swap. The
         // frame is presented by the next one's render phase, after that frame's steps.
         for (const std::string& file : sandbox->takeScreenshotRequests()) {
@@ -197,17 +240,28 @@ int runScene(const SceneDef& scene, const std::string& scenePath, const RunOptio
                          100.0 * double(f + 1) / double(std::max(expected, 1L)));
         }
         if (last) break;
-        // The UI's "restart with these settings": a new world on the same window.
-        if (std::optional<SceneDef> edited = sandbox->takeRestartRequest()) {
-            logInfo("restarting the scene with the edited settings");
+        // A new world on the same window: the UI's "restart with these settings", the scene
+        // picker's file, or R (the scene again, as this world started).
+        std::optional<SceneDef> next = sandbox->takeRestartRequest();
+        const bool edited = next.has_value();
+        const std::string picked = sandbox->takeSceneSwitch();
+        const bool again = sandbox->takeRestartKey();
+        if (!next && again) next = started;
+        if (next) {
+            if (!picked.empty()) logInfo("opening %s", picked.c_str());
+            else logInfo("%s", edited ? "restarting the scene with the edited settings" : "restarting the scene");
             sandbox->present();
-            const std::optional<CameraPose> pose = sandbox->cameraPose();
-            const bool cameraEdited = !sameCamera(sandbox->scene().camera, edited->camera);
+            // Another scene starts from its own [camera]; this one keeps the player's view (in the
+            // edited mode, if they edited it).
+            const std::optional<CameraPose> pose = picked.empty() ? sandbox->cameraPose() : std::nullopt;
+            const bool cameraEdited = !sameCamera(sandbox->scene().camera, next->camera);
+            scripted = sandbox->remainingScriptedInput(now);
             sandbox.reset();
-            sandbox = makeSandbox(*edited);
-            // The player keeps looking from where they were (in the edited mode, if they edited it).
+            sandbox = makeSandbox(*next);
             if (pose) sandbox->setCameraPose(*pose, !cameraEdited);
-            clock = makeClock(*edited);
+            clock = makeClock(*next);
+            started = *next;
+            if (!picked.empty()) runningPath = picked;
         }
     }
     sandbox->present();
@@ -215,14 +269,14 @@ int runScene(const SceneDef& scene, const std::string& scenePath, const RunOptio
     if (!bounded && !options.screenshot.empty())
         logWarn("--screenshot needs --frames N (or [sim] end_time); no screenshot written");
 
-    if (!options.stats.empty()) writeStats(options.stats, *sandbox, scenePath, *platform);
+    if (!options.stats.empty()) writeStats(options.stats, *sandbox, runningPath, *platform);
     if (!options.record.empty()) {
         const auto* recorder = sandbox->world().resource<InputRecorder>();
         const auto* viewport = sandbox->world().resource<Viewport>();
         InputScriptDef recording = recordedScript(recorder->events, sandbox->schedule().steps(), sandbox->schedule().stepSeconds(),
                                                   viewport ? viewport->size : platform->framebufferSize());
         writeTextFile(options.record,
-                      "# oceanbox input recorded from " + scenePath + ": `oceanbox run SCENE --input FILE` replays it\n" +
+                      "# oceanbox input recorded from " + runningPath + ": `oceanbox run SCENE --input FILE` replays it\n" +
                           writeToml(recording),
                       "recording");
         logInfo("input recorded to %s (%llu steps)", options.record.c_str(), static_cast<unsigned long long>(recording.steps));

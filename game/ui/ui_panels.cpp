@@ -1,6 +1,6 @@
 // Stats (per-phase ms and their graph), the player's ship and cannon, the sea (ui/sea_panel),
 // live settings (the [render] keys), every other scene key on a copy applied by restarting,
-// "save scene as".
+// "save scene as", the scene picker; the goal's HUD and result panel.
 #include "ui/ui_panels.h"
 
 #include "world/camera.h"
@@ -13,9 +13,12 @@
 #include "world/tools.h"
 #include "behaviours/ship.h"
 #include "ui/sea_panel.h"
+#include "goals/goals.h"
 
 #include <cfloat>
+#include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <imgui.h>
 
 namespace ob::game {
@@ -56,6 +59,7 @@ static SceneDef sceneEditor(const SceneDef& scene, std::optional<SceneDef>& rest
     editor.section("physics", edited.physics);
     editor.section("splash", edited.splash);
     editor.section("foam", edited.foam);
+    editor.section("game", edited.game);
     editor.list("objects", edited.objects, "");
     editor.list("events", edited.events, "");
     if (ImGui::Button("restart with these settings")) {
@@ -83,7 +87,7 @@ std::vector<std::string> keyHelp(ecs::World& world) {
     lines.push_back("left button: the tool  1 grab  2 stir  3 drop (again: next object)  4 erase  5 cannon");
     lines.push_back(std::string("right drag ") + (flying ? "look" : "orbit") + "  wheel " + (flying ? "forward" : "zoom") +
                     "  C camera mode (now " + cameraMode(world) + ")");
-    lines.push_back("F fish  P pause  N step (paused)  F12 screenshot  H hide this  Esc quit");
+    lines.push_back("F fish  P pause  N step (paused)  R restart  F12 screenshot  H hide this  Esc quit");
     return lines;
 }
 
@@ -104,6 +108,140 @@ static void playerPanel(ecs::World& world) {
         if (c.player) ImGui::Text("cannon: yaw %.0f  elevation %.0f  shots %d", double(c.yawDeg), double(c.elevationDeg), c.shots);
     }
     for (const std::string& line : keyHelp(world)) ImGui::TextDisabled("%s", line.c_str());
+}
+
+// --- the goal: the HUD (top right) while it runs, the result panel (over the sky) once it is over
+
+static const ImVec4 WON_COLOR{0.3f, 1.0f, 0.4f, 1.0f}, LOST_COLOR{1.0f, 0.35f, 0.3f, 1.0f}, MISSED_COLOR{1.0f, 0.4f, 0.3f, 1.0f};
+constexpr double MISSED_SHOWN_S = 4.0;  // how long "gate N missed" stays on the HUD
+
+// "12.3 s" or "12.3 / 60 s".
+static std::string clockText(double time, float limit) {
+    char text[64];
+    if (limit > 0.0f) std::snprintf(text, sizeof text, "%.1f / %.0f s", time, double(limit));
+    else std::snprintf(text, sizeof text, "%.1f s", time);
+    return text;
+}
+
+// Top right: the overlay's panel holds the top left.
+static void gameHud(const GameState& game) {
+    if (game.def.mode == GameMode::None || game.over()) return;
+    const ImVec2 screen = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos(ImVec2(screen.x - 10.0f, 10.0f), ImGuiCond_Always, ImVec2(1.0f, 0.0f));
+    ImGui::SetNextWindowBgAlpha(0.55f);
+    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoInputs |
+                                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav;
+    ImGui::Begin("goal", nullptr, flags);
+    ImGui::SetWindowFontScale(1.5f);
+    const std::string clock = clockText(game.time, game.def.time_limit);
+    switch (game.def.mode) {
+    case GameMode::None: break;
+    case GameMode::Targets:
+        ImGui::Text("TARGETS   hits %d / %zu   time %s", game.score, game.targets.size(), clock.c_str());
+        break;
+    case GameMode::Race: {
+        const size_t shown = std::min(game.nextGate + 1, game.gates.size());
+        ImGui::Text("RACE   gate %zu / %zu   time %s", shown, game.gates.size(), clock.c_str());
+        if (game.missed > 0 && game.def.race.missed_gate == MissedGate::Penalty)
+            ImGui::Text("%d missed: +%.0f s   race time %.1f s", game.missed, double(game.missed) * double(game.def.race.miss_penalty),
+                        game.raceTime());
+        if (game.time - game.lastMissedTime < MISSED_SHOWN_S) ImGui::TextColored(MISSED_COLOR, "%s", game.lastMissed.c_str());
+        break;
+    }
+    case GameMode::Herd:
+        ImGui::Text("HERD   crates in the ring %d / %d   time %s", game.score, game.needed, clock.c_str());
+        break;
+    }
+    ImGui::End();
+}
+
+static void resultPanel(const GameState& game) {
+    if (!game.over()) return;
+    const ImVec2 screen = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos(ImVec2(screen.x * 0.5f, screen.y * 0.08f), ImGuiCond_Always, ImVec2(0.5f, 0.0f));  // over the sky
+    ImGui::SetNextWindowBgAlpha(0.75f);
+    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
+                                   ImGuiWindowFlags_NoNav;
+    ImGui::Begin("result", nullptr, flags);
+    ImGui::SetWindowFontScale(2.5f);
+    switch (game.result) {
+    case GameResult::Won: ImGui::TextColored(WON_COLOR, "YOU WON"); break;
+    case GameResult::Lost: ImGui::TextColored(LOST_COLOR, "%s", game.reason == "time is up" ? "TIME IS UP" : "LOST"); break;
+    default: ImGui::TextUnformatted("THE END"); break;
+    }
+    ImGui::SetWindowFontScale(1.5f);
+    if (!game.reason.empty() && game.reason != "time is up") ImGui::TextUnformatted(game.reason.c_str());
+    switch (game.def.mode) {
+    case GameMode::None: break;
+    case GameMode::Targets: ImGui::Text("score: %d of %zu targets hit", game.score, game.targets.size()); break;
+    case GameMode::Race:
+        ImGui::Text("score: %d of %zu gates passed, %d missed", game.score, game.gates.size(), game.missed);
+        ImGui::Text("race time %.1f s", game.raceTime());
+        break;
+    case GameMode::Herd: ImGui::Text("score: %d in the ring, %d needed", game.score, game.needed); break;
+    }
+    ImGui::Text("time %s", clockText(game.time, game.def.time_limit).c_str());
+    ImGui::Separator();
+    ImGui::TextUnformatted("R restarts, Esc quits");
+    ImGui::End();
+}
+
+// --- the scene picker: config/scenes/*.toml, each with its first comment line
+
+struct SceneEntry {
+    std::string path, name, line;
+};
+
+static std::vector<SceneEntry> sceneFiles() {
+    namespace fs = std::filesystem;
+    std::vector<SceneEntry> scenes;
+    std::error_code ec;
+    for (const auto& entry : fs::directory_iterator(fs::path(defaultScenePath()).parent_path(), ec)) {
+        if (entry.path().extension() != ".toml") continue;
+        SceneEntry scene{entry.path().string(), entry.path().stem().string(), ""};
+        std::ifstream in(entry.path());
+        for (std::string text; std::getline(in, text);)
+            if (text.rfind('#', 0) == 0) {
+                scene.line = text.substr(text.find_first_not_of("# ") == std::string::npos ? text.size() : text.find_first_not_of("# "));
+                break;
+            }
+        scenes.push_back(scene);
+    }
+    std::sort(scenes.begin(), scenes.end(), [](const SceneEntry& a, const SceneEntry& b) { return a.name < b.name; });
+    return scenes;
+}
+
+// Its own window at the bottom left, folded at first. Choosing a scene loads it (a file that
+// does not load says why and nothing restarts) and asks for a restart with it.
+static void scenePicker(ecs::World& world, std::optional<SceneDef>& restart) {
+    static std::vector<SceneEntry> scenes;
+    static std::string problem;
+    const ImVec2 screen = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos(ImVec2(10.0f, screen.y - 10.0f), ImGuiCond_Always, ImVec2(0.0f, 1.0f));
+    ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);
+    const bool open = ImGui::Begin("scenes: click one to open it", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings);
+    if (!open) {
+        ImGui::End();
+        return;
+    }
+    if (scenes.empty() || ImGui::SmallButton("refresh")) scenes = sceneFiles();
+    for (const SceneEntry& s : scenes) {
+        if (ImGui::Selectable(s.name.c_str())) {
+            try {
+                restart = loadScene(s.path);
+                if (auto* controls = world.resource<WindowControls>()) controls->sceneSwitch = s.path;
+                problem.clear();
+            } catch (const std::exception& e) {
+                problem = e.what();
+            }
+        }
+        if (!s.line.empty()) {
+            ImGui::SameLine(140.0f);
+            ImGui::TextDisabled("%s", s.line.c_str());
+        }
+    }
+    if (!problem.empty()) ImGui::TextWrapped("%s", problem.c_str());
+    ImGui::End();
 }
 
 // A key press as the window would give it: the palette's choices go through the input queue,
@@ -166,10 +304,17 @@ static void toolsPanel(ecs::World& world, double now) {
 
 void drawPanels(ecs::World& world, SceneDef& scene, const ecs::FrameTimer& timer, std::optional<float> dynamicScale,
                 std::optional<SceneDef>& restart, double now) {
-    if (const auto* controls = world.resource<WindowControls>(); controls && !controls->showOverlay) return;
+    // The goal's windows come last, in front; the panel never comes before them.
+    const auto goal = [&world] {
+        if (const GameState* game = gameState(world)) {
+            gameHud(*game);
+            resultPanel(*game);
+        }
+    };
+    if (const auto* controls = world.resource<WindowControls>(); controls && !controls->showOverlay) return goal();
     toolsPanel(world, now);
     ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
-    ImGui::Begin("oceanbox");
+    ImGui::Begin("oceanbox", nullptr, ImGuiWindowFlags_NoBringToFrontOnFocus);
     const auto& frames = timer.frameSamples();
     double frameMs = frames.empty() ? 0.0 : frames.back();
     ImGui::Text("frame %.2f ms (%.0f fps)", frameMs, frameMs > 0 ? 1000.0 / frameMs : 0.0);
@@ -214,6 +359,8 @@ void drawPanels(ecs::World& world, SceneDef& scene, const ecs::FrameTimer& timer
     }
     if (!status.empty()) ImGui::TextUnformatted(status.c_str());
     ImGui::End();
+    scenePicker(world, restart);
+    goal();
 }
 
 } // namespace ob::game

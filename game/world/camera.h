@@ -82,8 +82,8 @@ void placeCamera(CameraRig& rig, ecs::Transform& transform, glm::vec3 eye, glm::
 /// wheel zooms, fly keys) and its mode's motion (orbit, follow), and keeps it above the
 /// water unless the player dived.
 void cameraSystem(ecs::World& world, const ecs::Tick& tick);
-/// Render phase: while the simulation is paused, the same from the frame's input (the player
-/// looks around a frozen world; nothing of it is recorded).
+/// Render phase: while the simulation is paused or stopped (a goal decided), the same from the
+/// frame's input (the player looks around a frozen world; nothing of it is recorded).
 void pausedCameraSystem(ecs::World& world, const ecs::Tick& tick);
 /// C: the next mode of follow (when there is a ship to follow) → orbit → fly (→ fixed when
 /// the scene starts fixed).

@@ -44,9 +44,10 @@ void controlsSystem(ecs::World& world, const ecs::Tick& tick) {
     }
     if (sim->paused) sim->stepRequests += input->pressCount(Key::N);
     if (input->wasPressed(Key::H)) controls->showOverlay = !controls->showOverlay;
-    if (sim->paused) {
-        // The steps would see this frame's events after the pause: they are the frame's alone
-        // (held keys stay held), and C, a step's key, works here.
+    if (input->wasPressed(Key::R)) controls->restart = true;
+    if (sim->paused || sim->stopped) {
+        // The steps would see this frame's events after the pause (or never, once the goal is
+        // decided): they are the frame's alone (held keys stay held), and C, a step's key, works here.
         for (int i = 0; i < input->pressCount(Key::C); ++i) cycleCameraMode(world);
         if (auto* queue = world.resource<platform::InputQueue>(); queue && world.resource<StepInput>())
             queue->drainStep(tick.clock + 1e-6, *world.resource<StepInput>());

@@ -1,5 +1,5 @@
-// The player's controls: the frame's keys (pause P, step N, screenshot F12, overlay H, quit
-// Esc) and the simulation's input (held keys and presses, per fixed step; camera mode C).
+// The player's controls: the frame's keys (pause P, step N, screenshot F12, overlay H, restart
+// R, quit Esc) and the simulation's input (held keys and presses, per fixed step; camera mode C).
 #pragma once
 #include "behaviours/step_input.h"
 #include "core/schema.h"
@@ -8,6 +8,7 @@
 #include "sim/objects.h"
 
 #include <glm/vec3.hpp>
+#include <string>
 #include <vector>
 
 namespace ob::game {
@@ -53,6 +54,8 @@ struct WindowControls {
     int spawnFish = 0;        ///< fish schools to spawn at the camera's focus next step
     int screenshotCount = 0;  ///< screenshots taken so far (names oceanbox_shot_NNN.png)
     bool showOverlay = true;  ///< H: the UI overlay is drawn
+    bool restart = false;     ///< R: the run loop rebuilds the world from the scene it started with (taken once)
+    std::string sceneSwitch;  ///< the scene picker's file, whose scene the UI's restart request holds ("" = none)
 };
 
 /// Creates the input queue, the frame's and the steps' input state, the controls and
@@ -61,7 +64,7 @@ void addControls(ecs::World& world, const ControlsDef& def);
 /// Input phase: queues the scripted events due by this frame's clock, then gives the frame
 /// its events (call after the platform's events are queued).
 void frameInputSystem(ecs::World& world, const ecs::Tick& tick);
-/// Input phase, after frameInputSystem: P, N, F12, H (and C while paused).
+/// Input phase, after frameInputSystem: P, N, F12, H, R (and C while paused).
 void controlsSystem(ecs::World& world, const ecs::Tick& tick);
 /// Script phase, first: the events due by this step's clock time into StepInput; C cycles the
 /// camera's mode, F asks for a fish school.

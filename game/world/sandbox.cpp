@@ -8,6 +8,7 @@
 #include "ecs/components.h"
 #include "interaction/ripple_patch.h"
 #include "behaviours/fish.h"
+#include "goals/goals.h"
 #include "sim/objects.h"
 #include "behaviours/spawning.h"
 #include "ocean/ocean_fft_cpu.h"
@@ -49,6 +50,7 @@ const ecs::SystemEntry SYSTEMS[] = {
     {Phase::Script, Rate::Step, "ships", shipSystem},
     {Phase::Script, Rate::Step, "cannons", cannonSystem},
     {Phase::Script, Rate::Step, "fish", fishSystem},
+    {Phase::Script, Rate::Step, "game", gameSystem},  // after the behaviours: judges the last physics step
     {Phase::Physics, Rate::Step, "bodies", physicsSystem},
     {Phase::Interaction, Rate::Step, "patch follows", patchFollowSystem},
     {Phase::Interaction, Rate::Step, "ripples", interactionSystem},
@@ -73,6 +75,7 @@ Sandbox::Sandbox(const SceneDef& scene) : m_scene(scene), m_schedule(scene.sim) 
     addScript(m_world, m_scene);
     addPlayerTools(m_world, m_scene.tools, {m_scene.window.width, m_scene.window.height}, fishSchoolOf(m_scene.controls),
                    droppedShip(m_scene));
+    addGame(m_world, m_scene);
 }
 
 Sandbox::~Sandbox() = default;
@@ -106,6 +109,31 @@ std::vector<std::string> Sandbox::takeScreenshotRequests() {
     std::vector<std::string> files;
     if (auto* script = m_world.resource<ScriptState>()) files.swap(script->screenshots);
     return files;
+}
+
+bool Sandbox::takeRestartKey() {
+    auto* controls = m_world.resource<WindowControls>();
+    return controls && std::exchange(controls->restart, false);
+}
+
+std::string Sandbox::takeSceneSwitch() {
+    auto* controls = m_world.resource<WindowControls>();
+    return controls ? std::exchange(controls->sceneSwitch, std::string()) : std::string();
+}
+
+std::vector<platform::InputEvent> Sandbox::remainingScriptedInput(double now) {
+    std::vector<platform::InputEvent> rest;
+    if (const auto* script = m_world.resource<ScriptedInput>())
+        for (size_t i = script->next; i < script->events.size(); ++i) {
+            rest.push_back(script->events[i]);
+            rest.back().time = std::max(0.0, rest.back().time - now);
+        }
+    return rest;
+}
+
+bool Sandbox::over() {
+    const GameState* game = gameState(m_world);
+    return game && game->over();
 }
 
 bool Sandbox::quitRequested() {

@@ -68,6 +68,15 @@ public:
     bool quitRequested();
     /// The scene the UI asked to restart with (validated), once.
     std::optional<SceneDef> takeRestartRequest() { return std::exchange(m_restart, std::nullopt); }
+    /// Whether R asked for the scene again (as this world started), once.
+    bool takeRestartKey();
+    /// The scene file the picker chose ("" = none; its scene is the restart request), once.
+    std::string takeSceneSwitch();
+    /// The scripted input events not yet queued, their times made relative to the clock time
+    /// `now` (a new world's clock starts at 0: the script goes on where it was).
+    std::vector<platform::InputEvent> remainingScriptedInput(double now);
+    /// The goal is decided (or [sim] end_time reached): no more steps run.
+    bool over();
     /// The internal scale follows the frame time to hold [render] target_fps (play; a `run`
     /// only when asked, so its frames stay reproducible). (Defined in view/.)
     void enableDynamicResolution();

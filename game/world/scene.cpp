@@ -6,6 +6,7 @@
 #include "core/file_write.h"
 #include "core/toml_writer.h"
 #include "core/toml_reader.h"
+#include "goals/goals.h"
 
 #include <filesystem>
 
@@ -90,6 +91,8 @@ static SceneDef readScene(TomlDocument& doc, const std::string& source, const st
     if (errors.empty()) {
         for (const std::string& e : ocean::validate(scene.gerstner, &scene.ocean)) errors.push_back(source + ": " + e);
         for (const std::string& e : validateEvents(scene, source, &doc)) errors.push_back(e);
+        for (const std::string& e : validateGame(scene, [&](const std::string& key) { return doc.where(key, source); }))
+            errors.push_back(e);
         if (scene.ripples.model == interaction::RippleModel::Kang2008 && scene.ripples.boundary == interaction::RippleBoundary::Periodic)
             errors.push_back(doc.where("ripples.boundary", source) +
                              ": ripples.boundary: \"periodic\" needs ripples.model = \"ewave\" (kang2008 has \"fixed\" "

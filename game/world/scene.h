@@ -1,6 +1,7 @@
 // A scene: every Def of the sandbox, read from a TOML file in config/scenes/.
 #pragma once
 #include "world/camera.h"
+#include "goals/game_def.h"
 #include "world/controls.h"
 #include "sim/objects.h"
 #include "ecs/schedule.h"
@@ -49,6 +50,7 @@ struct SceneDef {
     physics::PhysicsDef physics;  ///< [physics]
     splash::SplashDef splash;     ///< [splash]
     foam::FoamDef foam;           ///< [foam]
+    GameDef game;                 ///< [game]: the goal
     std::vector<ObjectDef> objects; ///< [[objects]]
     std::vector<EventDef> events;   ///< [[events]]: the timeline
 };
@@ -67,6 +69,7 @@ template <class V> void describe(V& v, SceneDef& s) {
     v.section("physics", s.physics);
     v.section("splash", s.splash);
     v.section("foam", s.foam);
+    v.section("game", s.game);
     v.list("objects", s.objects, "bodies, ships, cannons, fish schools");
     v.list("events", s.events, "timeline: actions at simulated times");
 }

@@ -18,7 +18,8 @@ using namespace ob;
 namespace {
 
 // The scenes with a test below; the last test checks the folder holds no other.
-const std::set<std::string> SCENES{"default", "spectrum_only", "cannon", "fish", "ship", "all", "fish_swarm", "drop", "wake", "sandbox"};
+const std::set<std::string> SCENES{"default", "spectrum_only", "cannon", "fish", "ship", "all", "fish_swarm", "drop", "wake",
+                                 "sandbox", "targets", "race", "herd"};
 
 struct Run {
     int exitCode = -1;
@@ -67,6 +68,9 @@ TEST_CASE("scene fish_swarm.toml: 600 headless frames without error, the same st
 TEST_CASE("scene drop.toml: 600 headless frames without error, the same state hash twice", "[scenes][long]") { checkScene("drop"); }
 TEST_CASE("scene wake.toml: 600 headless frames without error, the same state hash twice", "[scenes][long]") { checkScene("wake"); }
 TEST_CASE("scene sandbox.toml: 600 headless frames without error, the same state hash twice", "[scenes][long]") { checkScene("sandbox"); }
+TEST_CASE("scene targets.toml: 600 headless frames without error, the same state hash twice", "[scenes][long]") { checkScene("targets"); }
+TEST_CASE("scene race.toml: 600 headless frames without error, the same state hash twice", "[scenes][long]") { checkScene("race"); }
+TEST_CASE("scene herd.toml: 600 headless frames without error, the same state hash twice", "[scenes][long]") { checkScene("herd"); }
 
 TEST_CASE("every scene in config/scenes has a determinism test", "[scenes]") {
     std::set<std::string> found;

@@ -1,0 +1,245 @@
+// Goals ([game], goals/goals.h): the geometry they decide with, checked on cases worked by
+// hand; a cannonball touching a target counts it exactly once; a race gate skipped is missed;
+// a wrong-way crossing is no pass; the run stops stepping once the goal is decided; bad
+// [game] input names file, line and key.
+#include "core/error.h"
+#include "ecs/components.h"
+#include "goals/goal_geometry.h"
+#include "goals/goals.h"
+#include "world/sandbox.h"
+#include "world/scene.h"
+
+#include <catch2/catch.hpp>
+#include <cmath>
+
+using namespace ob;
+using namespace ob::game;
+
+namespace {
+
+// Still water, no ripples: only the objects move.
+const std::string CALM = "[ocean]\nresolution = 32\namplitude = 0.0\n[gerstner]\ncount = 0\n[ripples]\nenabled = false\n";
+
+std::string sceneError(const std::string& text) {
+    try {
+        parseScene(text, "bad.toml");
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+// Runs frames of the fixed clock (one step each) until the goal is decided or `frames` ran.
+void runFrames(Sandbox& sandbox, int frames) {
+    for (int f = 0; f < frames && !sandbox.over(); ++f) sandbox.frame(double(f + 1) / 60.0);
+}
+
+} // namespace
+
+TEST_CASE("a swept ball touches a sphere or a box exactly when its path comes within its radius", "[goals]") {
+    // Sphere of radius 1 at the origin, ball of radius 0.25: contact at distance 1.25.
+    CHECK(sweptSphereTouchesSphere({-5, 1.2f, 0}, {5, 1.2f, 0}, 0.25f, {0, 0, 0}, 1.0f));   // passes 1.2 m off the centre
+    CHECK_FALSE(sweptSphereTouchesSphere({-5, 1.3f, 0}, {5, 1.3f, 0}, 0.25f, {0, 0, 0}, 1.0f));
+    CHECK_FALSE(sweptSphereTouchesSphere({-5, 0, 0}, {-2, 0, 0}, 0.25f, {0, 0, 0}, 1.0f));  // stops 0.75 m short
+    // A path that jumps through the sphere within one step still touches it (swept, not sampled).
+    CHECK(sweptSphereTouchesSphere({-3, 0, 0}, {3, 0, 0}, 0.1f, {0, 0, 0}, 0.5f));
+    // Box of half extents (1, 0.5, 2), turned 90° about y: its long side lies along x.
+    const glm::quat turned = glm::angleAxis(float(M_PI) / 2.0f, glm::vec3(0, 1, 0));
+    const glm::vec3 half{1.0f, 0.5f, 2.0f};
+    CHECK(sweptSphereTouchesBox({1.9f, 3, 0}, {1.9f, -3, 0}, 0.2f, {0, 0, 0}, turned, half));        // inside x ±2
+    CHECK(sweptSphereTouchesBox({2.15f, 3, 0}, {2.15f, -3, 0}, 0.2f, {0, 0, 0}, turned, half));      // within r of the face
+    CHECK_FALSE(sweptSphereTouchesBox({2.25f, 3, 0}, {2.25f, -3, 0}, 0.2f, {0, 0, 0}, turned, half));
+    CHECK_FALSE(sweptSphereTouchesBox({0, 3, 1.25f}, {0, -3, 1.25f}, 0.2f, {0, 0, 0}, turned, half)); // z half is 1 once turned
+    CHECK(sweptSphereTouchesBox({0, 3, 1.15f}, {0, -3, 1.15f}, 0.2f, {0, 0, 0}, turned, half));
+    CHECK_FALSE(sweptSphereTouchesBox({0, 3, 0}, {0, 0.8f, 0}, 0.2f, {0, 0, 0}, turned, half));      // stops above the top (0.5 + 0.2)
+}
+
+TEST_CASE("a gate is crossed the right way with its port buoy on the left hand, once, and only between the buoys", "[goals]") {
+    // Heading +z: starboard (the right hand) is −x. Gate at z = 10 from x = +5 (port) to −5.
+    const glm::vec2 port{5, 10}, starboard{-5, 10};
+    CHECK(gateCrossing(port, starboard, {0, 9.9f}, {0, 10.1f}) == 1);
+    CHECK(gateCrossing(port, starboard, {0, 10.1f}, {0, 9.9f}) == -1);     // the wrong way
+    CHECK(gateCrossing(starboard, port, {0, 9.9f}, {0, 10.1f}) == -1);     // buoys named the other way round
+    CHECK(gateCrossing(port, starboard, {6, 9.9f}, {6, 10.1f}) == 0);      // outside the port buoy
+    CHECK(gateCrossing(port, starboard, {-5.5f, 9.9f}, {-5.5f, 10.1f}) == 0);
+    CHECK(gateCrossing(port, starboard, {0, 8.0f}, {0, 9.9f}) == 0);       // not there yet
+    // A path ending on the line crosses; the next, starting on it, does not count again.
+    CHECK(gateCrossing(port, starboard, {0, 9.5f}, {0, 10.0f}) == 1);
+    CHECK(gateCrossing(port, starboard, {0, 10.0f}, {0, 10.5f}) == 0);
+    // Heading +x the starboard hand is +z: a gate across x = 20 from z = −4 (port) to z = +4.
+    CHECK(gateCrossing({20, -4}, {20, 4}, {19.8f, 0}, {20.2f, 0}) == 1);
+}
+
+TEST_CASE("a cannonball that touches a target counts it exactly once, a ball that misses counts nothing", "[goals]") {
+    // A target 12 m out at the cannon's height: the ball (fired level, fast) hits its face,
+    // bounces, falls and sinks along it; the target is counted at the first touch only. A
+    // second target far away keeps the game running.
+    auto scene = [](float targetX) {
+        return CALM + R"(
+[game]
+mode = "targets"
+time_limit = 0.0
+[[objects]]
+type = "cannon"
+name = "gun"
+position = [0.0, 0.6, 0.0]
+elevation_deg = 0.0
+muzzle_speed = 30.0
+ball_radius = 0.2
+[[objects]]
+type = "box"
+name = "target_near"
+position = [)" + std::to_string(targetX) + R"(, 0.2, 12.0]
+size = [2.0, 1.2, 2.0]
+density = 400.0
+[[objects]]
+type = "box"
+name = "target_far"
+position = [100.0, 0.2, 100.0]
+size = [2.0, 1.2, 2.0]
+density = 400.0
+[[events]]
+at = 0.5
+action = "fire"
+target = "gun"
+)";
+    };
+    Sandbox hit(parseScene(scene(0.0f), "hit.toml"));
+    const GameState& game = *gameState(hit.world());
+    REQUIRE(game.targets.size() == 2);
+    runFrames(hit, 60);  // 1 s: the ball has flown 12 m and touched the target
+    CHECK(game.score == 1);
+    CHECK(game.targets[0].hit);
+    CHECK_FALSE(game.targets[1].hit);
+    CHECK(game.targets[0].hitTime > 0.5);
+    CHECK(game.targets[0].hitTime < 1.0);
+    runFrames(hit, 240);  // the ball bounces off, sinks past the target and is gone: still one hit
+    CHECK(game.score == 1);
+    CHECK(game.result == GameResult::Running);
+
+    // Moved 3 m aside, the target is out of the ball's path (1.2 m of box and ball reach).
+    Sandbox miss(parseScene(scene(3.0f), "miss.toml"));
+    runFrames(miss, 300);
+    CHECK(gameState(miss.world())->score == 0);
+}
+
+TEST_CASE("race: a gate skipped (the next crossed first) is missed, a penalty is added, the last gate wins", "[goals]") {
+    // A scripted ship heading +z at 6 m/s through gates at z = 10, 20, 30, listed so that the
+    // one at z = 20 comes first: the ship crosses the second gate first, so gate 1 is missed
+    // and, crossed later, does not count.
+    auto gate = [](const std::string& name, float z) {
+        std::string objects;
+        for (const auto& [side, x] : {std::pair{"port", 5.0f}, std::pair{"starboard", -5.0f}})
+            objects += "[[objects]]\ntype = \"sphere\"\nname = \"" + name + "_" + side + "\"\nposition = [" + std::to_string(x) +
+                       ", 0.2, " + std::to_string(z) + "]\nradius = 0.5\n";
+        return objects + "[[game.gates]]\nport = \"" + name + "_port\"\nstarboard = \"" + name + "_starboard\"\n";
+    };
+    const std::string race = CALM + R"(
+[game]
+mode = "race"
+time_limit = 60.0
+miss_penalty = 10.0
+[[objects]]
+type = "ship"
+name = "racer"
+position = [0.0, 0.1, 0.0]
+speed = 6.0
+velocity = [0.0, 0.0, 6.0]
+)" + gate("b", 20.0f) + gate("a", 10.0f) + gate("c", 30.0f);
+    Sandbox sandbox(parseScene(race, "race.toml"));
+    const GameState& game = *gameState(sandbox.world());
+    runFrames(sandbox, 1200);
+    REQUIRE(game.result == GameResult::Won);
+    CHECK(game.gates[0].state == GateState::Missed);
+    CHECK(game.gates[1].state == GateState::Passed);
+    CHECK(game.gates[2].state == GateState::Passed);
+    CHECK(game.missed == 1);
+    CHECK(game.score == 2);
+    CHECK(game.raceTime() == Approx(game.time + 10.0));
+    CHECK(game.time > 4.0);  // 30 m at 6 m/s from the start
+    CHECK(game.time < 7.0);
+
+    // Under "lose", the same skip ends the race at once, lost, at gate 2's crossing (z = 10).
+    Sandbox strict(parseScene(race + "", "race.toml", {"game.missed_gate=lose"}));
+    runFrames(strict, 1200);
+    const GameState& lost = *gameState(strict.world());
+    CHECK(lost.result == GameResult::Lost);
+    CHECK(lost.reason == "gate 1 missed");
+    CHECK(lost.time < 3.0);
+}
+
+TEST_CASE("race: a ship crossing its gate the wrong way passes nothing", "[goals]") {
+    const std::string race = CALM + R"(
+[game]
+mode = "race"
+time_limit = 4.0
+[[objects]]
+type = "ship"
+name = "racer"
+position = [0.0, 0.1, 0.0]
+speed = 6.0
+velocity = [0.0, 0.0, 6.0]
+[[objects]]
+type = "sphere"
+name = "p"
+position = [-5.0, 0.2, 10.0]
+radius = 0.5
+[[objects]]
+type = "sphere"
+name = "s"
+position = [5.0, 0.2, 10.0]
+radius = 0.5
+[[game.gates]]
+port = "p"
+starboard = "s"
+)";
+    Sandbox sandbox(parseScene(race, "race.toml"));
+    runFrames(sandbox, 600);
+    const GameState& game = *gameState(sandbox.world());
+    CHECK(game.result == GameResult::Lost);
+    CHECK(game.reason == "time is up");
+    CHECK(game.score == 0);
+    CHECK(game.time == Approx(4.0));
+}
+
+TEST_CASE("once the goal is decided no step runs: time and the world stand still", "[goals]") {
+    // end_time in a scene without a goal: the run ends there ("ended").
+    Sandbox sandbox(parseScene(CALM + "[sim]\nend_time = 0.5\n[[objects]]\ntype = \"sphere\"\nposition = [0, 3, 0]\n", "end.toml"));
+    for (int f = 0; f < 120; ++f) sandbox.frame(double(f + 1) / 60.0);
+    CHECK(sandbox.schedule().steps() == 30);
+    const GameState& game = *gameState(sandbox.world());
+    CHECK(game.result == GameResult::Ended);
+    CHECK(game.time == Approx(0.5));
+    // At 8 steps a frame it stops on the same step, within a frame.
+    Sandbox eight(parseScene(CALM + "[sim]\nend_time = 0.5\nmax_steps_per_frame = 8\n", "end.toml"));
+    for (int f = 0; f < 20; ++f) eight.frame(double(f + 1) * 8.0 / 60.0);
+    CHECK(eight.schedule().steps() == 30);
+}
+
+TEST_CASE("bad [game] input names file, line and key", "[goals][config]") {
+    std::string e = sceneError("[game]\nmode = \"golf\"\n");
+    CHECK(e.find("bad.toml:2") != std::string::npos);
+    CHECK(e.find("game.mode") != std::string::npos);
+    e = sceneError("[game]\nmode = \"targets\"\nspeed = 3.0\n");
+    CHECK(e.find("bad.toml:3") != std::string::npos);
+    CHECK(e.find("speed") != std::string::npos);
+    // Another mode's key: known, but not read by this mode.
+    e = sceneError("[game]\nmode = \"targets\"\nzone_radius = 3.0\n");
+    CHECK(e.find("bad.toml:3") != std::string::npos);
+    CHECK(e.find("zone_radius") != std::string::npos);
+    CHECK(e.find("herd") != std::string::npos);
+    e = sceneError("[game]\ntime_limit = -1.0\n");
+    CHECK(e.find("bad.toml:2") != std::string::npos);
+    CHECK(e.find("game.time_limit") != std::string::npos);
+    // Objects the mode names that the scene lacks.
+    e = sceneError("[game]\nmode = \"targets\"\ntarget_prefix = \"duck\"\n");
+    CHECK(e.find("bad.toml:3") != std::string::npos);
+    CHECK(e.find("game.target_prefix") != std::string::npos);
+    e = sceneError("[[objects]]\ntype = \"ship\"\n[game]\nmode = \"race\"\n[[game.gates]]\nport = \"left\"\nstarboard = \"right\"\n");
+    CHECK(e.find("bad.toml:6") != std::string::npos);
+    CHECK(e.find("game.gates[0].port") != std::string::npos);
+    CHECK(e.find("'left'") != std::string::npos);
+    // A scene without [game] has none: mode "none".
+    CHECK(sceneError(CALM) == "");
+    CHECK(parseScene(CALM, "ok.toml").game.mode == GameMode::None);
+}
