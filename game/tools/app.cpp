@@ -175,8 +175,24 @@ static std::unique_ptr<platform::Platform> openPlatform(const SceneDef& scene, c
 int runScene(const SceneDef& scene, const std::string& scenePath, const RunOptions& options) {
     checkOutputs(scene, options);
     // Scripted input goes through the same queue as the window's events.
+    // A script's [[set]] entries join the first world's timeline as `set` events.
     std::vector<platform::InputEvent> scripted;
-    if (!options.input.empty()) scripted = scriptEvents(loadInputScript(options.input));
+    SceneDef first = scene;
+    if (!options.input.empty()) {
+        const InputScriptDef input = loadInputScript(options.input);
+        scripted = scriptEvents(input);
+        for (size_t i = 0; i < input.set.size(); ++i) {
+            const SetDef& set = input.set[i];
+            if (const std::string problem = checkLiveSet(first, set.key, set.value); !problem.empty())
+                throw InputError(options.input + ": set[" + std::to_string(i) + "]." + problem);
+            EventDef e;
+            e.at = set.at;
+            e.action = EventAction::Set;
+            e.key = set.key;
+            e.value = set.value;
+            first.events.push_back(e);
+        }
+    }
     std::unique_ptr<platform::Platform> platform = openPlatform(scene, scenePath, options);
 
     // A fixed clock advances stepsPerFrame steps a frame (what a slow machine does in play);
@@ -198,7 +214,7 @@ int runScene(const SceneDef& scene, const std::string& scenePath, const RunOptio
         if (options.realTime) return std::make_unique<SteadyClock>();
         return std::make_unique<FixedStepClock>(options.stepsPerFrame / double(s.sim.step_hz), double(options.steps) / double(s.sim.step_hz));
     };
-    auto sandbox = makeSandbox(scene);
+    auto sandbox = makeSandbox(first);
     std::unique_ptr<Clock> clock = makeClock(scene);
     // What R restarts (the scene this world started from) and the file it came from.
     SceneDef started = scene;
@@ -273,7 +289,9 @@ int runScene(const SceneDef& scene, const std::string& scenePath, const RunOptio
     if (!options.record.empty()) {
         const auto* recorder = sandbox->world().resource<InputRecorder>();
         const auto* viewport = sandbox->world().resource<Viewport>();
-        InputScriptDef recording = recordedScript(recorder->events, sandbox->schedule().steps(), sandbox->schedule().stepSeconds(),
+        const auto* script = sandbox->world().resource<ScriptState>();
+        InputScriptDef recording = recordedScript(recorder->events, script ? script->liveChanges : std::vector<LiveChange>{},
+                                                  sandbox->schedule().steps(), sandbox->schedule().stepSeconds(),
                                                   viewport ? viewport->size : platform->framebufferSize());
         writeTextFile(options.record,
                       "# oceanbox input recorded from " + runningPath + ": `oceanbox run SCENE --input FILE` replays it\n" +

@@ -61,8 +61,8 @@ std::vector<platform::InputEvent> scriptEvents(const InputScriptDef& script) {
     return events;
 }
 
-InputScriptDef recordedScript(const std::vector<platform::InputEvent>& events, uint64_t steps, double stepSeconds,
-                              glm::ivec2 size) {
+InputScriptDef recordedScript(const std::vector<platform::InputEvent>& events, const std::vector<LiveChange>& changes,
+                              uint64_t steps, double stepSeconds, glm::ivec2 size) {
     using T = platform::InputEvent::Type;
     InputScriptDef script;
     script.steps = steps;
@@ -120,6 +120,7 @@ InputScriptDef recordedScript(const std::vector<platform::InputEvent>& events, u
         case T::Close: break;
         }
     }
+    for (const LiveChange& c : changes) script.set.push_back({float(c.time), c.key, c.value});
     for (long k : key)
         if (k >= 0) script.press[size_t(k)].hold = end - script.press[size_t(k)].at;
     for (long b : button)

@@ -4,6 +4,7 @@
 #pragma once
 #include "core/schema.h"
 #include "platform/input.h"
+#include "world/script.h"
 
 #include <string>
 #include <vector>
@@ -62,6 +63,20 @@ template <class V> void describe(V& v, MoveDef& d) {
     v.field("drag", d.drag, range(-1e5, 1e5), "the cursor's motion, px");
 }
 
+/// One [[set]]: a live scene key changed at `at` (what the overlay's sea panel does, recorded;
+/// the same keys and checks as a `set` event of the scene's timeline).
+struct SetDef {
+    float at = 0.0f;      ///< simulated time, s, [0, 1e6]: the step that starts nearest it
+    std::string key;      ///< a live scene key, e.g. ocean.wind_speed
+    float value = 0.0f;   ///< its new value
+};
+
+template <class V> void describe(V& v, SetDef& d) {
+    v.field("at", d.at, range(0, 1e6), "simulated time of the change (s)");
+    v.field("key", d.key, "a live scene key (as a set event's)");
+    v.field("value", d.value, any(), "its new value");
+}
+
 /// An input script file; a recording (`play --record`) also says how long the session ran
 /// and in what framebuffer.
 struct InputScriptDef {
@@ -70,6 +85,7 @@ struct InputScriptDef {
     std::vector<PressDef> press;
     std::vector<MouseDef> mouse;
     std::vector<MoveDef> move;
+    std::vector<SetDef> set;
 };
 
 template <class V> void describe(V& v, InputScriptDef& d) {
@@ -78,6 +94,7 @@ template <class V> void describe(V& v, InputScriptDef& d) {
     v.list("press", d.press, "key presses");
     v.list("mouse", d.mouse, "mouse actions");
     v.list("move", d.move, "cursor motions");
+    v.list("set", d.set, "live scene changes (the overlay's)");
 }
 
 /// Reads an input script; every problem (file:line:column: key: message) in one
@@ -90,7 +107,8 @@ std::vector<platform::InputEvent> scriptEvents(const InputScriptDef& script);
 /// motion a [[move]]; scriptEvents() of it gives the events back in an order the steps
 /// consume alike. `events` in time order; a key or button still down at the end is released
 /// at the end of the last step.
-InputScriptDef recordedScript(const std::vector<platform::InputEvent>& events, uint64_t steps, double stepSeconds,
-                              glm::ivec2 size);
+/// The overlay's live changes (`changes`, at their steps' start times) become [[set]] entries.
+InputScriptDef recordedScript(const std::vector<platform::InputEvent>& events, const std::vector<LiveChange>& changes,
+                              uint64_t steps, double stepSeconds, glm::ivec2 size);
 
 } // namespace ob::game

@@ -86,6 +86,9 @@ at = 3.3
 button = "left"
 pos = [230, 110]
 hold = 0.05
+[[press]]
+at = 4.0
+key = "escape"
 )";
 
 std::string hashOf(const std::string& statsPath) {
@@ -102,8 +105,10 @@ TEST_CASE("a recorded play session replays by run to the same state hash at 1 an
     // A window on a virtual display when xvfb-run is there (the wall clock, frames of any
     // length), else play's headless fallback (its fixed clock).
     const bool xvfb = runShell("command -v xvfb-run").exitCode == 0;
-    const std::string play = "play " + scene + " --frames 200 --input " + input + " --record " + recording + " --stats " + playStats;
-    auto played = xvfb ? runShell("xvfb-run -a -s '-screen 0 640x480x24' $OCEANBOX " + play) : runOceanbox(play + " --headless");
+    // The player quits with Esc at 4 s of the wall clock (the input's last click is at 3.3 s),
+    // however fast the frames come; headless, play's fixed clock reaches it too.
+    const std::string play = "play " + scene + " --input " + input + " --record " + recording + " --stats " + playStats;
+    auto played = xvfb ? runShell("timeout 300 xvfb-run -a -s '-screen 0 640x480x24' $OCEANBOX " + play) : runOceanbox(play + " --headless --frames 300");
     INFO(played.output);
     REQUIRE(played.exitCode == 0);
     const nlohmann::json stats = nlohmann::json::parse(std::ifstream(playStats));
@@ -144,4 +149,22 @@ TEST_CASE("bad input scripts and record paths are exit 2 naming the file, line a
     auto unwritable = runOceanbox("play " + scene + " --headless --frames 3 --record /nonexistent/folder/rec.toml");
     CHECK(unwritable.exitCode == 2);
     CHECK(unwritable.output.find("recording") != std::string::npos);
+}
+
+TEST_CASE("a recording's [[set]] entries (the overlay's live changes) replay as the timeline's set events", "[record]") {
+    const std::string base = "[ocean]\nresolution = 32\nwind_speed = 6.0\n[gerstner]\ncount = 2\n";
+    const std::string change = "at = 0.5\nkey = \"ocean.wind_speed\"\nvalue = 14.0\n";
+    const std::string timeline = writeFile(tempPath("record_set_timeline.toml"), base + "[[events]]\naction = \"set\"\n" + change);
+    const std::string plain = writeFile(tempPath("record_set_plain.toml"), base);
+    const std::string input = writeFile(tempPath("record_set_input.toml"), "[[set]]\n" + change);
+    const std::string a = tempPath("record_set_a.json"), b = tempPath("record_set_b.json"), c = tempPath("record_set_c.json");
+    REQUIRE(runOceanbox("run " + timeline + " --headless --size 32x32 --frames 90 --stats " + a).exitCode == 0);
+    REQUIRE(runOceanbox("run " + plain + " --headless --size 32x32 --frames 90 --input " + input + " --stats " + b).exitCode == 0);
+    REQUIRE(runOceanbox("run " + plain + " --headless --size 32x32 --frames 90 --stats " + c).exitCode == 0);
+    CHECK(hashOf(a) == hashOf(b));
+    CHECK(hashOf(b) != hashOf(c));  // the change did something
+    auto bad = runOceanbox("run " + plain + " --headless --frames 3 --input " +
+                           writeFile(tempPath("record_set_bad.toml"), "[[set]]\nat = 0.5\nkey = \"ocean.resolution\"\nvalue = 64\n"));
+    CHECK(bad.exitCode == 2);
+    CHECK(bad.output.find("set[0].key") != std::string::npos);
 }
