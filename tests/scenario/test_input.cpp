@@ -4,6 +4,7 @@
 #include "support/test_support.h"
 
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -140,4 +141,22 @@ TEST_CASE("play --help lists every key and mouse action", "[cli]") {
     CHECK(r.exitCode == 0);
     for (const char* key : {"right drag", "wheel", "Space", "click", "W/S", "A/D", "arrows", "F12", "Esc", " C ", " H ", " N", " F "})
         CHECK(r.output.find(key) != std::string::npos);
+}
+
+TEST_CASE("tools through --input with pos: a drop lands under the click, an erase takes the body clicked", "[input][tools]") {
+    // The camera looks straight down on the origin from 20 m: the framebuffer's centre is the
+    // water point (0, 0, 0) by construction.
+    const std::string down = CALM + "[window]\nwidth = 64\nheight = 36\n[camera]\nmode = \"fixed\"\nposition = [0, 20, -0.01]\n"
+                                    "target = [0, 0, 0]\n";
+    const std::string drop = "[[press]]\nat = 0.1\nkey = \"3\"\n[[mouse]]\nat = 0.3\nbutton = \"left\"\npos = [32, 18]\n";
+    const nlohmann::json dropped = run(down, drop, 1, 150);
+    REQUIRE(dropped["bodies"].size() == 1);
+    const auto& p = dropped["bodies"][0]["position"];
+    CHECK(std::hypot(p[0].get<double>(), p[2].get<double>()) < 0.5);
+    const std::string erase = "[[press]]\nat = 0.1\nkey = \"4\"\n[[mouse]]\nat = 0.3\nbutton = \"left\"\npos = [32, 18]\n";
+    const std::string ball = "[[objects]]\ntype = \"sphere\"\nname = \"ball\"\nposition = [0, 0, 0]\n"
+                             "[[objects]]\ntype = \"sphere\"\nname = \"other\"\nposition = [6, 0, 0]\n";
+    const nlohmann::json erased = run(down + ball, erase, 1, 60);
+    REQUIRE(erased["bodies"].size() == 1);
+    CHECK(erased["bodies"][0]["name"] == "other");
 }
