@@ -237,8 +237,9 @@ std::vector<std::string> validateGame(const SceneDef& scene, const std::function
             const GateDef& gate = game.race.gates[g];
             const std::string at = "gates[" + std::to_string(g) + "].";
             for (const auto& [key, name] : {std::pair{"port", gate.port}, std::pair{"starboard", gate.starboard}}) {
+                const std::string& wanted = name;  // a structured binding cannot be captured (C++17; clang refuses it)
                 const bool exists = std::any_of(scene.objects.begin(), scene.objects.end(), [&](const ObjectDef& o) {
-                    return !name.empty() && o.name == name && (o.type == ObjectType::Sphere || o.type == ObjectType::Box);
+                    return !wanted.empty() && o.name == wanted && (o.type == ObjectType::Sphere || o.type == ObjectType::Box);
                 });
                 if (!exists) error(at + key, "no sphere or box object is named '" + name + "'");
             }
