@@ -114,7 +114,6 @@ void stopStirring(ecs::World& world, PlayerTools& tools) {
 ObjectDef dropDef(const PlayerTools& tools, glm::vec3 at, float yawDeg) {
     ObjectDef o;
     o.position = at + glm::vec3(0.0f, tools.def.drop_height, 0.0f);
-    o.name = std::string(enumName(tools.def.drop)) + "_" + std::to_string(tools.drops + 1);
     const auto box = [&](glm::vec3 size, float density, glm::vec3 color) {
         o.type = ObjectType::Box;
         o.box.size = size;
