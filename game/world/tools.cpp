@@ -190,6 +190,27 @@ void fireAt(ecs::World& world, PlayerTools& tools, glm::vec3 point) {
     tools.message = reachable ? "" : "out of the cannon's reach: fired as far as it goes";
 }
 
+// Keys 1–5 choose the tool (the one held or stirring is let go); 3 again: the next object.
+void chooseTool(ecs::World& world, PlayerTools& tools, const StepInput& input) {
+    using platform::Key;
+    constexpr Key NUMBER_KEYS[] = {Key::Num1, Key::Num2, Key::Num3, Key::Num4, Key::Num5};
+    for (size_t k = 0; k < std::size(NUMBER_KEYS); ++k) {
+        int presses = input.pressCount(NUMBER_KEYS[k]);
+        if (presses == 0) continue;
+        if (tools.def.tool != Tool(k)) {
+            if (tools.grabbed != ecs::Entity::None) release(world, tools);
+            stopStirring(world, tools);
+            tools.def.tool = Tool(k);
+            tools.message = "";
+            if (tools.def.tool == Tool::Cannon && world.pool<Cannon>().size() == 0) tools.message = "no cannon in this scene";
+            --presses;
+        }
+        // 3 again: the next object to drop.
+        if (tools.def.tool == Tool::Drop)
+            tools.def.drop = DropKind((size_t(tools.def.drop) + size_t(presses)) % enumNames<DropKind>.size());
+    }
+}
+
 } // namespace
 
 std::optional<float> ballisticElevationDeg(glm::vec3 from, glm::vec3 to, float speed, float g, bool high) {
@@ -218,23 +239,7 @@ void toolsSystem(ecs::World& world, const ecs::Tick& tick) {
     const float dt = float(tick.dt);
     using platform::Key;
 
-    // --- the tool: keys 1–5
-    constexpr Key NUMBER_KEYS[] = {Key::Num1, Key::Num2, Key::Num3, Key::Num4, Key::Num5};
-    for (size_t k = 0; k < std::size(NUMBER_KEYS); ++k) {
-        int presses = input->pressCount(NUMBER_KEYS[k]);
-        if (presses == 0) continue;
-        if (tools->def.tool != Tool(k)) {
-            if (tools->grabbed != ecs::Entity::None) release(world, *tools);
-            stopStirring(world, *tools);
-            tools->def.tool = Tool(k);
-            tools->message = "";
-            if (tools->def.tool == Tool::Cannon && world.pool<Cannon>().size() == 0) tools->message = "no cannon in this scene";
-            --presses;
-        }
-        // 3 again: the next object to drop.
-        if (tools->def.tool == Tool::Drop)
-            tools->def.drop = DropKind((size_t(tools->def.drop) + size_t(presses)) % enumNames<DropKind>.size());
-    }
+    chooseTool(world, *tools, *input);
 
     // --- what the cursor points at
     tools->cursorKnown = input->cursorKnown;
