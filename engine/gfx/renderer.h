@@ -13,9 +13,9 @@
 #include "gfx/gpu_timer.h"
 #include "gfx/handles.h"
 #include "gfx/mesh.h"
-#include "gfx/render_def.h"
+#include "view_data/render_def.h"
 #include "gfx/render_target.h"
-#include "gfx/scene_view.h"
+#include "view_data/scene_view.h"
 #include "gfx/projected_grid.h"
 
 #include <array>
