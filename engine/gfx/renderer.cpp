@@ -538,8 +538,8 @@ void Renderer::postPass(glm::ivec2 size) {
 // How far the layers can move a rest point: the FFT cascades' extremes (from the view), the
 // Gerstner waves' Σ a (each moves a point by a along its K and by a·cos θ up), the ripple
 // patch's extremes (heights only). The projected grid reaches that far past the view.
-static ocean::DisplacementBounds displacementBounds(const WaterView& water) {
-    ocean::DisplacementBounds bounds;
+static SurfaceBounds displacementBounds(const WaterView& water) {
+    SurfaceBounds bounds;
     if (water.cascades > 0 && water.displacement) bounds = water.fftBounds;
     float amplitudes = 0.0f;
     const size_t waves = std::min(water.gerstner.size(), size_t(MAX_GERSTNER_WAVES));

@@ -52,7 +52,7 @@ struct WaterView {
     float foamCellSize = 1.0f;              ///< m per foam cell
     /// How far the FFT cascades together move a rest point (m; λ included): the projected
     /// grid reaches this far past the view. Gerstner and ripple bounds the renderer derives.
-    ocean::DisplacementBounds fftBounds;
+    SurfaceBounds fftBounds;
 };
 
 /// std140 mirror of `WaterUniforms` in shaders/common_water.glsl.

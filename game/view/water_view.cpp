@@ -99,7 +99,8 @@ gfx::WaterView prepareWaterView(ecs::World& world, double time) {
     // How far the grid must reach: the extremes of the CPU maps (at the step's end). The GPU
     // synthesises at the render time, up to a few steps from those maps; the extremes of the
     // whole tile change by far less than a tenth in that time, so a tenth more covers it.
-    view.fftBounds = ocean->cpu->displacementBounds();
+    const ocean::DisplacementBounds fft = ocean->cpu->displacementBounds();
+    view.fftBounds = {fft.up, fft.down, fft.horizontal};
     if (side->gpu && ocean->mapsTime != time) {
         view.fftBounds.up *= FFT_BOUND_SLACK;
         view.fftBounds.down *= FFT_BOUND_SLACK;
