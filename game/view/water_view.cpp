@@ -40,11 +40,8 @@ void attachWaterGpu(ecs::World& world) {
     OceanGpu& side = world.setResource(std::make_unique<OceanGpu>());
     side.textures = std::make_unique<ocean::OceanTextures>(ocean->def.resolution, ocean->def.cascades);
     // auto: the GPU where there is one; on a software rasteriser FFTW is faster.
-    bool gpu = ocean->def.backend == Backend::Gpu || (ocean->def.backend == Backend::Auto && !gfx::isSoftwareRenderer());
-    if (gpu && !ocean::OceanFftGpu::available()) {
-        logWarn("ocean: compute shaders unavailable, using the CPU backend");
-        gpu = false;
-    }
+    // Every platform's context is GL 4.5 core (compute shaders, fp64), or it fails to open.
+    const bool gpu = ocean->def.backend == Backend::Gpu || (ocean->def.backend == Backend::Auto && !gfx::isSoftwareRenderer());
     if (gpu) {
         side.gpu = std::make_unique<ocean::OceanFftGpu>(ocean->def);
         ocean->cpuNext = std::make_unique<ocean::OceanFftCpu>(ocean->def);

@@ -58,8 +58,6 @@ GLintptr bytes(size_t count, size_t size) { return GLintptr(count * size); }
 
 } // namespace
 
-bool OceanFftGpu::available() { return GLAD_GL_VERSION_4_3 != 0; }
-
 OceanFftGpu::OceanFftGpu(const OceanDef& def) {
     validateOceanDef(def, OceanFftGpu::MAX_RESOLUTION);
     m_n = def.resolution;
