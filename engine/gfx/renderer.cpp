@@ -25,11 +25,7 @@
 
 namespace ob::gfx {
 
-constexpr GLuint FRAME_UBO_BINDING = 0;
-constexpr GLuint WATER_UBO_BINDING = 1;
-// Texture units of the water and sky passes (shaders/common_water.glsl, water_surface.frag).
-enum TextureUnit : GLuint { DISPLACEMENT_UNIT, SLOPES_UNIT, RIPPLES_UNIT, SKY_UNIT, REFLECTION_UNIT, REFRACTION_UNIT,
-                            DETAIL_UNIT, REFLECTION_DEPTH_UNIT, FOAM_UNIT, RIPPLE_SLOPES_UNIT, FOAM_PATTERN_UNIT };
+using namespace glsl;  // the binding points and locations (shaders/common_bindings.glsl)
 // The projected grid reaches this fraction of the far clip distance; past it the grid is a
 // wall up to the eye's level, which the camera sees exactly on the horizon line.
 constexpr float GRID_REACH = 0.9f;
@@ -59,9 +55,8 @@ constexpr glm::vec3 HIGHLIGHT_TINT{1.9f, 1.7f, 1.0f};
 // 720 rows (whole) and 3 px at scale 0.25 (the twin, a tenth of the triangles).
 constexpr float LOD_RADIUS_PX = 8.0f;
 const char* const PASS_NAMES[] = {"sky_bake", "reflection", "refraction", "opaque", "water", "sky", "splash", "post"};
-// Samples a pixel of the msaa4 targets; the FXAA pass reads its source on this unit.
+// Samples a pixel of the msaa4 targets.
 constexpr int MSAA_SAMPLES = 4;
-constexpr GLuint FXAA_SOURCE_UNIT = 0;
 
 Antialias antialiasMode(Antialias key, bool softwareRenderer) {
     if (key != Antialias::Auto) return key;
@@ -170,9 +165,9 @@ void Renderer::buildGrid(int resolution) {
     m_gridVao = createVertexArray("projected grid");
     glVertexArrayVertexBuffer(m_gridVao.id(), 0, m_gridVertices.id(), 0, sizeof(glm::vec2));
     glVertexArrayElementBuffer(m_gridVao.id(), m_gridIndices.id());
-    glEnableVertexArrayAttrib(m_gridVao.id(), 0);
-    glVertexArrayAttribFormat(m_gridVao.id(), 0, 2, GL_FLOAT, GL_FALSE, 0);
-    glVertexArrayAttribBinding(m_gridVao.id(), 0, 0);
+    glEnableVertexArrayAttrib(m_gridVao.id(), GRID_UV_ATTRIB);
+    glVertexArrayAttribFormat(m_gridVao.id(), GRID_UV_ATTRIB, 2, GL_FLOAT, GL_FALSE, 0);
+    glVertexArrayAttribBinding(m_gridVao.id(), GRID_UV_ATTRIB, 0);
 }
 
 // The detail map (RGBA8, (du, dv) stored as 0.5 + 0.5·x: llvmpipe filters 8-bit texels on its
@@ -295,7 +290,7 @@ void Renderer::render(const CameraView& camera, const WaterView& water, const st
     glClearColor(0, 0, 0, 1);
     glClearDepth(1.0);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    glBindBufferBase(GL_UNIFORM_BUFFER, FRAME_UBO_BINDING, m_frameUniforms[MAIN_VIEW].id());
+    glBindBufferBase(GL_UNIFORM_BUFFER, FRAME_BLOCK, m_frameUniforms[MAIN_VIEW].id());
     opaquePass(objects);
     waterPass(camera);
     skyPass();  // it shades only the pixels nothing else covered
@@ -329,7 +324,7 @@ void Renderer::skyBakePass() {
     glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, SKY_BAKE_PASS, -1, "sky bake");
     m_passTimers[SKY_BAKE_PASS].begin();
     m_bakedSun = sunDirection(m_def);
-    glBindBufferBase(GL_UNIFORM_BUFFER, FRAME_UBO_BINDING, m_frameUniforms[MAIN_VIEW].id());
+    glBindBufferBase(GL_UNIFORM_BUFFER, FRAME_BLOCK, m_frameUniforms[MAIN_VIEW].id());
     glBindFramebuffer(GL_FRAMEBUFFER, m_skyBakeFramebuffer.id());
     glViewport(0, 0, SKY_CUBE_SIZE, SKY_CUBE_SIZE);
     glDisable(GL_DEPTH_TEST);
@@ -337,7 +332,7 @@ void Renderer::skyBakePass() {
     glBindVertexArray(m_emptyVao.id());
     for (int face = 0; face < 6; ++face) {
         glNamedFramebufferTextureLayer(m_skyBakeFramebuffer.id(), GL_COLOR_ATTACHMENT0, m_skyCube.id(), 0, face);
-        glProgramUniformMatrix3fv(m_skyBakeProgram.id(), 0, 1, GL_FALSE, &CUBE_FACES[face][0][0]);
+        glProgramUniformMatrix3fv(m_skyBakeProgram.id(), SKY_FACE_LOCATION, 1, GL_FALSE, &CUBE_FACES[face][0][0]);
         glDrawArrays(GL_TRIANGLES, 0, 3);
     }
     glGenerateTextureMipmap(m_skyCube.id());
@@ -433,7 +428,7 @@ static Side sideOfSurface(const ObjectDraw& o, const Mesh& mesh) {
 
 void Renderer::drawObjects(const std::vector<ObjectDraw>& objects, View view) {
     if (objects.empty()) return;
-    glBindBufferBase(GL_UNIFORM_BUFFER, FRAME_UBO_BINDING, m_frameUniforms[view].id());
+    glBindBufferBase(GL_UNIFORM_BUFFER, FRAME_BLOCK, m_frameUniforms[view].id());
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glEnable(GL_CULL_FACE);
@@ -455,15 +450,15 @@ void Renderer::drawObjects(const std::vector<ObjectDraw>& objects, View view) {
         // Models carry their own colours; a highlighted object is drawn brighter and warmer.
         const glm::vec3 tint = (o.modelFile.empty() ? o.color : glm::vec3(1.0f)) * (o.highlight ? HIGHLIGHT_TINT : glm::vec3(1.0f));
         glUseProgram(program);
-        glProgramUniformMatrix4fv(program, 0, 1, GL_FALSE, &o.model[0][0]);
-        glProgramUniform3fv(program, 1, 1, &tint.x);
-        if (!perVertex) glProgramUniform3fv(program, 2, 1, &plane.x);
+        glProgramUniformMatrix4fv(program, OBJECT_MODEL_LOCATION, 1, GL_FALSE, &o.model[0][0]);
+        glProgramUniform3fv(program, OBJECT_TINT_LOCATION, 1, &tint.x);
+        if (!perVertex) glProgramUniform3fv(program, OBJECT_SURFACE_PLANE_LOCATION, 1, &plane.x);
         glBindVertexArray(mesh.vao.id());
         glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
     }
     glDisable(GL_CLIP_DISTANCE0);
     glDisable(GL_CULL_FACE);
-    glBindBufferBase(GL_UNIFORM_BUFFER, FRAME_UBO_BINDING, m_frameUniforms[MAIN_VIEW].id());
+    glBindBufferBase(GL_UNIFORM_BUFFER, FRAME_BLOCK, m_frameUniforms[MAIN_VIEW].id());
 }
 
 void Renderer::skyPass() {
@@ -502,20 +497,20 @@ void Renderer::postPass(glm::ivec2 size) {
         glBindFramebuffer(GL_FRAMEBUFFER, target);
         glViewport(0, 0, internal.x, internal.y);
         glEnable(GL_DEPTH_TEST);
-        glBindTextureUnit(FXAA_SOURCE_UNIT, m_internal.color.id());
+        glBindTextureUnit(POST_SOURCE_UNIT, m_internal.color.id());
         glBindVertexArray(m_emptyVao.id());
         for (const Program& program : m_fxaaPrograms) {
             const bool offEdges = &program == &m_fxaaPrograms[0];
             glDepthFunc(offEdges ? GL_ALWAYS : GL_LEQUAL);
             glDepthMask(offEdges ? GL_TRUE : GL_FALSE);
-            glProgramUniform2f(program.id(), 0, 1.0f / float(internal.x), 1.0f / float(internal.y));
-            glProgramUniform1f(program.id(), 1, upscaled ? m_def.upscale_sharpness : 0.0f);
+            glProgramUniform2f(program.id(), FXAA_TEXEL_LOCATION, 1.0f / float(internal.x), 1.0f / float(internal.y));
+            glProgramUniform1f(program.id(), FXAA_SHARPNESS_LOCATION, upscaled ? m_def.upscale_sharpness : 0.0f);
             glUseProgram(program.id());
             glDrawArrays(GL_TRIANGLES, 0, 3);
         }
         glDepthMask(GL_TRUE);
         glDepthFunc(GL_LESS);
-        glBindTextureUnit(FXAA_SOURCE_UNIT, 0);  // drawn into again next frame
+        glBindTextureUnit(POST_SOURCE_UNIT, 0);  // drawn into again next frame
         last = intoFramebuffer ? nullptr : &m_antialiased;
     }
     if (last && internal == size) {
@@ -525,11 +520,11 @@ void Renderer::postPass(glm::ivec2 size) {
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         glViewport(0, 0, size.x, size.y);
         glDisable(GL_DEPTH_TEST);
-        glBindTextureUnit(FXAA_SOURCE_UNIT, last->color.id());
+        glBindTextureUnit(POST_SOURCE_UNIT, last->color.id());
         glUseProgram(m_upscaleProgram.id());
         glBindVertexArray(m_emptyVao.id());
         glDrawArrays(GL_TRIANGLES, 0, 3);
-        glBindTextureUnit(FXAA_SOURCE_UNIT, 0);
+        glBindTextureUnit(POST_SOURCE_UNIT, 0);
     }
     m_passTimers[POST_PASS].end();
     glPopDebugGroup();
@@ -593,7 +588,7 @@ void Renderer::uploadWaterUniforms(const CameraView& camera, const WaterView& wa
                       .foam = m_def.foam,
                       .fullQuality = m_def.water_full_quality};
     glNamedBufferSubData(m_waterUniforms.id(), 0, sizeof u, &u);
-    glBindBufferBase(GL_UNIFORM_BUFFER, WATER_UBO_BINDING, m_waterUniforms.id());
+    glBindBufferBase(GL_UNIFORM_BUFFER, WATER_BLOCK, m_waterUniforms.id());
     glBindTextureUnit(FOAM_UNIT, u.foamParams.w > 0.0f ? m_foamTexture.id() : 0);
     glBindTextureUnit(DISPLACEMENT_UNIT, layers ? water.displacement->id() : m_flatDisplacement.id());
     glBindTextureUnit(SLOPES_UNIT, layers ? water.slopes->id() : m_flatSlopes.id());

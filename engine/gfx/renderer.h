@@ -9,7 +9,9 @@
 //                reflection pass draws them too, mirrored)
 //   post       → the internal frame to the framebuffer: MSAA resolve, FXAA, upscale (when
 //                resolution_scale < 1); skipped when the frame was drawn into it directly
+// Bindings, locations and the uniform blocks: shaders/common_bindings.glsl (gfx/gpu_bindings.h).
 #pragma once
+#include "gfx/gpu_bindings.h"
 #include "gfx/gpu_timer.h"
 #include "gfx/handles.h"
 #include "gfx/mesh.h"
@@ -54,38 +56,6 @@ struct WaterView {
     /// grid reaches this far past the view. Gerstner and ripple bounds the renderer derives.
     SurfaceBounds fftBounds;
 };
-
-/// std140 mirror of `WaterUniforms` in shaders/common_water.glsl.
-struct WaterUniforms {
-    glm::vec4 corner[4];
-    glm::vec4 cascadeSize;
-    glm::vec4 waterParams;   ///< λ, gravity, Gerstner wave count, smallest grid w (a guard)
-    glm::vec4 gridParams;    ///< grid resolution, grid reach from the eye (m), cascades, FFT N
-    glm::vec4 rippleParams;  ///< origin x, origin z (m), cell size (m), cells per side (0: none)
-    glm::vec4 foamParams;    ///< foam map: origin x, origin z (m), cell size (m), cells per side (0: none)
-    glm::vec4 cascadeFade;     ///< per cascade: eye distance (m) where it starts to fade out
-    glm::vec4 cascadeFadeEnd;  ///< per cascade: eye distance (m) past which it is gone (0: never fades)
-    glm::vec4 farFade;         ///< x 1 = Gerstner waves fade where the grid is too sparse for them, 0 = exact
-    glm::vec4 gerstner[32];
-};
-static_assert(sizeof(WaterUniforms) == 16 * (4 + 8 + 32), "WaterUniforms must match std140 layout");
-constexpr int MAX_GERSTNER_WAVES = 32;
-
-/// std140 mirror of `FrameUniforms` in shaders/common_frame.glsl: one copy per view
-/// (camera, mirrored camera, refraction camera).
-struct FrameUniforms {
-    glm::mat4 viewProjection;
-    glm::mat4 inverseViewProjection;
-    glm::vec4 cameraPositionTime;   ///< xyz eye (m), w simulated time (s)
-    glm::vec4 sunDirectionFresnel;  ///< xyz toward the sun (unit), w 0 = Schlick, 1 = exact
-    glm::vec4 waterColorExposure;   ///< rgb deep water colour, w exposure
-    glm::vec4 viewport;             ///< xy framebuffer size (px), z output: 0 display colour, 1 linear radiance + coverage (reflection), 2 display colour + luma in alpha (FXAA), 3 linear radiance + 1 / eye depth (refraction); w 1 = eye under water
-    glm::vec4 surfaceClip;          ///< side s (±1; 0 keeps all), overlap m (m), 1 = mirror, 0: objects keep s·(y − surface height) + m ≥ 0 and, mirrored, y → 2·surface − y
-    glm::vec4 depthParams;          ///< near, far (m), water clarity (m), sky mip count
-    glm::vec4 shading;              ///< DU/DV strength, normal distortion, glitter, glitter shininess
-    glm::vec4 switches;             ///< reflections, refractions, foam (1 on, 0 off), 0
-};
-static_assert(sizeof(FrameUniforms) == 2 * 64 + 8 * 16, "FrameUniforms must match std140 layout");
 
 /// What the water program is compiled for (`#define`s of shaders/water_surface.frag): each a
 /// constant in its code, so the compiler drops the terms that are off and unrolls the cascades'

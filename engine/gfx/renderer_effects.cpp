@@ -7,9 +7,9 @@
 
 namespace ob::gfx {
 
+using namespace glsl;  // the binding points and locations (shaders/common_bindings.glsl)
+
 namespace {
-// The frame uniforms' binding (common_frame.glsl).
-constexpr GLuint FRAME_BINDING = 0;
 // The smallest sprite radius (px): 1.5 px across. Smaller sprites are drawn at this size with
 // their opacity cut by the area ratio, so drops far away fade rather than alias away.
 constexpr float MIN_SPRITE_RADIUS_PX = 0.75f;
@@ -22,9 +22,9 @@ void Renderer::uploadSplashDrops(std::span<const SplashDrop> drops, const Camera
         m_splashProgram = loadProgram("splash_drops", {"splash_drops.vert", "splash_drops.frag"});
         m_splashMirrorProgram = loadProgram("splash_drops_mirror", {"splash_drops_mirror.vert", "splash_drops.frag"});
         m_splashVao = createVertexArray("splash drops");
-        glEnableVertexArrayAttrib(m_splashVao.id(), 0);
-        glVertexArrayAttribFormat(m_splashVao.id(), 0, 4, GL_FLOAT, GL_FALSE, 0);
-        glVertexArrayAttribBinding(m_splashVao.id(), 0, 0);
+        glEnableVertexArrayAttrib(m_splashVao.id(), SPLASH_DROP_ATTRIB);
+        glVertexArrayAttribFormat(m_splashVao.id(), SPLASH_DROP_ATTRIB, 4, GL_FLOAT, GL_FALSE, 0);
+        glVertexArrayAttribBinding(m_splashVao.id(), SPLASH_DROP_ATTRIB, 0);
     }
     if (drops.size() > m_splashCapacity) {
         m_splashCapacity = std::max(drops.size(), 2 * m_splashCapacity);
@@ -38,9 +38,9 @@ void Renderer::uploadSplashDrops(std::span<const SplashDrop> drops, const Camera
     const glm::vec3 up(camera.view[0][1], camera.view[1][1], camera.view[2][1]);
     const glm::vec3 sprite(m_def.splash_sprite_scale, camera.projection[1][1], MIN_SPRITE_RADIUS_PX);
     for (GLuint program : {m_splashProgram.id(), m_splashMirrorProgram.id()}) {
-        glProgramUniform3fv(program, 0, 1, &right.x);
-        glProgramUniform3fv(program, 1, 1, &up.x);
-        glProgramUniform3fv(program, 2, 1, &sprite.x);
+        glProgramUniform3fv(program, SPLASH_RIGHT_LOCATION, 1, &right.x);
+        glProgramUniform3fv(program, SPLASH_UP_LOCATION, 1, &up.x);
+        glProgramUniform3fv(program, SPLASH_SPRITE_LOCATION, 1, &sprite.x);
     }
 }
 
@@ -50,7 +50,7 @@ void Renderer::uploadSplashDrops(std::span<const SplashDrop> drops, const Camera
 // accumulated as coverage for the reflection.
 void Renderer::drawSplashDrops(View view) {
     if (m_splashCount == 0) return;
-    glBindBufferBase(GL_UNIFORM_BUFFER, FRAME_BINDING, m_frameUniforms[view].id());
+    glBindBufferBase(GL_UNIFORM_BUFFER, FRAME_BLOCK, m_frameUniforms[view].id());
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDepthMask(GL_FALSE);
@@ -65,7 +65,7 @@ void Renderer::drawSplashDrops(View view) {
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glDisable(GL_BLEND);
     glDepthMask(GL_TRUE);
-    glBindBufferBase(GL_UNIFORM_BUFFER, FRAME_BINDING, m_frameUniforms[MAIN_VIEW].id());
+    glBindBufferBase(GL_UNIFORM_BUFFER, FRAME_BLOCK, m_frameUniforms[MAIN_VIEW].id());
 }
 
 void Renderer::splashPass() {
