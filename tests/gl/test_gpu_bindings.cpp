@@ -141,8 +141,9 @@ void checkProgram(const std::string& label, GLuint program, std::set<std::string
 }
 
 // A frame that builds every program: FFT layers, ripples and a foam map, an object across the
-// surface (both object programs), splash drops (both sprite programs), FXAA below scale 1.
-gfx::Renderer& renderEverything(gfx::Renderer& renderer, const ocean::OceanTextures& textures) {
+// surface (both object programs), splash drops (both sprite programs), FXAA below scale 1; with
+// the eye at `eyeHeight` (m; below the surface: the water's underwater variant).
+void renderEverything(gfx::Renderer& renderer, const ocean::OceanTextures& textures, float eyeHeight) {
     static std::vector<float> ripples(16 * 16, 0.01f), foam(8 * 8, 0.5f);
     gfx::WaterView water;
     water.displacement = &textures.displacement();
@@ -156,7 +157,7 @@ gfx::Renderer& renderEverything(gfx::Renderer& renderer, const ocean::OceanTextu
     water.foam = foam.data();
     water.foamCells = 8;
     gfx::CameraView camera;
-    camera.position = glm::vec3(0.0f, 5.0f, 10.0f);
+    camera.position = glm::vec3(0.0f, eyeHeight, 10.0f);
     camera.view = glm::lookAt(camera.position, glm::vec3(0.0f), glm::vec3(0.0f, 1.0f, 0.0f));
     camera.projection = glm::perspective(1.0f, 16.0f / 9.0f, 0.1f, 2000.0f);
     gfx::ObjectDraw ship;  // 8 m across the surface: cut per vertex in the reflection and refraction
@@ -166,7 +167,6 @@ gfx::Renderer& renderEverything(gfx::Renderer& renderer, const ocean::OceanTextu
     ball.model = glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(3.0f, 0.0f, 0.0f)), glm::vec3(0.5f));
     const std::vector<gfx::SplashDrop> drops = {glm::vec4(0.0f, 1.0f, 0.0f, 0.05f)};
     renderer.render(camera, water, {ship, ball}, 0.0, {160, 90}, drops);
-    return renderer;
 }
 
 } // namespace
@@ -179,11 +179,12 @@ TEST_CASE("every program's bindings, locations and std140 offsets are those of c
     def.resolution_scale = 0.5f;
     gfx::Renderer renderer(def);
     const ocean::OceanTextures textures(16, 2);
-    renderEverything(renderer, textures);
+    renderEverything(renderer, textures, 5.0f);
+    renderEverything(renderer, textures, -3.0f);  // a second water variant
     std::set<std::string> seen;
     size_t programs = 0;
     for (const auto& [label, program] : renderer.programs()) checkProgram(label, program, seen), ++programs;
-    CHECK(programs == 11);  // sky bake, sky, one water variant, foam bake, 2 object, 2 splash, upscale, 2 FXAA
+    CHECK(programs == 12);  // sky bake, sky, two water variants, foam bake, 2 object, 2 splash, upscale, 2 FXAA
     for (const char* file : {"ocean_spectrum.comp", "ocean_fft.comp", "ocean_unpack.comp"}) {
         const gfx::Program program = gfx::loadProgram(file, {file});
         checkProgram(file, program.id(), seen);
