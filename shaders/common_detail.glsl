@@ -1,6 +1,8 @@
 // The water's detail map (gfx::makeDetailMap, RGBA8: a software rasteriser filters 8-bit
 // texels on its fast path) and the persistent foam's bubble pattern made from it.
-layout(binding = 6) uniform sampler2D u_detail;  // rg DU/DV stored as 0.5 + 0.5·(du, dv), b foam streaks
+#include "common_bindings.glsl"
+
+layout(binding = DETAIL_UNIT) uniform sampler2D u_detail;  // rg DU/DV stored as 0.5 + 0.5·(du, dv), b foam streaks
 
 // (du, dv) ∈ [−1, 1]² and the foam streaks ∈ [0, 1] of a detail map lookup.
 vec3 decodeDetail(vec4 texel) { return vec3(texel.xy * 2.0 - 1.0, texel.b); }

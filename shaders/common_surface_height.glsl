@@ -8,10 +8,10 @@ vec3 surfaceDisplacement(vec2 rest, float t) {
     vec3 offset;
     vec2 slope;
     gerstner(rest, t, 0.0, offset, slope);
-    int cascades = int(u_gridParams.z);
+    int cascades = int(water.gridParams.z);
     for (int c = 0; c < cascades; ++c) {
         vec4 d = cascadeWeight(rest, c) * textureLod(u_displacement, cascadeCoord(rest, c), 0.0);
-        offset += vec3(u_waterParams.x * d.x, d.y, u_waterParams.x * d.z);
+        offset += vec3(water.waterParams.x * d.x, d.y, water.waterParams.x * d.z);
     }
     return offset;
 }

@@ -1,36 +1,26 @@
 // The composite water surface (SPEC §2.3): Gerstner waves (analytic) + FFT cascades
-// (textures) + ripples, with normals added in slope form. Mirror: gfx::WaterUniforms.
-layout(std140, binding = 1) uniform WaterUniforms {
-    vec4 u_corner[4];          // projected grid corners, homogeneous (x, 0, z, w)
-    vec4 u_cascadeSize;        // tile side of each cascade (m); unused cascades 0
-    vec4 u_waterParams;        // x λ (choppiness sign included), y gravity, z Gerstner wave count, w smallest w (a guard)
-    vec4 u_gridParams;         // x grid resolution, y grid reach from the eye (m), z cascade count, w FFT resolution N
-    vec4 u_rippleParams;       // xy world origin of cell (0, 0) (m), z cell size (m), w cells per side (0: none)
-    vec4 u_foamParams;         // foam map: xy world origin of cell (0, 0) (m), z cell size (m), w cells per side (0: none)
-    vec4 u_cascadeFade;        // per cascade: eye distance (m) where its fade begins
-    vec4 u_cascadeFadeEnd;     // per cascade: eye distance (m) past which it is gone; 0: never fades
-    vec4 u_farFade;            // x 1: Gerstner waves fade where the grid is too sparse for them (0: exact)
-    vec4 u_gerstner[32];       // (kx, kz, amplitude, phase) per wave
-};
+// (textures) + ripples, with normals added in slope form. The parameters: WaterUniforms
+// (common_bindings.glsl).
+#include "common_bindings.glsl"
 
 // The water program is compiled per configuration (gfx::WaterVariant defines WATER_VARIANT and
 // these as constants); other programs read them from the uniforms.
 #ifndef WATER_VARIANT
-#define WATER_CASCADES int(u_gridParams.z)
-#define WATER_RIPPLES (u_rippleParams.w > 0.0)
-#define WATER_FOAM_MAP (u_foamParams.w > 0.0)
+#define WATER_CASCADES int(water.gridParams.z)
+#define WATER_RIPPLES (water.rippleParams.w > 0.0)
+#define WATER_FOAM_MAP (water.foamParams.w > 0.0)
 #endif
 
-layout(binding = 0) uniform sampler2DArray u_displacement;  // layer c: (Dx, h, Dz, J)
-layout(binding = 1) uniform sampler2DArray u_slopes;        // layer c: (dh/dx, dh/dz, J, 0)
-layout(binding = 2) uniform sampler2D u_ripples;            // ripple heights Vh(t) (m), 0 outside
-layout(binding = 8) uniform sampler2D u_foamMap;            // persistent foam coverage [0, 1], 0 outside
-layout(binding = 9) uniform sampler2D u_rippleSlopes;       // ripple (dh/dx, dh/dz) per cell, one cell of margin round the patch
+layout(binding = DISPLACEMENT_UNIT) uniform sampler2DArray u_displacement;  // layer c: (Dx, h, Dz, J)
+layout(binding = SLOPES_UNIT) uniform sampler2DArray u_slopes;        // layer c: (dh/dx, dh/dz, J, 0)
+layout(binding = RIPPLES_UNIT) uniform sampler2D u_ripples;            // ripple heights Vh(t) (m), 0 outside
+layout(binding = FOAM_UNIT) uniform sampler2D u_foamMap;            // persistent foam coverage [0, 1], 0 outside
+layout(binding = RIPPLE_SLOPES_UNIT) uniform sampler2D u_rippleSlopes;       // ripple (dh/dx, dh/dz) per cell, one cell of margin round the patch
 
 // Ripple height at world (x, z) (bilinear between cell centres; 0 outside the patch).
 float rippleHeight(vec2 world) {
     if (!WATER_RIPPLES) return 0.0;
-    vec2 uv = ((world - u_rippleParams.xy) / u_rippleParams.z + 0.5) / u_rippleParams.w;
+    vec2 uv = ((world - water.rippleParams.xy) / water.rippleParams.z + 0.5) / water.rippleParams.w;
     return textureLod(u_ripples, uv, 0.0).r;
 }
 
@@ -38,16 +28,16 @@ float rippleHeight(vec2 world) {
 // faded out over the outer tenth of the map so that a map following a ship leaves no straight edge.
 float foamCoverage(vec2 world) {
     if (!WATER_FOAM_MAP) return 0.0;
-    vec2 cell = (world - u_foamParams.xy) / u_foamParams.z;
-    vec2 fromEdge = min(cell + 0.5, u_foamParams.w - 0.5 - cell);
-    float fade = smoothstep(0.0, 0.1 * u_foamParams.w, min(fromEdge.x, fromEdge.y));
-    return fade * textureLod(u_foamMap, (cell + 0.5) / u_foamParams.w, 0.0).r;
+    vec2 cell = (world - water.foamParams.xy) / water.foamParams.z;
+    vec2 fromEdge = min(cell + 0.5, water.foamParams.w - 0.5 - cell);
+    float fade = smoothstep(0.0, 0.1 * water.foamParams.w, min(fromEdge.x, fromEdge.y));
+    return fade * textureLod(u_foamMap, (cell + 0.5) / water.foamParams.w, 0.0).r;
 }
 
 // True inside the ripple patch (plus one cell).
 bool inRipplePatch(vec2 world) {
-    vec2 cell = (world - u_rippleParams.xy) / u_rippleParams.z;
-    return WATER_RIPPLES && all(greaterThan(cell, vec2(-1.0))) && all(lessThan(cell, vec2(u_rippleParams.w)));
+    vec2 cell = (world - water.rippleParams.xy) / water.rippleParams.z;
+    return WATER_RIPPLES && all(greaterThan(cell, vec2(-1.0))) && all(lessThan(cell, vec2(water.rippleParams.w)));
 }
 
 // Ripple slope (dh/dx, dh/dz) at world (x, z): central differences over one cell of the
@@ -57,19 +47,19 @@ bool inRipplePatch(vec2 world) {
 vec2 rippleSlope(vec2 world) {
     if (!inRipplePatch(world)) return vec2(0.0);
 #ifdef WATER_FULL_QUALITY
-    float h = u_rippleParams.z;
+    float h = water.rippleParams.z;
     return vec2(rippleHeight(world + vec2(h, 0.0)) - rippleHeight(world - vec2(h, 0.0)),
                 rippleHeight(world + vec2(0.0, h)) - rippleHeight(world - vec2(0.0, h))) / (2.0 * h);
 #else
-    vec2 cell = (world - u_rippleParams.xy) / u_rippleParams.z;
-    return textureLod(u_rippleSlopes, (cell + 1.5) / (u_rippleParams.w + 2.0), 0.0).xy;
+    vec2 cell = (world - water.rippleParams.xy) / water.rippleParams.z;
+    return textureLod(u_rippleSlopes, (cell + 1.5) / (water.rippleParams.w + 2.0), 0.0).xy;
 #endif
 }
 
 // The projected grid point (u, v): homogeneous bilinear interpolation, w clamped (seed 000).
 vec2 gridPoint(vec2 uv) {
-    vec4 p = mix(mix(u_corner[0], u_corner[1], uv.x), mix(u_corner[2], u_corner[3], uv.x), uv.y);
-    return p.xz / max(p.w, u_waterParams.w);
+    vec4 p = mix(mix(water.corner[0], water.corner[1], uv.x), mix(water.corner[2], water.corner[3], uv.x), uv.y);
+    return p.xz / max(p.w, water.waterParams.w);
 }
 
 // Gerstner waves at rest point (α, β), time t (SPEC §2.2), in one pass over the waves:
@@ -81,11 +71,11 @@ vec2 gridPoint(vec2 uv) {
 void gerstner(vec2 rest, float t, float spacing, out vec3 offset, out vec2 slope) {
     offset = vec3(0.0);
     float axx = 0.0, axz = 0.0, azz = 0.0, sx = 0.0, sz = 0.0;
-    int count = int(u_waterParams.z);
+    int count = int(water.waterParams.z);
     for (int m = 0; m < count; ++m) {
-        vec4 w = u_gerstner[m];
+        vec4 w = water.gerstner[m];
         float k = length(w.xy);
-        float theta = dot(w.xy, rest) - sqrt(u_waterParams.y * k) * t - w.w;
+        float theta = dot(w.xy, rest) - sqrt(water.waterParams.y * k) * t - w.w;
         float c = cos(theta), s = sin(theta);
         float wavelength = 6.2831853 / k;
         float a = w.z * (1.0 - smoothstep(wavelength / 6.0, wavelength / 3.0, spacing));
@@ -106,13 +96,13 @@ void gerstner(vec2 rest, float t, float spacing, out vec3 offset, out vec2 slope
 
 // Texture coordinate of world rest point p in cascade c (texel i sits at X = i·L/N).
 vec3 cascadeCoord(vec2 p, int c) {
-    return vec3(p / u_cascadeSize[c] + 0.5 / u_gridParams.w, float(c));
+    return vec3(p / water.cascadeSize[c] + 0.5 / water.gridParams.w, float(c));
 }
 
 // Weight of cascade c at rest point p: 1 near the eye, fading to 0 between the cascade's two
 // fade distances, so far away no tile repeats in a regular pattern (the Gerstner waves, which
 // never repeat, carry the far field). Needs common_frame.glsl for the eye.
 float cascadeWeight(vec2 p, int c) {
-    if (u_cascadeFadeEnd[c] <= 0.0) return 1.0;
-    return 1.0 - smoothstep(u_cascadeFade[c], u_cascadeFadeEnd[c], length(p - u_cameraPositionTime.xz));
+    if (water.cascadeFadeEnd[c] <= 0.0) return 1.0;
+    return 1.0 - smoothstep(water.cascadeFade[c], water.cascadeFadeEnd[c], length(p - frame.cameraPositionTime.xz));
 }

@@ -7,13 +7,13 @@
 in vec3 v_world;
 in vec3 v_normal;
 in vec3 v_color;
-layout(location = 1) uniform vec3 u_tint;
+layout(location = OBJECT_TINT_LOCATION) uniform vec3 u_tint;
 out vec4 o_color;
 
 void main() {
     vec3 n = normalize(v_normal);
-    vec3 sun = u_sunDirectionFresnel.xyz;
-    vec3 toEye = u_cameraPositionTime.xyz - v_world;
+    vec3 sun = frame.sunDirectionFresnel.xyz;
+    vec3 toEye = frame.cameraPositionTime.xyz - v_world;
     float dist = length(toEye);
     vec3 v = toEye / dist;
     vec3 ambient = mix(vec3(0.10, 0.14, 0.18) * daylight(sun), skyRadiance(vec3(0.0, 1.0, 0.0), sun) * 0.45, 0.5 + 0.5 * n.y);
@@ -29,5 +29,5 @@ void main() {
     // In the refraction target alpha is 1 / the eye depth (1/m; cleared to 0: nothing). Filtered,
     // it blends as window depth does (an affine function of it), and the water pass reads what
     // lies below and how deep it lies in one lookup.
-    if (u_viewport.z > 2.5) o_color.a = gl_FragCoord.w;
+    if (frame.viewport.z > 2.5) o_color.a = gl_FragCoord.w;
 }

@@ -9,12 +9,12 @@
 #include "common_water.glsl"
 #include "common_surface_height.glsl"
 
-layout(location = 0) in vec3 a_position;
-layout(location = 1) in vec3 a_normal;
-layout(location = 2) in vec3 a_color;
-layout(location = 0) uniform mat4 u_model;
+layout(location = MESH_POSITION_ATTRIB) in vec3 a_position;
+layout(location = MESH_NORMAL_ATTRIB) in vec3 a_normal;
+layout(location = MESH_COLOR_ATTRIB) in vec3 a_color;
+layout(location = OBJECT_MODEL_LOCATION) uniform mat4 u_model;
 // The surface's tangent plane under the object's origin: height x (m), slope (y, z) = (dh/dx, dh/dz).
-layout(location = 2) uniform vec3 u_surfacePlane;
+layout(location = OBJECT_SURFACE_PLANE_LOCATION) uniform vec3 u_surfacePlane;
 out vec3 v_world;
 out vec3 v_normal;
 out vec3 v_color;
@@ -26,14 +26,14 @@ void main() {
     v_color = a_color;
     vec3 p = world.xyz;
     gl_ClipDistance[0] = 1.0;
-    if (u_surfaceClip.x != 0.0) {
+    if (frame.surfaceClip.x != 0.0) {
 #ifdef SURFACE_PER_VERTEX
-        float h = surfaceHeight(p.xz, u_cameraPositionTime.w);
+        float h = surfaceHeight(p.xz, frame.cameraPositionTime.w);
 #else
         float h = u_surfacePlane.x + dot(u_surfacePlane.yz, p.xz - u_model[3].xz);
 #endif
-        gl_ClipDistance[0] = u_surfaceClip.x * (p.y - h) + u_surfaceClip.y;
-        if (u_surfaceClip.z > 0.5) p.y = 2.0 * h - p.y;
+        gl_ClipDistance[0] = frame.surfaceClip.x * (p.y - h) + frame.surfaceClip.y;
+        if (frame.surfaceClip.z > 0.5) p.y = 2.0 * h - p.y;
     }
-    gl_Position = u_viewProjection * vec4(p, 1.0);
+    gl_Position = frame.viewProjection * vec4(p, 1.0);
 }

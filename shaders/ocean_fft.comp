@@ -1,4 +1,5 @@
 #version 450 core
+#include "common_bindings.glsl"
 // Ocean inverse FFT (SPEC §2.1 eq. 1; seed 000 §3.3: radix-2 decimation in time on bit-reversed
 // input; seed 003: compute shaders). One workgroup transforms one line of N complex values in
 // place, X[j] = Σ_k x[k]·exp(+2πi·jk/N) (unnormalised, FFTW_BACKWARD): a bit-reversed load
@@ -8,13 +9,13 @@
 layout(local_size_x = 64) in;
 
 // Per cascade four N² complex arrays [transform][row][col]; read and written in place.
-layout(std430, binding = 3) buffer Spectra { vec2 b_spectra[]; };
+layout(std430, binding = OCEAN_SPECTRA_BUFFER) buffer Spectra { vec2 b_spectra[]; };
 // exp(+2πi·k/N), k ∈ [0, N/2), computed in double on the CPU.
-layout(std430, binding = 4) readonly buffer Twiddles { vec2 b_twiddles[]; };
+layout(std430, binding = OCEAN_TWIDDLES_BUFFER) readonly buffer Twiddles { vec2 b_twiddles[]; };
 
-layout(location = 0) uniform int u_n;       // N, power of two in [4, 2048]
-layout(location = 1) uniform int u_log2n;   // log2 N
-layout(location = 2) uniform int u_columns; // 0: transform rows, 1: columns
+layout(location = OCEAN_N_LOCATION) uniform int u_n;       // N, power of two in [4, 2048]
+layout(location = OCEAN_LOG2N_LOCATION) uniform int u_log2n;   // log2 N
+layout(location = OCEAN_COLUMNS_LOCATION) uniform int u_columns; // 0: transform rows, 1: columns
 
 // One line of complex floats: 16 KiB at N = 2048, half of llvmpipe's 32 KiB limit (and the
 // GL minimum), so any conforming GPU runs every N.

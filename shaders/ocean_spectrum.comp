@@ -1,4 +1,5 @@
 #version 450 core
+#include "common_bindings.glsl"
 // Ocean synthesis (SPEC §2.1 eq. 2, 6, 7, 9): h̃(K,t) per mode and the four packed spectra the
 // inverse FFT turns into (h, ∂Dx/∂z), (Dx, Dz), (∂h/∂x, ∂h/∂z), (∂Dx/∂x, ∂Dz/∂z). GPU twin
 // of CascadeSpectrum::synthesize (engine/ocean/spectrum.cpp): same coefficients, same phase.
@@ -6,21 +7,21 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 
 // Re h̃ = cosRe·cos ωt + sinRe·sin ωt, Im h̃ = cosIm·cos ωt + sinIm·sin ωt; FFT order [row][col].
-layout(std430, binding = 0) readonly buffer Modes { vec4 b_modes[]; };
+layout(std430, binding = OCEAN_MODES_BUFFER) readonly buffer Modes { vec4 b_modes[]; };
 // ω (rad/s, double) and 1/k (m) on the quarter grid [|m|][|n|], (N/2+1)² per cascade.
 struct QuarterMode {
     double omega;
     float invK;
     float pad;
 };
-layout(std430, binding = 1) readonly buffer Quarter { QuarterMode b_quarter[]; };
+layout(std430, binding = OCEAN_QUARTER_BUFFER) readonly buffer Quarter { QuarterMode b_quarter[]; };
 // 2π·s/L for FFT-order position s: kx of column s, kz of row s; N per cascade.
-layout(std430, binding = 2) readonly buffer WaveNumbers { float b_k[]; };
+layout(std430, binding = OCEAN_WAVE_NUMBERS_BUFFER) readonly buffer WaveNumbers { float b_k[]; };
 // Output: per cascade four N² complex arrays [transform][row][col].
-layout(std430, binding = 3) writeonly buffer Spectra { vec2 b_spectra[]; };
+layout(std430, binding = OCEAN_SPECTRA_BUFFER) writeonly buffer Spectra { vec2 b_spectra[]; };
 
-layout(location = 0) uniform int u_n;        // N
-layout(location = 1) uniform double u_time;  // t, seconds
+layout(location = OCEAN_N_LOCATION) uniform int u_n;        // N
+layout(location = OCEAN_TIME_LOCATION) uniform double u_time;  // t, seconds
 
 const double TWO_PI = 6.283185307179586476925286766559lf;
 const double INV_TWO_PI = 0.15915494309189533576888376337251lf;

@@ -1,4 +1,5 @@
 #version 450 core
+#include "common_bindings.glsl"
 // Ocean maps from the four inverse-transformed packed spectra (SPEC §2.1 eq. 9: f = Re,
 // g = Im) and the foam Jacobian (seed 003 "Future"), as OceanFftCpu's unpack:
 //   displacement = (Dx, h, Dz, J),   slopes = (∂h/∂x, ∂h/∂z, J, 0),
@@ -7,13 +8,13 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 
 // Per cascade four N² complex arrays [transform][row j][col i], after the 2-D inverse FFT.
-layout(std430, binding = 3) readonly buffer Spectra { vec2 b_spectra[]; };
+layout(std430, binding = OCEAN_SPECTRA_BUFFER) readonly buffer Spectra { vec2 b_spectra[]; };
 
-layout(rgba32f, binding = 0) writeonly uniform image2DArray u_displacement;
-layout(rgba32f, binding = 1) writeonly uniform image2DArray u_slopes;
+layout(rgba32f, binding = OCEAN_DISPLACEMENT_IMAGE) writeonly uniform image2DArray u_displacement;
+layout(rgba32f, binding = OCEAN_SLOPES_IMAGE) writeonly uniform image2DArray u_slopes;
 
-layout(location = 0) uniform int u_n;        // N
-layout(location = 1) uniform float u_lambda; // λ = −choppiness
+layout(location = OCEAN_N_LOCATION) uniform int u_n;        // N
+layout(location = OCEAN_LAMBDA_LOCATION) uniform float u_lambda; // λ = −choppiness
 
 void main() {
     int n = u_n;

@@ -1,4 +1,5 @@
 #version 450 core
+#include "common_bindings.glsl"
 // Fast approximate anti-aliasing of the finished (tone-mapped) frame, after Lottes' FXAA 3.11
 // "quality" scheme: find the pixels on a luma edge, the edge's direction and its two ends
 // along it, and blend each pixel toward its neighbour across the edge by how far it sits
@@ -11,9 +12,9 @@
 // pixels are on one) and marks them at depth 0, discarding the others; compiled without it,
 // drawn at depth 1 with the test LEQUAL, it walks the edges for the pixels left.
 in vec2 v_ndc;
-layout(binding = 0) uniform sampler2D u_source;  // rgb display-encoded colour, a its luma; linear filtered
-layout(location = 0) uniform vec2 u_texel;       // 1 / source size (uv per source pixel)
-layout(location = 1) uniform float u_sharpness;  // [0, 1]: 0 none (drawn at the output size), 1 the most
+layout(binding = POST_SOURCE_UNIT) uniform sampler2D u_source;  // rgb display-encoded colour, a its luma; linear filtered
+layout(location = FXAA_TEXEL_LOCATION) uniform vec2 u_texel;       // 1 / source size (uv per source pixel)
+layout(location = FXAA_SHARPNESS_LOCATION) uniform float u_sharpness;  // [0, 1]: 0 none (drawn at the output size), 1 the most
 out vec4 o_color;
 
 // Contrast below max(EDGE_MIN, EDGE_RELATIVE · brightest) is not an edge: most pixels stop there.

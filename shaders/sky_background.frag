@@ -4,12 +4,12 @@
 #include "common_sky.glsl"
 
 in vec2 v_ndc;
-layout(binding = 3) uniform samplerCube u_sky;
+layout(binding = SKY_UNIT) uniform samplerCube u_sky;
 out vec4 o_color;
 
 void main() {
     vec3 dir = viewRay(v_ndc);
-    vec3 sun = u_sunDirectionFresnel.xyz;
+    vec3 sun = frame.sunDirectionFresnel.xyz;
     if (eyeUnderwater()) {
         // Brighter toward the surface, darker toward the deep.
         o_color = finalColor(waterBodyColor() * (0.6 + 0.5 * dir.y));

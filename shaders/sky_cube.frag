@@ -4,10 +4,10 @@
 #include "common_sky.glsl"
 
 in vec2 v_ndc;
-layout(location = 0) uniform mat3 u_face;  // columns: world axes of face s, face t, face normal
+layout(location = SKY_FACE_LOCATION) uniform mat3 u_face;  // columns: world axes of face s, face t, face normal
 out vec4 o_color;
 
 void main() {
     vec3 dir = normalize(u_face * vec3(v_ndc, 1.0));
-    o_color = vec4(skyRadiance(dir, u_sunDirectionFresnel.xyz), 1.0);
+    o_color = vec4(skyRadiance(dir, frame.sunDirectionFresnel.xyz), 1.0);
 }

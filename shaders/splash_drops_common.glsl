@@ -12,8 +12,8 @@
 #include "common_surface_height.glsl"
 #endif
 
-layout(location = 0) in vec4 a_drop;
-layout(location = 2) uniform vec3 u_sprite;  // x sprite radius / drop radius, y projection[1][1], z smallest sprite radius (px)
+layout(location = SPLASH_DROP_ATTRIB) in vec4 a_drop;
+layout(location = SPLASH_SPRITE_LOCATION) uniform vec3 u_sprite;  // x sprite radius / drop radius, y projection[1][1], z smallest sprite radius (px)
 out vec3 v_centre;    // the (mirrored) drop centre, world m
 out float v_opacity;  // the area ratio of a sprite enlarged to the smallest size, else 1
 
@@ -25,13 +25,13 @@ void main() {
     v_centre = c;
     v_opacity = 0.0;
 #ifdef MIRROR
-    float h = surfaceHeight(c.xz, u_cameraPositionTime.w);
+    float h = surfaceHeight(c.xz, frame.cameraPositionTime.w);
     if (c.y < h) return;
     c.y = 2.0 * h - c.y;
 #endif
-    vec4 clip = u_viewProjection * vec4(c, 1.0);
-    if (clip.w <= u_depthParams.x) return;  // at or behind the eye
-    float radiusPx = r * u_sprite.y * 0.5 * u_viewport.y / clip.w;
+    vec4 clip = frame.viewProjection * vec4(c, 1.0);
+    if (clip.w <= frame.depthParams.x) return;  // at or behind the eye
+    float radiusPx = r * u_sprite.y * 0.5 * frame.viewport.y / clip.w;
     float grow = max(u_sprite.z / max(radiusPx, 1e-6), 1.0);
     v_opacity = 1.0 / (grow * grow);
     v_centre = c;

@@ -24,11 +24,11 @@ in vec2 v_rest;
 in vec2 v_gerstnerSlope;
 in vec3 v_haze;
 in vec4 v_cascadeWeight;
-layout(binding = 3) uniform samplerCube u_sky;
-layout(binding = 4) uniform sampler2D u_reflection;       // rgb linear radiance, a coverage
-layout(binding = 5) uniform sampler2D u_refraction;       // rgb linear radiance, a 1 / eye depth (1/m) of what lies below (0: nothing)
-layout(binding = 7) uniform sampler2D u_reflectionDepth;  // window depth of the mirrored objects
-layout(binding = 10) uniform sampler2D u_foamPattern;     // foamPattern() baked over its repeat, RGBA8 (du, dv as 0.5 + 0.5·x)
+layout(binding = SKY_UNIT) uniform samplerCube u_sky;
+layout(binding = REFLECTION_UNIT) uniform sampler2D u_reflection;       // rgb linear radiance, a coverage
+layout(binding = REFRACTION_UNIT) uniform sampler2D u_refraction;       // rgb linear radiance, a 1 / eye depth (1/m) of what lies below (0: nothing)
+layout(binding = REFLECTION_DEPTH_UNIT) uniform sampler2D u_reflectionDepth;  // window depth of the mirrored objects
+layout(binding = FOAM_PATTERN_UNIT) uniform sampler2D u_foamPattern;     // foamPattern() baked over its repeat, RGBA8 (du, dv as 0.5 + 0.5·x)
 out vec4 o_color;
 
 const float DETAIL_TILE = 24.0;            // m per repeat of the detail map
@@ -44,15 +44,15 @@ const float FOAM_WARP = 3.0;               // foam map cells the lookup is pushe
 // the contact line into a zig-zag of object and sky (reflection) or body colour (refraction).
 const float DISTORTION_RAMP_M = 2.0;
 
-// Eye distance of a window depth (perspective projection, near/far in u_depthParams).
+// Eye distance of a window depth (perspective projection, near/far in frame.depthParams).
 float eyeDepth(float windowZ) {
-    float n = u_depthParams.x, f = u_depthParams.y;
+    float n = frame.depthParams.x, f = frame.depthParams.y;
     float ndc = 2.0 * windowZ - 1.0;
     return 2.0 * n * f / (f + n - ndc * (f - n));
 }
 
 void main() {
-    float t = u_cameraPositionTime.w;
+    float t = frame.cameraPositionTime.w;
     vec2 ripple = rippleSlope(v_world.xz);
     vec2 slope = v_gerstnerSlope + ripple;
     float jacobian = 1.0;
@@ -69,11 +69,11 @@ void main() {
         jacobian = min(jacobian, mix(1.0, s.z, weight));
     }
     vec3 n = normalize(vec3(-slope.x, 1.0, -slope.y));
-    vec3 eye = u_cameraPositionTime.xyz;
+    vec3 eye = frame.cameraPositionTime.xyz;
     vec3 toEye = eye - v_world;
     float dist = length(toEye);
     vec3 v = toEye / dist;
-    vec3 sun = u_sunDirectionFresnel.xyz;
+    vec3 sun = frame.sunDirectionFresnel.xyz;
     const bool exact = WATER_EXACT_FRESNEL;
     vec3 body = waterBodyColor();
     vec3 r = reflect(-v, n);
@@ -96,9 +96,9 @@ void main() {
     vec3 sky = skyRadiance(normalize(r), sun);
 
     // --- lookups into the targets, offset by the normal and the scrolling DU/DV map
-    vec2 screen = gl_FragCoord.xy / u_viewport.xy;
+    vec2 screen = gl_FragCoord.xy / frame.viewport.xy;
     vec3 detail = decodeDetail(texture(u_detail, v_world.xz / DETAIL_TILE + DETAIL_DRIFT * t));
-    vec2 offset = u_shading.x * detail.xy + u_shading.y * n.xz;
+    vec2 offset = frame.shading.x * detail.xy + frame.shading.y * n.xz;
     float surfaceDepth = eyeDepth(gl_FragCoord.z);
 
     float cosV = max(dot(v, n), 0.0);
@@ -124,12 +124,12 @@ void main() {
         // of a hull above the waterline, kept by the plane's overlap): then what lies straight behind.
         if (depth >= 0.0) below = shifted;
         else depth = behind;
-        refraction = mix(body, below.rgb, exp(-max(depth, 0.0) / u_depthParams.z));
+        refraction = mix(body, below.rgb, exp(-max(depth, 0.0) / frame.depthParams.z));
     }
 
     float F = fresnel(cosV, exact);
     vec3 color = mix(refraction, reflection, F);
-    color += SUN_COLOR * sunTint(sun) * u_shading.z * pow(max(dot(r, sun), 0.0), u_shading.w);
+    color += SUN_COLOR * sunTint(sun) * frame.shading.z * pow(max(dot(r, sun), 0.0), frame.shading.w);
 
     if (WATER_FOAM) {
         float whitecap = smoothstep(0.6, 0.1, jacobian);
@@ -147,7 +147,7 @@ void main() {
 #else
             vec3 bubbles = decodeDetail(texture(u_foamPattern, fuv / FOAM_PATTERN_REPEAT));
 #endif
-            float coverage = foamCoverage(v_world.xz + bubbles.xy * FOAM_WARP * u_foamParams.z);
+            float coverage = foamCoverage(v_world.xz + bubbles.xy * FOAM_WARP * water.foamParams.z);
             // The lace covers about FOAM_DENSE × the coverage of the surface (foamPattern()).
             float pattern = bubbles.z;
             float threshold = 1.0 - FOAM_DENSE * min(coverage, 1.0);

@@ -1,5 +1,6 @@
 // Built-in meshes.
 #include "gfx/mesh.h"
+#include "gfx/gpu_bindings.h"
 
 #include "assets/model.h"
 
@@ -22,9 +23,12 @@ static Mesh upload(const char* label, const std::vector<glm::vec3>& interleaved,
     GLuint vao = m.vao.id();
     glVertexArrayVertexBuffer(vao, 0, m.vertices.id(), 0, 3 * sizeof(glm::vec3));
     glVertexArrayElementBuffer(vao, m.indices.id());
-    for (GLuint a = 0; a < 3; ++a) {
+    // position, normal, colour: consecutive attributes from MESH_POSITION_ATTRIB (shaders/common_bindings.glsl)
+    static_assert(glsl::MESH_NORMAL_ATTRIB == glsl::MESH_POSITION_ATTRIB + 1 && glsl::MESH_COLOR_ATTRIB == glsl::MESH_POSITION_ATTRIB + 2);
+    for (GLuint i = 0; i < 3; ++i) {
+        const GLuint a = GLuint(glsl::MESH_POSITION_ATTRIB) + i;
         glEnableVertexArrayAttrib(vao, a);
-        glVertexArrayAttribFormat(vao, a, 3, GL_FLOAT, GL_FALSE, a * sizeof(glm::vec3));
+        glVertexArrayAttribFormat(vao, a, 3, GL_FLOAT, GL_FALSE, i * sizeof(glm::vec3));
         glVertexArrayAttribBinding(vao, a, 0);
     }
     return m;

@@ -15,7 +15,7 @@ constexpr double BOUND_SCALE = 1.02;
 constexpr double VERTICAL_MARGIN = 0.05;
 constexpr double HORIZONTAL_MARGIN = 0.1;
 
-GridCorners projectedGridCorners(const glm::mat4& viewProjection, const glm::vec3& eye, const ocean::DisplacementBounds& bounds) {
+GridCorners projectedGridCorners(const glm::mat4& viewProjection, const glm::vec3& eye, const SurfaceBounds& bounds) {
     GridCorners out;
     const glm::dmat4 inv = glm::inverse(glm::dmat4(viewProjection));
     const auto unproject = [&](double x, double y, double z) {

@@ -3,8 +3,6 @@
 // plane y = 0, are dense near the camera and sparse toward the horizon. The corners come from
 // a projector that sees every rest point whose displaced surface point can be on screen.
 #pragma once
-#include "ocean/displacement_bounds.h"
-
 #include <array>
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
@@ -12,6 +10,19 @@
 #include <glm/vec4.hpp>
 
 namespace ob::gfx {
+
+/// How far the drawn surface can stand from its rest points (each ≥ 0, m): the grid reaches
+/// this far past the view. The layers' bounds add (the view converts ocean::DisplacementBounds).
+struct SurfaceBounds {
+    float up = 0.0f;          ///< largest rise above y = 0
+    float down = 0.0f;        ///< largest fall below y = 0
+    float horizontal = 0.0f;  ///< largest horizontal move of a point
+
+    SurfaceBounds& operator+=(const SurfaceBounds& o) {
+        up += o.up, down += o.down, horizontal += o.horizontal;
+        return *this;
+    }
+};
 
 /// The four corners of the grid on the plane y = 0, homogeneous (x, 0, z, w), w > 0, scaled
 /// together so the largest w is 1. Order: (u, v) = (0,0), (1,0), (0,1), (1,1); v = 0 is the
@@ -30,7 +41,7 @@ struct GridCorners {
 /// camera's heading: rows are lines across the heading spaced evenly in 1/(distance from an
 /// apex behind the eye), columns are rays from that apex (the camera's own perspective when
 /// the projector can be the camera; the apex moves back when waves reach behind the view).
-GridCorners projectedGridCorners(const glm::mat4& viewProjection, const glm::vec3& eye, const ocean::DisplacementBounds& bounds);
+GridCorners projectedGridCorners(const glm::mat4& viewProjection, const glm::vec3& eye, const SurfaceBounds& bounds);
 
 /// World (x, z) of grid point (u, v) ∈ [0, 1]²: bilinear interpolation of the homogeneous
 /// corners, then the division by w with w clamped from below by `minW` (seed 000: the

@@ -1,27 +1,25 @@
-// The renderer: a short list of passes (Renderer::render runs them in this order).
-//   sky bake   → the analytic daylight sky into a cube map, when the sun moves
-//   reflection → objects above the water surface, mirrored about it (per vertex) → colour + depth target
-//   refraction → objects below the water surface from the camera → colour target (1 / eye depth in alpha)
-//   opaque     → objects from the camera into the framebuffer
-//   water      → the composite surface on a projected grid, shaded from the targets and sky
-//   sky        → the cube map (or underwater fog) where nothing else was drawn
+// The renderer: a short list of passes, each an object that owns its targets and programs;
+// Renderer::render runs them in this order.
+//   sky bake   → the analytic daylight sky into a cube map, when the sun moves      (SkyPass)
+//   reflection → objects above the water surface, mirrored about it (per vertex) → colour + depth target (SurfacePasses)
+//   refraction → objects below the water surface from the camera → colour target (1 / eye depth in alpha) (SurfacePasses)
+//   opaque     → objects from the camera into the framebuffer                        (ObjectPass, MeshCache)
+//   water      → the composite surface on a projected grid, shaded from the targets and sky (WaterPass)
+//   sky        → the cube map (or underwater fog) where nothing else was drawn       (SkyPass)
 //   splash     → splash drops as lit, soft sprites over the frame (depth-tested, blended; the
-//                reflection pass draws them too, mirrored)
+//                reflection pass draws them too, mirrored)                           (SplashPass)
 //   post       → the internal frame to the framebuffer: MSAA resolve, FXAA, upscale (when
-//                resolution_scale < 1); skipped when the frame was drawn into it directly
+//                resolution_scale < 1); skipped when the frame was drawn into it directly (PostPass)
+// Bindings, locations and the uniform blocks: shaders/common_bindings.glsl (gfx/gpu_bindings.h).
 #pragma once
-#include "gfx/gpu_timer.h"
-#include "gfx/handles.h"
-#include "gfx/mesh.h"
-#include "gfx/render_def.h"
-#include "gfx/render_target.h"
-#include "gfx/scene_view.h"
-#include "gfx/projected_grid.h"
+#include "gfx/object_pass.h"
+#include "gfx/post_pass.h"
+#include "gfx/render_frame.h"
+#include "gfx/sky_pass.h"
+#include "gfx/splash_pass.h"
+#include "gfx/surface_passes.h"
+#include "gfx/water_pass.h"
 
-#include <array>
-#include <glm/mat4x4.hpp>
-#include <map>
-#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -32,81 +30,7 @@ namespace ob::gfx {
 /// on a software rasteriser).
 Antialias antialiasMode(Antialias key, bool softwareRenderer);
 
-/// The water layers the surface pass draws (everything optional: absent layers are flat).
-struct WaterView {
-    const Texture* displacement = nullptr;  ///< 2D array, layer per cascade: (Dx, h, Dz, J)
-    const Texture* slopes = nullptr;        ///< 2D array, layer per cascade: (dh/dx, dh/dz, J, 0)
-    int cascades = 0;                       ///< FFT cascades in the textures, [0, 4]
-    int resolution = 1;                     ///< FFT N
-    std::array<float, 4> cascadeSize{};     ///< tile side per cascade (m)
-    float lambda = 0.0f;                    ///< choppy displacement factor λ (X + λ·D)
-    float gravity = 9.81f;                  ///< m/s², Gerstner dispersion
-    std::vector<glm::vec4> gerstner;        ///< (kx, kz, amplitude, phase) per wave, at most 32
-    const float* ripples = nullptr;         ///< ripple heights Vh(t), rippleCells² row-major (z rows), m
-    int rippleCells = 0;                    ///< ripple patch cells per side (0: no ripple layer)
-    glm::vec2 rippleOrigin{0.0f};           ///< world (x, z) of cell (0, 0)'s centre, m
-    float rippleCellSize = 1.0f;            ///< m per cell
-    const float* foam = nullptr;            ///< persistent foam coverage [0, 1], foamCells² row-major (z rows)
-    int foamCells = 0;                      ///< foam map cells per side (0: no foam map)
-    glm::vec2 foamOrigin{0.0f};             ///< world (x, z) of foam cell (0, 0)'s centre, m
-    float foamCellSize = 1.0f;              ///< m per foam cell
-    /// How far the FFT cascades together move a rest point (m; λ included): the projected
-    /// grid reaches this far past the view. Gerstner and ripple bounds the renderer derives.
-    ocean::DisplacementBounds fftBounds;
-};
-
-/// std140 mirror of `WaterUniforms` in shaders/common_water.glsl.
-struct WaterUniforms {
-    glm::vec4 corner[4];
-    glm::vec4 cascadeSize;
-    glm::vec4 waterParams;   ///< λ, gravity, Gerstner wave count, smallest grid w (a guard)
-    glm::vec4 gridParams;    ///< grid resolution, grid reach from the eye (m), cascades, FFT N
-    glm::vec4 rippleParams;  ///< origin x, origin z (m), cell size (m), cells per side (0: none)
-    glm::vec4 foamParams;    ///< foam map: origin x, origin z (m), cell size (m), cells per side (0: none)
-    glm::vec4 cascadeFade;     ///< per cascade: eye distance (m) where it starts to fade out
-    glm::vec4 cascadeFadeEnd;  ///< per cascade: eye distance (m) past which it is gone (0: never fades)
-    glm::vec4 farFade;         ///< x 1 = Gerstner waves fade where the grid is too sparse for them, 0 = exact
-    glm::vec4 gerstner[32];
-};
-static_assert(sizeof(WaterUniforms) == 16 * (4 + 8 + 32), "WaterUniforms must match std140 layout");
-constexpr int MAX_GERSTNER_WAVES = 32;
-
-/// std140 mirror of `FrameUniforms` in shaders/common_frame.glsl: one copy per view
-/// (camera, mirrored camera, refraction camera).
-struct FrameUniforms {
-    glm::mat4 viewProjection;
-    glm::mat4 inverseViewProjection;
-    glm::vec4 cameraPositionTime;   ///< xyz eye (m), w simulated time (s)
-    glm::vec4 sunDirectionFresnel;  ///< xyz toward the sun (unit), w 0 = Schlick, 1 = exact
-    glm::vec4 waterColorExposure;   ///< rgb deep water colour, w exposure
-    glm::vec4 viewport;             ///< xy framebuffer size (px), z output: 0 display colour, 1 linear radiance + coverage (reflection), 2 display colour + luma in alpha (FXAA), 3 linear radiance + 1 / eye depth (refraction); w 1 = eye under water
-    glm::vec4 surfaceClip;          ///< side s (±1; 0 keeps all), overlap m (m), 1 = mirror, 0: objects keep s·(y − surface height) + m ≥ 0 and, mirrored, y → 2·surface − y
-    glm::vec4 depthParams;          ///< near, far (m), water clarity (m), sky mip count
-    glm::vec4 shading;              ///< DU/DV strength, normal distortion, glitter, glitter shininess
-    glm::vec4 switches;             ///< reflections, refractions, foam (1 on, 0 off), 0
-};
-static_assert(sizeof(FrameUniforms) == 2 * 64 + 8 * 16, "FrameUniforms must match std140 layout");
-
-/// What the water program is compiled for (`#define`s of shaders/water_surface.frag): each a
-/// constant in its code, so the compiler drops the terms that are off and unrolls the cascades'
-/// loop. A software rasteriser runs both sides of a branch on a uniform, and a loop over a
-/// uniform count cost it a sixth of the water pass. One program per variant met, kept.
-struct WaterVariant {
-    int cascades = 0;          ///< FFT cascades sampled (0: no layers)
-    bool ripples = false;      ///< a ripple patch is uploaded
-    bool foamMap = false;      ///< a persistent foam map is uploaded
-    bool underwater = false;   ///< the eye is below the surface
-    bool exactFresnel = false; ///< [render] fresnel = "exact" (else Schlick)
-    bool reflections = true, refractions = true, foam = true;  ///< [render] switches
-    bool fullQuality = false;  ///< [render] water_full_quality: every term per pixel, the reference
-    /// The lines put after the shaders' #version line.
-    std::string defines() const;
-};
-
-/// GPU ms of each pass in the latest resolved frame (pass name → ms).
-using PassTimes = std::vector<std::pair<const char*, double>>;
-
-/// Owns the programs, targets and buffers of every pass.
+/// Orders the passes of a frame; the passes own the programs, targets and buffers.
 class Renderer {
 public:
     explicit Renderer(const RenderDef& def);
@@ -115,93 +39,27 @@ public:
     void render(const CameraView& camera, const WaterView& water, const std::vector<ObjectDraw>& objects, double time,
                 glm::ivec2 size, std::span<const SplashDrop> drops = {});
     /// GPU ms per pass of the latest frame whose timer queries resolved (empty until one does).
-    PassTimes takePassTimes();
-    RenderDef& def() { return m_def; }
+    PassTimes takePassTimes() { return m_frame.timers.take(); }
+    RenderDef& def() { return m_frame.def; }
     /// The reflection and refraction targets of the latest frame (for tests and debug views).
-    const RenderTarget& reflectionTarget() const { return m_reflection; }
-    const RenderTarget& refractionTarget() const { return m_refraction; }
+    const RenderTarget& reflectionTarget() const { return m_surfaces.reflection(); }
+    const RenderTarget& refractionTarget() const { return m_surfaces.refraction(); }
     /// The detail map and the foam pattern baked from it (RGBA8, for tests).
-    const Texture& detailMap() const { return m_detailMap; }
-    const Texture& foamPatternMap() const { return m_foamPattern; }
+    const Texture& detailMap() const { return m_water.detail().detailMap(); }
+    const Texture& foamPatternMap() const { return m_water.detail().foamPattern(); }
+    /// Every program the passes have built so far, by label (the water's variants as met).
+    ProgramList programs() const;
 
 private:
-    enum View { MAIN_VIEW, REFLECTION_VIEW, REFRACTION_VIEW, VIEW_COUNT };
-    enum Pass { SKY_BAKE_PASS, REFLECTION_PASS, REFRACTION_PASS, OPAQUE_PASS, WATER_PASS, SKY_PASS, SPLASH_PASS, POST_PASS, PASS_COUNT };
+    void beginFrame(const CameraView& camera, double time, glm::ivec2 size);
 
-    void skyBakePass();  // in: sun direction; out: m_skyCube (linear radiance, mipmapped)
-    void reflectionPass(const std::vector<ObjectDraw>& objects);  // in: mirrored view, objects; out: m_reflection colour + depth
-    void refractionPass(const std::vector<ObjectDraw>& objects);  // in: camera view, objects; out: m_refraction colour, 1 / eye depth in alpha
-    void opaquePass(const std::vector<ObjectDraw>& objects);      // in: camera view, objects; out: framebuffer colour, depth
-    void prepareWater(const CameraView& camera, const WaterView& water, int internalHeight);  // out: grid, water uniforms, layer textures bound
-    void waterPass(const CameraView& camera);  // in: water layers, targets, sky; out: framebuffer
-    void skyPass();  // in: sky cube, depth; out: colour where nothing was drawn
-    void splashPass();  // in: camera view, uploaded drops, depth; out: framebuffer colour (blended)
-    void postPass(glm::ivec2 size);  // in: m_multisampled or m_internal; out: framebuffer of `size`
-
-    // Splash drops and foam (renderer_effects.cpp).
-    void uploadSplashDrops(std::span<const SplashDrop> drops, const CameraView& camera);  // out: m_splashBuffer, sprite uniforms
-    void drawSplashDrops(View view);  // the uploaded drops as sprites into the bound target (MAIN_VIEW or REFLECTION_VIEW)
-    void uploadFoam(const WaterView& water, WaterUniforms& u);  // out: m_foamTexture, u.foamParams
-
-    void drawObjects(const std::vector<ObjectDraw>& objects, View view);
-    // A glTF model's mesh and its far twin, if one lies beside it.
-    struct ModelMeshes {
-        Mesh near;
-        std::optional<Mesh> far;
-    };
-    const ModelMeshes& meshesFor(const std::string& file);
-    const Mesh& meshFor(const ObjectDraw& object, View view);
-    glm::vec3 m_eye{0.0f};                   // this frame's camera (m)
-    float m_pixelsPerRadian[VIEW_COUNT] = {};  // per view: its target's pixels per radian of view at the centre
-    void updateFrameUniforms(const CameraView& camera, double time, glm::ivec2 size);
-    void resizeTargets(glm::ivec2 internal);
-    void uploadWaterUniforms(const CameraView& camera, const WaterView& water, const GridCorners& grid);
-    GridCorners m_grid;  // this frame's projected grid (prepareWater)
-    void buildGrid(int resolution);
-
-    RenderDef m_def;
-    Program m_skyBakeProgram, m_skyProgram, m_objectProgram, m_objectWaterlineProgram, m_upscaleProgram;
-    Program m_fxaaPrograms[2];  // post_fxaa.frag off the edges, then on them
-    Mesh m_sphereMesh, m_boxMesh, m_ringMesh;
-    std::map<std::string, ModelMeshes> m_models;  // glTF meshes by file, loaded on first draw
-    VertexArray m_emptyVao;
-    Buffer m_frameUniforms[VIEW_COUNT];
-    Buffer m_waterUniforms;
-    VertexArray m_gridVao;
-    Buffer m_gridVertices, m_gridIndices;
-    int m_gridResolution = 0;
-    GLsizei m_gridIndexCount = 0;
-    Texture m_flatDisplacement, m_flatSlopes;  // 1×1 layers: no displacement, zero slope, J = 1
-    Texture m_rippleTexture;  // R32F heights of the ripple patch, re-uploaded every frame
-    Texture m_rippleSlopeTexture;  // RG32F central differences of the heights, one cell of margin, every frame
-    std::vector<glm::vec2> m_rippleSlopes;  // their texels, (cells + 2)² row-major
-    int m_rippleCells = 0;
-    WaterVariant m_waterVariant;  // this frame's (uploadWaterUniforms)
-    std::map<std::string, Program> m_waterPrograms;  // by WaterVariant::defines(), compiled on first use
-    Texture m_skyCube;        // RGBA16F cube map of the sky's radiance
-    Framebuffer m_skyBakeFramebuffer;
-    glm::vec3 m_bakedSun{0.0f};
-    Texture m_detailMap;      // DU/DV (rg, as 0.5 + 0.5·x) and foam streaks (b), RGBA8, tileable, mipmapped
-    Texture m_foamPattern;    // the persistent foam's bubble pattern over its repeat, baked from the detail map
-    Sampler m_nearestMipSampler;  // bilinear in the nearest mip, repeated: the slopes, detail map and foam pattern on a software rasteriser
-    void bakeDetailMaps();    // out: m_detailMap, m_foamPattern
-    Texture m_foamTexture;    // R32F foam coverage of the foam map, re-uploaded every frame
-    int m_foamCells = 0;
-    Program m_splashProgram, m_splashMirrorProgram;
-    VertexArray m_splashVao;
-    Buffer m_splashBuffer;    // this frame's drops, (centre, radius) per instance
-    size_t m_splashCapacity = 0;  // drops the buffer holds
-    GLsizei m_splashCount = 0;    // drops uploaded this frame
-    RenderTarget m_reflection, m_refraction;
-    RenderTarget m_internal;      // the frame (RGBA8, display-encoded) when it is not drawn into the framebuffer directly
-    RenderTarget m_multisampled;  // msaa4: the frame's 4 samples a pixel, resolved into m_internal
-    RenderTarget m_antialiased;   // fxaa below scale 1 (or a framebuffer without depth): the frame anti-aliased, then scaled up (or copied)
-    RenderTarget m_rttMultisampled;  // msaa4: reflection, then refraction, resolved into each
-    bool m_underwater = false;
-    Antialias m_antialias = Antialias::Off;  // this frame's mode
-    bool m_msaaSupported = false;           // the driver multisamples float colour and depth textures 4×
-    bool m_framebufferDepth = false;        // the default framebuffer has a depth buffer (FXAA draws into it at full size)
-    std::vector<GpuTimer> m_passTimers;
+    FrameContext m_frame;
+    SkyPass m_sky;
+    WaterPass m_water;
+    ObjectPass m_objects;
+    SurfacePasses m_surfaces;
+    SplashPass m_splash;
+    PostPass m_post;
 };
 
 /// Reads the default framebuffer (size px) and writes it as an RGB PNG, top row first.

@@ -2,7 +2,7 @@
 // astronomy: Meeus, "Astronomical Algorithms", ch. 13, with the sun's declination fixed for
 // the day) and the direction the renderer lights with. Pure math: no GL.
 #pragma once
-#include "gfx/render_def.h"
+#include "view_data/render_def.h"
 
 #include <glm/vec3.hpp>
 

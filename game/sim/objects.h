@@ -4,7 +4,7 @@
 #pragma once
 #include "core/schema.h"
 #include "ecs/schedule.h"
-#include "gfx/scene_view.h"
+#include "view_data/scene_view.h"
 #include "interaction/sphere_stamp.h"
 #include "physics/buoyancy.h"
 #include "physics/physics_world.h"

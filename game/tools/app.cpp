@@ -9,7 +9,7 @@
 #include "core/toml_writer.h"
 #include "gfx/gl.h"
 #include "gfx/renderer.h"
-#include "gfx/scene_view.h"
+#include "view_data/scene_view.h"
 #include "ecs/components.h"
 #include "behaviours/cannon.h"
 #include "behaviours/fish.h"

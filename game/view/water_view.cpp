@@ -40,11 +40,8 @@ void attachWaterGpu(ecs::World& world) {
     OceanGpu& side = world.setResource(std::make_unique<OceanGpu>());
     side.textures = std::make_unique<ocean::OceanTextures>(ocean->def.resolution, ocean->def.cascades);
     // auto: the GPU where there is one; on a software rasteriser FFTW is faster.
-    bool gpu = ocean->def.backend == Backend::Gpu || (ocean->def.backend == Backend::Auto && !gfx::isSoftwareRenderer());
-    if (gpu && !ocean::OceanFftGpu::available()) {
-        logWarn("ocean: compute shaders unavailable, using the CPU backend");
-        gpu = false;
-    }
+    // Every platform's context is GL 4.5 core (compute shaders, fp64), or it fails to open.
+    const bool gpu = ocean->def.backend == Backend::Gpu || (ocean->def.backend == Backend::Auto && !gfx::isSoftwareRenderer());
     if (gpu) {
         side.gpu = std::make_unique<ocean::OceanFftGpu>(ocean->def);
         ocean->cpuNext = std::make_unique<ocean::OceanFftCpu>(ocean->def);
@@ -99,7 +96,8 @@ gfx::WaterView prepareWaterView(ecs::World& world, double time) {
     // How far the grid must reach: the extremes of the CPU maps (at the step's end). The GPU
     // synthesises at the render time, up to a few steps from those maps; the extremes of the
     // whole tile change by far less than a tenth in that time, so a tenth more covers it.
-    view.fftBounds = ocean->cpu->displacementBounds();
+    const ocean::DisplacementBounds fft = ocean->cpu->displacementBounds();
+    view.fftBounds = {fft.up, fft.down, fft.horizontal};
     if (side->gpu && ocean->mapsTime != time) {
         view.fftBounds.up *= FFT_BOUND_SLACK;
         view.fftBounds.down *= FFT_BOUND_SLACK;

@@ -4,7 +4,7 @@
 #include "core/schema.h"
 #include "ecs/components.h"
 #include "ecs/schedule.h"
-#include "gfx/scene_view.h"
+#include "view_data/scene_view.h"
 
 #include <string>
 

@@ -3,7 +3,7 @@
 // and which body or fish school it meets first.
 #pragma once
 #include "ecs/world.h"
-#include "gfx/scene_view.h"
+#include "view_data/scene_view.h"
 #include "water/water_query.h"
 
 #include <glm/vec2.hpp>

@@ -6,7 +6,7 @@
 #include "sim/objects.h"
 #include "ecs/schedule.h"
 #include "foam/foam_def.h"
-#include "gfx/render_def.h"
+#include "view_data/render_def.h"
 #include "interaction/ripple_def.h"
 #include "ocean/gerstner.h"
 #include "ocean/ocean_def.h"

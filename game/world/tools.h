@@ -4,7 +4,7 @@
 #pragma once
 #include "core/schema.h"
 #include "ecs/schedule.h"
-#include "gfx/scene_view.h"
+#include "view_data/scene_view.h"
 #include "sim/objects.h"
 
 #include <glm/vec2.hpp>

@@ -75,7 +75,10 @@ struct Sea {
         v.rippleCells = RIPPLE_CELLS;
         v.rippleCellSize = RIPPLE_CELL;
         v.rippleOrigin = foot - glm::vec2(0.5f * RIPPLE_CELLS * RIPPLE_CELL);
-        if (withFftBounds) v.fftBounds = fft->displacementBounds();
+        if (withFftBounds) {
+            const ocean::DisplacementBounds b = fft->displacementBounds();
+            v.fftBounds = {b.up, b.down, b.horizontal};
+        }
         return v;
     }
 

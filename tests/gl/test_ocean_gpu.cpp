@@ -196,11 +196,6 @@ void checkSingleMode(int N, int n0, int m0, std::complex<float> a, std::initiali
 
 } // namespace
 
-TEST_CASE("compute shaders (the GPU ocean backend) are available on the headless GL 4.5 context", "[ocean_gpu]") {
-    auto context = glContext();
-    CHECK(OceanFftGpu::available());
-}
-
 TEST_CASE("OceanTextures holds the CPU backend's channels unchanged, one layer per cascade", "[ocean_gpu]") {
     auto context = glContext();
     const int errorsBefore = gfx::glErrorCount();

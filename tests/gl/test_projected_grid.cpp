@@ -11,7 +11,6 @@
 #include <random>
 
 using namespace ob::gfx;
-using ob::ocean::DisplacementBounds;
 using ob::ocean::OceanFftCpu;
 
 namespace {
@@ -96,7 +95,7 @@ TEST_CASE("the grid holds every rest point whose displaced point a pixel ray can
     int cameras = 0;
     for (int trial = 0; trial < 400; ++trial) {
         const float far = trial % 4 == 0 ? 2000.0f : 20000.0f;
-        DisplacementBounds bounds{uni(rng) * 40.0f, uni(rng) * 40.0f, uni(rng) * 60.0f};
+        SurfaceBounds bounds{uni(rng) * 40.0f, uni(rng) * 40.0f, uni(rng) * 60.0f};
         if (trial % 5 == 0) bounds = {};
         const float height = bounds.up + 0.5f + 500.0f * uni(rng) * uni(rng);
         const glm::vec3 eye(2000.0f * uni(rng) - 1000.0f, trial % 7 == 0 ? -height : height, 2000.0f * uni(rng) - 1000.0f);
@@ -168,7 +167,7 @@ TEST_CASE("the grid has no NaN and no folded or exploding cells for heights 0.5-
     for (float height : {0.5f, 10.0f, 100.0f, 1000.0f})
         for (float pitchDeg : {10.0f, -0.5f, -3.0f, -20.0f, -60.0f, -89.0f, -90.0f})
             for (float roll : {0.0f, 35.0f})
-                for (DisplacementBounds bounds : {DisplacementBounds{}, DisplacementBounds{20.0f, 20.0f, 60.0f}}) {
+                for (SurfaceBounds bounds : {SurfaceBounds{}, SurfaceBounds{20.0f, 20.0f, 60.0f}}) {
                     INFO("height " << height << " m, pitch " << pitchDeg << " deg, roll " << roll << ", bounds " << bounds.up);
                     glm::vec3 eye(5, bounds.up + height, -7);
                     glm::mat4 vp = camera(eye, 0.3f, glm::radians(pitchDeg), glm::radians(roll));
@@ -219,7 +218,7 @@ TEST_CASE("the FFT's displacement bounds of a single mode are its crest, trough 
             ocean.spectrum(c).setH0(c == 0 ? 4 : 0, c == 0 ? 0 : -4, {0.3f, 0.0f});
         }
         ocean.update(0.0);
-        const DisplacementBounds b = ocean.displacementBounds();
+        const ob::ocean::DisplacementBounds b = ocean.displacementBounds();
         INFO(cascades << " cascade(s)");
         CHECK(b.up == Approx(0.6 * cascades).epsilon(1e-5));
         CHECK(b.down == Approx(0.6 * cascades).epsilon(1e-5));

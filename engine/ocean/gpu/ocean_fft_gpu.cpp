@@ -3,6 +3,7 @@
 #include "ocean/gpu/ocean_fft_gpu.h"
 
 #include "core/error.h"
+#include "gfx/gpu_bindings.h"
 #include "gfx/shader.h"
 #include "ocean/ocean_fft_cpu.h"
 #include "ocean/gpu/ocean_textures.h"
@@ -17,19 +18,19 @@ namespace ob::ocean {
 
 namespace {
 
-// Shader interface (bindings and uniform locations declared in shaders/ocean_*.comp).
-constexpr GLuint MODES_BINDING = 0;
-constexpr GLuint QUARTER_BINDING = 1;
-constexpr GLuint WAVE_NUMBERS_BINDING = 2;
-constexpr GLuint SPECTRA_BINDING = 3;
-constexpr GLuint TWIDDLES_BINDING = 4;
-constexpr GLuint DISPLACEMENT_UNIT = 0;
-constexpr GLuint SLOPES_UNIT = 1;
-constexpr GLint N_LOCATION = 0;
-constexpr GLint TIME_LOCATION = 1;     // ocean_spectrum.comp
-constexpr GLint LOG2N_LOCATION = 1;    // ocean_fft.comp
-constexpr GLint COLUMNS_LOCATION = 2;  // ocean_fft.comp
-constexpr GLint LAMBDA_LOCATION = 1;   // ocean_unpack.comp
+// Shader interface: the bindings and locations of shaders/common_bindings.glsl.
+constexpr GLuint MODES_BINDING = gfx::glsl::OCEAN_MODES_BUFFER;
+constexpr GLuint QUARTER_BINDING = gfx::glsl::OCEAN_QUARTER_BUFFER;
+constexpr GLuint WAVE_NUMBERS_BINDING = gfx::glsl::OCEAN_WAVE_NUMBERS_BUFFER;
+constexpr GLuint SPECTRA_BINDING = gfx::glsl::OCEAN_SPECTRA_BUFFER;
+constexpr GLuint TWIDDLES_BINDING = gfx::glsl::OCEAN_TWIDDLES_BUFFER;
+constexpr GLuint DISPLACEMENT_UNIT = gfx::glsl::OCEAN_DISPLACEMENT_IMAGE;
+constexpr GLuint SLOPES_UNIT = gfx::glsl::OCEAN_SLOPES_IMAGE;
+constexpr GLint N_LOCATION = gfx::glsl::OCEAN_N_LOCATION;
+constexpr GLint TIME_LOCATION = gfx::glsl::OCEAN_TIME_LOCATION;
+constexpr GLint LOG2N_LOCATION = gfx::glsl::OCEAN_LOG2N_LOCATION;
+constexpr GLint COLUMNS_LOCATION = gfx::glsl::OCEAN_COLUMNS_LOCATION;
+constexpr GLint LAMBDA_LOCATION = gfx::glsl::OCEAN_LAMBDA_LOCATION;
 constexpr GLuint TILE = 8;             // local size of ocean_spectrum.comp and ocean_unpack.comp, per axis
 
 // One mode's coefficients of h̃ = (cosRe·c + sinRe·s) + i(cosIm·c + sinIm·s), c, s = cos, sin ωt
@@ -57,8 +58,6 @@ int signedIndex(int r, int n) { return r < n / 2 ? r : r - n; }
 GLintptr bytes(size_t count, size_t size) { return GLintptr(count * size); }
 
 } // namespace
-
-bool OceanFftGpu::available() { return GLAD_GL_VERSION_4_3 != 0; }
 
 OceanFftGpu::OceanFftGpu(const OceanDef& def) {
     validateOceanDef(def, OceanFftGpu::MAX_RESOLUTION);

@@ -33,9 +33,6 @@ public:
     /// Largest N: one row of complex floats must fit the 16 KiB shared array of ocean_fft.comp.
     static constexpr int MAX_RESOLUTION = 2048;
 
-    /// Whether the current context can run it (GL 4.3+ compute shaders; fp64 is core in 4.0).
-    static bool available();
-
     /// Builds every cascade's h̃0 like OceanFftCpu (CascadeSpectrum(def, c)), uploads it with ω
     /// and 1/k once, and compiles the shaders. Needs a current GL context. Throws
     /// ob::InputError naming the key for resolution not a power of two in [4, 2048], cascades

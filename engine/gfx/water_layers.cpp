@@ -1,0 +1,81 @@
+// Ripple, ripple slope and foam textures, re-uploaded every frame; the flat FFT stand-ins.
+#include "gfx/water_layers.h"
+
+#include "gfx/render_target.h"
+#include "gfx/water_pass.h"
+
+#include <tuple>
+
+namespace ob::gfx {
+
+using namespace glsl;  // the binding points and locations (shaders/common_bindings.glsl)
+
+namespace {
+// Central differences (dh/dx, dh/dz) = (h(i+1, j) − h(i−1, j), h(i, j+1) − h(i, j−1)) / 2Δ of
+// the n² ripple heights (row j along z), heights outside the patch 0, on an (n + 2)² grid
+// whose texel (i + 1, j + 1) is cell (i, j): the water shader's ripple slope in one lookup.
+void rippleSlopes(const float* h, int n, float cellSize, std::vector<glm::vec2>& out) {
+    const size_t m = size_t(n) + 2;
+    out.assign(m * m, glm::vec2(0.0f));
+    const auto at = [&](int i, int j) { return i < 0 || j < 0 || i >= n || j >= n ? 0.0f : h[size_t(j) * size_t(n) + size_t(i)]; };
+    const float scale = 1.0f / (2.0f * cellSize);
+    for (int j = -1; j <= n; ++j)
+        for (int i = -1; i <= n; ++i)
+            out[size_t(j + 1) * m + size_t(i + 1)] = scale * glm::vec2(at(i + 1, j) - at(i - 1, j), at(i, j + 1) - at(i, j - 1));
+}
+
+// A map read with a zero border: no ripples, no foam outside it.
+Texture borderedMap(const char* label, GLenum format, int cells) {
+    Texture texture = createTexture2D(label, format, glm::ivec2(cells));
+    glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+    glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+    const float zero[4] = {0, 0, 0, 0};
+    glTextureParameterfv(texture.id(), GL_TEXTURE_BORDER_COLOR, zero);
+    return texture;
+}
+} // namespace
+
+WaterLayers::WaterLayers() {
+    // No FFT layers: flat maps, J = 1 where each layout keeps it (displacement w, slopes z).
+    const float flatDisplacement[4] = {0.0f, 0.0f, 0.0f, 1.0f}, flatSlopes[4] = {0.0f, 0.0f, 1.0f, 0.0f};
+    for (auto [texture, label, texel] : {std::tuple{&m_flatDisplacement, "flat water displacement", flatDisplacement},
+                                         std::tuple{&m_flatSlopes, "flat water slopes", flatSlopes}}) {
+        GLuint id;
+        glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &id);
+        glObjectLabel(GL_TEXTURE, id, -1, label);
+        glTextureStorage3D(id, 1, GL_RGBA32F, 1, 1, 1);
+        glTextureSubImage3D(id, 0, 0, 0, 0, 1, 1, 1, GL_RGBA, GL_FLOAT, texel);
+        *texture = Texture(id);
+    }
+}
+
+void WaterLayers::upload(const WaterView& water, bool fft, bool foamOn, WaterUniforms& u) {
+    if (water.ripples && water.rippleCells > 0) {
+        if (m_rippleCells != water.rippleCells) {
+            m_ripples = borderedMap("ripple heights", GL_R32F, water.rippleCells);
+            m_rippleSlopes = createTexture2D("ripple slopes", GL_RG32F, glm::ivec2(water.rippleCells + 2));
+            m_rippleCells = water.rippleCells;
+        }
+        glTextureSubImage2D(m_ripples.id(), 0, 0, 0, m_rippleCells, m_rippleCells, GL_RED, GL_FLOAT, water.ripples);
+        rippleSlopes(water.ripples, m_rippleCells, water.rippleCellSize, m_slopeTexels);
+        glTextureSubImage2D(m_rippleSlopes.id(), 0, 0, 0, m_rippleCells + 2, m_rippleCells + 2, GL_RG, GL_FLOAT, m_slopeTexels.data());
+        u.rippleParams = glm::vec4(water.rippleOrigin, water.rippleCellSize, float(m_rippleCells));
+    }
+    u.foamParams = glm::vec4(0.0f);
+    if (foamOn && water.foam && water.foamCells > 0) {
+        if (m_foamCells != water.foamCells) {
+            m_foam = borderedMap("foam coverage", GL_R32F, water.foamCells);
+            m_foamCells = water.foamCells;
+        }
+        glTextureSubImage2D(m_foam.id(), 0, 0, 0, m_foamCells, m_foamCells, GL_RED, GL_FLOAT, water.foam);
+        u.foamParams = glm::vec4(water.foamOrigin, water.foamCellSize, float(m_foamCells));
+    }
+    const bool ripples = u.rippleParams.w > 0.0f;
+    glBindTextureUnit(FOAM_UNIT, u.foamParams.w > 0.0f ? m_foam.id() : 0);
+    glBindTextureUnit(DISPLACEMENT_UNIT, fft ? water.displacement->id() : m_flatDisplacement.id());
+    glBindTextureUnit(SLOPES_UNIT, fft ? water.slopes->id() : m_flatSlopes.id());
+    glBindTextureUnit(RIPPLES_UNIT, ripples ? m_ripples.id() : 0);
+    glBindTextureUnit(RIPPLE_SLOPES_UNIT, ripples ? m_rippleSlopes.id() : 0);
+}
+
+} // namespace ob::gfx

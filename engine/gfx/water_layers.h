@@ -1,0 +1,32 @@
+// The water layers the CPU hands the renderer each frame, as textures: the ripple heights and
+// their slopes, the persistent foam map, and the flat maps that stand in for absent FFT layers.
+#pragma once
+#include "gfx/gpu_bindings.h"
+#include "gfx/handles.h"
+
+#include <glm/vec2.hpp>
+#include <vector>
+
+namespace ob::gfx {
+
+struct WaterView;
+
+class WaterLayers {
+public:
+    WaterLayers();
+    /// Uploads this frame's ripples and foam map (foam only with `foamOn`) and binds every layer's
+    /// texture unit; fills the layers' entries of `u` (rippleParams, foamParams). `fft`: the FFT
+    /// layers are drawn (else the flat maps are bound).
+    void upload(const WaterView& water, bool fft, bool foamOn, WaterUniforms& u);
+
+private:
+    Texture m_flatDisplacement, m_flatSlopes;  // 1×1 layers: no displacement, zero slope, J = 1
+    Texture m_ripples;        // R32F heights of the ripple patch, re-uploaded every frame
+    Texture m_rippleSlopes;   // RG32F central differences of the heights, one cell of margin, every frame
+    std::vector<glm::vec2> m_slopeTexels;  // their texels, (cells + 2)² row-major
+    int m_rippleCells = 0;
+    Texture m_foam;           // R32F foam coverage of the foam map, re-uploaded every frame
+    int m_foamCells = 0;
+};
+
+} // namespace ob::gfx

@@ -1,0 +1,151 @@
+// The water pass: projected grid, water uniforms, the program per variant, the draw.
+#include "gfx/water_pass.h"
+
+#include "gfx/gl.h"
+#include "gfx/shader.h"
+#include "gfx/sky_pass.h"
+#include "gfx/surface_passes.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ob::gfx {
+
+using namespace glsl;  // the binding points and locations (shaders/common_bindings.glsl)
+
+namespace {
+// The projected grid reaches this fraction of the far clip distance; past it the grid is a
+// wall up to the eye's level, which the camera sees exactly on the horizon line.
+constexpr float GRID_REACH = 0.9f;
+// A cascade starts to fade out at this fraction of its fade distance ([render] tile_fade tiles).
+constexpr float TILE_FADE_START = 1.0f / 3.0f;
+
+// How far the layers can move a rest point: the FFT cascades' extremes (from the view), the
+// Gerstner waves' Σ a (each moves a point by a along its K and by a·cos θ up), the ripple
+// patch's extremes (heights only). The projected grid reaches that far past the view.
+SurfaceBounds displacementBounds(const WaterView& water) {
+    SurfaceBounds bounds;
+    if (water.cascades > 0 && water.displacement) bounds = water.fftBounds;
+    float amplitudes = 0.0f;
+    const size_t waves = std::min(water.gerstner.size(), size_t(MAX_GERSTNER_WAVES));
+    for (size_t m = 0; m < waves; ++m) amplitudes += std::abs(water.gerstner[m].z);
+    bounds += {amplitudes, amplitudes, amplitudes};
+    if (water.ripples && water.rippleCells > 0) {
+        const auto [lo, hi] = std::minmax_element(water.ripples, water.ripples + size_t(water.rippleCells) * size_t(water.rippleCells));
+        bounds += {std::max(*hi, 0.0f), std::max(-*lo, 0.0f), 0.0f};
+    }
+    return bounds;
+}
+} // namespace
+
+std::string WaterVariant::defines() const {
+    const auto flag = [](const char* name, bool on) { return std::string("#define ") + name + (on ? " true\n" : " false\n"); };
+    return "#define WATER_VARIANT\n#define WATER_CASCADES " + std::to_string(cascades) + "\n" + flag("WATER_RIPPLES", ripples) +
+           flag("WATER_FOAM_MAP", foamMap) + flag("WATER_UNDERWATER", underwater) + flag("WATER_EXACT_FRESNEL", exactFresnel) +
+           flag("WATER_REFLECTIONS", reflections) + flag("WATER_REFRACTIONS", refractions) + flag("WATER_FOAM", foam) +
+           (fullQuality ? "#define WATER_FULL_QUALITY\n" : "");
+}
+
+WaterPass::WaterPass() : m_uniforms(createBuffer("water uniforms", sizeof(WaterUniforms))) {}
+
+void WaterPass::listPrograms(ProgramList& out) const {
+    for (const auto& [defines, program] : m_programs) out.emplace_back("water_surface " + defines, program.id());
+    m_detail.listPrograms(out);
+}
+
+// A (res+1)² vertex grid of (u, v) ∈ [0, 1]², triangles as an index list.
+void WaterPass::buildGrid(int resolution) {
+    m_gridResolution = resolution;
+    const int n = resolution + 1;
+    std::vector<glm::vec2> uv;
+    uv.reserve(size_t(n) * size_t(n));
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) uv.emplace_back(float(i) / float(resolution), float(j) / float(resolution));
+    std::vector<uint32_t> indices;
+    indices.reserve(size_t(resolution) * size_t(resolution) * 6);
+    for (int j = 0; j < resolution; ++j)
+        for (int i = 0; i < resolution; ++i) {
+            uint32_t a = uint32_t(j * n + i), b = a + 1, c = a + uint32_t(n), d = c + 1;
+            indices.insert(indices.end(), {a, b, d, a, d, c});
+        }
+    m_gridIndexCount = GLsizei(indices.size());
+    m_gridVertices = createBuffer("projected grid uv", GLsizeiptr(uv.size() * sizeof(glm::vec2)), uv.data());
+    m_gridIndices = createBuffer("projected grid indices", GLsizeiptr(indices.size() * sizeof(uint32_t)), indices.data());
+    m_gridVao = createVertexArray("projected grid");
+    glVertexArrayVertexBuffer(m_gridVao.id(), 0, m_gridVertices.id(), 0, sizeof(glm::vec2));
+    glVertexArrayElementBuffer(m_gridVao.id(), m_gridIndices.id());
+    glEnableVertexArrayAttrib(m_gridVao.id(), GRID_UV_ATTRIB);
+    glVertexArrayAttribFormat(m_gridVao.id(), GRID_UV_ATTRIB, 2, GL_FLOAT, GL_FALSE, 0);
+    glVertexArrayAttribBinding(m_gridVao.id(), GRID_UV_ATTRIB, 0);
+}
+
+void WaterPass::uploadUniforms(FrameContext& frame, const CameraView& camera, const WaterView& water) {
+    const RenderDef& def = frame.def;
+    WaterUniforms u{};
+    for (int i = 0; i < 4; ++i) u.corner[i] = m_grid.corner[size_t(i)];
+    const bool layers = water.cascades > 0 && water.displacement && water.slopes;
+    const int cascades = layers ? water.cascades : 1;
+    for (int c = 0; c < 4; ++c) u.cascadeSize[c] = layers ? water.cascadeSize[size_t(c)] : 1.0f;
+    u.farFade = glm::vec4(def.far_fade ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f);
+    for (int c = 0; c < 4 && layers && def.far_fade; ++c) {
+        u.cascadeFadeEnd[c] = def.tile_fade * water.cascadeSize[size_t(c)];
+        u.cascadeFade[c] = TILE_FADE_START * u.cascadeFadeEnd[c];
+    }
+    const int waves = std::min(int(water.gerstner.size()), MAX_GERSTNER_WAVES);
+    for (int m = 0; m < waves; ++m) u.gerstner[m] = water.gerstner[size_t(m)];
+    u.waterParams = glm::vec4(water.lambda, water.gravity, float(waves), 0.5f * m_grid.minW);  // the clamp only guards rounding
+    u.gridParams = glm::vec4(float(m_gridResolution), GRID_REACH * camera.farM, float(cascades), float(layers ? water.resolution : 1));
+    m_layers.upload(water, layers, def.foam, u);
+    m_variant = {.cascades = layers ? cascades : 0,
+                 .ripples = u.rippleParams.w > 0.0f,
+                 .foamMap = u.foamParams.w > 0.0f,
+                 .underwater = frame.state.underwater,
+                 .exactFresnel = def.fresnel == Fresnel::Exact,
+                 .reflections = def.reflections,
+                 .refractions = def.refractions,
+                 .foam = def.foam,
+                 .fullQuality = def.water_full_quality};
+    glNamedBufferSubData(m_uniforms.id(), 0, sizeof u, &u);
+    glBindBufferBase(GL_UNIFORM_BUFFER, WATER_BLOCK, m_uniforms.id());
+}
+
+void WaterPass::prepare(FrameContext& frame, const CameraView& camera, const WaterView& water) {
+    m_grid = projectedGridCorners(camera.projection * camera.view, camera.position, displacementBounds(water));
+    frame.state.waterVisible = m_grid.visible;
+    // Auto: a grid row per 3 px of internal height on a GPU, per 12 px on a software rasteriser,
+    // within [32, 512]. A software rasteriser shades vertices on one thread, and it shades a 4×4
+    // block of pixels once for every triangle that touches it (docs/frame.md).
+    const int autoCells = std::clamp(frame.state.internal.y / (isSoftwareRenderer() ? 12 : 3), 32, 512);
+    const int resolution = std::max(frame.def.grid_resolution > 0 ? frame.def.grid_resolution : autoCells, 16);
+    if (m_gridResolution != resolution) buildGrid(resolution);
+    uploadUniforms(frame, camera, water);
+}
+
+void WaterPass::waterPass(FrameContext& frame, const SkyPass& sky, const SurfacePasses& surfaces) {
+    if (!m_grid.visible) return;
+    const PassScope scope(frame, WATER_PASS);
+    glBindTextureUnit(SKY_UNIT, sky.cube().id());
+    glBindTextureUnit(REFLECTION_UNIT, surfaces.reflection().color.id());
+    glBindTextureUnit(REFRACTION_UNIT, surfaces.refraction().color.id());
+    glBindTextureUnit(DETAIL_UNIT, m_detail.detailMap().id());
+    glBindTextureUnit(FOAM_PATTERN_UNIT, m_detail.foamPattern().id());
+    glBindTextureUnit(REFLECTION_DEPTH_UNIT, surfaces.reflection().depth.id());
+    // A software rasteriser filters the ocean's slopes, the detail map and the foam pattern from
+    // their nearest mip only: bilinear, not trilinear (full quality keeps trilinear).
+    const GLuint mipSampler = isSoftwareRenderer() && !frame.def.water_full_quality ? m_detail.nearestMipSampler().id() : 0;
+    for (GLuint unit : {SLOPES_UNIT, DETAIL_UNIT, FOAM_PATTERN_UNIT}) glBindSampler(unit, mipSampler);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    const std::string defines = m_variant.defines();
+    auto program = m_programs.find(defines);
+    if (program == m_programs.end())
+        program = m_programs.emplace(defines, loadProgram("water_surface", {"water_surface.vert", "water_surface.frag"}, defines)).first;
+    glUseProgram(program->second.id());
+    glBindVertexArray(m_gridVao.id());
+    glDrawElements(GL_TRIANGLES, m_gridIndexCount, GL_UNSIGNED_INT, nullptr);
+    // The targets are drawn into again next frame: never leave them bound for sampling.
+    for (GLuint unit : {REFLECTION_UNIT, REFRACTION_UNIT, REFLECTION_DEPTH_UNIT}) glBindTextureUnit(unit, 0);
+    for (GLuint unit : {SLOPES_UNIT, DETAIL_UNIT, FOAM_PATTERN_UNIT}) glBindSampler(unit, 0);
+}
+
+} // namespace ob::gfx

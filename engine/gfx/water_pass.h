@@ -1,0 +1,86 @@
+// The water surface: the composite surface (Gerstner + FFT cascades + ripples) on a projected
+// grid, shaded from the reflection and refraction targets, the sky and the detail maps, with
+// its program compiled per configuration (WaterVariant).
+#pragma once
+#include "gfx/projected_grid.h"
+#include "gfx/render_frame.h"
+#include "gfx/water_detail.h"
+#include "gfx/water_layers.h"
+
+#include <array>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace ob::gfx {
+
+class SkyPass;
+class SurfacePasses;
+
+/// The water layers the surface pass draws (everything optional: absent layers are flat).
+struct WaterView {
+    const Texture* displacement = nullptr;  ///< 2D array, layer per cascade: (Dx, h, Dz, J)
+    const Texture* slopes = nullptr;        ///< 2D array, layer per cascade: (dh/dx, dh/dz, J, 0)
+    int cascades = 0;                       ///< FFT cascades in the textures, [0, 4]
+    int resolution = 1;                     ///< FFT N
+    std::array<float, 4> cascadeSize{};     ///< tile side per cascade (m)
+    float lambda = 0.0f;                    ///< choppy displacement factor λ (X + λ·D)
+    float gravity = 9.81f;                  ///< m/s², Gerstner dispersion
+    std::vector<glm::vec4> gerstner;        ///< (kx, kz, amplitude, phase) per wave, at most 32
+    const float* ripples = nullptr;         ///< ripple heights Vh(t), rippleCells² row-major (z rows), m
+    int rippleCells = 0;                    ///< ripple patch cells per side (0: no ripple layer)
+    glm::vec2 rippleOrigin{0.0f};           ///< world (x, z) of cell (0, 0)'s centre, m
+    float rippleCellSize = 1.0f;            ///< m per cell
+    const float* foam = nullptr;            ///< persistent foam coverage [0, 1], foamCells² row-major (z rows)
+    int foamCells = 0;                      ///< foam map cells per side (0: no foam map)
+    glm::vec2 foamOrigin{0.0f};             ///< world (x, z) of foam cell (0, 0)'s centre, m
+    float foamCellSize = 1.0f;              ///< m per foam cell
+    /// How far the FFT cascades together move a rest point (m; λ included): the projected
+    /// grid reaches this far past the view. Gerstner and ripple bounds the renderer derives.
+    SurfaceBounds fftBounds;
+};
+
+/// What the water program is compiled for (`#define`s of shaders/water_surface.frag): each a
+/// constant in its code, so the compiler drops the terms that are off and unrolls the cascades'
+/// loop. A software rasteriser runs both sides of a branch on a uniform, and a loop over a
+/// uniform count cost it a sixth of the water pass. One program per variant met, kept.
+struct WaterVariant {
+    int cascades = 0;          ///< FFT cascades sampled (0: no layers)
+    bool ripples = false;      ///< a ripple patch is uploaded
+    bool foamMap = false;      ///< a persistent foam map is uploaded
+    bool underwater = false;   ///< the eye is below the surface
+    bool exactFresnel = false; ///< [render] fresnel = "exact" (else Schlick)
+    bool reflections = true, refractions = true, foam = true;  ///< [render] switches
+    bool fullQuality = false;  ///< [render] water_full_quality: every term per pixel, the reference
+    /// The lines put after the shaders' #version line.
+    std::string defines() const;
+};
+
+class WaterPass {
+public:
+    WaterPass();
+    /// Before the object passes, which clip against (and mirror about) the surface: the grid for
+    /// the camera, the water uniforms, the layers' textures bound; sets frame.state.waterVisible.
+    void prepare(FrameContext& frame, const CameraView& camera, const WaterView& water);
+    /// in: water layers, reflection and refraction targets, sky; out: framebuffer.
+    void waterPass(FrameContext& frame, const SkyPass& sky, const SurfacePasses& surfaces);
+    const WaterDetail& detail() const { return m_detail; }
+    void listPrograms(ProgramList& out) const;
+
+private:
+    void buildGrid(int resolution);
+    void uploadUniforms(FrameContext& frame, const CameraView& camera, const WaterView& water);
+
+    WaterDetail m_detail;
+    WaterLayers m_layers;
+    Buffer m_uniforms;
+    VertexArray m_gridVao;
+    Buffer m_gridVertices, m_gridIndices;
+    int m_gridResolution = 0;
+    GLsizei m_gridIndexCount = 0;
+    GridCorners m_grid;           // this frame's projected grid
+    WaterVariant m_variant;       // this frame's
+    std::map<std::string, Program> m_programs;  // by WaterVariant::defines(), compiled on first use
+};
+
+} // namespace ob::gfx
