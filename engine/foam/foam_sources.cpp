@@ -87,7 +87,7 @@ OB_VECTOR_KERNEL void slopeRoots(float* __restrict v, int cols) {
 } // namespace
 
 RowSources::RowSources(const FoamDef& def, const ScrollingGrid& grid, const FoamInputs& in, float dt)
-    : m_mapN(grid.n), m_originZ(grid.origin().y), m_cell(grid.cell), m_origin(grid.origin()) {
+    : m_mapN(grid.n), m_cell(grid.cell), m_origin(grid.origin()) {
     if (def.whitecap_weight > 0.0f && in.jacobianN > 0 && !in.jacobian.empty()) tabulateWhitecaps(def, in, dt);
     if (def.ripple_weight > 0.0f && in.ripples) tabulateRipples(def, *in.ripples, dt);
 }
@@ -200,7 +200,7 @@ bool RowSources::Rows::add(int j, const float* in, float* out) {
     const int n = s.m_mapN;
     const bool ripples = s.m_height && j >= s.m_jLo && j < s.m_jHi && steepRow(s.m_rz[size_t(j)]);
     if (!s.m_jacobian && !ripples) return false;
-    const Wrapped r = s.m_jacobian ? wrap((s.m_originZ + float(j) * s.m_cell) * s.m_toTile, s.m_n) : Wrapped{0, 0, 0.0f};
+    const Wrapped r = s.m_jacobian ? wrap((s.m_origin.y + float(j) * s.m_cell) * s.m_toTile, s.m_n) : Wrapped{0, 0, 0.0f};
     const bool whitecaps = s.m_jacobian && std::min(s.m_rowMin[size_t(r.i0)], s.m_rowMin[size_t(r.i1)]) < s.m_j0;
     if (!whitecaps && !ripples) return false;
     if (whitecaps) {

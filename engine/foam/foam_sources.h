@@ -115,7 +115,7 @@ private:
     void tabulateRipples(const FoamDef& def, const interaction::RipplePatch& patch, float dt);
 
     int m_mapN = 0;                       // the map's samples a side
-    float m_originZ = 0.0f, m_cell = 0.0f;  // its sample (0, 0)'s world z, Δ
+    float m_cell = 0.0f;                  // Δ, m
     glm::vec2 m_origin{0.0f};             // its sample (0, 0), world m
     // (a) whitecaps: foam column i lies between samples c0[i] and c0[i] + 1 of a window of the
     // tile's columns (window[k]: the tile column of its sample k, periodic), at weight ct[i].
