@@ -1,4 +1,4 @@
-// Persistent foam settings, section [foam] (docs/splash_foam.md; laws in foam_map.h).
+// Persistent foam settings, section [foam] (docs/splash_foam.md; laws in foam_map.h and its parts).
 #pragma once
 #include "core/schema.h"
 

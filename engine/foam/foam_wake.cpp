@@ -1,6 +1,6 @@
-// The foam a hull lays (laws (d)–(f) in foam_map.h): the stern's streaked white water, the
+// The foam a hull lays (laws (d)–(f) in foam_sources.h): the stern's streaked white water, the
 // turbulent wake along its track, the breaking bow wave's arms.
-#include "foam/foam_map.h"
+#include "foam/foam_sources.h"
 
 #include <algorithm>
 #include <cmath>
@@ -32,77 +32,86 @@ float wakeStreaks(float y, float depth) {
     return 1.0f - depth * (0.5f + 0.5f * n);
 }
 
-void FoamMap::addWake(const glm::vec3& centre, const glm::vec3& velocity, float radius, float dt) {
+void addWake(const FoamDef& def, const CoverageCells& cells, const glm::vec3& centre, const glm::vec3& velocity,
+             float radius, float dt) {
+    const float cell = cells.grid.cell;
+    const int n = cells.grid.n;
     const glm::vec2 u(velocity.x, velocity.z);
     const float speed = std::sqrt(u.x * u.x + u.y * u.y);
-    if (m_def.wake_weight <= 0.0f || speed <= 0.0f || radius <= 0.0f) return;
-    const float amount = m_def.wake_weight * speed / radius * dt;
-    const glm::vec2 c = toGrid(glm::vec2(centre.x, centre.z));
+    if (def.wake_weight <= 0.0f || speed <= 0.0f || radius <= 0.0f) return;
+    const float amount = def.wake_weight * speed / radius * dt;
+    const glm::vec2 c = cells.grid.toGrid(glm::vec2(centre.x, centre.z));
     const glm::vec2 side = glm::vec2(-u.y, u.x) / speed;  // across the track
-    const float rCells = radius / m_cell;
-    const int i0 = std::max(0, int(std::floor(c.x - rCells))), i1 = std::min(m_n - 1, int(std::ceil(c.x + rCells)));
-    const int j0 = std::max(0, int(std::floor(c.y - rCells))), j1 = std::min(m_n - 1, int(std::ceil(c.y + rCells)));
+    const float rCells = radius / cell;
+    const int i0 = std::max(0, int(std::floor(c.x - rCells))), i1 = std::min(n - 1, int(std::ceil(c.x + rCells)));
+    const int j0 = std::max(0, int(std::floor(c.y - rCells))), j1 = std::min(n - 1, int(std::ceil(c.y + rCells)));
     for (int j = j0; j <= j1; ++j) {
         for (int i = i0; i <= i1; ++i) {
             const glm::vec2 d(float(i) - c.x, float(j) - c.y);  // cells
             if (d.x * d.x + d.y * d.y > rCells * rCells) continue;
             if (d.x * u.x + d.y * u.y > 0.0f) continue;  // ahead of the sphere's centre
-            add(i, j, amount * wakeStreaks((d.x * side.x + d.y * side.y) * m_cell, m_def.wake_streaks));
+            cells.add(i, j, amount * wakeStreaks((d.x * side.x + d.y * side.y) * cell, def.wake_streaks));
         }
     }
 }
 
-void FoamMap::addWakeTrail(glm::vec2 from, glm::vec2 to, float age, float radius, float dt) {
-    const float as = m_def.wake_turbulence_s;
+void addWakeTrail(const FoamDef& def, const CoverageCells& cells, glm::vec2 from, glm::vec2 to, float age, float radius,
+                  float dt) {
+    const float cell = cells.grid.cell;
+    const int n = cells.grid.n;
+    const float as = def.wake_turbulence_s;
     const glm::vec2 d = to - from;
     const float length2 = d.x * d.x + d.y * d.y;
-    if (m_def.wake_weight <= 0.0f || as <= 0.0f || radius <= 0.0f || length2 <= 0.0f || age < 0.0f) return;
-    const float b = std::sqrt(radius * radius + 2.0f * m_def.wake_diffusivity * age);  // half-width, m
-    const float rate = m_def.wake_weight * std::exp(-age / as) / as * (radius / b);
+    if (def.wake_weight <= 0.0f || as <= 0.0f || radius <= 0.0f || length2 <= 0.0f || age < 0.0f) return;
+    const float b = std::sqrt(radius * radius + 2.0f * def.wake_diffusivity * age);  // half-width, m
+    const float rate = def.wake_weight * std::exp(-age / as) / as * (radius / b);
     const float amount = rate * dt;
     const float length = std::sqrt(length2);
     const glm::vec2 along = d / length, side(-along.y, along.x);
-    const glm::vec2 g0 = toGrid(from), g1 = toGrid(to);
+    const glm::vec2 g0 = cells.grid.toGrid(from), g1 = cells.grid.toGrid(to);
     // The strip's corners' bounds (cells): along a grid axis just the strip, not b past its ends.
-    const glm::vec2 reach = glm::vec2(std::abs(side.x), std::abs(side.y)) * (b / m_cell);
-    const int i0 = std::max(0, int(std::floor(std::min(g0.x, g1.x) - reach.x))), i1 = std::min(m_n - 1, int(std::ceil(std::max(g0.x, g1.x) + reach.x)));
-    const int j0 = std::max(0, int(std::floor(std::min(g0.y, g1.y) - reach.y))), j1 = std::min(m_n - 1, int(std::ceil(std::max(g0.y, g1.y) + reach.y)));
+    const glm::vec2 reach = glm::vec2(std::abs(side.x), std::abs(side.y)) * (b / cell);
+    const int i0 = std::max(0, int(std::floor(std::min(g0.x, g1.x) - reach.x))), i1 = std::min(n - 1, int(std::ceil(std::max(g0.x, g1.x) + reach.x)));
+    const int j0 = std::max(0, int(std::floor(std::min(g0.y, g1.y) - reach.y))), j1 = std::min(n - 1, int(std::ceil(std::max(g0.y, g1.y) + reach.y)));
     for (int j = j0; j <= j1; ++j) {
         for (int i = i0; i <= i1; ++i) {
-            const glm::vec2 p = (glm::vec2(float(i), float(j)) - g0) * m_cell;  // m from the older end
+            const glm::vec2 p = (glm::vec2(float(i), float(j)) - g0) * cell;  // m from the older end
             const float s = p.x * along.x + p.y * along.y;
             if (s < 0.0f || s >= length) continue;  // each cell beside a straight track in one segment
             const float y = p.x * side.x + p.y * side.y;
             if (std::abs(y) >= b) continue;
             const float across = std::sqrt(1.0f - (y / b) * (y / b));
-            add(i, j, amount * across * wakeStreaks(y * radius / b, m_def.wake_streaks));
+            cells.add(i, j, amount * across * wakeStreaks(y * radius / b, def.wake_streaks));
         }
     }
 }
 
-void FoamMap::addBowWave(const glm::vec3& centre, const glm::vec3& velocity, float radius, float strength, float dt) {
+void addBowWave(const FoamDef& def, const CoverageCells& cells, const glm::vec3& centre, const glm::vec3& velocity,
+                float radius, float strength, float dt) {
+    const float cell = cells.grid.cell;
+    const int n = cells.grid.n;
     const glm::vec2 u(velocity.x, velocity.z);
     const float speed = std::sqrt(u.x * u.x + u.y * u.y);
     strength = std::min(strength, 1.0f);
-    if (m_def.bow_weight <= 0.0f || speed <= 0.0f || radius <= 0.0f || strength <= 0.0f) return;
+    if (def.bow_weight <= 0.0f || speed <= 0.0f || radius <= 0.0f || strength <= 0.0f) return;
     const glm::vec2 ahead = u / speed, side(-ahead.y, ahead.x);
     const float sinK = 1.0f / 3.0f, cosK = std::sqrt(8.0f) / 3.0f;  // the Kelvin angle asin(1/3)
-    const float width = std::max(2.0f * m_cell, 0.3f), length = 8.0f * radius * strength;
-    const float amount = m_def.bow_weight * strength * speed * sinK / width * dt;
+    const float width = std::max(2.0f * cell, 0.3f), length = 8.0f * radius * strength;
+    const float amount = def.bow_weight * strength * speed * sinK / width * dt;
     for (float sign : {-1.0f, 1.0f}) {
         const glm::vec2 start = glm::vec2(centre.x, centre.z) + 0.5f * radius * ahead + sign * radius * side;
         const glm::vec2 arm = -cosK * ahead + sign * sinK * side;  // unit, back and out
-        const glm::vec2 g0 = toGrid(start), g1 = toGrid(start + length * arm);
-        const float w = 0.5f * width / m_cell;
-        const int i0 = std::max(0, int(std::floor(std::min(g0.x, g1.x) - w))), i1 = std::min(m_n - 1, int(std::ceil(std::max(g0.x, g1.x) + w)));
-        const int j0 = std::max(0, int(std::floor(std::min(g0.y, g1.y) - w))), j1 = std::min(m_n - 1, int(std::ceil(std::max(g0.y, g1.y) + w)));
+        const glm::vec2 g0 = cells.grid.toGrid(start), g1 = cells.grid.toGrid(start + length * arm);
+        const float w = 0.5f * width / cell;
+        const int i0 = std::max(0, int(std::floor(std::min(g0.x, g1.x) - w))), i1 = std::min(n - 1, int(std::ceil(std::max(g0.x, g1.x) + w)));
+        const int j0 = std::max(0, int(std::floor(std::min(g0.y, g1.y) - w))), j1 = std::min(n - 1, int(std::ceil(std::max(g0.y, g1.y) + w)));
         for (int j = j0; j <= j1; ++j) {
             for (int i = i0; i <= i1; ++i) {
-                const glm::vec2 p = (glm::vec2(float(i), float(j)) - g0) * m_cell;
+                const glm::vec2 p = (glm::vec2(float(i), float(j)) - g0) * cell;
                 const float s = p.x * arm.x + p.y * arm.y;
                 if (s < 0.0f || s > length) continue;
                 if (std::abs(p.x * arm.y - p.y * arm.x) > 0.5f * width) continue;
-                add(i, j, amount);
+                cells.add(i, j, amount);
             }
         }
     }

@@ -129,7 +129,7 @@ void emitFromSources(ecs::World& world, SplashFoamState& state, const water::Wat
 // leaves the water keeps its track until it has aged out.
 void layWakeTrails(SplashFoamState& state, foam::FoamMap& foam, uint64_t step, float dt) {
     const float life = WAKE_TRACK_LIFE * foam.def().wake_turbulence_s;
-    const float spacing = std::max(WAKE_TRACK_SPACING, 2.0f * foam.cellSize());
+    const float spacing = std::max(WAKE_TRACK_SPACING, 2.0f * foam.grid().cell);
     for (auto& [owner, track] : state.sterns) {
         for (float& age : track.ages) age += dt;
         const bool moving = track.seen == step + 1;

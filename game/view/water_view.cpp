@@ -63,9 +63,9 @@ gfx::WaterView prepareWaterView(ecs::World& world, double time) {
     }
     if (const foam::FoamMap* foam = foamMap(world)) {
         view.foam = foam->coverage().data();
-        view.foamCells = foam->resolution();
-        view.foamOrigin = foam->origin();
-        view.foamCellSize = foam->cellSize();
+        view.foamCells = foam->grid().n;
+        view.foamOrigin = foam->grid().origin();
+        view.foamCellSize = foam->grid().cell;
     }
     const OceanState* ocean = world.resource<OceanState>();
     OceanGpu* side = world.resource<OceanGpu>();

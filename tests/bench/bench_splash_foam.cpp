@@ -74,22 +74,22 @@ void BM_FoamStep(benchmark::State& state) {
     for (float& f : start) f = u(rng);
     const auto refill = [&] { std::copy(start.begin(), start.end(), map.coverage().begin()); };
     refill();
-    if (flow == 1) map.setUniformVelocity(glm::vec2(0.8f, -0.3f));
+    if (flow == 1) map.flow().setUniform(glm::vec2(0.8f, -0.3f));
     if (flow == 2) {
-        std::span<float> ux = map.velocityX(), uz = map.velocityZ();
+        std::span<float> ux = map.flow().velocityX(), uz = map.flow().velocityZ();
         for (size_t c = 0; c < ux.size(); ++c) {
             ux[c] = 0.8f + 0.3f * std::sin(float(c % size_t(n)) * 0.1f);
             uz[c] = -0.3f + 0.3f * std::cos(float(c / size_t(n)) * 0.1f);
         }
     }
     if (flow == 3) {  // the same field on the default 32² velocity grid (what the sandbox uses)
-        const int m = map.flowNodes(), stride = map.flowStride();
+        const int m = map.flow().nodesPerSide(), stride = map.flow().stride();
         std::vector<glm::vec2> nodes(size_t(m) * size_t(m));
         for (int l = 0; l < m; ++l)
             for (int k = 0; k < m; ++k)
                 nodes[size_t(l) * size_t(m) + size_t(k)] = glm::vec2(0.8f + 0.3f * std::sin(float(k * stride) * 0.1f),
                                                                      -0.3f + 0.3f * std::cos(float(l * stride) * 0.1f));
-        map.setVelocityNodes(nodes);
+        map.flow().setNodes(nodes);
     }
     map.step(DT);  // warm-up: starts the pool's workers
     int steps = 0;
@@ -148,7 +148,7 @@ void BM_FoamVelocity(benchmark::State& state) {
     def.resolution = n;
     def.flow_resolution = int(state.range(1));
     ob::foam::FoamMap map(def, 102.4f, glm::vec2(3.0f, -7.0f));
-    const std::vector<glm::vec2> nodes = map.flowNodePositions();
+    const std::vector<glm::vec2> nodes = map.flow().nodePositions();
     std::vector<glm::vec2> velocity(nodes.size());
     water.horizontalVelocityBatch(nodes, velocity);
     for (auto _ : state) {
@@ -178,8 +178,8 @@ void BM_FoamSources(benchmark::State& state) {
     ob::interaction::RipplePatch patch(rd);
     for (size_t c = 0; c < patch.field().current().size(); ++c) patch.field().current()[c] = 0.05f * std::sin(float(c) * 0.3f);
     for (auto _ : state) {
-        if (source == 0) map.addWhitecaps(jacobian, 256, 100.0f, DT);
-        if (source == 1) map.addRipples(patch, DT);
+        if (source == 0) map.addSources({jacobian, 256, 100.0f}, DT);
+        if (source == 1) map.addSources({{}, 0, 0.0f, &patch}, DT);  // the ripples alone
         if (source == 2)
             for (int s = 0; s < 6; ++s) map.addWake(glm::vec3(float(s) * 1.5f, 0.0f, 0.0f), glm::vec3(6.0f, 0.0f, 0.0f), 1.75f, DT);
         benchmark::DoNotOptimize(map.coverage().data());
@@ -240,13 +240,14 @@ void BM_FoamUpdateCalls(benchmark::State& state) {
     std::vector<glm::vec2> nodes, velocity;
     const auto update = [&] {
         scene.wake();
-        map.addWhitecaps(std::span(scene.fft->channel(0, ob::ocean::OceanChannel::Jacobian), size_t(n) * size_t(n)), n,
-                         float(scene.fft->patchSize(0)), DT);
-        map.addRipples(*scene.patch, DT);
-        nodes = map.flowNodePositions();
+        map.addSources({std::span(scene.fft->channel(0, ob::ocean::OceanChannel::Jacobian), size_t(n) * size_t(n)), n,
+                        float(scene.fft->patchSize(0))},
+                       DT);
+        map.addSources({{}, 0, 0.0f, scene.patch.get()}, DT);  // the ripples alone
+        nodes = map.flow().nodePositions();
         velocity.resize(nodes.size());
         scene.water->horizontalVelocityBatch(nodes, velocity);
-        map.setVelocityNodes(velocity);
+        map.flow().setNodes(velocity);
         map.step(DT);
     };
     update();  // warm-up: starts the pool's workers

@@ -16,7 +16,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <memory>
 #include <numbers>
 #include <random>
@@ -126,8 +125,6 @@ TEST_CASE("GPU ewave steps equal EWaveField::step within 1e-5 log2 N of the fiel
         INFO(c.n << "² boundary " << int(c.boundary) << " tau " << c.decayTime << " nu " << c.viscosity << " sources "
                  << c.sources << ": max |gpu - cpu| / max |cpu|: h " << worstH << ", v " << worstV << " (tolerance "
                  << tolerance << ")");
-        std::printf("ewave gpu vs cpu, %d² boundary %d%s: h %.2e, v %.2e of the max\n", c.n, int(c.boundary),
-                    c.sources ? " with sources" : "", worstH, worstV);
         CHECK(worstH <= tolerance);
         CHECK(worstV <= tolerance);
         // The field is still alive, so the comparison means something.
@@ -191,8 +188,6 @@ TEST_CASE("GPU ewave: a single Fourier mode cos(K.X) on a periodic field evolves
         }
         INFO("mode (" << c.mx << ", " << c.mz << "), cell " << c.cell << " m, omega " << omega << " rad/s: max error "
                       << worst / amplitude << " of the amplitude");
-        std::printf("ewave gpu single mode (%d, %d) cell %g: %.2e of the amplitude\n", c.mx, c.mz, double(c.cell),
-                    worst / amplitude);
         CHECK(worst <= 3e-4 * amplitude);
     }
     CHECK(gfx::glErrorCount() == errorsBefore);
@@ -263,7 +258,6 @@ TEST_CASE("a ball dropped into the ewave field rings out on the GPU as on the CP
     for (double h : cpu) peak = std::max(peak, std::abs(h));
     const double error = relativeError(gpu, cpu);
     INFO("peak " << peak << " m, max |gpu - cpu| / peak " << error);
-    std::printf("ewave drop, 128², 90 steps: peak %.3g m, gpu vs cpu %.2e of the peak\n", peak, error);
     CHECK(peak > 1e-3);
     // The sphere's motion feeds back (buoyancy reads the ripples), so the float field's rounding
     // (above: ~1e-5 over 100 steps) also moves the ball a little; 1e-4 of the peak allows that

@@ -28,7 +28,7 @@ constexpr float DT = 1.0f / 60.0f;
 // Coverage-weighted centroid of the map in world metres.
 glm::dvec2 centroid(const FoamMap& map) {
     double sum = 0.0, sx = 0.0, sz = 0.0;
-    const int n = map.resolution();
+    const int n = map.grid().n;
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) {
             const double f = map.coverage()[size_t(j) * size_t(n) + size_t(i)];
@@ -36,19 +36,26 @@ glm::dvec2 centroid(const FoamMap& map) {
             sx += f * i;
             sz += f * j;
         }
-    const glm::vec2 o = map.origin();
-    return glm::dvec2(o.x + sx / sum * map.cellSize(), o.y + sz / sum * map.cellSize());
+    const glm::vec2 o = map.grid().origin();
+    return glm::dvec2(o.x + sx / sum * map.grid().cell, o.y + sz / sum * map.grid().cell);
 }
 
 // A Gaussian blob of peak 0.9 and σ = sigma metres at world (x, z).
 void blob(FoamMap& map, float x, float z, float sigma) {
-    const int n = map.resolution();
-    const glm::vec2 o = map.origin();
+    const int n = map.grid().n;
+    const glm::vec2 o = map.grid().origin();
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) {
-            const float dx = o.x + float(i) * map.cellSize() - x, dz = o.y + float(j) * map.cellSize() - z;
+            const float dx = o.x + float(i) * map.grid().cell - x, dz = o.y + float(j) * map.grid().cell - z;
             map.coverage()[size_t(j) * size_t(n) + size_t(i)] = 0.9f * std::exp(-(dx * dx + dz * dz) / (2 * sigma * sigma));
         }
+}
+
+// The inputs of the ripple source alone.
+foam::FoamInputs ripplesOf(const interaction::RipplePatch& patch) {
+    foam::FoamInputs in;
+    in.ripples = &patch;
+    return in;
 }
 
 FoamDef smallDef(int resolution = 128) {
@@ -93,24 +100,24 @@ TEST_CASE("a uniform flow carries a foam blob by v·t (within a cell), by the un
         blob(map, -2.0f, 2.0f, 0.6f);
         const glm::dvec2 before = centroid(map);
         if (perCell) {
-            std::span<float> ux = map.velocityX(), uz = map.velocityZ();
+            std::span<float> ux = map.flow().velocityX(), uz = map.flow().velocityZ();
             std::fill(ux.begin(), ux.end(), v.x);
             std::fill(uz.begin(), uz.end(), v.y);
         } else {
-            map.setUniformVelocity(v);
+            map.flow().setUniform(v);
         }
         const int steps = int(std::lround(t / DT));
         for (int s = 0; s < steps; ++s) map.step(DT);
         const glm::dvec2 moved = centroid(map) - before;
         INFO((perCell ? "per-cell" : "uniform") << " path: moved (" << moved.x << ", " << moved.y << ") m, expected ("
                                                  << v.x * t << ", " << v.y * t << ")");
-        CHECK(std::abs(moved.x - v.x * t) < map.cellSize());
-        CHECK(std::abs(moved.y - v.y * t) < map.cellSize());
+        CHECK(std::abs(moved.x - v.x * t) < map.grid().cell);
+        CHECK(std::abs(moved.y - v.y * t) < map.grid().cell);
         // Its peak sits where the flow took it (within a cell; the bilinear step widens it).
         const auto peak = std::max_element(map.coverage().begin(), map.coverage().end()) - map.coverage().begin();
-        const glm::vec2 at = map.origin() + glm::vec2(float(peak % 128), float(peak / 128)) * map.cellSize();
-        CHECK(std::abs(at.x - (-2.0f + v.x * t)) <= map.cellSize());
-        CHECK(std::abs(at.y - (2.0f + v.y * t)) <= map.cellSize());
+        const glm::vec2 at = map.grid().origin() + glm::vec2(float(peak % 128), float(peak / 128)) * map.grid().cell;
+        CHECK(std::abs(at.x - (-2.0f + v.x * t)) <= map.grid().cell);
+        CHECK(std::abs(at.y - (2.0f + v.y * t)) <= map.grid().cell);
         CHECK(map.sample(-2.0f, 2.0f) < 0.01f);
     }
 }
@@ -127,19 +134,19 @@ TEST_CASE("a per-cell flow that crosses more than a cell a step moves the blob l
         FoamMap map(def, 32.0f);
         blob(map, -2.0f, 2.0f, 0.6f);
         if (perCell) {
-            std::span<float> ux = map.velocityX(), uz = map.velocityZ();
+            std::span<float> ux = map.flow().velocityX(), uz = map.flow().velocityZ();
             std::fill(ux.begin(), ux.end(), v.x);
             std::fill(uz.begin(), uz.end(), v.y);
         } else {
-            map.setUniformVelocity(v);
+            map.flow().setUniform(v);
         }
         const glm::dvec2 before = centroid(map);
         for (int s = 0; s < 6; ++s) map.step(dt);
         const glm::dvec2 moved = centroid(map) - before;
         INFO((perCell ? "per-cell" : "uniform") << " path: moved (" << moved.x << ", " << moved.y << ") m, expected ("
                                                  << v.x * 3.0f << ", " << v.y * 3.0f << ")");
-        CHECK(std::abs(moved.x - v.x * 3.0) < map.cellSize());
-        CHECK(std::abs(moved.y - v.y * 3.0) < map.cellSize());
+        CHECK(std::abs(moved.x - v.x * 3.0) < map.grid().cell);
+        CHECK(std::abs(moved.y - v.y * 3.0) < map.grid().cell);
         result[perCell].assign(map.coverage().begin(), map.coverage().end());
     }
     // Both are the same linear interpolation, per axis or as a bilinear stencil: equal to rounding.
@@ -169,14 +176,14 @@ TEST_CASE("one Gerstner wave carries a foam blob along its particles' orbit: out
     double alpha0 = x0;  // fixed point of α = x0 + a·sin(kα − φ) (contracts: k·a < 1)
     for (int it = 0; it < 100; ++it) alpha0 = x0 + a * std::sin(k * alpha0 - phase);
     const glm::dvec2 start = centroid(map);
-    const std::vector<glm::vec2> nodes = map.flowNodePositions();
+    const std::vector<glm::vec2> nodes = map.flow().nodePositions();
     std::vector<glm::vec2> velocity(nodes.size());
     const int steps = int(std::lround(period / DT));
     double worst = 0.0, lo = 1e9, hi = -1e9, worstZ = 0.0;
     for (int s = 0; s < steps; ++s) {
         water.update(s * double(DT));
         water.horizontalVelocityBatch(nodes, velocity);
-        map.setVelocityNodes(velocity);
+        map.flow().setNodes(velocity);
         map.step(DT);
         const double t = (s + 1) * double(DT);
         const glm::dvec2 at = centroid(map);
@@ -343,7 +350,7 @@ TEST_CASE("whitecaps, steep ripples and landed drops feed foam by their laws", "
         for (int j = 0; j < n; ++j)
             for (int i = 0; i < n; ++i)
                 if (float(i) * tile / n < 8.0f) jac[size_t(j) * n + size_t(i)] = 0.0f;
-        map.addWhitecaps(jac, n, tile, 0.1f);
+        map.addSources({jac, n, tile}, 0.1f);
         CHECK(map.sample(4.0f, 0.0f) == Approx(def.whitecap_weight * def.whitecap_jacobian * 0.1f));
         CHECK(map.sample(-4.0f, 3.0f) == 0.0f);  // x ∈ [−8, 0) is x mod 32 ∈ [24, 32): J = 1
     }
@@ -361,7 +368,7 @@ TEST_CASE("whitecaps, steep ripples and landed drops feed foam by their laws", "
                 h[size_t(z) * 64 + size_t(x)] = 0.8f * std::clamp(wx - 2.0f, 0.0f, 2.0f);
             }
         FoamMap map(def, 16.0f);
-        map.addRipples(patch, 0.1f);
+        map.addSources(ripplesOf(patch), 0.1f);
         CHECK(map.sample(3.0f, 0.0f) == Approx(def.ripple_weight * (0.8f - def.ripple_slope) * 0.1f).epsilon(1e-4));
         CHECK(map.sample(-3.0f, 0.0f) == 0.0f);
         CHECK(map.sample(6.0f, 0.0f) == 0.0f);
@@ -412,7 +419,7 @@ TEST_CASE("same inputs give bit-identical foam for any worker count", "[foam][de
         FoamDef def = smallDef(256);
         FoamMap map(def, 64.0f);
         blob(map, 0.0f, 0.0f, 3.0f);
-        std::span<float> ux = map.velocityX(), uz = map.velocityZ();
+        std::span<float> ux = map.flow().velocityX(), uz = map.flow().velocityZ();
         for (size_t c = 0; c < ux.size(); ++c) {
             ux[c] = 0.5f * std::sin(float(c % 256) * 0.05f);
             uz[c] = 0.3f * std::cos(float(c / 256) * 0.07f);
@@ -421,11 +428,11 @@ TEST_CASE("same inputs give bit-identical foam for any worker count", "[foam][de
             map.addWake(glm::vec3(float(s) * 0.1f, 0.0f, 0.0f), glm::vec3(6.0f, 0.0f, 0.0f), 1.0f, DT);
             map.step(DT);
         }
-        std::vector<glm::vec2> nodes = map.flowNodePositions();  // a velocity grid's nodes
+        std::vector<glm::vec2> nodes = map.flow().nodePositions();  // a velocity grid's nodes
         for (glm::vec2& v : nodes) v = glm::vec2(0.6f * std::sin(v.y * 0.3f), 0.4f * std::cos(v.x * 0.2f));
-        map.setVelocityNodes(nodes);
+        map.flow().setNodes(nodes);
         for (int s = 0; s < 60; ++s) map.step(DT);
-        map.setUniformVelocity(glm::vec2(0.7f, 0.2f));
+        map.flow().setUniform(glm::vec2(0.7f, 0.2f));
         for (int s = 0; s < 60; ++s) map.step(DT);
         setWorkerCount(0);
         StateHasher h;
@@ -468,10 +475,10 @@ TEST_CASE("update()'s velocity grid, each node evaluated every K steps and extra
             map.centerOn(glm::vec2(float(0.2 * t), float(0.1 * t)) + glm::vec2(0.1f));
             map.update(in, DT);
             if (s < K) continue;  // every node has two evaluations from step K − 1 on
-            const std::vector<glm::vec2> nodes = map.flowNodePositions();
+            const std::vector<glm::vec2> nodes = map.flow().nodePositions();
             std::vector<glm::vec2> exact(nodes.size());
             water.horizontalVelocityBatch(nodes, exact);
-            const std::span<const glm::vec2> used = map.velocityNodes();
+            const std::span<const glm::vec2> used = map.flow().nodes();
             REQUIRE(used.size() == exact.size());
             for (size_t c = 0; c < exact.size(); ++c) {
                 const glm::vec2 d = used[c] - exact[c];
@@ -493,7 +500,7 @@ TEST_CASE("update()'s velocity grid, each node evaluated every K steps and extra
     CHECK(worstOf[8] > 0.4 * a * omega * omega * omega * (8 + 7) * 7 * double(DT) * double(DT) / 2);
 }
 
-TEST_CASE("update() in one sweep gives the bits of addWhitecaps, addRipples, then step", "[foam]") {
+TEST_CASE("update() in one sweep gives the bits of the whitecaps, then the ripples, then step", "[foam]") {
     // Whitecaps over half the tile, a ramp of steep ripples, a blob moved by a velocity grid;
     // ripple cells the size of the foam's (read in place) and half of it (gathered).
     for (float rippleCell : {0.25f, 0.125f}) {
@@ -515,9 +522,9 @@ TEST_CASE("update() in one sweep gives the bits of addWhitecaps, addRipples, the
         FoamMap calls(def, 32.0f, glm::vec2(1.3f, -0.6f)), swept(def, 32.0f, glm::vec2(1.3f, -0.6f));
         for (FoamMap* map : {&calls, &swept}) {
             blob(*map, 2.0f, -1.0f, 2.0f);
-            std::vector<glm::vec2> nodes = map->flowNodePositions();
+            std::vector<glm::vec2> nodes = map->flow().nodePositions();
             for (glm::vec2& v : nodes) v = glm::vec2(1.5f * std::sin(v.y * 0.3f), 1.2f * std::cos(v.x * 0.2f));
-            map->setVelocityNodes(nodes);
+            map->flow().setNodes(nodes);
         }
         foam::FoamInputs in;
         in.jacobian = jac;
@@ -525,8 +532,8 @@ TEST_CASE("update() in one sweep gives the bits of addWhitecaps, addRipples, the
         in.jacobianTile = tile;
         in.ripples = &patch;
         for (int s = 0; s < 20; ++s) {
-            calls.addWhitecaps(jac, n, tile, DT);
-            calls.addRipples(patch, DT);
+            calls.addSources({jac, n, tile}, DT);
+            calls.addSources(ripplesOf(patch), DT);
             calls.step(DT);
             swept.update(in, DT);
         }
@@ -588,8 +595,8 @@ TEST_CASE("a constant velocity grid moves a blob like the uniform path, in one s
         def.flow_resolution = 16;
         FoamMap uniform(def, 32.0f), grid(def, 32.0f);
         for (FoamMap* map : {&uniform, &grid}) blob(*map, -2.0f, 2.0f, 0.6f);
-        uniform.setUniformVelocity(v);
-        grid.setVelocityNodes(std::vector<glm::vec2>(grid.flowNodePositions().size(), v));
+        uniform.flow().setUniform(v);
+        grid.flow().setNodes(std::vector<glm::vec2>(grid.flow().nodePositions().size(), v));
         const int steps = int(std::lround(3.0f / dt));
         for (int s = 0; s < steps; ++s) {
             const glm::vec2 centre = glm::vec2(0.6f, -0.4f) * (float(s) * dt);  // 0.25 m cells: scrolls every few steps

@@ -33,7 +33,7 @@ TEST_CASE("ships on the default sea stay afloat and upright (roll < 30 deg) for 
             lowest = std::min(lowest, t.position.y);
         }
     }
-    WARN("max roll " << maxRoll << " deg, max pitch " << maxPitch << " deg, min submerged " << minWet << ", lowest centre " << lowest << " m");
+    INFO("max roll " << maxRoll << " deg, max pitch " << maxPitch << " deg, min submerged " << minWet << ", lowest centre " << lowest << " m");
     CHECK(maxRoll < 30.0f);
     CHECK(minWet > 0.05f);   // never thrown clear of the water
     CHECK(minWet < 0.95f);   // never under
@@ -91,7 +91,7 @@ Wake sail(float speed, float seconds) {
 
 TEST_CASE("seed 001 fig. 16: a ship at rest leaves a standing deformation, slow a rebound behind the stern, 5x faster a longer wake", "[ship]") {
     const Wake rest = sail(0.0f, 6.0f), slow = sail(1.0f, 6.0f), fast = sail(5.0f, 6.0f);
-    WARN("wake length behind the stern (|Vh| > 1.4 cm): rest " << rest.length << " m, 1 m/s " << slow.length << " m, 5 m/s "
+    INFO("wake length behind the stern (|Vh| > 1.4 cm): rest " << rest.length << " m, 1 m/s " << slow.length << " m, 5 m/s "
                                                               << fast.length << " m; rebound rest " << rest.rebound << " slow "
                                                               << slow.rebound << " m; change over 1 s at rest " << rest.change
                                                               << " m; hull hollow " << rest.depth << " m");

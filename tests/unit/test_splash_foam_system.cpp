@@ -197,7 +197,7 @@ TEST_CASE("one jumping fish throws the drops of its body's mass, and 4 s after i
     // the arc ends, over 2.5 m along the fish's circle) is a fish's length across, not metres.
     const foam::FoamMap* foam = game::foamMap(world);
     REQUIRE(foam);
-    const float cell = foam->cellSize();
+    const float cell = foam->grid().cell;
     double visible = 0.0, anyFoam = 0.0;
     for (float z = entry.z - 2.5f; z <= entry.z + 2.5f; z += cell)
         for (float x = entry.x - 2.5f; x <= entry.x + 2.5f; x += cell) {

@@ -1,0 +1,116 @@
+// The velocity the foam map moves with (docs/splash_foam.md §2): still, uniform, per sample, or
+// bilinear between the nodes of a coarse grid fixed in the world (the surface's velocity varies
+// over a wavelength, not a cell), set by the caller or refreshed from the water.
+//
+// refresh() re-evaluates a K-th of the node rows a step (K = flow_refresh_steps) and carries
+// each node between by linear extrapolation in time from its last two values (error ≤
+// max|∂²u/∂t²|·(T + s)·s/2, T = K·dt between the values, s < T the age).
+#pragma once
+#include "core/scrolling_grid.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <span>
+#include <vector>
+#include <glm/vec2.hpp>
+
+namespace ob::water {
+class CompositeWater;
+}
+
+namespace ob::foam {
+
+/// How far refresh() lets the velocity grid's rest points miss (|α + D(α) − x|, metres): a
+/// node's velocity is then a particle's up to 1 cm away, off by |∂u/∂x| times it at most
+/// (a Gerstner wave: k·a·ω/(1 − k·a), 1 mm/s for a = 1 m, λ = 64 m).
+constexpr float FLOW_REST_TOLERANCE = 0.01f;
+
+/// The horizontal surface velocity (m/s, world x and z) over a foam map's samples.
+class FoamFlow {
+public:
+    enum class Mode { Still, Uniform, Field, Nodes };
+
+    /// Still water over `grid` (the map's placement); nodes every n / min(flowResolution, n) samples.
+    FoamFlow(const ScrollingGrid& grid, int flowResolution);
+
+    Mode mode() const { return m_mode; }
+
+    /// The same velocity u everywhere (m/s; 0: still).
+    void setUniform(glm::vec2 u);
+    glm::vec2 uniform() const { return m_uniform; }
+
+    /// Per-sample velocity, m/s, row-major like the coverage; calling these switches to it. The
+    /// caller refills it after a scroll (it is not moved).
+    std::span<float> velocityX();
+    std::span<float> velocityZ();
+    std::span<const float> fieldX() const { return m_ux; }
+    std::span<const float> fieldZ() const { return m_uz; }
+
+    /// Samples between two nodes, s: n / min(flow_resolution, n) (a power of two).
+    int stride() const { return m_grid.n / std::min(m_resolution, m_grid.n); }
+    /// Nodes per side, n / s + 2. The grid is fixed in the world: its nodes sit on the world
+    /// samples whose indices are multiples of s, node (0, 0) on the last one at or before the
+    /// map's sample (0, 0) (nodeOrigin()), so n / s + 2 cover the map wherever it scrolls and a
+    /// node keeps its place when it does.
+    int nodesPerSide() const { return m_grid.n / stride() + 2; }
+    /// World sample index of node (0, 0), over s: ⌊sample (0, 0)'s world index / s⌋.
+    glm::ivec2 nodeOrigin() const;
+    /// World (x, z) of every node, row-major (index l·nodesPerSide() + k).
+    std::vector<glm::vec2> nodePositions() const;
+    /// Sets the velocity bilinear between the nodes' (m/s, row-major like nodePositions(), for
+    /// the map where it stands now); the weights are exact binary fractions (power-of-two stride).
+    void setNodes(std::span<const glm::vec2> nodes);
+    /// The nodes' velocity the next step uses (set, or refresh()'s extrapolation; empty before either).
+    std::span<const glm::vec2> nodes() const { return m_nodes; }
+    /// The largest |u_x|, |u_z| of a node, m/s (Mode::Nodes).
+    float nodesMax() const { return m_nodesMax; }
+
+    /// The nodes from the water at its time(): a K-th of the node rows evaluated (by world row
+    /// index, K = refreshSteps), the others extrapolated linearly in time; every node on the first
+    /// call, after the time went back or jumped by over 0.5 s, and where the map scrolled onto
+    /// new ones, twice.
+    void refresh(const water::CompositeWater& water, int refreshSteps);
+
+    /// The map moved to `grid`: nodes set by setNodes keep their place in the world, shifted by
+    /// whole nodes, the ones it scrolled onto copied from the nearest kept one.
+    void follow(const ScrollingGrid& grid);
+    /// A new flow_resolution (from the next step on); nodes that no longer fit are dropped (still).
+    void setResolution(int flowResolution);
+
+    // --- the per-sample velocity from the nodes (Mode::Nodes), row by row
+    /// Map row j's component (0: x, 1: z): the node rows around it lerped along z (into scratch,
+    /// nodesPerSide() floats), then along x between each pair of nodes (n floats into out).
+    void nodeRow(int j, int component, float* out, float* scratch) const;
+    /// Node row l's component along x at every sample of a map row (n floats into out; scratch
+    /// nodesPerSide() floats).
+    void expandNodeRow(int l, int component, float* out, float* scratch) const;
+    /// The node row l at or before map row j and the weight of row l + 1 (exact binary fraction).
+    float nodeRowWeight(int j, int& l) const;
+
+private:
+    struct FlowNode {  // a node of refresh()'s grid: u(t) ≈ u + (t − time)·rate
+        glm::vec2 u{0.0f}, rate{0.0f};  // m/s, m/s²
+        glm::vec2 rest{0.0f};           // the rest point of the particle above it then, world m
+        double time = 0.0;              // s, of its last evaluation
+        int evaluations = 0;            // since it came onto the grid (a slope from the second on)
+    };
+    void alignHistory(double t);
+    void extrapolateNodes(double t);
+    glm::ivec2 nodeOffset() const;  // the map's sample (0, 0) past node (0, 0), samples, in [0, s)
+
+    ScrollingGrid m_grid;              // the map's placement
+    int m_resolution;                  // flow_resolution
+    Mode m_mode = Mode::Still;
+    glm::vec2 m_uniform{0.0f};
+    std::vector<float> m_ux, m_uz;     // Mode::Field, m/s
+    std::vector<glm::vec2> m_nodes;    // Mode::Nodes, m/s (nodesPerSide()² row-major)
+    glm::ivec2 m_nodesOrigin{0, 0};    // Mode::Nodes: nodeOrigin() when they were set
+    float m_nodesMax = 0.0f;           // Mode::Nodes: the largest |u_x|, |u_z| of a node, m/s
+    std::vector<FlowNode> m_history;   // refresh()'s grid (nodesPerSide()² row-major)
+    glm::ivec2 m_historyOrigin{0, 0};  // its nodeOrigin()
+    int m_historyStride = 0;           // its stride(); 0: none yet
+    double m_historyTime = 0.0;        // the water's time at the last refresh(), s
+    uint64_t m_refreshes = 0;          // refresh() calls: pick the node rows to evaluate
+};
+
+} // namespace ob::foam
