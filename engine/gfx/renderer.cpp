@@ -608,7 +608,7 @@ void Renderer::prepareWater(const CameraView& camera, const WaterView& water, in
     // within [32, 512]. A software rasteriser shades vertices on one thread, and it shades a 4×4
     // block of pixels once for every triangle that touches it (docs/frame.md).
     const int autoCells = std::clamp(internalHeight / (isSoftwareRenderer() ? 12 : 3), 32, 512);
-    int resolution = std::max(m_def.grid_resolution > 0 ? m_def.grid_resolution : autoCells, 16);
+    const int resolution = m_def.grid_resolution > 0 ? m_def.grid_resolution : autoCells;  // [16, 2048]: render_def.h
     if (m_gridResolution != resolution) buildGrid(resolution);
     uploadWaterUniforms(camera, water, m_grid);
 }

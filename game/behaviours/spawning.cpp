@@ -29,7 +29,7 @@ ecs::Entity spawnObject(ecs::World& world, const ObjectDef& o, uint64_t seed) {
 
 void spawnObjects(ecs::World& world, const physics::PhysicsDef& def, const std::vector<ObjectDef>& objects, uint64_t seed) {
     world.setResource(std::make_unique<physics::PhysicsWorld>(def));
-    world.setResource(std::make_unique<physics::PhysicsDef>(def));
+    world.setResource(std::make_unique<PhysicsSettings>(PhysicsSettings{&def}));
     for (size_t i = 0; i < objects.size(); ++i) spawnObject(world, objects[i], seed * 1000003ull + i);
 }
 

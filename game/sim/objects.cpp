@@ -71,8 +71,13 @@ std::vector<std::pair<std::string, std::string>> keysNotReadBy(ObjectType type) 
     return refused;
 }
 
+const physics::PhysicsDef* findPhysicsDef(ecs::World& world) {
+    const auto* settings = world.resource<PhysicsSettings>();
+    return settings ? settings->def : nullptr;
+}
+
 const physics::PhysicsDef& physicsDef(ecs::World& world) {
-    const auto* def = world.resource<physics::PhysicsDef>();
+    const physics::PhysicsDef* def = findPhysicsDef(world);
     if (!def) throw std::logic_error("an object spawned before spawnObjects set [physics]");
     return *def;
 }
@@ -164,7 +169,7 @@ static float rippleAround(const interaction::RipplePatch& patch, glm::vec2 xz, f
 
 void physicsSystem(ecs::World& world, const ecs::Tick& tick) {
     auto* physicsWorld = world.resource<physics::PhysicsWorld>();
-    const auto* def = world.resource<physics::PhysicsDef>();
+    const physics::PhysicsDef* def = findPhysicsDef(world);
     if (!physicsWorld) return;
     const water::WaterQuery* water = nullptr;
     if (OceanState* ocean = world.resource<OceanState>()) water = ocean->water.get();

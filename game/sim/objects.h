@@ -213,9 +213,17 @@ struct Renderable {
 /// A lattice of counts.x × counts.y × counts.z equal probe spheres at the cell centres of a
 /// box of `size` (m, centred on the origin) whose volumes sum to the box's.
 std::vector<Probe> latticeProbes(glm::vec3 size, glm::ivec3 counts);
-/// The scene's [physics] (gravity, water density), which spawnObjects makes a resource before
-/// any object is spawned. Throws std::logic_error before that.
+/// Where the simulation reads [physics] (a resource): the world's scene section itself
+/// (world/scene_settings.h), so a live change is read in place; the layers below the world
+/// cannot name the scene, so they hold its section's address. spawnObjects sets it.
+struct PhysicsSettings {
+    const physics::PhysicsDef* def = nullptr;  ///< lives as long as the world
+};
+/// The scene's [physics] (gravity, water density, drag), set by spawnObjects before any object
+/// is spawned. Throws std::logic_error before that.
 const physics::PhysicsDef& physicsDef(ecs::World& world);
+/// As physicsDef, or null before spawnObjects.
+const physics::PhysicsDef* findPhysicsDef(ecs::World& world);
 /// The ripple patch's cell size (m), or the [ripples] default when there is no patch:
 /// bounding spheres are sized in cells (seed 001's SR).
 float rippleCellSize(ecs::World& world);

@@ -1,5 +1,6 @@
 // The run loop: platform, sandbox, clock, progress line, screenshot and stats.
 #include "tools/app.h"
+#include "world/live_keys.h"
 #include "platform/platform.h"
 
 #include "core/clock.h"
@@ -183,7 +184,7 @@ int runScene(const SceneDef& scene, const std::string& scenePath, const RunOptio
         scripted = scriptEvents(input);
         for (size_t i = 0; i < input.set.size(); ++i) {
             const SetDef& set = input.set[i];
-            if (const std::string problem = checkLiveSet(first, set.key, set.value); !problem.empty())
+            if (const std::string problem = checkLiveSet(set.key, set.value); !problem.empty())
                 throw InputError(options.input + ": set[" + std::to_string(i) + "]." + problem);
             EventDef e;
             e.at = set.at;

@@ -231,7 +231,7 @@ static void checkTransforms(Sandbox& sandbox) {
 static void checkBodies(Sandbox& sandbox, const SoakBounds& bounds, SoakReport& report) {
     ecs::World& world = sandbox.world();
     const OceanState* ocean = world.resource<OceanState>();
-    const auto* physics = world.resource<physics::PhysicsDef>();
+    const auto* physics = findPhysicsDef(world);
     auto& bodies = world.pool<Body>();
     for (size_t i = 0; i < bodies.size() && ocean && physics; ++i) {
         const Body& body = bodies.components()[i];

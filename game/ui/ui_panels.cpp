@@ -302,8 +302,9 @@ static void toolsPanel(ecs::World& world, double now) {
     ImGui::End();
 }
 
-void drawPanels(ecs::World& world, SceneDef& scene, const ecs::FrameTimer& timer, std::optional<float> dynamicScale,
+void drawPanels(ecs::World& world, SceneSettings& settings, const ecs::FrameTimer& timer, std::optional<float> dynamicScale,
                 std::optional<SceneDef>& restart, double now) {
+    const SceneDef& scene = settings.def;
     // The goal's windows come last, in front; the panel never comes before them.
     const auto goal = [&world] {
         if (const GameState* game = gameState(world)) {
@@ -344,8 +345,10 @@ void drawPanels(ecs::World& world, SceneDef& scene, const ecs::FrameTimer& timer
     if (ImGui::CollapsingHeader("timing graph")) timingGraph(timer);
     playerPanel(world);
     seaPanel(world, scene);
-    gfx::UiEditor editor;
-    editor.section("render", scene.render);
+    // The live settings: the [render] keys marked LIVE, applied from the next frame on.
+    gfx::UiEditor live(true);
+    live.section("render", settings.def.render);
+    if (live.changed()) settings.changed(SceneSection::Render);
     const SceneDef shown = sceneEditor(scene, restart);
 
     // --- save scene as

@@ -39,7 +39,7 @@ const water::WaterQuery* waterOf(ecs::World& world) {
 }
 
 float gravityOf(ecs::World& world) {
-    const auto* def = world.resource<physics::PhysicsDef>();
+    const auto* def = findPhysicsDef(world);
     return def ? def->gravity : physics::PhysicsDef{}.gravity;
 }
 
@@ -92,7 +92,7 @@ void stir(ecs::World& world, PlayerTools& tools, glm::vec3 waterPoint, float dt)
     if (tools.stirrer == ecs::Entity::None || !world.has<ecs::Transform>(tools.stirrer)) {
         tools.stirrer = world.create();
         world.add<ecs::Transform>(tools.stirrer, {centre});
-        const auto* physics = world.resource<physics::PhysicsDef>();
+        const auto* physics = findPhysicsDef(world);
         const float density = physics ? physics->water_density : physics::PhysicsDef{}.water_density;
         world.add<ecs::Motion>(tools.stirrer, {glm::vec3(0.0f), density * 4.0f / 3.0f * float(M_PI) * r * r * r});
         interaction::BoundingSphere sphere;  // a hand pushed through the water: it pushes it down
