@@ -57,7 +57,7 @@ ecs::Entity spawnShip(ecs::World& world, const ObjectDef& o) {
     physics::BodyId id = physicsWorld.addBox(o.ship.hull * 0.5f, mass, start);
     // A model is in metres (the hull box is its hull); the built-in unit box is scaled to the hull.
     Renderable look{gfx::MeshKind::Box, o.model.empty() ? o.ship.hull * 0.5f : o.ship.hull / ShipDef{}.hull, o.color, o.model};
-    ecs::Entity e = spawnBody(world, "ship", o.name, id, latticeProbes(o.ship.hull, PROBES), volume, mass, start, look);
+    ecs::Entity e = spawnBody(world, ObjectType::Ship, o.name, id, latticeProbes(o.ship.hull, PROBES), volume, mass, start, look);
     world.get<Body>(e).horizontalDrag = 0.0f;  // the hull model below resists horizontal motion
 
     // Six spheres on the keel line at the still-water line (draft = hull depth · density ratio),

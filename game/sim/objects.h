@@ -174,8 +174,8 @@ template <class V> void describe(V& v, ObjectDef& d) {
 
 /// What kind of object an entity is, and its scene name (every spawned object has one).
 struct ObjectTag {
-    std::string type;  ///< the ObjectDef type, or "cannonball"
-    std::string name;  ///< "" = unnamed
+    ObjectType type = ObjectType::Sphere;  ///< the [[objects]] type (a cannon's ball: Sphere, with a Cannonball)
+    std::string name;                      ///< "" = unnamed
 };
 
 /// A probe sphere in the body's frame: where the water pushes (buoyancy, drag).
@@ -191,8 +191,7 @@ struct AppliedForce {
 };
 
 /// A simulated body: its Bullet id, its probes, and what the water did last step.
-struct Body {
-    std::string type;
+struct Body {  // what it is: the entity's ObjectTag
     physics::BodyId id = physics::BodyId::None;
     std::vector<Probe> probes;
     float volume = 0.0f;             ///< m³ of the solid
@@ -236,7 +235,7 @@ interaction::BoundingSphere boundingSphereFor(const ObjectDef& def, const intera
 ecs::Entity spawnFloatingBody(ecs::World& world, const ObjectDef& def, uint64_t seed);
 /// Creates a floating Bullet body entity (Transform, Motion, Body, Renderable, ObjectTag);
 /// the caller adds its SphereSet. `probes` in the body frame; mass in kg.
-ecs::Entity spawnBody(ecs::World& world, const std::string& type, const std::string& name, physics::BodyId id,
+ecs::Entity spawnBody(ecs::World& world, ObjectType type, const std::string& name, physics::BodyId id,
                       std::vector<Probe> probes, float volume, float mass, const physics::BodyState& start,
                       const Renderable& look);
 /// Removes a body entity and its Bullet body.

@@ -13,6 +13,7 @@
 #include "gfx/scene_view.h"
 #include "ecs/components.h"
 #include "behaviours/cannon.h"
+#include "behaviours/spawning.h"
 #include "behaviours/fish.h"
 #include "goals/goals.h"
 #include "world/controls.h"
@@ -115,7 +116,7 @@ static void writeStats(const std::string& path, Sandbox& sandbox, const std::str
         const ecs::Transform& t = sandbox.world().get<ecs::Transform>(e);
         const ObjectTag* tag = sandbox.world().find<ObjectTag>(e);
         const glm::vec2 rollPitch = rollPitchDeg(t.rotation);
-        j["bodies"].push_back({{"type", b.type},
+        j["bodies"].push_back({{"type", objectTypeName(sandbox.world(), e)},
                                {"name", tag ? tag->name : ""},
                                {"position", {t.position.x, t.position.y, t.position.z}},
                                {"roll_deg", rollPitch.x},

@@ -79,7 +79,7 @@ std::vector<std::string> keyHelp(ecs::World& world) {
     const bool flying = cameraFlies(world);
     bool ship = false, cannon = false;
     for (const Ship& s : world.pool<Ship>().components()) ship = ship || s.player;
-    for (const Cannon& c : world.pool<Cannon>().components()) cannon = cannon || c.player;
+    for (const Cannon& c : world.pool<Cannon>().components()) cannon = cannon || c.def.player;
     std::vector<std::string> lines;
     if (flying) lines.push_back("W/S/A/D move  Q/E down/up  Shift fast  hold Q at the surface: dive");
     else if (ship) lines.push_back("W/S throttle  A/D rudder");
@@ -105,7 +105,7 @@ static void playerPanel(ecs::World& world) {
     auto& cannons = world.pool<Cannon>();
     for (size_t i = 0; i < cannons.size(); ++i) {
         const Cannon& c = cannons.components()[i];
-        if (c.player) ImGui::Text("cannon: yaw %.0f  elevation %.0f  shots %d", double(c.yawDeg), double(c.elevationDeg), c.shots);
+        if (c.def.player) ImGui::Text("cannon: yaw %.0f  elevation %.0f  shots %d", double(c.yawDeg), double(c.elevationDeg), c.shots);
     }
     for (const std::string& line : keyHelp(world)) ImGui::TextDisabled("%s", line.c_str());
 }

@@ -163,7 +163,7 @@ void fireAt(ecs::World& world, PlayerTools& tools, glm::vec3 point) {
     auto& cannons = world.pool<Cannon>();
     size_t pick = cannons.size();
     for (size_t i = 0; i < cannons.size() && pick == cannons.size(); ++i)
-        if (cannons.components()[i].player) pick = i;
+        if (cannons.components()[i].def.player) pick = i;
     if (pick == cannons.size() && cannons.size() > 0) pick = 0;
     if (pick == cannons.size()) {
         tools.message = "no cannon in this scene";
@@ -179,8 +179,8 @@ void fireAt(ecs::World& world, PlayerTools& tools, glm::vec3 point) {
     // The low arc, or the high one where the low would need the barrel below its lowest.
     for (int k = 0; k < 3; ++k) {
         const glm::vec3 muzzle = pivot + cannonAim(c.yawDeg, elevation) * CANNON_BARREL;
-        std::optional<float> e = ballisticElevationDeg(muzzle, point, c.muzzleSpeed, gravityOf(world), false);
-        if (e && *e < MIN_ELEVATION_DEG) e = ballisticElevationDeg(muzzle, point, c.muzzleSpeed, gravityOf(world), true);
+        std::optional<float> e = ballisticElevationDeg(muzzle, point, c.def.muzzle_speed, gravityOf(world), false);
+        if (e && *e < MIN_ELEVATION_DEG) e = ballisticElevationDeg(muzzle, point, c.def.muzzle_speed, gravityOf(world), true);
         reachable = e.has_value();
         elevation = e ? *e : 45.0f;  // out of reach: the farthest shot
     }
