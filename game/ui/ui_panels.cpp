@@ -78,7 +78,7 @@ static SceneDef sceneEditor(const SceneDef& scene, std::optional<SceneDef>& rest
 std::vector<std::string> keyHelp(ecs::World& world) {
     const bool flying = cameraFlies(world);
     bool ship = false, cannon = false;
-    for (const Ship& s : world.pool<Ship>().components()) ship = ship || s.player;
+    for (const Ship& s : world.pool<Ship>().components()) ship = ship || s.def.player;
     for (const Cannon& c : world.pool<Cannon>().components()) cannon = cannon || c.def.player;
     std::vector<std::string> lines;
     if (flying) lines.push_back("W/S/A/D move  Q/E down/up  Shift fast  hold Q at the surface: dive");
@@ -97,7 +97,7 @@ static void playerPanel(ecs::World& world) {
     auto& ships = world.pool<Ship>();
     for (size_t i = 0; i < ships.size(); ++i) {
         const Ship& ship = ships.components()[i];
-        if (!ship.player) continue;
+        if (!ship.def.player) continue;
         const glm::vec3 v = world.get<ecs::Motion>(ships.entities()[i]).velocity;
         ImGui::Text("ship: throttle %+.0f%%  rudder %+.0f  speed %.1f m/s", 100.0 * ship.throttle, double(ship.rudder),
                     double(std::hypot(v.x, v.z)));

@@ -71,7 +71,7 @@ void setSpeed(ecs::World& world, const std::string& target, float speed) {
     const ecs::Entity named = findObject(world, target);
     auto& ships = world.pool<Ship>();
     for (size_t k = 0; k < ships.size(); ++k)
-        if (target.empty() ? !ships.components()[k].player : ships.entities()[k] == named) ships.components()[k].speed = speed;
+        if (target.empty() ? !ships.components()[k].def.player : ships.entities()[k] == named) ships.components()[k].speed = speed;
     if (named != ecs::Entity::None)
         if (FishSchool* school = world.find<FishSchool>(named)) school->speed = speed;
 }

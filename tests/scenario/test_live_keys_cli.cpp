@@ -19,7 +19,7 @@ TEST_CASE("a set event of a key read once at start exits 2 naming file, line and
     CHECK(runOceanbox("run " + live + " --headless --size 32x32 --frames 2").exitCode == 0);
 }
 
-TEST_CASE("--set render.grid_resolution below 16 exits 2 with the key's range", "[cli][live_keys]") {
+TEST_CASE("render.grid_resolution below 16 on the command line (--set) exits 2 with the key's range", "[cli][live_keys]") {
     auto r = runOceanbox("run config/scenes/default.toml --headless --frames 1 --set render.grid_resolution=8");
     CHECK(r.exitCode == 2);
     CHECK(r.output.find("render.grid_resolution: must be 0 (auto) or in [16, 2048], got 8") != std::string::npos);
