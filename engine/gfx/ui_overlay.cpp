@@ -107,7 +107,10 @@ void UiEditor::field(const char* key, std::string& value, const char* doc, Chang
 void UiEditor::choice(const char* key, Words words, std::size_t& index, const char* doc) {
     if (ImGui::BeginCombo(key, words[index])) {
         for (std::size_t i = 0; i < words.size(); ++i)
-            if (ImGui::Selectable(words[i], i == index)) m_changed |= index != i, index = i;
+            if (ImGui::Selectable(words[i], i == index) && i != index) {
+                index = i;
+                m_changed = true;
+            }
         ImGui::EndCombo();
     }
     tooltip(doc);
