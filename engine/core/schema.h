@@ -5,6 +5,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
 #include <limits>
 #include <span>
 #include <string>
@@ -16,22 +17,58 @@
 
 namespace ob {
 
-/// Accepted range of a numeric key (inclusive), and extra constraints.
+/// Accepted range of a numeric key (inclusive), and extra constraints. The one place a key's
+/// range is written: the loader, a live `set`, the editor's sliders and the messages read it.
 struct Limits {
     double min = -std::numeric_limits<double>::infinity(); ///< smallest accepted value
     double max = std::numeric_limits<double>::infinity();  ///< largest accepted value
     bool powerOfTwo = false;                               ///< integer keys: must be 2^k
     bool nonZero = false;                                  ///< vectors: must not be all zero
+    bool orZero = false;                                   ///< 0 is accepted too (a key whose 0 means "auto")
 };
 
 /// Limits [lo, hi].
-constexpr Limits range(double lo, double hi) { return Limits{lo, hi, false, false}; }
+constexpr Limits range(double lo, double hi) { return Limits{lo, hi, false, false, false}; }
 /// A power of two in [lo, hi].
-constexpr Limits powerOfTwo(int lo, int hi) { return Limits{double(lo), double(hi), true, false}; }
+constexpr Limits powerOfTwo(int lo, int hi) { return Limits{double(lo), double(hi), true, false, false}; }
+/// 0 ("auto") or a value in [lo, hi].
+constexpr Limits autoOrRange(double lo, double hi) { return Limits{lo, hi, false, false, true}; }
 /// Any non-zero vector (a direction).
-constexpr Limits direction() { return Limits{-std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(), false, true}; }
+constexpr Limits direction() { return Limits{-std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(), false, true, false}; }
 /// No constraint.
 constexpr Limits any() { return Limits{}; }
+
+/// Whether `value` is within `l`'s range (its power-of-two and non-zero rules aside).
+constexpr bool inRange(const Limits& l, double value) { return (value >= l.min && value <= l.max) || (l.orZero && value == 0.0); }
+
+/// A number as a range shows it: integers without a fraction, others in %g.
+inline std::string rangeNumber(double v) {
+    char buf[32];
+    if (v == double(int64_t(v)) && v > -1e15 && v < 1e15) std::snprintf(buf, sizeof buf, "%lld", static_cast<long long>(v));
+    else std::snprintf(buf, sizeof buf, "%g", v);
+    return buf;
+}
+
+/// The range as messages and help print it: "in [16, 2048]", ">= 0", "0 (auto) or in [16, 2048]"
+/// ("" when unbounded).
+inline std::string rangeText(const Limits& l) {
+    const bool lo = l.min > -std::numeric_limits<double>::infinity(), hi = l.max < std::numeric_limits<double>::infinity();
+    std::string text = lo && hi ? "in [" + rangeNumber(l.min) + ", " + rangeNumber(l.max) + "]"
+                       : lo     ? ">= " + rangeNumber(l.min)
+                       : hi     ? "<= " + rangeNumber(l.max)
+                                : "";
+    return l.orZero ? "0 (auto) or " + text : text;
+}
+
+/// When a change of a key reaches the running world. Live keys are those a `set` event, the
+/// UI and an input script's [[set]] may change while the world runs; the rest are read once
+/// when the world is built (a change needs a restart).
+enum class Change : uint8_t {
+    AtStart,  ///< read once at start
+    Live,     ///< may change while the world runs (the systems that use it poll its section's version)
+};
+/// The mark a describe() puts last on a live key's line: `v.field("exposure", d.exposure, range(0.01, 16), "...", LIVE);`
+inline constexpr Change LIVE = Change::Live;
 
 /// A key that takes one of a fixed set of words is an enum with its words declared beside it,
 /// in the enum's order, by a function `names` found by argument-dependent lookup:
@@ -59,7 +96,9 @@ template <NamedEnum E> bool enumFromName(std::string_view word, E& value) {
 using Words = std::span<const char* const>;
 
 /// The visitor interface a describe() function is written against (documentation only:
-/// describe() is a template, any type with these members works).
+/// describe() is a template, any type with these members works). Every `field` takes a last
+/// `Change` argument (default Change::AtStart): LIVE marks a key that may change while the
+/// world runs; a visitor that does not care declares it unnamed, `Change = {}`.
 ///   void field(const char* key, bool& value, const char* doc);
 ///   void field(const char* key, int& value, Limits, const char* doc);
 ///   void field(const char* key, uint64_t& value, const char* doc);

@@ -274,13 +274,6 @@ static std::string num(double v) {
     return buf;
 }
 
-static std::string rangeText(const Limits& l) {
-    bool lo = std::isfinite(l.min), hi = std::isfinite(l.max);
-    if (lo && hi) return "in [" + num(l.min) + ", " + num(l.max) + "]";
-    if (lo) return ">= " + num(l.min);
-    return "<= " + num(l.max);
-}
-
 // The number in `node` as a double, or an error; integers are accepted where floats are.
 static bool readNumber(TomlReader::State& s, const toml::node& node, const char* key, double& out) {
     if (auto i = node.as_integer()) {
@@ -298,7 +291,7 @@ static bool readNumber(TomlReader::State& s, const toml::node& node, const char*
 }
 
 static bool checkRange(TomlReader::State& s, const toml::node& node, const char* key, double v, const Limits& l) {
-    bool inRange = v >= l.min && v <= l.max;
+    bool inRange = ob::inRange(l, v);
     bool pow2 = !l.powerOfTwo || (v >= 1 && (int64_t(v) & (int64_t(v) - 1)) == 0);
     if (inRange && pow2) return true;
     s.error(node, key, std::string("must be ") + (l.powerOfTwo ? "a power of two " : "") + rangeText(l) + ", got " + num(v));
@@ -377,14 +370,14 @@ void TomlReader::leaveSection() {
     m_state->stack.pop_back();
 }
 
-void TomlReader::field(const char* key, bool& value, const char*) {
+void TomlReader::field(const char* key, bool& value, const char*, Change) {
     const toml::node* node = m_state->lookup(key);
     if (!node) return;
     if (auto b = node->as_boolean()) value = b->get();
     else m_state->error(*node, key, std::string("expected true or false, got ") + typeName(*node));
 }
 
-void TomlReader::field(const char* key, int& value, Limits limits, const char*) {
+void TomlReader::field(const char* key, int& value, Limits limits, const char*, Change) {
     const toml::node* node = m_state->lookup(key);
     if (!node) return;
     auto i = node->as_integer();
@@ -393,11 +386,11 @@ void TomlReader::field(const char* key, int& value, Limits limits, const char*) 
         return;
     }
     const double v = double(i->get());
-    const Limits within{std::max(limits.min, double(INT_MIN)), std::min(limits.max, double(INT_MAX)), limits.powerOfTwo, false};
+    const Limits within{std::max(limits.min, double(INT_MIN)), std::min(limits.max, double(INT_MAX)), limits.powerOfTwo, false, limits.orZero};
     if (checkRange(*m_state, *node, key, v, within)) value = int(i->get());
 }
 
-void TomlReader::field(const char* key, uint64_t& value, const char*) {
+void TomlReader::field(const char* key, uint64_t& value, const char*, Change) {
     const toml::node* node = m_state->lookup(key);
     if (!node) return;
     auto i = node->as_integer();
@@ -408,7 +401,7 @@ void TomlReader::field(const char* key, uint64_t& value, const char*) {
     value = uint64_t(i->get());
 }
 
-void TomlReader::field(const char* key, float& value, Limits limits, const char*) {
+void TomlReader::field(const char* key, float& value, Limits limits, const char*, Change) {
     const toml::node* node = m_state->lookup(key);
     if (!node) return;
     float v;
@@ -437,11 +430,11 @@ static void readVector(TomlReader::State& s, const char* key, float* out, const 
     for (int i = 0; i < N; ++i) out[i] = v[i];
 }
 
-void TomlReader::field(const char* key, glm::vec2& value, Limits limits, const char*) {
+void TomlReader::field(const char* key, glm::vec2& value, Limits limits, const char*, Change) {
     readVector<2>(*m_state, key, &value.x, limits);
 }
 
-void TomlReader::field(const char* key, glm::vec3& value, Limits limits, const char*) {
+void TomlReader::field(const char* key, glm::vec3& value, Limits limits, const char*, Change) {
     readVector<3>(*m_state, key, &value.x, limits);
 }
 
@@ -454,7 +447,7 @@ static const toml::value<std::string>* readString(auto& s, const char* key) {
     return str;
 }
 
-void TomlReader::field(const char* key, std::string& value, const char*) {
+void TomlReader::field(const char* key, std::string& value, const char*, Change) {
     if (auto str = readString(*m_state, key)) value = str->get();
 }
 
@@ -476,7 +469,7 @@ void TomlReader::choice(const char* key, Words words, std::size_t& index) {
     m_state->error(*str, key, "must be one of " + list + ", got \"" + str->get() + "\"");
 }
 
-void TomlReader::field(const char* key, std::vector<glm::vec2>& points, Limits limits, const char*) {
+void TomlReader::field(const char* key, std::vector<glm::vec2>& points, Limits limits, const char*, Change) {
     State& s = *m_state;
     const toml::node* node = s.lookup(key);
     if (!node) return;

@@ -41,14 +41,14 @@ public:
     TomlReader(const TomlDocument& doc, std::vector<std::string>& errors);
     ~TomlReader();
 
-    void field(const char* key, bool& value, const char* doc);
-    void field(const char* key, int& value, Limits limits, const char* doc);
-    void field(const char* key, uint64_t& value, const char* doc);
-    void field(const char* key, float& value, Limits limits, const char* doc);
-    void field(const char* key, glm::vec2& value, Limits limits, const char* doc);
-    void field(const char* key, glm::vec3& value, Limits limits, const char* doc);
-    void field(const char* key, std::string& value, const char* doc);
-    template <NamedEnum E> void field(const char* key, E& value, const char* /*doc*/) {
+    void field(const char* key, bool& value, const char* doc, Change = {});
+    void field(const char* key, int& value, Limits limits, const char* doc, Change = {});
+    void field(const char* key, uint64_t& value, const char* doc, Change = {});
+    void field(const char* key, float& value, Limits limits, const char* doc, Change = {});
+    void field(const char* key, glm::vec2& value, Limits limits, const char* doc, Change = {});
+    void field(const char* key, glm::vec3& value, Limits limits, const char* doc, Change = {});
+    void field(const char* key, std::string& value, const char* doc, Change = {});
+    template <NamedEnum E> void field(const char* key, E& value, const char* /*doc*/, Change = {}) {
         std::size_t index = std::size_t(value);
         choice(key, enumNames<E>, index);
         value = E(index);
@@ -59,7 +59,7 @@ public:
     /// file, it is the error `why`.
     void refuse(const char* key, const std::string& why);
     /// A list of 2D points, `[[x, z], ...]` (may be empty).
-    void field(const char* key, std::vector<glm::vec2>& points, Limits limits, const char* doc);
+    void field(const char* key, std::vector<glm::vec2>& points, Limits limits, const char* doc, Change = {});
 
     /// Reads another Def's keys from this table.
     template <class Def> void fields(Def& def) { describe(*this, def); }

@@ -50,15 +50,15 @@ std::string emitToml(const TomlNode& node, const std::string& prefix = "");
 class TomlCollector {
 public:
     explicit TomlCollector(TomlNode& node) : m_node(node) {}
-    void field(const char* key, bool& v, const char*) { add(key, tomlValue(v)); }
-    void field(const char* key, int& v, Limits, const char*) { add(key, tomlValue(v)); }
-    void field(const char* key, uint64_t& v, const char*) { add(key, tomlValue(v)); }
-    void field(const char* key, float& v, Limits, const char*) { add(key, tomlValue(v)); }
-    void field(const char* key, glm::vec2& v, Limits, const char*) { add(key, tomlValue(v)); }
-    void field(const char* key, glm::vec3& v, Limits, const char*) { add(key, tomlValue(v)); }
-    void field(const char* key, std::string& v, const char*) { add(key, tomlValue(v)); }
-    template <NamedEnum E> void field(const char* key, E& v, const char*) { add(key, tomlValue(std::string(enumName(v)))); }
-    void field(const char* key, std::vector<glm::vec2>& v, Limits, const char*) { add(key, tomlValue(v)); }
+    void field(const char* key, bool& v, const char*, Change = {}) { add(key, tomlValue(v)); }
+    void field(const char* key, int& v, Limits, const char*, Change = {}) { add(key, tomlValue(v)); }
+    void field(const char* key, uint64_t& v, const char*, Change = {}) { add(key, tomlValue(v)); }
+    void field(const char* key, float& v, Limits, const char*, Change = {}) { add(key, tomlValue(v)); }
+    void field(const char* key, glm::vec2& v, Limits, const char*, Change = {}) { add(key, tomlValue(v)); }
+    void field(const char* key, glm::vec3& v, Limits, const char*, Change = {}) { add(key, tomlValue(v)); }
+    void field(const char* key, std::string& v, const char*, Change = {}) { add(key, tomlValue(v)); }
+    template <NamedEnum E> void field(const char* key, E& v, const char*, Change = {}) { add(key, tomlValue(std::string(enumName(v)))); }
+    void field(const char* key, std::vector<glm::vec2>& v, Limits, const char*, Change = {}) { add(key, tomlValue(v)); }
     /// Another Def's keys in this table, those that differ from its own defaults (its
     /// sections and lists too: [[game.gates]] of a race's settings).
     template <class Def> void fields(Def& def) {

@@ -50,47 +50,56 @@ static void sliderBounds(const Limits& l, float value, float& lo, float& hi) {
     hi = std::isfinite(l.max) ? float(l.max) : std::max(value, 0.0f) + 100.0f;
 }
 
-void UiEditor::field(const char* key, bool& value, const char* doc) {
-    ImGui::Checkbox(key, &value);
+void UiEditor::field(const char* key, bool& value, const char* doc, Change change) {
+    if (hidden(change)) return;
+    m_changed |= ImGui::Checkbox(key, &value);
     tooltip(doc);
 }
 
-void UiEditor::field(const char* key, int& value, Limits limits, const char* doc) {
+void UiEditor::field(const char* key, int& value, Limits limits, const char* doc, Change change) {
+    if (hidden(change)) return;
     int lo = std::isfinite(limits.min) ? int(limits.min) : -1000000;
     int hi = std::isfinite(limits.max) ? int(limits.max) : 1000000;
-    ImGui::DragInt(key, &value, 1.0f, lo, hi);
+    if (limits.orZero) lo = 0;  // 0 = auto; a value dragged between 0 and the range goes to its start
+    m_changed |= ImGui::DragInt(key, &value, 1.0f, lo, hi);
+    if (limits.orZero && value > 0 && value < int(limits.min)) value = int(limits.min);
     tooltip(doc);
 }
 
-void UiEditor::field(const char* key, uint64_t& value, const char* doc) {
+void UiEditor::field(const char* key, uint64_t& value, const char* doc, Change change) {
+    if (hidden(change)) return;
     ImGui::Text("%s = %llu", key, static_cast<unsigned long long>(value));
     tooltip(doc);
 }
 
-void UiEditor::field(const char* key, float& value, Limits limits, const char* doc) {
+void UiEditor::field(const char* key, float& value, Limits limits, const char* doc, Change change) {
+    if (hidden(change)) return;
     float lo, hi;
     sliderBounds(limits, value, lo, hi);
-    ImGui::SliderFloat(key, &value, lo, hi, "%.3f", hi / std::max(lo, 1e-6f) > 100.0f && lo > 0 ? ImGuiSliderFlags_Logarithmic : 0);
+    m_changed |= ImGui::SliderFloat(key, &value, lo, hi, "%.3f", hi / std::max(lo, 1e-6f) > 100.0f && lo > 0 ? ImGuiSliderFlags_Logarithmic : 0);
     tooltip(doc);
 }
 
-void UiEditor::field(const char* key, glm::vec2& value, Limits limits, const char* doc) {
+void UiEditor::field(const char* key, glm::vec2& value, Limits limits, const char* doc, Change change) {
+    if (hidden(change)) return;
     float lo, hi;
     sliderBounds(limits, 0.0f, lo, hi);
-    ImGui::DragFloat2(key, &value.x, 0.01f, lo, hi);
+    m_changed |= ImGui::DragFloat2(key, &value.x, 0.01f, lo, hi);
     tooltip(doc);
 }
 
-void UiEditor::field(const char* key, glm::vec3& value, Limits limits, const char* doc) {
+void UiEditor::field(const char* key, glm::vec3& value, Limits limits, const char* doc, Change change) {
+    if (hidden(change)) return;
     float lo, hi;
     sliderBounds(limits, 0.0f, lo, hi);
-    if (lo == 0.0f && hi == 1.0f) ImGui::ColorEdit3(key, &value.x, ImGuiColorEditFlags_Float);
-    else ImGui::DragFloat3(key, &value.x, 0.01f, lo, hi);
+    if (lo == 0.0f && hi == 1.0f) m_changed |= ImGui::ColorEdit3(key, &value.x, ImGuiColorEditFlags_Float);
+    else m_changed |= ImGui::DragFloat3(key, &value.x, 0.01f, lo, hi);
     if (limits.nonZero && value.x == 0.0f && value.y == 0.0f && value.z == 0.0f) value.y = 1e-3f;
     tooltip(doc);
 }
 
-void UiEditor::field(const char* key, std::string& value, const char* doc) {
+void UiEditor::field(const char* key, std::string& value, const char* doc, Change change) {
+    if (hidden(change)) return;
     ImGui::Text("%s = %s", key, value.c_str());
     tooltip(doc);
 }
@@ -98,13 +107,17 @@ void UiEditor::field(const char* key, std::string& value, const char* doc) {
 void UiEditor::choice(const char* key, Words words, std::size_t& index, const char* doc) {
     if (ImGui::BeginCombo(key, words[index])) {
         for (std::size_t i = 0; i < words.size(); ++i)
-            if (ImGui::Selectable(words[i], i == index)) index = i;
+            if (ImGui::Selectable(words[i], i == index) && i != index) {
+                index = i;
+                m_changed = true;
+            }
         ImGui::EndCombo();
     }
     tooltip(doc);
 }
 
-void UiEditor::field(const char* key, std::vector<glm::vec2>& points, Limits limits, const char* doc) {
+void UiEditor::field(const char* key, std::vector<glm::vec2>& points, Limits limits, const char* doc, Change change) {
+    if (hidden(change)) return;
     float lo, hi;
     sliderBounds(limits, 0.0f, lo, hi);
     ImGui::PushID(key);
@@ -112,7 +125,7 @@ void UiEditor::field(const char* key, std::vector<glm::vec2>& points, Limits lim
     tooltip(doc);
     for (size_t i = 0; i < points.size(); ++i) {
         ImGui::PushID(int(i));
-        ImGui::DragFloat2("##p", &points[i].x, 0.1f, lo, hi);
+        m_changed |= ImGui::DragFloat2("##p", &points[i].x, 0.1f, lo, hi);
         ImGui::PopID();
     }
     ImGui::PopID();

@@ -24,21 +24,27 @@ public:
 /// Edits a Def's fields with ImGui widgets: `UiEditor e; describe(e, def);`
 class UiEditor {
 public:
-    void field(const char* key, bool& value, const char* doc);
-    void field(const char* key, int& value, Limits limits, const char* doc);
-    void field(const char* key, uint64_t& value, const char* doc);
-    void field(const char* key, float& value, Limits limits, const char* doc);
-    void field(const char* key, glm::vec2& value, Limits limits, const char* doc);
-    void field(const char* key, glm::vec3& value, Limits limits, const char* doc);
-    void field(const char* key, std::string& value, const char* doc);
-    template <NamedEnum E> void field(const char* key, E& value, const char* doc) {
+    /// `liveOnly`: shows only the keys a describe() marks LIVE (a panel applied while the world
+    /// runs); otherwise every key.
+    explicit UiEditor(bool liveOnly = false) : m_liveOnly(liveOnly) {}
+    /// Whether a widget changed a value since the editor was made.
+    bool changed() const { return m_changed; }
+    void field(const char* key, bool& value, const char* doc, Change = {});
+    void field(const char* key, int& value, Limits limits, const char* doc, Change = {});
+    void field(const char* key, uint64_t& value, const char* doc, Change = {});
+    void field(const char* key, float& value, Limits limits, const char* doc, Change = {});
+    void field(const char* key, glm::vec2& value, Limits limits, const char* doc, Change = {});
+    void field(const char* key, glm::vec3& value, Limits limits, const char* doc, Change = {});
+    void field(const char* key, std::string& value, const char* doc, Change = {});
+    template <NamedEnum E> void field(const char* key, E& value, const char* doc, Change change = {}) {
+        if (hidden(change)) return;
         std::size_t index = std::size_t(value);
         choice(key, enumNames<E>, index, doc);
         value = E(index);
     }
     /// A combo box over `words` (an enum's).
     void choice(const char* key, Words words, std::size_t& index, const char* doc);
-    void field(const char* key, std::vector<glm::vec2>& points, Limits limits, const char* doc);
+    void field(const char* key, std::vector<glm::vec2>& points, Limits limits, const char* doc, Change = {});
     /// Another Def's keys, in this section.
     template <class Def> void fields(Def& def) { describe(*this, def); }
     /// A collapsible header per section.
@@ -62,10 +68,13 @@ public:
     }
 
 private:
+    bool hidden(Change change) const { return m_liveOnly && change != Change::Live; }
     bool beginItem(int index);
     void endItem();
     bool beginSection(const char* key);
     void endSection();
+    bool m_liveOnly = false;
+    bool m_changed = false;
 };
 
 } // namespace ob::gfx

@@ -116,7 +116,7 @@ void WaterPass::prepare(FrameContext& frame, const CameraView& camera, const Wat
     // within [32, 512]. A software rasteriser shades vertices on one thread, and it shades a 4×4
     // block of pixels once for every triangle that touches it (docs/frame.md).
     const int autoCells = std::clamp(frame.state.internal.y / (isSoftwareRenderer() ? 12 : 3), 32, 512);
-    const int resolution = std::max(frame.def.grid_resolution > 0 ? frame.def.grid_resolution : autoCells, 16);
+    const int resolution = frame.def.grid_resolution > 0 ? frame.def.grid_resolution : autoCells;  // [16, 2048]: render_def.h
     if (m_gridResolution != resolution) buildGrid(resolution);
     uploadUniforms(frame, camera, water);
 }

@@ -56,11 +56,11 @@ struct GerstnerDef {
 
 template <class V> void describe(V& v, GerstnerDef& d) {
     v.list("waves", d.waves, "explicit trochoids (kx, kz rad/m; amplitude m; phase rad)");
-    v.field("count", d.count, range(0, 64), "waves drawn from the [ocean] spectrum for wavelengths longer than the FFT tile; 0 = none");
+    v.field("count", d.count, range(0, 64), "waves drawn from the [ocean] spectrum for wavelengths longer than the FFT tile; 0 = none", LIVE);
     v.field("seed", d.seed, "seed of the generated waves");
     v.field("min_wavelength", d.min_wavelength, range(0, 1e6), "shortest generated wave, metres; 0 = √π·ocean.patch_size");
     v.field("max_wavelength", d.max_wavelength, range(0, 1e7), "longest generated wave, metres; 0 = auto (99.5% of the band's variance)");
-    v.field("amplitude_scale", d.amplitude_scale, range(0, 100), "factor on generated amplitudes");
+    v.field("amplitude_scale", d.amplitude_scale, range(0, 100), "factor on generated amplitudes", LIVE);
     v.field("steepness_warning", d.steepness_warning, range(0, 100), "Σ k·a at or above which loading warns");
 }
 

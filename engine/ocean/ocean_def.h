@@ -37,16 +37,16 @@ template <class V> void describe(V& v, OceanDef& d) {
     v.field("spectrum", d.spectrum, "wave spectrum: Phillips (eq. 5) or JONSWAP");
     v.field("resolution", d.resolution, powerOfTwo(16, 2048), "grid points per side (N); memory grows as N² (every grid of a scene at its maximum: ~5.6 GB)");
     v.field("patch_size", d.patch_size, range(1, 100000), "side of the largest tile, metres (L)");
-    v.field("amplitude", d.amplitude, range(0, 1), "Phillips constant A (dimensionless)");
-    v.field("wind_speed", d.wind_speed, range(0, 60), "wind speed at 10 m, m/s (V)");
-    v.field("wind_direction", d.wind_direction, direction(), "direction the wind blows toward, [x, z]");
-    v.field("small_wave_cutoff", d.small_wave_cutoff, range(0, 100), "damping length l of short waves, metres; 0 = 0.001·V²/g");
-    v.field("choppiness", d.choppiness, range(0, 10), "horizontal displacement strength (λ = −choppiness)");
+    v.field("amplitude", d.amplitude, range(0, 1), "Phillips constant A (dimensionless)", LIVE);
+    v.field("wind_speed", d.wind_speed, range(0, 60), "wind speed at 10 m, m/s (V)", LIVE);
+    v.field("wind_direction", d.wind_direction, direction(), "direction the wind blows toward, [x, z]", LIVE);
+    v.field("small_wave_cutoff", d.small_wave_cutoff, range(0, 100), "damping length l of short waves, metres; 0 = 0.001·V²/g", LIVE);
+    v.field("choppiness", d.choppiness, range(0, 10), "horizontal displacement strength (λ = −choppiness)", LIVE);
     v.field("seed", d.seed, "seed of the spectrum noise");
     v.field("gravity", d.gravity, range(0.1, 100), "gravity, m/s²");
     v.field("cascades", d.cascades, range(1, 4), "number of tiles of sizes L/φ^(2c)");
-    v.field("fetch", d.fetch, range(100, 10000000), "JONSWAP fetch, metres");
-    v.field("peak_enhancement", d.peak_enhancement, range(1, 10), "JONSWAP peak enhancement γ");
+    v.field("fetch", d.fetch, range(100, 10000000), "JONSWAP fetch, metres", LIVE);
+    v.field("peak_enhancement", d.peak_enhancement, range(1, 10), "JONSWAP peak enhancement γ", LIVE);
 }
 
 } // namespace ob::ocean

@@ -18,11 +18,11 @@ struct PhysicsDef {
 
 template <class V> void describe(V& v, PhysicsDef& d) {
     v.field("gravity", d.gravity, range(0, 100), "gravity, m/s²");
-    v.field("water_density", d.water_density, range(1, 20000), "water density ρ, kg/m³");
-    v.field("linear_drag", d.linear_drag, range(0, 1e6), "linear drag per submerged probe area, N·s/m per m²");
-    v.field("quadratic_drag", d.quadratic_drag, range(0, 100), "quadratic drag coefficient C_d");
-    v.field("angular_damping", d.angular_damping, range(0, 1), "angular velocity damping per second in water");
-    v.field("buoyancy_along_normal", d.buoyancy_along_normal, "buoyancy along the surface normal instead of up");
+    v.field("water_density", d.water_density, range(1, 20000), "water density ρ, kg/m³", LIVE);
+    v.field("linear_drag", d.linear_drag, range(0, 1e6), "linear drag per submerged probe area, N·s/m per m²", LIVE);
+    v.field("quadratic_drag", d.quadratic_drag, range(0, 100), "quadratic drag coefficient C_d", LIVE);
+    v.field("angular_damping", d.angular_damping, range(0, 1), "angular velocity damping per second in water", LIVE);
+    v.field("buoyancy_along_normal", d.buoyancy_along_normal, "buoyancy along the surface normal instead of up", LIVE);
     v.field("substeps", d.substeps, range(1, 16), "Bullet sub-steps per simulation step");
 }
 

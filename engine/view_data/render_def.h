@@ -48,32 +48,32 @@ struct RenderDef {
 };
 
 template <class V> void describe(V& v, RenderDef& d) {
-    v.field("sun_direction", d.sun_direction, direction(), "direction toward the sun (world, y up); unused when time_of_day is set");
-    v.field("time_of_day", d.time_of_day, range(-1, 24), "local solar time, hours: places the sun (12 = noon); -1 = off (sun_direction)");
-    v.field("latitude_deg", d.latitude_deg, range(-90, 90), "latitude for time_of_day, degrees");
-    v.field("sun_declination_deg", d.sun_declination_deg, range(-23.44, 23.44), "the sun's declination for time_of_day, degrees");
-    v.field("water_color", d.water_color, range(0, 1), "deep water body colour (linear RGB)");
-    v.field("fresnel", d.fresnel, "Fresnel term: Schlick or exact (n = 1.33)");
-    v.field("reflections", d.reflections, "planar reflection pass (local objects mirrored); off: sky only");
-    v.field("refractions", d.refractions, "refraction pass (objects under water, depth colour); off: body colour");
-    v.field("rtt_scale", d.rtt_scale, range(0.1, 1), "reflection/refraction target size / framebuffer size");
-    v.field("dudv_strength", d.dudv_strength, range(0, 0.2), "DU/DV distortion of reflection/refraction (screen fraction)");
-    v.field("normal_distortion", d.normal_distortion, range(0, 0.5), "lookup offset by the surface slope (screen fraction)");
-    v.field("water_clarity", d.water_clarity, range(0.05, 1000), "depth (m) over which refracted light fades to the water colour");
-    v.field("foam", d.foam, "whitecaps (FFT Jacobian), splash rings (steep ripples) and the persistent foam map");
-    v.field("splash_drops", d.splash_drops, "draw the splash drops as lit sprites");
-    v.field("splash_sprite_scale", d.splash_sprite_scale, range(1, 100), "sprite radius / drop radius (a drop stands for a cluster of spray)");
-    v.field("glitter", d.glitter, range(0, 100), "sun glitter strength");
-    v.field("glitter_shininess", d.glitter_shininess, range(1, 10000), "sun glitter exponent (Phong)");
-    v.field("exposure", d.exposure, range(0.01, 16), "exposure multiplier before tone mapping");
-    v.field("resolution_scale", d.resolution_scale, range(0.25, 1), "internal render size / framebuffer size (scaled up below 1)");
-    v.field("target_fps", d.target_fps, range(0, 1000), "dynamic resolution holds this frame rate (play); 0 = off");
-    v.field("antialias", d.antialias, "edge smoothing: off, fxaa (post pass), msaa4 (4 samples), auto (msaa4 on a GPU, fxaa in software)");
-    v.field("grid_resolution", d.grid_resolution, range(0, 2048), "projected grid cells per side; 0 = auto (internal height / 3 on a GPU, / 12 in software)");
-    v.field("upscale_sharpness", d.upscale_sharpness, range(0, 1), "sharpening of a frame scaled up from resolution_scale < 1 (fxaa); 0 = none");
-    v.field("far_fade", d.far_fade, "FFT cascades fade out with distance, Gerstner waves where the grid cannot sample them");
-    v.field("tile_fade", d.tile_fade, range(1, 1000), "FFT cascades fade out by this many of their tiles from the eye (far_fade)");
-    v.field("water_full_quality", d.water_full_quality, "every water term per pixel (reference shading; slower in software)");
+    v.field("sun_direction", d.sun_direction, direction(), "direction toward the sun (world, y up); unused when time_of_day is set", LIVE);
+    v.field("time_of_day", d.time_of_day, range(-1, 24), "local solar time, hours: places the sun (12 = noon); -1 = off (sun_direction)", LIVE);
+    v.field("latitude_deg", d.latitude_deg, range(-90, 90), "latitude for time_of_day, degrees", LIVE);
+    v.field("sun_declination_deg", d.sun_declination_deg, range(-23.44, 23.44), "the sun's declination for time_of_day, degrees", LIVE);
+    v.field("water_color", d.water_color, range(0, 1), "deep water body colour (linear RGB)", LIVE);
+    v.field("fresnel", d.fresnel, "Fresnel term: Schlick or exact (n = 1.33)", LIVE);
+    v.field("reflections", d.reflections, "planar reflection pass (local objects mirrored); off: sky only", LIVE);
+    v.field("refractions", d.refractions, "refraction pass (objects under water, depth colour); off: body colour", LIVE);
+    v.field("rtt_scale", d.rtt_scale, range(0.1, 1), "reflection/refraction target size / framebuffer size", LIVE);
+    v.field("dudv_strength", d.dudv_strength, range(0, 0.2), "DU/DV distortion of reflection/refraction (screen fraction)", LIVE);
+    v.field("normal_distortion", d.normal_distortion, range(0, 0.5), "lookup offset by the surface slope (screen fraction)", LIVE);
+    v.field("water_clarity", d.water_clarity, range(0.05, 1000), "depth (m) over which refracted light fades to the water colour", LIVE);
+    v.field("foam", d.foam, "whitecaps (FFT Jacobian), splash rings (steep ripples) and the persistent foam map", LIVE);
+    v.field("splash_drops", d.splash_drops, "draw the splash drops as lit sprites", LIVE);
+    v.field("splash_sprite_scale", d.splash_sprite_scale, range(1, 100), "sprite radius / drop radius (a drop stands for a cluster of spray)", LIVE);
+    v.field("glitter", d.glitter, range(0, 100), "sun glitter strength", LIVE);
+    v.field("glitter_shininess", d.glitter_shininess, range(1, 10000), "sun glitter exponent (Phong)", LIVE);
+    v.field("exposure", d.exposure, range(0.01, 16), "exposure multiplier before tone mapping", LIVE);
+    v.field("resolution_scale", d.resolution_scale, range(0.25, 1), "internal render size / framebuffer size (scaled up below 1)", LIVE);
+    v.field("target_fps", d.target_fps, range(0, 1000), "dynamic resolution holds this frame rate (play); 0 = off", LIVE);
+    v.field("antialias", d.antialias, "edge smoothing: off, fxaa (post pass), msaa4 (4 samples), auto (msaa4 on a GPU, fxaa in software)", LIVE);
+    v.field("grid_resolution", d.grid_resolution, autoOrRange(16, 2048), "projected grid cells per side; 0 = auto (internal height / 3 on a GPU, / 12 in software)", LIVE);
+    v.field("upscale_sharpness", d.upscale_sharpness, range(0, 1), "sharpening of a frame scaled up from resolution_scale < 1 (fxaa); 0 = none", LIVE);
+    v.field("far_fade", d.far_fade, "FFT cascades fade out with distance, Gerstner waves where the grid cannot sample them", LIVE);
+    v.field("tile_fade", d.tile_fade, range(1, 1000), "FFT cascades fade out by this many of their tiles from the eye (far_fade)", LIVE);
+    v.field("water_full_quality", d.water_full_quality, "every water term per pixel (reference shading; slower in software)", LIVE);
 }
 
 } // namespace ob::gfx

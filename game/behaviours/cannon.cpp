@@ -36,17 +36,17 @@ glm::quat aimRotation(float yawDeg, float elevationDeg) {
 void fire(ecs::World& world, Cannon& cannon, glm::vec3 pivot) {
     auto& physicsWorld = *world.resource<physics::PhysicsWorld>();
     const glm::vec3 aim = cannonAim(cannon.yawDeg, cannon.elevationDeg);
-    const float r = cannon.ballRadius;
+    const float r = cannon.def.ball_radius;
     const float volume = 4.0f / 3.0f * float(M_PI) * r * r * r;
-    const float mass = cannon.ballDensity * volume;
+    const float mass = cannon.def.ball_density * volume;
     physics::BodyState start;
     start.position = pivot + aim * CANNON_BARREL;
-    start.linearVelocity = aim * cannon.muzzleSpeed;
+    start.linearVelocity = aim * cannon.def.muzzle_speed;
     physics::BodyId id = physicsWorld.addSphere(r, mass, start);
-    ecs::Entity ball = spawnBody(world, "cannonball", "", id, {Probe{glm::vec3(0.0f), r}}, volume, mass, start,
+    ecs::Entity ball = spawnBody(world, ObjectType::Sphere, "", id, {Probe{glm::vec3(0.0f), r}}, volume, mass, start,
                                  Renderable{gfx::MeshKind::Sphere, glm::vec3(r), BALL_COLOR, ""});
     world.add<interaction::SphereSet>(ball, {{cannon.ballSphere}, {}, false});
-    world.add<Cannonball>(ball, {cannon.sinkDepth});
+    world.add<Cannonball>(ball, {cannon.def.sink_depth});
     ++cannon.shots;
 }
 
@@ -70,16 +70,11 @@ ecs::Entity spawnCannon(ecs::World& world, const ObjectDef& o) {
     // A model is in metres with its pivot at the origin; the built-in box is the barrel.
     const glm::vec3 scale = o.model.empty() ? glm::vec3(0.22f, 0.22f, 0.5f * CANNON_BARREL) : glm::vec3(1.0f);
     world.add<Renderable>(e, {gfx::MeshKind::Box, scale, o.color, o.model});
-    world.add<ObjectTag>(e, {"cannon", o.name});
+    world.add<ObjectTag>(e, {ObjectType::Cannon, o.name});
     Cannon cannon;
-    cannon.player = o.cannon.player;
+    cannon.def = o.cannon;
     cannon.yawDeg = o.cannon.yaw_deg;
     cannon.elevationDeg = o.cannon.elevation_deg;
-    cannon.muzzleSpeed = o.cannon.muzzle_speed;
-    cannon.rate = o.cannon.rate;
-    cannon.ballRadius = o.cannon.ball_radius;
-    cannon.ballDensity = o.cannon.ball_density;
-    cannon.sinkDepth = o.cannon.sink_depth;
     const float cell = rippleCellSize(world);
     cannon.ballSphere = boundingSphereFor(o, paperBallSphere(cell), cell);
     world.add<Cannon>(e, cannon);
@@ -102,7 +97,7 @@ void cannonSystem(ecs::World& world, const ecs::Tick& tick) {
     auto& cannons = world.pool<Cannon>();
     for (size_t i = 0; i < cannons.size(); ++i) {
         const ecs::Entity e = cannons.entities()[i];
-        if (cannons.components()[i].player && input) {
+        if (cannons.components()[i].def.player && input) {
             Cannon& c = cannons.components()[i];
             using platform::Key;
             c.yawDeg += AIM_RATE_DEG_S * dt * float(input->isDown(Key::Left) - input->isDown(Key::Right));
@@ -115,11 +110,11 @@ void cannonSystem(ecs::World& world, const ecs::Tick& tick) {
         pivot.rotation = aimRotation(c.yawDeg, c.elevationDeg);
         bool shoot = c.fireRequested;
         c.fireRequested = false;
-        if (c.rate > 0.0f) {
+        if (c.def.rate > 0.0f) {
             c.cooldown -= tick.dt;
             if (c.cooldown <= 0.0) {
                 shoot = true;
-                c.cooldown += 1.0 / double(c.rate);
+                c.cooldown += 1.0 / double(c.def.rate);
             }
         }
         if (shoot) fire(world, c, pivot.position);  // adds a ball: Transform references die here

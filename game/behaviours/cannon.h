@@ -9,16 +9,12 @@
 
 namespace ob::game {
 
-/// A cannon's behaviour state (its entity's Transform is the barrel's pivot and aim).
+/// A cannon: its [[objects]] settings as written, and the state they start (its entity's
+/// Transform is the barrel's pivot and aim).
 struct Cannon {
-    bool player = false;          ///< aimed with the arrow keys, fired with Space (and the cannon tool's click)
-    float yawDeg = 0.0f;          ///< aim azimuth, deg about +y, 0 faces +z
-    float elevationDeg = 30.0f;   ///< barrel above the horizon, deg
-    float muzzleSpeed = 25.0f;    ///< m/s
-    float rate = 0.0f;            ///< automatic shots per second (0: none)
-    float ballRadius = 0.25f;     ///< m
-    float ballDensity = 7800.0f;  ///< kg/m³
-    float sinkDepth = 15.0f;      ///< balls below −sinkDepth (m) are removed
+    CannonDef def;                ///< the scene's settings (muzzle speed, rate, balls, the start aim)
+    float yawDeg = 0.0f;          ///< aim azimuth now, deg about +y, 0 faces +z (starts at def.yaw_deg)
+    float elevationDeg = 30.0f;   ///< barrel above the horizon now, deg (starts at def.elevation_deg)
     interaction::BoundingSphere ballSphere;  ///< every ball's bounding sphere
     double cooldown = 0.0;        ///< s until the next automatic shot
     bool fireRequested = false;   ///< fire this step (events, keys)

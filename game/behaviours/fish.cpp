@@ -17,7 +17,7 @@ namespace ob::game {
 namespace {
 
 // Time until a fish's next jump: uniform in [0.5, 1.5] × the mean interval.
-float nextJumpDelay(FishSchool& s) { return s.jumpInterval * float(0.5 + uniform01(s.rng)); }
+float nextJumpDelay(FishSchool& s) { return s.def.jump_interval * float(0.5 + uniform01(s.rng)); }
 
 // The paper's fish sphere (seed 001 §V-2): smaller than the body (radius 0.35 × length),
 // SHR 1.4, AF −0.3, SD from the motion (+1 rising, −1 falling).
@@ -36,18 +36,12 @@ float fishMass(float length) { return FISH_CONDITION * length * length * length;
 
 ecs::Entity spawnFishSchool(ecs::World& world, const ObjectDef& o, uint64_t seed) {
     FishSchool s;
-    s.region = o.school.shape == SchoolShape::Region;
-    s.centre = glm::vec2(o.position.x, o.position.z);
-    s.radius = o.school.radius;
-    s.halfSize = 0.5f * glm::vec2(o.school.size.x, o.school.size.z);
-    s.speed = o.school.speed;
-    s.depth = o.school.depth;
-    s.jumpHeight = o.school.jump_height;
-    s.jumpInterval = o.school.jump_interval;
-    s.length = o.school.length;
-    s.draw = o.school.draw;
+    s.def = o.school;
     s.color = o.color;
     s.model = o.model;
+    s.centre = glm::vec2(o.position.x, o.position.z);
+    s.halfSize = 0.5f * glm::vec2(o.school.size.x, o.school.size.z);
+    s.speed = o.school.speed;
     s.sphere = boundingSphereFor(o, paperFishSphere(o.school.length), rippleCellSize(world));
     s.sphere.direction = interaction::SphereDirection::Auto;  // SD follows the vertical motion in either case
     s.rng = seed * 0x2545F4914F6CDD1Dull + 0x9E3779B97F4A7C15ull;
@@ -62,21 +56,21 @@ ecs::Entity spawnFishSchool(ecs::World& world, const ObjectDef& o, uint64_t seed
     s.contacts.assign(n, {});
     s.stamped.assign(n, 0);
     for (size_t i = 0; i < n; ++i) {
-        if (s.region) {
-            s.position[i] = glm::vec3(s.centre.x + s.halfSize.x * float(2.0 * uniform01(s.rng) - 1.0), -s.depth,
+        if (s.inRegion()) {
+            s.position[i] = glm::vec3(s.centre.x + s.halfSize.x * float(2.0 * uniform01(s.rng) - 1.0), -s.def.depth,
                                       s.centre.y + s.halfSize.y * float(2.0 * uniform01(s.rng) - 1.0));
             s.lane[i] = float(2.0 * M_PI * uniform01(s.rng));
         } else {
             // Spread evenly round the circle, on lanes within ±15% of its radius.
             s.angle[i] = float(2.0 * M_PI * (double(i) + 0.5 * uniform01(s.rng)) / double(n));
-            s.lane[i] = s.radius * float(0.85 + 0.3 * uniform01(s.rng));
-            s.position[i] = glm::vec3(s.centre.x + s.lane[i] * std::cos(s.angle[i]), -s.depth, s.centre.y + s.lane[i] * std::sin(s.angle[i]));
+            s.lane[i] = s.def.radius * float(0.85 + 0.3 * uniform01(s.rng));
+            s.position[i] = glm::vec3(s.centre.x + s.lane[i] * std::cos(s.angle[i]), -s.def.depth, s.centre.y + s.lane[i] * std::sin(s.angle[i]));
         }
-        s.timer[i] = s.jumpInterval * float(1.5 * uniform01(s.rng));  // staggered first jumps
+        s.timer[i] = s.def.jump_interval * float(1.5 * uniform01(s.rng));  // staggered first jumps
     }
     ecs::Entity e = world.create();
     world.add<ecs::Transform>(e, {glm::vec3(s.centre.x, 0.0f, s.centre.y)});
-    world.add<ObjectTag>(e, {"fish_school", o.name});
+    world.add<ObjectTag>(e, {ObjectType::FishSchool, o.name});
     world.add<FishSchool>(e, std::move(s));
     return e;
 }
@@ -86,13 +80,13 @@ void fishSystem(ecs::World& world, const ecs::Tick& tick) {
     const float dt = float(tick.dt);
     for (FishSchool& s : world.pool<FishSchool>().components()) {
         // Take-off speed from the swimming depth to the apex, and the arc's duration.
-        const float v0 = std::sqrt(2.0f * g * (s.depth + s.jumpHeight));
+        const float v0 = std::sqrt(2.0f * g * (s.def.depth + s.def.jump_height));
         const float arcTime = 2.0f * v0 / g;
         for (size_t i = 0; i < s.size(); ++i) {
             glm::vec3& p = s.position[i];
             glm::vec3& v = s.velocity[i];
             // --- along the circle or the region
-            if (s.region) {
+            if (s.inRegion()) {
                 glm::vec2 dir(std::sin(s.lane[i]), std::cos(s.lane[i]));
                 p.x += dir.x * s.speed * dt;
                 p.z += dir.y * s.speed * dt;
@@ -130,12 +124,12 @@ void fishSystem(ecs::World& world, const ecs::Tick& tick) {
                     s.jumping[i] = 0;
                     s.timer[i] = nextJumpDelay(s);
                 } else {
-                    p.y = -s.depth + v0 * tau - 0.5f * g * tau * tau;
+                    p.y = -s.def.depth + v0 * tau - 0.5f * g * tau * tau;
                     v.y = v0 - g * tau;
                     continue;
                 }
             }
-            p.y = -s.depth;
+            p.y = -s.def.depth;
             v.y = 0.0f;
         }
     }
@@ -156,7 +150,7 @@ void eachFishSphere(ecs::World& world, SphereUse use, const SphereVisitor& visit
         p.owner = uint32_t(schools.entities()[k]);
         p.count = uint32_t(s.size());
         p.sphere = &s.sphere;
-        p.crossingMass = fishMass(s.length);  // the body's, not its bounding sphere's (94 kg for a 0.8 m fish)
+        p.crossingMass = fishMass(s.def.length);  // the body's, not its bounding sphere's (94 kg for a 0.8 m fish)
         for (size_t i = 0; i < s.size(); ++i) {
             p.index = uint32_t(i);
             p.contact = &s.contacts[i];
@@ -193,9 +187,9 @@ StampSource fishSource() { return {"fish", eachFishSphere, largestFishStamp}; }
 
 void appendFishDraws(ecs::World& world, std::vector<gfx::ObjectDraw>& draws) {
     for (const FishSchool& s : world.pool<FishSchool>().components()) {
-        if (!s.draw) continue;
+        if (!s.def.draw) continue;
         // A model is 1 m long; the built-in unit sphere becomes an ellipsoid body.
-        const glm::vec3 scale = s.model.empty() ? s.length * glm::vec3(0.09f, 0.12f, 0.5f) : glm::vec3(s.length);
+        const glm::vec3 scale = s.model.empty() ? s.def.length * glm::vec3(0.09f, 0.12f, 0.5f) : glm::vec3(s.def.length);
         const size_t n = std::min(s.size(), MAX_DRAWN_FISH);
         for (size_t i = 0; i < n; ++i) {
             glm::vec3 v = s.velocity[i];

@@ -14,21 +14,17 @@
 
 namespace ob::game {
 
-/// A school's settings and its fish (structure of arrays, index = fish).
+/// A school: its [[objects]] settings as written, what they place, and its fish (structure of
+/// arrays, index = fish).
 struct FishSchool {
     // --- settings
-    bool region = false;          ///< false: on a circle of `radius`; true: inside a rectangle of `halfSize`
-    glm::vec2 centre{0.0f};       ///< world [x, z] of the circle or region centre, m
-    float radius = 10.0f;         ///< circle radius, m
-    glm::vec2 halfSize{10.0f};    ///< region half extents [x, z], m
-    float speed = 3.0f;           ///< swimming speed, m/s
-    float depth = 1.5f;           ///< swimming depth below the mean surface, m
-    float jumpHeight = 1.0f;      ///< apex above the mean surface, m
-    float jumpInterval = 3.0f;    ///< mean time between one fish's jumps, s
-    float length = 0.6f;          ///< body length, m
-    bool draw = true;             ///< drawn by the opaque pass
-    glm::vec3 color{0.6f};        ///< body colour
-    std::string model;            ///< glTF fish (1 m long, nose +z), scaled by length; "" = built-in ellipsoid
+    FishSchoolDef def;            ///< the scene's settings (shape, radius, depth, jumps, length, draw)
+    glm::vec3 color{0.6f};        ///< body colour (the object's `color`)
+    std::string model;            ///< glTF fish (1 m long, nose +z), scaled by def.length; "" = built-in ellipsoid
+    // --- placement and state
+    glm::vec2 centre{0.0f};       ///< world [x, z] of the circle or region centre (the object's position), m
+    glm::vec2 halfSize{10.0f};    ///< region half extents [x, z] (half def.size), m
+    float speed = 3.0f;           ///< swimming speed now, m/s (starts at def.speed; set_speed changes it)
     interaction::BoundingSphere sphere;  ///< every fish's bounding sphere
     uint64_t rng = 1;             ///< state of the school's random sequence (jump timing)
     // --- per fish
@@ -43,6 +39,8 @@ struct FishSchool {
     uint64_t jumps = 0;                ///< jumps started so far
     uint64_t stamps = 0;               ///< stamps so far
     size_t size() const { return position.size(); }
+    /// Inside a rectangle of `halfSize` (else on a circle of def.radius).
+    bool inRegion() const { return def.shape == SchoolShape::Region; }
 };
 
 /// Fish drawn per school at most (the rest still swim and stamp).

@@ -57,7 +57,7 @@ ecs::Entity spawnShip(ecs::World& world, const ObjectDef& o) {
     physics::BodyId id = physicsWorld.addBox(o.ship.hull * 0.5f, mass, start);
     // A model is in metres (the hull box is its hull); the built-in unit box is scaled to the hull.
     Renderable look{gfx::MeshKind::Box, o.model.empty() ? o.ship.hull * 0.5f : o.ship.hull / ShipDef{}.hull, o.color, o.model};
-    ecs::Entity e = spawnBody(world, "ship", o.name, id, latticeProbes(o.ship.hull, PROBES), volume, mass, start, look);
+    ecs::Entity e = spawnBody(world, ObjectType::Ship, o.name, id, latticeProbes(o.ship.hull, PROBES), volume, mass, start, look);
     world.get<Body>(e).horizontalDrag = 0.0f;  // the hull model below resists horizontal motion
 
     // Six spheres on the keel line at the still-water line (draft = hull depth · density ratio),
@@ -73,10 +73,8 @@ ecs::Entity spawnShip(ecs::World& world, const ObjectDef& o) {
     world.add<interaction::SphereSet>(e, std::move(set));
 
     Ship ship;
-    ship.hull = o.ship.hull;
-    ship.player = o.ship.player;
+    ship.def = o.ship;
     ship.speed = o.ship.speed;
-    ship.waypoints = o.ship.waypoints;
     world.add<Ship>(e, std::move(ship));
     return e;
 }
@@ -93,7 +91,7 @@ struct HullFrame {
 // The pilot: the player's lever and rudder, or the heading to the next waypoint. Returns the
 // speed the engine aims for (m/s).
 float pilot(Ship& ship, const glm::vec3& position, float heading, const StepInput* input, float dt) {
-    if (ship.player) {
+    if (ship.def.player) {
         if (input && !input->keysMoveCamera) {
             using platform::Key;
             const int lever = int(input->isDown(Key::W)) - int(input->isDown(Key::S));
@@ -104,11 +102,11 @@ float pilot(Ship& ship, const glm::vec3& position, float heading, const StepInpu
         ship.throttle = std::clamp(ship.throttle, -0.5f, 1.0f);
         return ship.throttle * ship.speed;
     }
-    if (!ship.waypoints.empty()) {
-        glm::vec2 to = ship.waypoints[ship.nextWaypoint] - glm::vec2(position.x, position.z);
+    if (!ship.def.waypoints.empty()) {
+        glm::vec2 to = ship.def.waypoints[ship.nextWaypoint] - glm::vec2(position.x, position.z);
         if (glm::dot(to, to) < ARRIVE_RADIUS * ARRIVE_RADIUS) {
-            ship.nextWaypoint = (ship.nextWaypoint + 1) % ship.waypoints.size();
-            to = ship.waypoints[ship.nextWaypoint] - glm::vec2(position.x, position.z);
+            ship.nextWaypoint = (ship.nextWaypoint + 1) % ship.def.waypoints.size();
+            to = ship.def.waypoints[ship.nextWaypoint] - glm::vec2(position.x, position.z);
         }
         const float error = wrapAngle(std::atan2(to.x, to.y) - heading);  // + : turn toward +yaw (port)
         ship.rudder = std::clamp(-HEADING_GAIN * error / MAX_TURN, -1.0f, 1.0f);
@@ -126,14 +124,14 @@ void hullForces(const Ship& ship, const ecs::Transform& t, const ecs::Motion& mo
     if (wet <= 0.0f) return;
     const float top = std::max(ship.speed, 0.5f);
     const float mass = motion.mass;
-    const glm::vec3 stern = t.position + t.rotation * glm::vec3(0.0f, -0.25f * ship.hull.y, -0.5f * ship.hull.z);
+    const glm::vec3 stern = t.position + t.rotation * glm::vec3(0.0f, -0.25f * ship.def.hull.y, -0.5f * ship.def.hull.z);
     // Forward resistance m·u|u|/(top·COAST_TIME); the engine feeds that forward at the
     // target speed and closes the error in SPEED_TIME.
     const float resistance = mass * f.forward * std::abs(f.forward) / (top * COAST_TIME);
     const float maxThrust = mass * top / COAST_TIME;
     // The player's lever at zero idles the engine (the ship coasts); a scripted ship at
     // speed 0 holds its place (the paper's ship at rest).
-    const bool idle = ship.player && ship.throttle == 0.0f;
+    const bool idle = ship.def.player && ship.throttle == 0.0f;
     const float thrust = idle ? 0.0f
                               : std::clamp(mass * targetSpeed * std::abs(targetSpeed) / (top * COAST_TIME) +
                                                mass * (targetSpeed - f.forward) / SPEED_TIME,
@@ -144,19 +142,19 @@ void hullForces(const Ship& ship, const ecs::Transform& t, const ecs::Motion& mo
     body.forces.push_back({-f.starboard * (mass * f.sideways / SLIP_TIME * wet), t.position});
     // The rudder: a sideways force at the stern whose moment brings the yaw rate to the
     // rudder's (which needs water flowing past it: it fades below half the top speed).
-    const float yawInertia = mass * (ship.hull.z * ship.hull.z + ship.hull.x * ship.hull.x) / 12.0f;
+    const float yawInertia = mass * (ship.def.hull.z * ship.def.hull.z + ship.def.hull.x * ship.def.hull.x) / 12.0f;
     const float wantedYawRate = -ship.rudder * MAX_TURN * std::clamp(f.forward / (0.5f * top), -1.0f, 1.0f);
     const float moment = yawInertia * (wantedYawRate - body.angularVelocity.y) / YAW_TIME;
     // A force F·(bow × up) at the stern (arm L/2 behind the centre) turns about +y by F·L/2.
-    body.forces.push_back({glm::cross(f.bow, glm::vec3(0, 1, 0)) * (moment / (0.5f * ship.hull.z) * wet), stern});
+    body.forces.push_back({glm::cross(f.bow, glm::vec3(0, 1, 0)) * (moment / (0.5f * ship.def.hull.z) * wet), stern});
     // Bilge keels: a couple about the hull's long axis against the roll rate (vertical
     // forces ±F at the two sides, F·beam = moment).
     const glm::vec3 keel = t.rotation * glm::vec3(0, 0, 1), side = t.rotation * glm::vec3(1, 0, 0), deck = t.rotation * glm::vec3(0, 1, 0);
-    const float rollInertia = mass * (ship.hull.x * ship.hull.x + ship.hull.y * ship.hull.y) / 12.0f;
+    const float rollInertia = mass * (ship.def.hull.x * ship.def.hull.x + ship.def.hull.y * ship.def.hull.y) / 12.0f;
     const float rollMoment = -rollInertia * glm::dot(body.angularVelocity, keel) / ROLL_TIME * wet;
-    const glm::vec3 couple = deck * (rollMoment / ship.hull.x);
-    body.forces.push_back({couple, t.position + side * (0.5f * ship.hull.x)});
-    body.forces.push_back({-couple, t.position - side * (0.5f * ship.hull.x)});
+    const glm::vec3 couple = deck * (rollMoment / ship.def.hull.x);
+    body.forces.push_back({couple, t.position + side * (0.5f * ship.def.hull.x)});
+    body.forces.push_back({-couple, t.position - side * (0.5f * ship.def.hull.x)});
 }
 
 } // namespace

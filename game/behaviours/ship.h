@@ -13,13 +13,11 @@ namespace ob::game {
 /// Bounding spheres along the hull (seed 001 fig. 15).
 constexpr int SHIP_SPHERES = 6;
 
-/// A ship's behaviour state.
+/// A ship: its [[objects]] settings as written, and the pilot's state.
 struct Ship {
-    glm::vec3 hull{3.0f, 1.5f, 10.0f}; ///< the hull box (m): beam x, depth y, length z, bow at local +z
-    bool player = false;               ///< steered from the input state
-    float speed = 5.0f;                ///< cruise (scripted) or top (player) speed, m/s
-    std::vector<glm::vec2> waypoints;  ///< [x, z] in visiting order, looping; empty: hold the heading
-    size_t nextWaypoint = 0;           ///< index of the waypoint steered to
+    ShipDef def;                       ///< the scene's settings (hull, player, waypoints, the speed it starts with)
+    float speed = 5.0f;                ///< cruise (scripted) or top (player) speed now, m/s (starts at def.speed; set_speed changes it)
+    size_t nextWaypoint = 0;           ///< index of def.waypoints steered to
     float throttle = 0.0f;             ///< player's lever: target speed = throttle · speed, [−0.5, 1]
     float rudder = 0.0f;               ///< [−1, 1], + turns to starboard (right)
 };

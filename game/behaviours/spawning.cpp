@@ -27,9 +27,15 @@ ecs::Entity spawnObject(ecs::World& world, const ObjectDef& o, uint64_t seed) {
     return objectSpawner(o.type).spawn(world, o, seed);
 }
 
+std::string objectTypeName(ecs::World& world, ecs::Entity e) {
+    if (world.has<Cannonball>(e)) return "cannonball";
+    const ObjectTag* tag = world.find<ObjectTag>(e);
+    return tag ? enumName(tag->type) : "";
+}
+
 void spawnObjects(ecs::World& world, const physics::PhysicsDef& def, const std::vector<ObjectDef>& objects, uint64_t seed) {
     world.setResource(std::make_unique<physics::PhysicsWorld>(def));
-    world.setResource(std::make_unique<physics::PhysicsDef>(def));
+    world.setResource(std::make_unique<PhysicsSettings>(PhysicsSettings{&def}));
     for (size_t i = 0; i < objects.size(); ++i) spawnObject(world, objects[i], seed * 1000003ull + i);
 }
 

@@ -255,7 +255,7 @@ void addBenchCommand(CLI::App& app, CommandAction& action, const std::string& co
     ocean->output.command = commandLine;
     CLI::App* o = bench->add_subcommand("ocean", "seed 000 Tables 1-3: fps against spectrum size (sim + render, sim, FFT, FFTW)");
     o->add_option("--sizes", ocean->sizes, "spectrum sizes N (ocean.resolution), comma-separated")->delimiter(',');
-    o->add_option("--backend", ocean->backends, "cpu, gpu or both, comma-separated")->delimiter(',');
+    o->add_option("--backend", ocean->backendWords, "cpu, gpu or both, comma-separated")->delimiter(',');
     o->add_option("--scene", ocean->scene, "scene drawn for sim + render (default config/scenes/default.toml)");
     o->add_option("--size", ocean->size, "framebuffer WxH for sim + render (default 1280x1024, the paper's)");
     o->add_flag("--no-render", ocean->noRender, "skip the sim + render column");

@@ -6,6 +6,7 @@
 //   sea     — frame times across a live change of the sea (the cross-fade): max frame / median
 // Each prints a Markdown table, and writes CSV (--out) and an SVG chart (--chart).
 #pragma once
+#include "core/backend.h"
 #include <CLI/CLI.hpp>
 
 #include <functional>
@@ -53,7 +54,7 @@ struct FieldsBenchArgs {
 struct OceanBenchArgs {
     BenchOutput output;
     std::vector<long> sizes{64, 128, 256, 512, 1024};
-    std::vector<std::string> backends{"cpu", "gpu"};
+    std::vector<std::string> backendWords{"cpu", "gpu"};  ///< --backend as given: "cpu" and/or "gpu" (oceanBackends reads them)
     std::string scene;         ///< scene drawn for sim + render (default: config/scenes/default.toml)
     std::string size = "1280x1024";  ///< the paper's
     bool noRender = false;     ///< skip sim + render
@@ -88,6 +89,9 @@ struct SeaBenchArgs {
 int benchSpheres(const SpheresBenchArgs& args);
 int benchFields(const FieldsBenchArgs& args);
 int benchOcean(const OceanBenchArgs& args);
+/// The backends `bench ocean` measures, in the order given (throws InputError naming --backend
+/// for a word that is neither cpu nor gpu).
+std::vector<Backend> oceanBackends(const OceanBenchArgs& args);
 int benchFrame(const FrameBenchArgs& args);
 int benchSea(const SeaBenchArgs& args);
 

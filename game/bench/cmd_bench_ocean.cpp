@@ -6,6 +6,7 @@
 #include "bench/cmd_bench.h"
 #include "core/clock.h"
 #include "core/error.h"
+#include "core/schema.h"
 #include "core/log.h"
 #include "gfx/gl.h"
 #include "ocean/ocean_fft_cpu.h"
@@ -139,9 +140,7 @@ void checkOceanArgs(const OceanBenchArgs& a) {
         checkRange("--sizes", s, 16, ocean::OceanFftGpu::MAX_RESOLUTION);
         if (s & (s - 1)) throw InputError("--sizes: each size must be a power of two (ocean.resolution), got " + std::to_string(s));
     }
-    if (a.backends.empty()) throw InputError("--backend: give cpu, gpu or both");
-    for (const std::string& b : a.backends)
-        if (b != "cpu" && b != "gpu") throw InputError("--backend: expected cpu or gpu, got '" + b + "'");
+    oceanBackends(a);
     checkRange("--frames", a.frames, 1, 1000000);
     checkRange("--warmup", a.warmup, 0, 1000000);
 }
@@ -181,6 +180,17 @@ void writeOceanChart(const OceanBenchArgs& a, const std::map<std::string, ChartS
 
 } // namespace
 
+std::vector<Backend> oceanBackends(const OceanBenchArgs& a) {
+    if (a.backendWords.empty()) throw InputError("--backend: give cpu, gpu or both");
+    std::vector<Backend> backends;
+    for (const std::string& word : a.backendWords) {
+        Backend b = Backend::Auto;
+        if (!enumFromName(word, b) || b == Backend::Auto) throw InputError("--backend: expected cpu or gpu, got '" + word + "'");
+        backends.push_back(b);
+    }
+    return backends;
+}
+
 int benchOcean(const OceanBenchArgs& a) {
     checkOceanArgs(a);
     const auto [w, h] = parseSize("--size", a.size);
@@ -213,11 +223,12 @@ int benchOcean(const OceanBenchArgs& a) {
         sr.x.push_back(x);
         sr.y.push_back(y);
     };
-    const int points = int(a.sizes.size() * a.backends.size());
+    const int points = int(a.sizes.size() * a.backendWords.size());
     int point = 0;
     for (long size : a.sizes) {
         double fftw = NAN;
-        for (const std::string& backend : a.backends) {
+        for (const Backend b : oceanBackends(a)) {
+            const std::string backend = enumName(b);  // the row's and the chart's word
             ++point;
             const std::string what = "N " + std::to_string(size) + " " + backend;
             std::vector<std::string> overrides = a.sets;
@@ -226,7 +237,7 @@ int benchOcean(const OceanBenchArgs& a) {
             overrides.push_back("ocean.cascades=1");
             const SceneDef scene = loadScene(path, overrides);
             progress.show(what + ": sim", point, points);
-            OceanPoint p = backend == "cpu" ? cpuOcean(scene.ocean, a.warmup, a.frames) : gpuOcean(scene.ocean, a.warmup, a.frames);
+            OceanPoint p = b == Backend::Cpu ? cpuOcean(scene.ocean, a.warmup, a.frames) : gpuOcean(scene.ocean, a.warmup, a.frames);
             if (!a.noRender) {
                 progress.show(what + ": sim + render", point, points);
                 p.simRenderMs = simRenderMs(scene, *platform, a.warmup, a.frames);

@@ -288,7 +288,7 @@ void addGame(ecs::World& world, const SceneDef& scene) {
     case GameMode::Race: {
         auto& ships = world.pool<Ship>();
         for (size_t i = 0; i < ships.size() && game.racer == ecs::Entity::None; ++i)
-            if (ships.components()[i].player) game.racer = ships.entities()[i];
+            if (ships.components()[i].def.player) game.racer = ships.entities()[i];
         if (game.racer == ecs::Entity::None && ships.size() > 0) game.racer = ships.entities()[0];
         if (const ecs::Transform* t = world.find<ecs::Transform>(game.racer)) game.racerLast = xz(t->position);
         for (const GateDef& g : def.race.gates) {

@@ -71,8 +71,13 @@ std::vector<std::pair<std::string, std::string>> keysNotReadBy(ObjectType type) 
     return refused;
 }
 
+const physics::PhysicsDef* findPhysicsDef(ecs::World& world) {
+    const auto* settings = world.resource<PhysicsSettings>();
+    return settings ? settings->def : nullptr;
+}
+
 const physics::PhysicsDef& physicsDef(ecs::World& world) {
-    const auto* def = world.resource<physics::PhysicsDef>();
+    const physics::PhysicsDef* def = findPhysicsDef(world);
     if (!def) throw std::logic_error("an object spawned before spawnObjects set [physics]");
     return *def;
 }
@@ -92,14 +97,13 @@ interaction::BoundingSphere boundingSphereFor(const ObjectDef& o, const interact
     return s;
 }
 
-ecs::Entity spawnBody(ecs::World& world, const std::string& type, const std::string& name, physics::BodyId id,
+ecs::Entity spawnBody(ecs::World& world, ObjectType type, const std::string& name, physics::BodyId id,
                       std::vector<Probe> probes, float volume, float mass, const physics::BodyState& start,
                       const Renderable& look) {
     ecs::Entity e = world.create();
     world.add<ecs::Transform>(e, {start.position, start.rotation});
     world.add<ecs::Motion>(e, {start.linearVelocity, mass});
     Body body;
-    body.type = type;
     body.id = id;
     body.probes = std::move(probes);
     body.volume = volume;
@@ -139,7 +143,7 @@ ecs::Entity spawnFloatingBody(ecs::World& world, const ObjectDef& o, uint64_t /*
     // Built-in meshes are unit shapes; a box's model is in metres, a sphere's of radius 1.
     const glm::vec3 boxScale = o.model.empty() ? size * 0.5f : glm::vec3(1.0f);
     Renderable look{sphere ? gfx::MeshKind::Sphere : gfx::MeshKind::Box, sphere ? glm::vec3(radius) : boxScale, o.color, o.model};
-    ecs::Entity e = spawnBody(world, enumName(o.type), o.name, id, probesFor(o), volume, mass, start, look);
+    ecs::Entity e = spawnBody(world, o.type, o.name, id, probesFor(o), volume, mass, start, look);
     interaction::BoundingSphere paper;
     paper.radius = sphere ? radius : 0.5f * std::min({size.x, size.y, size.z});
     paper.direction = interaction::SphereDirection::Down;  // a floating body pushes the water down
@@ -164,7 +168,7 @@ static float rippleAround(const interaction::RipplePatch& patch, glm::vec2 xz, f
 
 void physicsSystem(ecs::World& world, const ecs::Tick& tick) {
     auto* physicsWorld = world.resource<physics::PhysicsWorld>();
-    const auto* def = world.resource<physics::PhysicsDef>();
+    const physics::PhysicsDef* def = findPhysicsDef(world);
     if (!physicsWorld) return;
     const water::WaterQuery* water = nullptr;
     if (OceanState* ocean = world.resource<OceanState>()) water = ocean->water.get();

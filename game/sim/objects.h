@@ -174,8 +174,8 @@ template <class V> void describe(V& v, ObjectDef& d) {
 
 /// What kind of object an entity is, and its scene name (every spawned object has one).
 struct ObjectTag {
-    std::string type;  ///< the ObjectDef type, or "cannonball"
-    std::string name;  ///< "" = unnamed
+    ObjectType type = ObjectType::Sphere;  ///< the [[objects]] type (a cannon's ball: Sphere, with a Cannonball)
+    std::string name;                      ///< "" = unnamed
 };
 
 /// A probe sphere in the body's frame: where the water pushes (buoyancy, drag).
@@ -191,8 +191,7 @@ struct AppliedForce {
 };
 
 /// A simulated body: its Bullet id, its probes, and what the water did last step.
-struct Body {
-    std::string type;
+struct Body {  // what it is: the entity's ObjectTag
     physics::BodyId id = physics::BodyId::None;
     std::vector<Probe> probes;
     float volume = 0.0f;             ///< m³ of the solid
@@ -213,9 +212,17 @@ struct Renderable {
 /// A lattice of counts.x × counts.y × counts.z equal probe spheres at the cell centres of a
 /// box of `size` (m, centred on the origin) whose volumes sum to the box's.
 std::vector<Probe> latticeProbes(glm::vec3 size, glm::ivec3 counts);
-/// The scene's [physics] (gravity, water density), which spawnObjects makes a resource before
-/// any object is spawned. Throws std::logic_error before that.
+/// Where the simulation reads [physics] (a resource): the world's scene section itself
+/// (world/scene_settings.h), so a live change is read in place; the layers below the world
+/// cannot name the scene, so they hold its section's address. spawnObjects sets it.
+struct PhysicsSettings {
+    const physics::PhysicsDef* def = nullptr;  ///< lives as long as the world
+};
+/// The scene's [physics] (gravity, water density, drag), set by spawnObjects before any object
+/// is spawned. Throws std::logic_error before that.
 const physics::PhysicsDef& physicsDef(ecs::World& world);
+/// As physicsDef, or null before spawnObjects.
+const physics::PhysicsDef* findPhysicsDef(ecs::World& world);
 /// The ripple patch's cell size (m), or the [ripples] default when there is no patch:
 /// bounding spheres are sized in cells (seed 001's SR).
 float rippleCellSize(ecs::World& world);
@@ -228,7 +235,7 @@ interaction::BoundingSphere boundingSphereFor(const ObjectDef& def, const intera
 ecs::Entity spawnFloatingBody(ecs::World& world, const ObjectDef& def, uint64_t seed);
 /// Creates a floating Bullet body entity (Transform, Motion, Body, Renderable, ObjectTag);
 /// the caller adds its SphereSet. `probes` in the body frame; mass in kg.
-ecs::Entity spawnBody(ecs::World& world, const std::string& type, const std::string& name, physics::BodyId id,
+ecs::Entity spawnBody(ecs::World& world, ObjectType type, const std::string& name, physics::BodyId id,
                       std::vector<Probe> probes, float volume, float mass, const physics::BodyState& start,
                       const Renderable& look);
 /// Removes a body entity and its Bullet body.

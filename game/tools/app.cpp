@@ -1,5 +1,6 @@
 // The run loop: platform, sandbox, clock, progress line, screenshot and stats.
 #include "tools/app.h"
+#include "world/live_keys.h"
 #include "platform/platform.h"
 
 #include "core/clock.h"
@@ -12,6 +13,7 @@
 #include "view_data/scene_view.h"
 #include "ecs/components.h"
 #include "behaviours/cannon.h"
+#include "behaviours/spawning.h"
 #include "behaviours/fish.h"
 #include "goals/goals.h"
 #include "world/controls.h"
@@ -114,7 +116,7 @@ static void writeStats(const std::string& path, Sandbox& sandbox, const std::str
         const ecs::Transform& t = sandbox.world().get<ecs::Transform>(e);
         const ObjectTag* tag = sandbox.world().find<ObjectTag>(e);
         const glm::vec2 rollPitch = rollPitchDeg(t.rotation);
-        j["bodies"].push_back({{"type", b.type},
+        j["bodies"].push_back({{"type", objectTypeName(sandbox.world(), e)},
                                {"name", tag ? tag->name : ""},
                                {"position", {t.position.x, t.position.y, t.position.z}},
                                {"roll_deg", rollPitch.x},
@@ -183,7 +185,7 @@ int runScene(const SceneDef& scene, const std::string& scenePath, const RunOptio
         scripted = scriptEvents(input);
         for (size_t i = 0; i < input.set.size(); ++i) {
             const SetDef& set = input.set[i];
-            if (const std::string problem = checkLiveSet(first, set.key, set.value); !problem.empty())
+            if (const std::string problem = checkLiveSet(set.key, set.value); !problem.empty())
                 throw InputError(options.input + ": set[" + std::to_string(i) + "]." + problem);
             EventDef e;
             e.at = set.at;

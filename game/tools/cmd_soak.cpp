@@ -2,6 +2,7 @@
 // come from the scene's physics: the spectrum's own spread, the Gerstner amplitudes, the
 // stamps' size (docs/reliability.md gives the figures of every scene).
 #include "tools/cmd_soak.h"
+#include "behaviours/spawning.h"
 
 #include "tools/app.h"
 #include "core/error.h"
@@ -231,21 +232,21 @@ static void checkTransforms(Sandbox& sandbox) {
 static void checkBodies(Sandbox& sandbox, const SoakBounds& bounds, SoakReport& report) {
     ecs::World& world = sandbox.world();
     const OceanState* ocean = world.resource<OceanState>();
-    const auto* physics = world.resource<physics::PhysicsDef>();
+    const auto* physics = findPhysicsDef(world);
     auto& bodies = world.pool<Body>();
     for (size_t i = 0; i < bodies.size() && ocean && physics; ++i) {
         const Body& body = bodies.components()[i];
         const glm::vec3 p = world.get<ecs::Transform>(bodies.entities()[i]).position;
         const float surface = ocean->water->sample(p.x, p.z).height;
         if (!std::isfinite(surface) || std::fabs(surface) > bounds.surface)
-            fail(sandbox, "the water surface under body " + std::to_string(i) + " (" + body.type + ") is at " + fmt(surface) +
+            fail(sandbox, "the water surface under body " + std::to_string(i) + " (" + objectTypeName(world, bodies.entities()[i]) + ") is at " + fmt(surface) +
                               " m, beyond the layers' bound " + fmt(bounds.surface) + " m");
         report.maxSurface = std::max(report.maxSurface, std::fabs(surface));
         if (bodyDensity(world, i) >= physics->water_density) continue;  // meant to sink (a cannonball)
         const float depth = p.y - surface;
         const float limit = BODY_EXTENTS * bodyExtent(body) + bounds.seaHs;
         if (depth < -limit)
-            fail(sandbox, "body " + std::to_string(i) + " (" + body.type + ", lighter than water) has sunk: its centre is " +
+            fail(sandbox, "body " + std::to_string(i) + " (" + objectTypeName(world, bodies.entities()[i]) + ", lighter than water) has sunk: its centre is " +
                               fmt(-depth) + " m under the surface, more than " + fmt(limit) + " m (2 extents + Hs)");
         report.minFloatingDepth = std::min(report.minFloatingDepth, depth);
     }
@@ -362,7 +363,7 @@ int soakCommand(const SceneDef& scene, const std::string& scenePath, const SoakO
             for (size_t i = 0; i < bodies.size() && i < ceiling.size(); ++i) {
                 const float y = sandbox.world().get<ecs::Transform>(bodies.entities()[i]).position.y;
                 if (y > ceiling[i])
-                    fail(sandbox, "body " + std::to_string(i) + " (" + bodies.components()[i].type + ") was thrown to y = " +
+                    fail(sandbox, "body " + std::to_string(i) + " (" + objectTypeName(sandbox.world(), bodies.entities()[i]) + ") was thrown to y = " +
                                       fmt(y) + " m, above its start and the sea (" + fmt(ceiling[i]) + " m)");
             }
         }

@@ -78,8 +78,8 @@ static SceneDef sceneEditor(const SceneDef& scene, std::optional<SceneDef>& rest
 std::vector<std::string> keyHelp(ecs::World& world) {
     const bool flying = cameraFlies(world);
     bool ship = false, cannon = false;
-    for (const Ship& s : world.pool<Ship>().components()) ship = ship || s.player;
-    for (const Cannon& c : world.pool<Cannon>().components()) cannon = cannon || c.player;
+    for (const Ship& s : world.pool<Ship>().components()) ship = ship || s.def.player;
+    for (const Cannon& c : world.pool<Cannon>().components()) cannon = cannon || c.def.player;
     std::vector<std::string> lines;
     if (flying) lines.push_back("W/S/A/D move  Q/E down/up  Shift fast  hold Q at the surface: dive");
     else if (ship) lines.push_back("W/S throttle  A/D rudder");
@@ -97,7 +97,7 @@ static void playerPanel(ecs::World& world) {
     auto& ships = world.pool<Ship>();
     for (size_t i = 0; i < ships.size(); ++i) {
         const Ship& ship = ships.components()[i];
-        if (!ship.player) continue;
+        if (!ship.def.player) continue;
         const glm::vec3 v = world.get<ecs::Motion>(ships.entities()[i]).velocity;
         ImGui::Text("ship: throttle %+.0f%%  rudder %+.0f  speed %.1f m/s", 100.0 * ship.throttle, double(ship.rudder),
                     double(std::hypot(v.x, v.z)));
@@ -105,7 +105,7 @@ static void playerPanel(ecs::World& world) {
     auto& cannons = world.pool<Cannon>();
     for (size_t i = 0; i < cannons.size(); ++i) {
         const Cannon& c = cannons.components()[i];
-        if (c.player) ImGui::Text("cannon: yaw %.0f  elevation %.0f  shots %d", double(c.yawDeg), double(c.elevationDeg), c.shots);
+        if (c.def.player) ImGui::Text("cannon: yaw %.0f  elevation %.0f  shots %d", double(c.yawDeg), double(c.elevationDeg), c.shots);
     }
     for (const std::string& line : keyHelp(world)) ImGui::TextDisabled("%s", line.c_str());
 }
@@ -302,8 +302,9 @@ static void toolsPanel(ecs::World& world, double now) {
     ImGui::End();
 }
 
-void drawPanels(ecs::World& world, SceneDef& scene, const ecs::FrameTimer& timer, std::optional<float> dynamicScale,
+void drawPanels(ecs::World& world, SceneSettings& settings, const ecs::FrameTimer& timer, std::optional<float> dynamicScale,
                 std::optional<SceneDef>& restart, double now) {
+    const SceneDef& scene = settings.def;
     // The goal's windows come last, in front; the panel never comes before them.
     const auto goal = [&world] {
         if (const GameState* game = gameState(world)) {
@@ -344,8 +345,10 @@ void drawPanels(ecs::World& world, SceneDef& scene, const ecs::FrameTimer& timer
     if (ImGui::CollapsingHeader("timing graph")) timingGraph(timer);
     playerPanel(world);
     seaPanel(world, scene);
-    gfx::UiEditor editor;
-    editor.section("render", scene.render);
+    // The live settings: the [render] keys marked LIVE, applied from the next frame on.
+    gfx::UiEditor live(true);
+    live.section("render", settings.def.render);
+    if (live.changed()) settings.changed(SceneSection::Render);
     const SceneDef shown = sceneEditor(scene, restart);
 
     // --- save scene as

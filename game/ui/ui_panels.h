@@ -2,7 +2,7 @@
 // saving the scene.
 #pragma once
 #include "ecs/schedule.h"
-#include "world/scene.h"
+#include "world/scene_settings.h"
 
 #include <optional>
 #include <string>
@@ -13,7 +13,7 @@ namespace ob::game {
 /// Draws the panels (inside an ImGui frame); `dynamicScale`: the resolution scale dynamic
 /// resolution holds now, when it is on. [render] keys apply live; the other sections are
 /// edited on a copy that "restart with these settings" hands to `restart` once valid.
-void drawPanels(ecs::World& world, SceneDef& scene, const ecs::FrameTimer& timer, std::optional<float> dynamicScale,
+void drawPanels(ecs::World& world, SceneSettings& settings, const ecs::FrameTimer& timer, std::optional<float> dynamicScale,
                 std::optional<SceneDef>& restart, double now);
 
 /// The keys and mouse actions that do something in this world now (the overlay's help).

@@ -20,10 +20,11 @@
 
 namespace ob::game {
 
-SandboxView::SandboxView(platform::Platform& platform, bool withUi, SceneDef& scene, ecs::FrameTimer& timer,
+SandboxView::SandboxView(platform::Platform& platform, bool withUi, ecs::World& world, ecs::FrameTimer& timer,
                          std::optional<SceneDef>& restart)
-    : m_platform(platform), m_scene(scene), m_timer(timer), m_restart(restart),
-      m_renderer(std::make_unique<gfx::Renderer>(scene.render)) {
+    : m_platform(platform), m_timer(timer), m_restart(restart),
+      m_renderer(std::make_unique<gfx::Renderer>(sceneSettings(world).def.render)),
+      m_renderSeen{sceneSettings(world).version(SceneSection::Render)} {
     if (withUi && platform.nativeWindow()) m_ui = std::make_unique<gfx::UiOverlay>(platform.nativeWindow());
 }
 
@@ -63,12 +64,15 @@ void SandboxView::render(ecs::World& world, const ecs::Tick& tick) {
     present();
     glm::ivec2 size = m_platform.framebufferSize();
     if (size.x <= 0 || size.y <= 0) return;  // minimised
-    m_renderer->def() = m_scene.render;
+    SceneSettings& settings = sceneSettings(world);
+    const gfx::RenderDef& render = settings.def.render;
+    // The renderer keeps its [render]: it gets the section again when a live change moved it.
+    if (m_renderSeen.moved(settings, SceneSection::Render)) m_renderer->def() = render;
     // Dynamic resolution: the last frame's time sets this frame's internal scale.
-    if (auto* dynamic = world.resource<DynamicScale>(); dynamic && m_scene.render.target_fps > 0.0f) {
+    if (auto* dynamic = world.resource<DynamicScale>(); dynamic && render.target_fps > 0.0f) {
         auto& control = dynamic->control;
-        if (!control || std::abs(control->targetSeconds() * m_scene.render.target_fps - 1.0) > 1e-6)
-            control.emplace(m_scene.render.target_fps, m_scene.render.resolution_scale);
+        if (!control || std::abs(control->targetSeconds() * render.target_fps - 1.0) > 1e-6)
+            control.emplace(render.target_fps, render.resolution_scale);
         else if (!m_timer.frameSamples().empty())
             control->update(m_timer.frameSamples().back() / 1000.0);
         m_renderer->def().resolution_scale = control->scale();
@@ -86,7 +90,7 @@ void SandboxView::render(ecs::World& world, const ecs::Tick& tick) {
             d.waterSlope = -glm::vec2(s.normal.x, s.normal.z) / s.normal.y;
         }
     std::vector<gfx::SplashDrop> drops;
-    if (const splash::SplashParticles* particles = splashParticles(world); particles && m_scene.render.splash_drops) {
+    if (const splash::SplashParticles* particles = splashParticles(world); particles && render.splash_drops) {
         drops.resize(size_t(particles->size()));
         for (size_t i = 0; i < drops.size(); ++i)
             drops[i] = gfx::SplashDrop(particles->x()[i], particles->y()[i], particles->z()[i], particles->radius()[i]);
@@ -102,9 +106,9 @@ void SandboxView::render(ecs::World& world, const ecs::Tick& tick) {
     if (m_ui) {
         m_ui->begin();
         std::optional<float> dynamicScale;
-        if (const auto* dynamic = world.resource<DynamicScale>(); dynamic && dynamic->control && m_scene.render.target_fps > 0.0f)
+        if (const auto* dynamic = world.resource<DynamicScale>(); dynamic && dynamic->control && render.target_fps > 0.0f)
             dynamicScale = dynamic->control->scale();
-        drawPanels(world, m_scene, m_timer, dynamicScale, m_restart, tick.clock);
+        drawPanels(world, settings, m_timer, dynamicScale, m_restart, tick.clock);
         m_ui->end();
     }
     glFlush();
@@ -113,7 +117,7 @@ void SandboxView::render(ecs::World& world, const ecs::Tick& tick) {
 
 
 void Sandbox::attachPlatform(platform::Platform& platform, bool withUi) {
-    m_world.setResource(std::unique_ptr<View>(new SandboxView(platform, withUi, m_scene, m_schedule.timer(), m_restart)));
+    m_world.setResource(std::unique_ptr<View>(new SandboxView(platform, withUi, m_world, m_schedule.timer(), m_restart)));
     attachWaterGpu(m_world);
 }
 

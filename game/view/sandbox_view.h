@@ -3,6 +3,7 @@
 #pragma once
 #include "gfx/dynamic_resolution.h"
 #include "world/sandbox.h"
+#include "world/scene_settings.h"
 
 #include <memory>
 #include <optional>
@@ -22,9 +23,9 @@ struct DynamicScale {
 
 class SandboxView final : public View {
 public:
-    /// `scene` is live-edited by the UI; `restart` is where the UI puts a scene to rebuild
-    /// the world from. The UI overlay only when `withUi` and there is a window.
-    SandboxView(platform::Platform& platform, bool withUi, SceneDef& scene, ecs::FrameTimer& timer,
+    /// Draws `world` (its scene: world/scene_settings.h); `restart` is where the UI puts a
+    /// scene to rebuild the world from. The UI overlay only when `withUi` and there is a window.
+    SandboxView(platform::Platform& platform, bool withUi, ecs::World& world, ecs::FrameTimer& timer,
                 std::optional<SceneDef>& restart);
     ~SandboxView() override;
     void pollInput(ecs::World& world, const ecs::Tick& tick) override;
@@ -33,12 +34,12 @@ public:
 
 private:
     platform::Platform& m_platform;
-    SceneDef& m_scene;
     ecs::FrameTimer& m_timer;
     std::optional<SceneDef>& m_restart;
     std::unique_ptr<gfx::Renderer> m_renderer;
     std::unique_ptr<gfx::UiOverlay> m_ui;
     bool m_presentPending = false;  // a frame is drawn and not yet presented
+    SectionSeen m_renderSeen;       // the [render] version the renderer has
 };
 
 } // namespace ob::game

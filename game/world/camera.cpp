@@ -42,7 +42,7 @@ ecs::Entity followedObject(ecs::World& world, const std::string& name) {
     if (!name.empty()) return findObject(world, name);
     auto& ships = world.pool<Ship>();
     for (size_t i = 0; i < ships.size(); ++i)
-        if (ships.components()[i].player) return ships.entities()[i];
+        if (ships.components()[i].def.player) return ships.entities()[i];
     return ships.size() > 0 ? ships.entities()[0] : ecs::Entity::None;
 }
 

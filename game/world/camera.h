@@ -38,14 +38,14 @@ template <class V> void describe(V& v, CameraDef& d) {
     v.field("mode", d.mode, "fixed, orbit the target, fly (WASD QE, right drag looks), or follow a ship; C cycles");
     v.field("position", d.position, any(), "start eye position (world m)");
     v.field("target", d.target, any(), "point looked at (world m)");
-    v.field("fov_deg", d.fov_deg, range(10, 120), "vertical field of view (degrees)");
-    v.field("near_m", d.near_m, range(0.001, 10), "near clip distance (m)");
-    v.field("far_m", d.far_m, range(10, 1e6), "far clip distance (m)");
-    v.field("orbit_speed_deg_s", d.orbit_speed_deg_s, range(-360, 360), "orbit mode: angular speed (deg/s)");
-    v.field("fly_speed_m_s", d.fly_speed_m_s, range(0.1, 1000), "fly mode: speed (m/s)");
+    v.field("fov_deg", d.fov_deg, range(10, 120), "vertical field of view (degrees)", LIVE);
+    v.field("near_m", d.near_m, range(0.001, 10), "near clip distance (m)", LIVE);
+    v.field("far_m", d.far_m, range(10, 1e6), "far clip distance (m)", LIVE);
+    v.field("orbit_speed_deg_s", d.orbit_speed_deg_s, range(-360, 360), "orbit mode: angular speed (deg/s)", LIVE);
+    v.field("fly_speed_m_s", d.fly_speed_m_s, range(0.1, 1000), "fly mode: speed (m/s)", LIVE);
     v.field("follow", d.follow, "follow mode: object name (\"\" = the player's ship)");
-    v.field("follow_distance_m", d.follow_distance_m, range(1, 10000), "follow mode: distance behind (m)");
-    v.field("follow_height_m", d.follow_height_m, range(-100, 10000), "follow mode: height above (m)");
+    v.field("follow_distance_m", d.follow_distance_m, range(1, 10000), "follow mode: distance behind (m)", LIVE);
+    v.field("follow_height_m", d.follow_height_m, range(-100, 10000), "follow mode: height above (m)", LIVE);
 }
 
 /// How close the camera comes to the water from above (m): follow and orbit eyes stay this

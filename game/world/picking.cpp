@@ -68,7 +68,7 @@ std::optional<BodyPick> pickBody(ecs::World& world, const Ray& ray, float maxDis
     auto& schools = world.pool<FishSchool>();
     for (size_t s = 0; s < schools.size(); ++s) {
         const FishSchool& school = schools.components()[s];
-        const float reach = std::max(school.length, 0.3f);
+        const float reach = std::max(school.def.length, 0.3f);
         for (const glm::vec3& p : school.position) {
             const float t = glm::dot(p - ray.origin, ray.direction);
             if (t < 0.0f || t > maxDistance || (best && t >= best->distance)) continue;

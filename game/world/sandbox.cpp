@@ -12,6 +12,7 @@
 #include "sim/objects.h"
 #include "behaviours/spawning.h"
 #include "ocean/ocean_fft_cpu.h"
+#include "world/scene_settings.h"
 #include "world/script.h"
 #include "world/tools.h"
 #include "behaviours/ship.h"
@@ -46,6 +47,7 @@ const ecs::SystemEntry SYSTEMS[] = {
     {Phase::Script, Rate::Step, "step input", stepInputSystem},
     {Phase::Script, Rate::Step, "tools", toolsSystem},
     {Phase::Script, Rate::Step, "events", scriptSystem},
+    {Phase::Script, Rate::Step, "settings", settingsSystem},  // after the timeline's and the UI's live changes
     {Phase::Script, Rate::Step, "spawn requests", spawnRequestsSystem},
     {Phase::Script, Rate::Step, "ships", shipSystem},
     {Phase::Script, Rate::Step, "cannons", cannonSystem},
@@ -63,20 +65,23 @@ const ecs::SystemEntry SYSTEMS[] = {
 
 } // namespace
 
-Sandbox::Sandbox(const SceneDef& scene) : m_scene(scene), m_schedule(scene.sim) {
+Sandbox::Sandbox(const SceneDef& scene) : m_schedule(scene.sim) {
     for (const ecs::SystemEntry& s : SYSTEMS) m_schedule.add(s);
-    addControls(m_world, m_scene.controls);
-    spawnCamera(m_world, m_scene.camera);
-    addOcean(m_world, m_scene.ocean, m_scene.gerstner);
-    addRipples(m_world, m_scene.ripples, float(m_schedule.stepSeconds()));
-    addSplashFoam(m_world, m_scene.splash, m_scene.foam, m_scene.sim.seed);
+    // The one scene of this world: everything below reads it there.
+    const SceneDef& def = addSceneSettings(m_world, scene).def;
+    addControls(m_world, def.controls);
+    spawnCamera(m_world, def.camera);
+    addOcean(m_world, def.ocean, def.gerstner);
+    addRipples(m_world, def.ripples, float(m_schedule.stepSeconds()));
+    addSplashFoam(m_world, def.splash, def.foam, def.sim.seed);
     for (const StampSource& source : {bodySource(), cannonSource(), fishSource()}) addStampSource(m_world, source);
-    spawnObjects(m_world, m_scene.physics, m_scene.objects, m_scene.sim.seed);
-    addScript(m_world, m_scene);
-    addPlayerTools(m_world, m_scene.tools, {m_scene.window.width, m_scene.window.height}, fishSchoolOf(m_scene.controls),
-                   droppedShip(m_scene));
-    addGame(m_world, m_scene);
+    spawnObjects(m_world, def.physics, def.objects, def.sim.seed);
+    addScript(m_world);
+    addPlayerTools(m_world, def.tools, {def.window.width, def.window.height}, fishSchoolOf(def.controls), droppedShip(def));
+    addGame(m_world, def);
 }
+
+const SceneDef& Sandbox::scene() { return sceneSettings(m_world).def; }
 
 Sandbox::~Sandbox() = default;
 

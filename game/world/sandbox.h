@@ -92,10 +92,10 @@ public:
 
     ecs::World& world() { return m_world; }
     ecs::Schedule& schedule() { return m_schedule; }
-    const SceneDef& scene() const { return m_scene; }
+    /// The scene as the world runs it (live changes included): world/scene_settings.h.
+    const SceneDef& scene();
 
 private:
-    SceneDef m_scene;
     ecs::World m_world;
     ecs::Schedule m_schedule;
     std::optional<SceneDef> m_restart;

@@ -10,117 +10,33 @@
 #include "core/toml_reader.h"
 #include "ecs/components.h"
 #include "behaviours/fish.h"
-#include "interaction/ripple_patch.h"
+#include "world/live_keys.h"
 #include "world/scene.h"
 #include "behaviours/ship.h"
 #include "sim/water_systems.h"
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <set>
 
 namespace ob::game {
 
 namespace {
 
-// Finds a number or switch of the scene by key path ("render.exposure") through describe().
-struct KeySlot {
-    explicit KeySlot(std::string key) : wanted(std::move(key)) {}
-    std::string wanted;
-    std::string prefix;
-    float* f = nullptr;
-    int* i = nullptr;
-    bool* b = nullptr;
-    Limits limits;
-
-    bool match(const char* key) const { return prefix + key == wanted; }
-    void field(const char* key, bool& v, const char*) {
-        if (match(key)) b = &v;
-    }
-    void field(const char* key, int& v, Limits l, const char*) {
-        if (match(key)) i = &v, limits = l;
-    }
-    void field(const char* key, float& v, Limits l, const char*) {
-        if (match(key)) f = &v, limits = l;
-    }
-    void field(const char*, uint64_t&, const char*) {}
-    void field(const char*, glm::vec2&, Limits, const char*) {}
-    void field(const char*, glm::vec3&, Limits, const char*) {}
-    void field(const char*, std::string&, const char*) {}
-    template <NamedEnum E> void field(const char*, E&, const char*) {}
-    void field(const char*, std::vector<glm::vec2>&, Limits, const char*) {}
-    template <class Def> void section(const char* key, Def& def) {
-        const std::string saved = prefix;
-        prefix += std::string(key) + ".";
-        describe(*this, def);
-        prefix = saved;
-    }
-    template <class Item> void list(const char*, std::vector<Item>&, const char*) {}
-    template <class Def> void fields(Def&) {}
-    bool found() const { return f || i || b; }
-};
-
-// Keys whose change reaches the running world (the rest are read once at start). The sea's
-// keys cross-fade (changeSea); ripple damping and physics keys apply from the next step.
-const std::set<std::string> LIVE_KEYS{
-    "physics.water_density", "physics.linear_drag", "physics.quadratic_drag", "physics.angular_damping",
-    "physics.buoyancy_along_normal", "ripples.damping", "ripples.decay_time", "ripples.viscosity",
-    "ocean.wind_speed", "ocean.amplitude", "ocean.choppiness", "ocean.small_wave_cutoff", "ocean.fetch",
-    "ocean.peak_enhancement", "gerstner.amplitude_scale", "gerstner.count"};
-
-// A live-only key: the wind's heading in degrees, counter-clockwise from +x toward +z (a `set`
-// carries one number; ocean.wind_direction is a vector). It writes ocean.wind_direction =
-// [cos, sin].
-constexpr const char* WIND_DIRECTION_DEG = "ocean.wind_direction_deg";
-constexpr double WIND_DIRECTION_LIMIT = 3600.0;
-
-bool isLiveKey(const std::string& key) {
-    return key.rfind("render.", 0) == 0 || key.rfind("camera.", 0) == 0 || LIVE_KEYS.count(key) || key == WIND_DIRECTION_DEG;
-}
-
-// Checks `value` against the slot; "" when it fits.
-std::string checkValue(const KeySlot& slot, float value) {
-    if (slot.b) return value == 0.0f || value == 1.0f ? "" : "a switch takes 0 or 1";
-    if (slot.i && value != std::floor(value)) return "this key takes an integer";
-    if (!(value >= slot.limits.min && value <= slot.limits.max))
-        return "value out of the key's range [" + std::to_string(slot.limits.min) + ", " + std::to_string(slot.limits.max) + "]";
-    return "";
-}
-
 // The one function through which a live key changes the running world: the timeline's `set`
 // events and requestLiveSet alike, inside the fixed step's script phase (the sea's keys take
 // effect at its end, finishSeaChange). The key and value are checked already.
 void applyLiveSet(ecs::World& world, ScriptState& script, const std::string& key, float value) {
-    SceneDef& scene = *script.scene;
+    SceneSettings& settings = sceneSettings(world);
     const bool sea = key.rfind("ocean.", 0) == 0 || key.rfind("gerstner.", 0) == 0;
     if (sea && !script.seaChanged) {  // the sea as the step found it, should its changes be refused
         script.seaChanged = true;
-        script.oceanBefore = scene.ocean;
-        script.gerstnerBefore = scene.gerstner;
+        script.oceanBefore = settings.def.ocean;
+        script.gerstnerBefore = settings.def.gerstner;
     }
-    if (key == WIND_DIRECTION_DEG) {
-        const double rad = double(value) * std::numbers::pi / 180.0;
-        scene.ocean.wind_direction = {float(std::cos(rad)), float(std::sin(rad))};
-    } else {
-        KeySlot slot(key);
-        describe(slot, scene);
-        if (!slot.found()) return;  // checked before
-        if (slot.f) *slot.f = value;
-        if (slot.i) *slot.i = int(value);
-        if (slot.b) *slot.b = value != 0.0f;
-    }
-    // Hand the change to the systems that keep their own copy (the sea: once per step,
-    // finishSeaChange).
-    if (key.rfind("camera.", 0) == 0) {
-        auto& rigs = world.pool<CameraRig>();
-        for (size_t k = 0; k < rigs.size(); ++k) rigs.components()[k].def = scene.camera;
-    }
-    if (key.rfind("ripples.", 0) == 0)
-        if (auto* patch = world.resource<interaction::RipplePatch>())
-            patch->setDamping(scene.ripples.damping, scene.ripples.decay_time, scene.ripples.viscosity);
-    if (key.rfind("physics.", 0) == 0)
-        if (auto* physics = world.resource<physics::PhysicsDef>()) *physics = scene.physics;
+    // The sea's sections are handed on once per step (finishSeaChange); the others by their
+    // version (settingsSystem, the view).
+    settings.changed(setLiveKey(settings.def, key, value));
 }
 
 // The step's changes of [ocean] and [gerstner], all keys together: one new swell drawn and
@@ -129,7 +45,7 @@ void applyLiveSet(ecs::World& world, ScriptState& script, const std::string& key
 void finishSeaChange(ecs::World& world, ScriptState& script, double now) {
     if (!script.seaChanged) return;
     script.seaChanged = false;
-    SceneDef& scene = *script.scene;
+    SceneDef& scene = sceneSettings(world).def;
     std::vector<ocean::GerstnerWave> waves = ocean::resolveWaves(scene.gerstner, scene.ocean);
     for (size_t i = scene.gerstner.waves.size(); i < waves.size(); ++i) {
         const double ka = std::hypot(double(waves[i].kx), double(waves[i].kz)) * double(waves[i].amplitude);
@@ -155,7 +71,7 @@ void setSpeed(ecs::World& world, const std::string& target, float speed) {
     const ecs::Entity named = findObject(world, target);
     auto& ships = world.pool<Ship>();
     for (size_t k = 0; k < ships.size(); ++k)
-        if (target.empty() ? !ships.components()[k].player : ships.entities()[k] == named) ships.components()[k].speed = speed;
+        if (target.empty() ? !ships.components()[k].def.player : ships.entities()[k] == named) ships.components()[k].speed = speed;
     if (named != ecs::Entity::None)
         if (FishSchool* school = world.find<FishSchool>(named)) school->speed = speed;
 }
@@ -203,7 +119,7 @@ std::vector<std::string> validateEvents(SceneDef& scene, const std::string& sour
         // "file:line:column: events[k].field: " where the document has the field, else "file: …".
         const auto at = [&](const std::string& field) { return (doc ? doc->where(path + field, source) : source) + ": " + path; };
         if (e.action == EventAction::Set)
-            if (std::string m = checkLiveSet(scene, e.key, e.value); !m.empty()) errors.push_back(at(m.substr(0, m.find(':'))) + m);
+            if (std::string m = checkLiveSet(e.key, e.value); !m.empty()) errors.push_back(at(m.substr(0, m.find(':'))) + m);
         const bool named = e.action == EventAction::Fire || e.action == EventAction::SetSpeed || e.action == EventAction::Camera;
         if (named && !e.target.empty() && !names.count(e.target))
             errors.push_back(at("target") + "target: no object is named '" + e.target + "'");
@@ -214,36 +130,17 @@ std::vector<std::string> validateEvents(SceneDef& scene, const std::string& sour
     return errors;
 }
 
-std::string liveKeyHelp() {
-    std::string keys = "render.*, camera.*, " + std::string(WIND_DIRECTION_DEG);
-    for (const std::string& k : LIVE_KEYS) keys += ", " + k;
-    return keys;
-}
-
-std::string checkLiveSet(SceneDef& scene, const std::string& key, float value) {
-    if (key == WIND_DIRECTION_DEG)
-        return std::abs(value) <= WIND_DIRECTION_LIMIT
-                   ? ""
-                   : "value: " + key + " takes degrees in [-3600, 3600], got " + std::to_string(value);
-    KeySlot slot(key);
-    describe(slot, scene);
-    if (!slot.found()) return "key: '" + key + "' is not a number or switch of the scene";
-    if (!isLiveKey(key)) return "key: '" + key + "' is read once at start; live keys: " + liveKeyHelp();
-    if (std::string m = checkValue(slot, value); !m.empty()) return "value: " + m + " (" + key + ")";
-    return "";
-}
-
 std::string requestLiveSet(ecs::World& world, const std::string& key, float value) {
     auto* script = world.resource<ScriptState>();
     if (!script) return "no timeline in this world";
-    if (std::string m = checkLiveSet(*script->scene, key, value); !m.empty()) return m;
+    if (std::string m = checkLiveSet(key, value); !m.empty()) return m;
     script->requested.push_back({0.0, key, value});
     return "";
 }
 
-void addScript(ecs::World& world, SceneDef& scene) {
+void addScript(ecs::World& world) {
+    const SceneDef& scene = sceneSettings(world).def;
     auto script = std::make_unique<ScriptState>();
-    script->scene = &scene;
     script->events = scene.events;
     std::stable_sort(script->events.begin(), script->events.end(), [](const EventDef& a, const EventDef& b) { return a.at < b.at; });
     script->seed = scene.sim.seed;

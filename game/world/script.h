@@ -37,7 +37,7 @@ struct EventDef {
     EventAction action = EventAction::Fire;  ///< fire | spawn | set_speed | set | camera | screenshot
     std::string target;                 ///< fire: cannon ("" = every cannon); set_speed: ship or fish school ("" = every scripted
                                         ///< ship); camera: object to follow
-    std::string key;                    ///< set: a live scene key (liveKeyHelp(): render.*, camera.*, the sea's, ripple damping, physics drag/density keys)
+    std::string key;                    ///< set: a live scene key (the keys marked LIVE: world/live_keys.h)
     float value = 0.0f;                 ///< set_speed: m/s; set: the key's new value (switches: 0 or 1; ocean.wind_direction_deg: degrees)
     CameraMode mode = CameraMode::Orbit;  ///< camera: "fixed", "orbit", "fly" or "follow"
     glm::vec3 position{0.0f, 6.0f, -40.0f};  ///< camera: eye, world m (fixed, orbit, fly)
@@ -62,13 +62,12 @@ template <class V> void describe(V& v, EventDef& d) {
 /// A live change of one key (a `set`), as requested or applied.
 struct LiveChange {
     double time = 0.0;  ///< start time of the step that applied it, s (0 while queued)
-    std::string key;    ///< a live key (liveKeyHelp())
+    std::string key;    ///< a live key (world/live_keys.h)
     float value = 0.0f; ///< its new value
 };
 
 /// The timeline's state (a resource of the world).
 struct ScriptState {
-    SceneDef* scene = nullptr;             ///< the live scene: `set` edits it
     std::vector<EventDef> events;          ///< stable-sorted by time
     size_t next = 0;                       ///< first event not yet run
     uint64_t seed = 1;                     ///< feeds spawned objects
@@ -88,17 +87,13 @@ struct ScriptState {
 /// targets name objects of the scene (or spawned by it). One message per problem, prefixed
 /// with where the field is written ("file:line:column", from `doc` when given) or `source`.
 std::vector<std::string> validateEvents(SceneDef& scene, const std::string& source, const TomlDocument* doc = nullptr);
-/// The keys a `set` may change while the world runs, as one line for messages and help.
-std::string liveKeyHelp();
-/// "" when `key` is a live key of the scene and `value` fits it, else why not.
-std::string checkLiveSet(SceneDef& scene, const std::string& key, float value);
-/// Asks for a live change from outside the fixed step (the UI): checked (checkLiveSet), queued,
+/// Asks for a live change from outside the fixed step (the UI): checked (world/live_keys.h), queued,
 /// applied at the start of the next step's script phase, after that step's timeline events,
 /// through the same function as a `set` event, and logged in ScriptState::liveChanges. Returns
 /// "" or why it was refused (nothing is queued then).
 std::string requestLiveSet(ecs::World& world, const std::string& key, float value);
-/// Creates the timeline resource for the (live) scene.
-void addScript(ecs::World& world, SceneDef& scene);
+/// Creates the timeline resource from the world's scene (world/scene_settings.h).
+void addScript(ecs::World& world);
 /// Script phase, first: runs every event due in this step, in order, then the queued
 /// requestLiveSet changes.
 void scriptSystem(ecs::World& world, const ecs::Tick& tick);

@@ -39,7 +39,7 @@ const water::WaterQuery* waterOf(ecs::World& world) {
 }
 
 float gravityOf(ecs::World& world) {
-    const auto* def = world.resource<physics::PhysicsDef>();
+    const auto* def = findPhysicsDef(world);
     return def ? def->gravity : physics::PhysicsDef{}.gravity;
 }
 
@@ -92,7 +92,7 @@ void stir(ecs::World& world, PlayerTools& tools, glm::vec3 waterPoint, float dt)
     if (tools.stirrer == ecs::Entity::None || !world.has<ecs::Transform>(tools.stirrer)) {
         tools.stirrer = world.create();
         world.add<ecs::Transform>(tools.stirrer, {centre});
-        const auto* physics = world.resource<physics::PhysicsDef>();
+        const auto* physics = findPhysicsDef(world);
         const float density = physics ? physics->water_density : physics::PhysicsDef{}.water_density;
         world.add<ecs::Motion>(tools.stirrer, {glm::vec3(0.0f), density * 4.0f / 3.0f * float(M_PI) * r * r * r});
         interaction::BoundingSphere sphere;  // a hand pushed through the water: it pushes it down
@@ -163,7 +163,7 @@ void fireAt(ecs::World& world, PlayerTools& tools, glm::vec3 point) {
     auto& cannons = world.pool<Cannon>();
     size_t pick = cannons.size();
     for (size_t i = 0; i < cannons.size() && pick == cannons.size(); ++i)
-        if (cannons.components()[i].player) pick = i;
+        if (cannons.components()[i].def.player) pick = i;
     if (pick == cannons.size() && cannons.size() > 0) pick = 0;
     if (pick == cannons.size()) {
         tools.message = "no cannon in this scene";
@@ -179,8 +179,8 @@ void fireAt(ecs::World& world, PlayerTools& tools, glm::vec3 point) {
     // The low arc, or the high one where the low would need the barrel below its lowest.
     for (int k = 0; k < 3; ++k) {
         const glm::vec3 muzzle = pivot + cannonAim(c.yawDeg, elevation) * CANNON_BARREL;
-        std::optional<float> e = ballisticElevationDeg(muzzle, point, c.muzzleSpeed, gravityOf(world), false);
-        if (e && *e < MIN_ELEVATION_DEG) e = ballisticElevationDeg(muzzle, point, c.muzzleSpeed, gravityOf(world), true);
+        std::optional<float> e = ballisticElevationDeg(muzzle, point, c.def.muzzle_speed, gravityOf(world), false);
+        if (e && *e < MIN_ELEVATION_DEG) e = ballisticElevationDeg(muzzle, point, c.def.muzzle_speed, gravityOf(world), true);
         reachable = e.has_value();
         elevation = e ? *e : 45.0f;  // out of reach: the farthest shot
     }

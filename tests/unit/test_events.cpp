@@ -87,7 +87,7 @@ TEST_CASE("timeline: events run in the step nearest their time and act on the ob
     sandbox.step();
     const ecs::Entity buoy = game::findObject(world, "buoy");
     REQUIRE(buoy != ecs::Entity::None);
-    CHECK(world.get<game::Body>(buoy).type == "sphere");
+    CHECK(world.get<game::ObjectTag>(buoy).type == game::ObjectType::Sphere);
     stepTo(1.5);
     CHECK(world.pool<game::Cannon>().components()[0].shots == 0);
     sandbox.step();

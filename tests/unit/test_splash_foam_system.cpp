@@ -165,10 +165,10 @@ TEST_CASE("one jumping fish throws the drops of its body's mass, and 4 s after i
     game::Sandbox sandbox(scene);
     ecs::World& world = sandbox.world();
     const game::FishSchool& school = world.pool<game::FishSchool>().components()[0];
-    const double g = 9.81, mass = game::fishMass(school.length), r = school.sphere.radius;
+    const double g = 9.81, mass = game::fishMass(school.def.length), r = school.sphere.radius;
     REQUIRE(mass == Approx(10.0 * 0.8 * 0.8 * 0.8));
-    const double v0 = std::sqrt(2.0 * g * (school.depth + school.jumpHeight));
-    const double v = std::sqrt(v0 * v0 - 2.0 * g * (school.depth + r));
+    const double v0 = std::sqrt(2.0 * g * (school.def.depth + school.def.jump_height));
+    const double v = std::sqrt(v0 * v0 - 2.0 * g * (school.def.depth + r));
     const auto drops = [&](double vn) { return 8.0 * std::sqrt(0.5 * mass * vn * vn); };
     std::vector<uint64_t> bursts;
     glm::vec3 entry(0.0f);
