@@ -2,7 +2,7 @@
 // An object is a set of spheres; each sphere, each step, decides by Table 2 whether to stamp
 // its footprint into Vh(t) (eq. 5) and rewrite Vh(t−1) over it (eq. 7).
 #pragma once
-#include "interaction/ripple_field.h"
+#include "interaction/kang2008/ripple_field.h"
 
 #include <algorithm>
 #include <cmath>

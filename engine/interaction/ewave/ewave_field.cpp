@@ -1,14 +1,16 @@
 // Dispersive ripple field: exact per-mode rotation of (ĥ, v̂) with FFTW real-to-complex
 // transforms of the step's change (SPEC §2.5b; Tessendorf, "eWave", 2014), then the boundary
 // in real space.
-#include "interaction/ewave_field.h"
+#include "interaction/ewave/ewave_field.h"
+
+#include "core/scrolling_grid.h"
 
 #include "core/error.h"
 #include "core/parallel.h"
 #include "core/simd.h"
 #include "core/thread_choice.h"
-#include "interaction/ripple_field.h"
-#include "ocean/fftw_wisdom.h"
+#include "interaction/kang2008/ripple_field.h"
+#include "core/fftw_wisdom.h"
 
 #include <algorithm>
 #include <cassert>
@@ -383,30 +385,7 @@ void EWaveField::addSources(std::span<const EWaveSource> sources, float dt) {
 void EWaveField::scroll(int dx, int dz) {
     if (dx == 0 && dz == 0) return;
     applySources();
-    const int rows = m_rows, cols = m_cols;
-    if (std::abs(dx) >= cols || std::abs(dz) >= rows) {
-        clear();
-        return;
-    }
-    const int xa = std::max(0, -dx), xb = std::min(cols, cols - dx);
-    for (double* level : {m_h, m_v}) {
-        auto shiftRow = [&](int z) {
-            double* dst = level + size_t(z) * size_t(cols);
-            const int sz = z + dz;
-            if (sz < 0 || sz >= rows) {
-                std::fill(dst, dst + cols, 0.0);
-                return;
-            }
-            const double* src = level + size_t(sz) * size_t(cols);
-            std::memmove(dst + xa, src + xa + dx, size_t(xb - xa) * sizeof(double));
-            std::fill(dst, dst + xa, 0.0);
-            std::fill(dst + xb, dst + cols, 0.0);
-        };
-        if (dz >= 0)
-            for (int z = 0; z < rows; ++z) shiftRow(z);
-        else
-            for (int z = rows - 1; z >= 0; --z) shiftRow(z);
-    }
+    for (double* level : {m_h, m_v}) scrollCells(level, m_rows, m_cols, glm::ivec2(dx, dz), 0.0);
     syncHeight();
 }
 
