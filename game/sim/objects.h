@@ -216,11 +216,11 @@ std::vector<Probe> latticeProbes(glm::vec3 size, glm::ivec3 counts);
 /// The scene's [physics] (gravity, water density), which spawnObjects makes a resource before
 /// any object is spawned. Throws std::logic_error before that.
 const physics::PhysicsDef& physicsDef(ecs::World& world);
-/// The ripple patch's cell size (m), or the [ripples] default when there is no patch:
-/// bounding spheres are sized in cells (seed 001's SR).
+/// The ripple patch's cell size (m), or the [ripples] default when there is no patch: the
+/// unit of the custom sphere_cells key (every other sphere is sized in metres).
 float rippleCellSize(ecs::World& world);
-/// The bounding sphere of an object's "custom" keys, or `paper` when spheres = "paper";
-/// radius in metres from SR cells.
+/// The bounding sphere of an object's "custom" keys, or `paper` (sized in metres) when
+/// spheres = "paper"; a custom radius in metres from its SR cells of `cellSize` m.
 interaction::BoundingSphere boundingSphereFor(const ObjectDef& def, const interaction::BoundingSphere& paper, float cellSize);
 
 /// Creates a sphere or a box (def.type) in a world that has the physics resource: a floating
