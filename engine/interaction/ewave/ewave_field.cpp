@@ -9,7 +9,7 @@
 #include "core/parallel.h"
 #include "core/simd.h"
 #include "core/thread_choice.h"
-#include "interaction/kang2008/ripple_field.h"
+#include "interaction/sponge.h"
 #include "core/fftw_wisdom.h"
 
 #include <algorithm>
@@ -185,7 +185,7 @@ double EWaveField::modeStepMinusOne(double k, float dt, float decayTime, float v
     return (dm1 * std::cos(omega(k) * dtd) - 2.0 * half * half) * scale;
 }
 
-// Sponge: friction γ = SPONGE_MAX_RATE·(1 − s_row·s_col) with RippleField's sin² profile s
+// Sponge: friction γ = SPONGE_MAX_RATE·(1 − s_row·s_col) with the sin² profile s (spongeProfile)
 // (0 at the outer ring, 1 from the band's inner edge, zero slope there, so the band starts
 // without a step in the medium); each step multiplies h and v by exp(−γΔt). A wave that
 // crosses the band twice (out, and back in through the periodic wrap) keeps little: 32
@@ -194,9 +194,9 @@ std::vector<float> EWaveField::spongeFactors(int rows, int cols, int spongeWidth
     const double dtd = dt;
     std::vector<float> sponge(size_t(rows) * size_t(cols), 1.0f);
     for (int z = 0; z < rows; ++z) {
-        const float sz = RippleField::spongeFactor(std::min(z, rows - 1 - z), spongeWidth);
+        const float sz = spongeProfile(std::min(z, rows - 1 - z), spongeWidth);
         for (int x = 0; x < cols; ++x) {
-            const float sx = RippleField::spongeFactor(std::min(x, cols - 1 - x), spongeWidth);
+            const float sx = spongeProfile(std::min(x, cols - 1 - x), spongeWidth);
             const double gamma = SPONGE_MAX_RATE * (1.0 - double(sz) * double(sx));
             sponge[size_t(z) * size_t(cols) + size_t(x)] = float(std::exp(-gamma * dtd));
         }

@@ -4,6 +4,7 @@
 #include "interaction/kang2008/ripple_field.h"
 
 #include "core/scrolling_grid.h"
+#include "interaction/sponge.h"
 
 #include "core/parallel.h"
 
@@ -89,12 +90,7 @@ RippleField::RippleField(int rows, int cols, RippleBoundary boundary, int sponge
 // the medium (a step reflects), and reaches SPONGE_MAX_FRICTION at the ring. Measured with
 // a Gaussian bump in a 129² patch (energy coming back to the centre), w = 16 returns about
 // 4 % of what a fixed edge reflects, w = 24 about 1.5 %, w = 32 about 0.7 %.
-float RippleField::spongeFactor(int d, int w) {
-    if (d >= w) return 1.0f;
-    if (d <= 0) return 0.0f;
-    const double s = std::sin(0.5 * std::numbers::pi * double(d) / double(w));
-    return float(s * s);
-}
+float RippleField::spongeFactor(int d, int w) { return spongeProfile(d, w); }
 
 void RippleField::setBoundary(RippleBoundary boundary, int spongeWidth) {
     m_boundary = boundary;
