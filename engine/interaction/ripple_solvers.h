@@ -39,7 +39,8 @@ template <class... Models> struct RippleModelList {
     }
 };
 
-// --- the solvers, one line each (the first is the index 0 of RippleModel)
+// --- the registration table: every solver is one entry of this line (and its _def.h include
+// above). A new one goes at the end: RippleModel is the index into this list.
 using RippleModels = RippleModelList<Kang2008Model, EWaveModel>;
 
 } // namespace ob::interaction
