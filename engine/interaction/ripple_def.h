@@ -1,17 +1,27 @@
-// Interactive ripple layer settings, section [ripples] (SPEC §2.5; seed 001 §III–V).
+// Interactive ripple layer settings, section [ripples] (SPEC §2.5; seed 001 §III–V): the keys
+// every solver reads, and each solver's own (its Def, interaction/<model>/, a base of RippleDef).
 #pragma once
 #include "core/schema.h"
 
 #include "core/backend.h"
+#include "interaction/ripple_solvers.h"
+
+#include <string_view>
 
 namespace ob::interaction {
 
-/// Which ripple model steps the patch.
-enum class RippleModel : uint8_t {
-    Kang2008,  ///< seed 001 eq. 1–2: the paper's model, its scenes and benches
-    EWave,     ///< dispersive water waves, every Fourier mode at its own speed (SPEC §2.5b)
-};
-constexpr std::array<const char*, 2> names(RippleModel) { return {"kang2008", "ewave"}; }
+/// Which solver steps the patch: an index into RippleModels, its words the solvers' NAMEs
+/// ("kang2008": seed 001 eq. 1–2, the paper's scenes and benches; "ewave": dispersive water
+/// waves, every Fourier mode at its own speed, SPEC §2.5b).
+enum class RippleModel : uint8_t {};
+constexpr std::array<const char*, RippleModels::COUNT> names(RippleModel) { return RippleModels::NAMES; }
+
+/// The model whose word is `name` (a compile error when no solver has it).
+consteval RippleModel rippleModel(std::string_view name) {
+    for (std::size_t i = 0; i < RippleModels::COUNT; ++i)
+        if (name == RippleModels::NAMES[i]) return RippleModel(i);
+    throw "no ripple solver has this name";
+}
 
 /// What happens to waves at the patch edge.
 enum class RippleBoundary : uint8_t {
@@ -42,23 +52,21 @@ template <class V> void describe(V& v, RippleReferenceDef& d) {
     v.field("size", d.size, range(1e-6, 1e6), "reference size Bs (m)");
 }
 
-/// The ripple patch: a height field in a square of the world that objects disturb.
-struct RippleDef {
-    bool enabled = true;                 ///< false: no ripple layer at all
-    RippleModel model = RippleModel::EWave;  ///< "kang2008" (the paper's scenes) or "ewave"
-    Backend backend = Backend::Auto;     ///< "cpu", "gpu" (compute shaders; either model, ewave up to 2048²), "auto": gpu on a
-                                         ///< hardware GPU from 2048² cells, else cpu
-    int resolution = 256;                ///< N, cells per side; power of two in [16, 4096]
-    float cell_size = 0.25f;             ///< Δ, metres per cell, [0.01, 100]
-    float damping = 0.95f;               ///< kang2008: DF of eq. 2, [0, 1]: 0 kills a wave next step, 1 never damps
-    float decay_time = 3.0f;             ///< ewave: e-folding time of every wave's amplitude, s, [0, 1e6]; 0 = no decay
-    float viscosity = 1.0e-3f;           ///< ewave: effective viscosity, m²/s, [0, 10]: a wave of wavenumber k also
-                                         ///< decays as exp(−2νk²t) (short waves first); 0 = none
+/// The ripple patch: a height field in a square of the world that objects disturb. Every
+/// solver's own keys (Kang2008Def::damping, EWaveDef::decay_time, …) are inherited fields,
+/// read whatever the model (a scene may keep another model's key).
+struct RippleDef : RippleModels::Defs {
+    bool enabled = true;                     ///< false: no ripple layer at all
+    RippleModel model = rippleModel("ewave");  ///< a solver's NAME: "kang2008" (the paper's scenes) or "ewave"
+    Backend backend = Backend::Auto;         ///< "cpu", "gpu" (compute shaders; either model, ewave up to 2048²), "auto": gpu on a
+                                             ///< hardware GPU from 2048² cells, else cpu
+    int resolution = 256;                    ///< N, cells per side; power of two in [16, 4096]
+    float cell_size = 0.25f;                 ///< Δ, metres per cell, [0.01, 100]
     RippleBoundary boundary = RippleBoundary::Absorbing;  ///< "fixed", "absorbing" or "periodic" (ewave only, for tests)
-    int sponge_width = 32;               ///< absorbing band width, cells, [1, 512]; 32 reflects ≤ 5% of a ring's amplitude
+    int sponge_width = 32;                   ///< absorbing band width, cells, [1, 512]; 32 reflects ≤ 5% of a ring's amplitude
     RippleFollow follow = RippleFollow::Fixed;  ///< "fixed" at `center`, "camera" or "target"
-    glm::vec2 center{0.0f, 0.0f};        ///< patch centre when fixed, world [x, z] m
-    RippleReferenceDef reference;        ///< [ripples.reference]: object B of eq. 6
+    glm::vec2 center{0.0f, 0.0f};            ///< patch centre when fixed, world [x, z] m
+    RippleReferenceDef reference;            ///< [ripples.reference]: object B of eq. 6
 };
 
 template <class V> void describe(V& v, RippleDef& d) {
@@ -68,14 +76,17 @@ template <class V> void describe(V& v, RippleDef& d) {
     v.field("backend", d.backend, "where the ripple step runs (either model; ewave on the GPU up to 2048 cells per side)");
     v.field("resolution", d.resolution, powerOfTwo(16, 4096), "cells per side (N)");
     v.field("cell_size", d.cell_size, range(0.01, 100), "metres per cell");
-    v.field("damping", d.damping, range(0, 1), "kang2008: damping factor DF (eq. 2)");
-    v.field("decay_time", d.decay_time, range(0, 1e6), "ewave: e-folding time of a wave's amplitude (s; 0 = none)");
-    v.field("viscosity", d.viscosity, range(0, 10), "ewave: effective viscosity, damps short waves (m2/s; 0 = none)");
+    // Each solver's keys, in the table's order, as fields of this table (not v.fields: they
+    // are [ripples] keys like the others, for every visitor, the timeline's live set included).
+    RippleModels::forEach([&]<class Model>() { describe(v, static_cast<typename Model::Def&>(d)); });
     v.field("boundary", d.boundary, "border: fixed (reflects), absorbing (sponge) or periodic (ewave only)");
     v.field("sponge_width", d.sponge_width, range(1, 512), "absorbing band width (cells)");
     v.field("follow", d.follow, "patch stays at center, follows the camera, or the point it looks at");
     v.field("center", d.center, any(), "patch centre when fixed, world [x, z] m");
     v.section("reference", d.reference);
 }
+
+/// The checks across [ripples] keys of the Def's model (its keys read and in range).
+std::vector<RippleDefError> validate(const RippleDef& def);
 
 } // namespace ob::interaction

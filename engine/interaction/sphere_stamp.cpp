@@ -3,6 +3,8 @@
 // so a sphere resting on the water rewrites the same shape each step instead of digging.
 #include "interaction/sphere_stamp.h"
 
+#include "interaction/kang2008/ripple_field.h"
+
 #include <algorithm>
 #include <bit>
 #include <cassert>

@@ -2,7 +2,6 @@
 // An object is a set of spheres; each sphere, each step, decides by Table 2 whether to stamp
 // its footprint into Vh(t) (eq. 5) and rewrite Vh(t−1) over it (eq. 7).
 #pragma once
-#include "interaction/ripple_field.h"
 
 #include <algorithm>
 #include <cmath>
@@ -14,6 +13,8 @@
 #include <glm/vec3.hpp>
 
 namespace ob::interaction {
+
+class RippleField;  // kang2008's field: stampFootprint and stepSphere write it
 
 /// SD of eq. 5: which half of the sphere shapes the water.
 enum class SphereDirection : int8_t {

@@ -2,7 +2,7 @@
 // stampFootprint called for each in list order, each cell written at most once (seed 001
 // Table 2, SPEC §2.5).
 #pragma once
-#include "interaction/ripple_field.h"
+#include "interaction/kang2008/ripple_field.h"
 #include "interaction/sphere_stamp.h"
 
 #include <cstdint>

@@ -7,7 +7,7 @@
 #include "core/log.h"
 #include "core/parallel.h"
 #include "core/thread_choice.h"
-#include "ocean/fftw_wisdom.h"
+#include "core/fftw_wisdom.h"
 
 #include <cassert>
 #include <chrono>

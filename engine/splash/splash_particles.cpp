@@ -237,11 +237,10 @@ void SplashParticles::hash(StateHasher& h) const {
 }
 
 double stampLandings(interaction::RipplePatch& patch, std::span<const Landing> landings, float energyFraction) {
-    // The drop's crater goes into the height of whichever model runs (kang2008: Vh(t); ewave: h).
+    // The drop's crater goes into the height of whichever solver runs (kang2008: Vh(t); ewave: h).
     const int rows = patch.rows(), cols = patch.cols();
     const double cell = patch.def().cell_size, area = cell * cell;
-    interaction::EWaveField* ewave = patch.ewave();
-    std::span<float> cur = ewave ? std::span<float>() : patch.field().current();
+    interaction::RippleSolver& solver = patch.solver();
     double total = 0.0;
     for (const Landing& l : landings) {
         const glm::vec2 g = patch.toGrid(glm::vec2(l.position.x, l.position.z));
@@ -250,13 +249,9 @@ double stampLandings(interaction::RipplePatch& patch, std::span<const Landing> l
         const double s2 = double(glm::dot(l.velocity, l.velocity));
         const double energy = double(energyFraction) * 0.5 * double(l.mass) * s2;  // J
         const double depth = std::sqrt(2.0 * energy / (double(WATER_DENSITY) * GRAVITY * area));  // m
-        const size_t at = size_t(iz) * size_t(cols) + size_t(ix);
-        if (ewave) ewave->addHeight(at, -depth);
-        else cur[at] -= float(depth);
+        solver.addHeight(int(ix), int(iz), -depth);
         total += energy;
     }
-    if (landings.empty()) return total;
-    patch.fieldEdited();
     return total;
 }
 

@@ -17,11 +17,13 @@ constexpr float AIM_RATE_DEG_S = 30.0f;                // arrow keys turn the ba
 constexpr glm::vec3 BALL_COLOR{0.05f, 0.05f, 0.06f};   // iron
 constexpr glm::vec3 PILLAR_COLOR{0.35f, 0.33f, 0.30f}; // stone
 
-// The paper's cannonball sphere (seed 001 §V-1): SR 5 cells, SHR 1.0, AF 0; it falls in,
-// so it pushes the water down.
-interaction::BoundingSphere paperBallSphere(float cellSize) {
+// The paper's cannonball sphere (seed 001 §V-1): SHR 1.0, AF 0; it falls in, so it pushes the
+// water down. Its size in metres is the ball's own (seed 001's SR 5 cells are its 0.5 m ball on
+// 0.1 m cells, cannon.toml), so the ripple cell size changes neither the stamp's extent in the
+// world nor the splash crown.
+interaction::BoundingSphere paperBallSphere(float ballRadius) {
     interaction::BoundingSphere s;
-    s.radius = 5.0f * cellSize;
+    s.radius = ballRadius;
     s.direction = interaction::SphereDirection::Down;
     s.heightRatio = 1.0f;
     s.accelerationFactor = 0.0f;
@@ -75,8 +77,7 @@ ecs::Entity spawnCannon(ecs::World& world, const ObjectDef& o) {
     cannon.def = o.cannon;
     cannon.yawDeg = o.cannon.yaw_deg;
     cannon.elevationDeg = o.cannon.elevation_deg;
-    const float cell = rippleCellSize(world);
-    cannon.ballSphere = boundingSphereFor(o, paperBallSphere(cell), cell);
+    cannon.ballSphere = boundingSphereFor(o, paperBallSphere(o.cannon.ball_radius), rippleCellSize(world));
     world.add<Cannon>(e, cannon);
     return e;
 }

@@ -34,10 +34,14 @@ float wrapAngle(float a) {
     return a;
 }
 
-// The paper's ship sphere (seed 001 §V-3): SR 7 cells, SHR 0.2, AF 0.3; it presses down.
-interaction::BoundingSphere paperShipSphere(float cellSize) {
+// The paper's ship sphere (seed 001 §V-3): SHR 0.2, AF 0.3; it presses down. Its size is in
+// metres (seed 001's SR 7 cells on the ship scene's 0.2 m cells), so the ripple cell size
+// changes neither the wake's width in the world nor the foam it leaves.
+constexpr float PAPER_SHIP_SPHERE_RADIUS = 1.4f;  // m
+
+interaction::BoundingSphere paperShipSphere() {
     interaction::BoundingSphere s;
-    s.radius = 7.0f * cellSize;
+    s.radius = PAPER_SHIP_SPHERE_RADIUS;
     s.direction = interaction::SphereDirection::Down;
     s.heightRatio = 0.2f;
     s.accelerationFactor = 0.3f;
@@ -63,7 +67,7 @@ ecs::Entity spawnShip(ecs::World& world, const ObjectDef& o) {
     // Six spheres on the keel line at the still-water line (draft = hull depth · density ratio),
     // so they always cross the surface (seed 001: "always in contact").
     const float draft = o.ship.hull.y * std::min(o.ship.density / physicsDef(world).water_density, 1.0f);
-    interaction::BoundingSphere sphere = boundingSphereFor(o, paperShipSphere(rippleCellSize(world)), rippleCellSize(world));
+    interaction::BoundingSphere sphere = boundingSphereFor(o, paperShipSphere(), rippleCellSize(world));
     interaction::SphereSet set;
     set.hull = true;
     for (int k = 0; k < SHIP_SPHERES; ++k) {

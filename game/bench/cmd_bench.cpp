@@ -241,7 +241,7 @@ void addBenchCommand(CLI::App& app, CommandAction& action, const std::string& co
     f->add_option("--sizes", fields->sizes, "ripple field sizes (ripples.resolution), comma-separated")->delimiter(',');
     f->add_option("--scenes", fields->scenes, "scene names (config/scenes/NAME.toml) or paths, comma-separated")->delimiter(',');
     f->add_option("--model", fields->model, "ripple model of every run: kang2008 (default, the paper's) or ewave")
-        ->check(CLI::IsMember({"kang2008", "ewave"}));
+        ->check(CLI::IsMember(std::vector<std::string>(interaction::RippleModels::NAMES.begin(), interaction::RippleModels::NAMES.end())));
     f->add_flag("--no-render", fields->noRender, "only the spheres-only rows (interaction phase, nothing drawn)");
     f->add_option("--size", fields->size, "framebuffer WxH for the rendered rows (default 800x600, the paper's)");
     f->add_option("--frames", fields->frames, "measured frames per point (default 30)");

@@ -1,7 +1,7 @@
 // The jumping-fish swarm of seed 001 Table 5: one bounding sphere per fish on a ballistic jump
 // arc through the water over a ripple field, stamped by Table 2 and eq. 3–7 (SPEC §2.5, §3).
 #pragma once
-#include "interaction/ripple_field.h"
+#include "interaction/kang2008/ripple_field.h"
 #include "interaction/sphere_stamp.h"
 #include "interaction/stamp_batch.h"
 

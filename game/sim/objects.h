@@ -223,11 +223,11 @@ struct PhysicsSettings {
 const physics::PhysicsDef& physicsDef(ecs::World& world);
 /// As physicsDef, or null before spawnObjects.
 const physics::PhysicsDef* findPhysicsDef(ecs::World& world);
-/// The ripple patch's cell size (m), or the [ripples] default when there is no patch:
-/// bounding spheres are sized in cells (seed 001's SR).
+/// The ripple patch's cell size (m), or the [ripples] default when there is no patch: the
+/// unit of the custom sphere_cells key (every other sphere is sized in metres).
 float rippleCellSize(ecs::World& world);
-/// The bounding sphere of an object's "custom" keys, or `paper` when spheres = "paper";
-/// radius in metres from SR cells.
+/// The bounding sphere of an object's "custom" keys, or `paper` (sized in metres) when
+/// spheres = "paper"; a custom radius in metres from its SR cells of `cellSize` m.
 interaction::BoundingSphere boundingSphereFor(const ObjectDef& def, const interaction::BoundingSphere& paper, float cellSize);
 
 /// Creates a sphere or a box (def.type) in a world that has the physics resource: a floating

@@ -4,8 +4,8 @@
 
 #include "core/error.h"
 #include "core/npy.h"
-#include "interaction/ewave_field.h"
-#include "interaction/ripple_field.h"
+#include "interaction/ewave/ewave_field.h"
+#include "interaction/kang2008/ripple_field.h"
 
 #include <algorithm>
 #include <climits>

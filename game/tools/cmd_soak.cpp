@@ -162,10 +162,7 @@ SoakBounds soakBounds(Sandbox& sandbox) {
 static void checkRipples(Sandbox& sandbox, const SoakBounds& bounds, SoakReport& report) {
     ecs::World& world = sandbox.world();
     if (const auto* patch = world.resource<interaction::RipplePatch>()) {
-        const bool ewave = patch->isEWave();
-        const std::pair<const char*, std::span<const float>> levels[] = {{ewave ? "h" : "Vh(t)", patch->height()},
-                                                                           {"Vh(t-1)", patch->field().previous()}};
-        for (const auto& [name, level] : std::span(levels, ewave ? 1 : 2)) {
+        for (const auto& [name, level] : patch->solver().levels()) {
             Scan s = scan(level);
             if (!s.finite) {
                 size_t i = firstNonFinite(level);

@@ -72,11 +72,12 @@ void seaPanel(ecs::World& world, const SceneDef& scene) {
     liveSlider(world, "swell", "gerstner.amplitude_scale", scene.gerstner.amplitude_scale, 0.0f, 3.0f, "%.2f",
                "Gerstner amplitude scale (gerstner.count long waves; a preset sets 8 when there are none)");
     if (scene.ripples.enabled) {
-        if (scene.ripples.model == interaction::RippleModel::Kang2008)
-            liveSlider(world, "ripple damping", "ripples.damping", scene.ripples.damping, 0.8f, 1.0f, "%.3f", "damping factor DF per step (1 = none)");
-        else
-            liveSlider(world, "ripple decay s", "ripples.decay_time", scene.ripples.decay_time, 0.0f, 60.0f, "%.1f",
-                       "e-folding time of the ripples' amplitude (0 = none: only viscosity damps)");
+        // The running model's own knob (its registration's KNOB).
+        interaction::RippleModels::visit(size_t(scene.ripples.model), [&]<class Model>() {
+            const auto& k = Model::KNOB;
+            liveSlider(world, k.label, k.key, static_cast<const typename Model::Def&>(scene.ripples).*k.value, k.lo, k.hi, k.format, k.help);
+            return 0;
+        });
     }
     if (scene.render.time_of_day >= 0.0f) {
         liveSlider(world, "time of day h", "render.time_of_day", scene.render.time_of_day, 0.0f, 24.0f, "%.2f",

@@ -4,8 +4,7 @@
 #include "core/log.h"
 #include "foam/foam_map.h"
 #include "gfx/gl.h"
-#include "interaction/gpu/ewave_gpu.h"
-#include "interaction/gpu/ripple_offload.h"
+#include "interaction/gpu/attach_gpu.h"
 #include "interaction/ripple_patch.h"
 #include "ocean/gpu/ocean_fft_gpu.h"
 #include "ocean/gpu/ocean_textures.h"
@@ -25,15 +24,12 @@ void attachWaterGpu(ecs::World& world) {
         // Auto: the CPU up to 1024² even beside a GPU, where its step (0.1 ms at 256², 0.3 ms at
         // 1024²) costs less than the GPU's stamps, step and read-back stall (2.3 ms and 4.3 ms
         // on an H200 in the default scene).
-        // The same switch for both models: kang2008 RippleFieldGpu, ewave EWaveGpu.
+        // The same switch for every model: its moveToGpu (kang2008 RippleFieldGpu, ewave EWaveGpu)
+        // warns, and leaves it on the CPU, where its twin cannot run it.
         const bool gpu = backend == Backend::Gpu || (backend == Backend::Auto && !gfx::isSoftwareRenderer() && patch->def().resolution >= 2048);
-        if (gpu && !interaction::attachGpu(*patch))
-            logWarn("ripples: the ewave GPU field runs up to %d² cells; %d² runs on the CPU (FFTW)",
-                    interaction::EWaveGpu::MAX_RESOLUTION, patch->def().resolution);
-        logInfo("ripples: %s, %s backend, %d² cells of %g m", enumName(patch->def().model),
-                patch->onGpu() ? (patch->isEWave() ? "gpu (compute shaders, float FFT)" : "gpu (compute shaders)")
-                                : (patch->isEWave() ? "cpu (FFTW)" : "cpu"), patch->def().resolution,
-                double(patch->def().cell_size));
+        if (gpu) interaction::attachGpu(*patch);
+        logInfo("ripples: %s, %s backend, %d² cells of %g m", enumName(patch->def().model), patch->solver().backendName(),
+                patch->def().resolution, double(patch->def().cell_size));
     }
     OceanState* ocean = world.resource<OceanState>();
     if (!ocean) return;

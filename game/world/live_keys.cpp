@@ -12,26 +12,15 @@ namespace {
 
 constexpr double WIND_DIRECTION_LIMIT = 3600.0;  // degrees either way
 
-// [ripples] keys whose change reaches the running patch (RipplePatch::setDamping, pushed by
-// settingsSystem). interaction/ripple_def.h does not carry LIVE marks yet; once it marks these
-// three, this list goes.
-constexpr const char* RIPPLE_LIVE_KEYS[] = {"damping", "decay_time", "viscosity"};
-
 // Visits the scene's numbers and switches with their full path: `found(key, slot)` is called
 // for each with a SceneKey and the address of its value.
 template <class Found> struct KeyWalk {
     Found found;
     std::string prefix;
 
-    Change liveness(const char* key, Change change) const {
-        if (prefix == "ripples.")
-            for (const char* k : RIPPLE_LIVE_KEYS)
-                if (std::string(key) == k) return Change::Live;
-        return change;
-    }
-    void field(const char* key, bool& v, const char*, Change c = {}) { found(SceneKey{prefix + key, any(), false, true, liveness(key, c)}, &v); }
-    void field(const char* key, int& v, Limits l, const char*, Change c = {}) { found(SceneKey{prefix + key, l, true, false, liveness(key, c)}, &v); }
-    void field(const char* key, float& v, Limits l, const char*, Change c = {}) { found(SceneKey{prefix + key, l, false, false, liveness(key, c)}, &v); }
+    void field(const char* key, bool& v, const char*, Change c = {}) { found(SceneKey{prefix + key, any(), false, true, c}, &v); }
+    void field(const char* key, int& v, Limits l, const char*, Change c = {}) { found(SceneKey{prefix + key, l, true, false, c}, &v); }
+    void field(const char* key, float& v, Limits l, const char*, Change c = {}) { found(SceneKey{prefix + key, l, false, false, c}, &v); }
     void field(const char*, uint64_t&, const char*, Change = {}) {}
     void field(const char*, glm::vec2&, Limits, const char*, Change = {}) {}
     void field(const char*, glm::vec3&, Limits, const char*, Change = {}) {}

@@ -181,17 +181,7 @@ uint64_t Sandbox::stateHash() {
         h.u64(school.size());
         for (const glm::vec3& p : school.position) h.f32s(&p.x, 3);
     }
-    if (auto* patch = m_world.resource<interaction::RipplePatch>()) {
-        if (const interaction::EWaveField* ewave = patch->ewave()) {
-            // ewave: the height and vertical velocity (the whole state of the dispersive model)
-            h.bytes(ewave->heightState().data(), ewave->heightState().size_bytes());
-            h.bytes(ewave->velocityState().data(), ewave->velocityState().size_bytes());
-        } else {
-            auto now = patch->field().current(), before = patch->field().previous();
-            h.f32s(now.data(), now.size());
-            h.f32s(before.data(), before.size());
-        }
-    }
+    if (auto* patch = m_world.resource<interaction::RipplePatch>()) patch->solver().hashState(h);
     auto& motions = m_world.pool<ecs::Motion>();
     for (size_t i = 0; i < motions.size(); ++i) h.f32s(&motions.components()[i].velocity.x, 3);
     hashSplashFoam(m_world, h);

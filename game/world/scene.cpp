@@ -93,10 +93,8 @@ static SceneDef readScene(TomlDocument& doc, const std::string& source, const st
         for (const std::string& e : validateEvents(scene, source, &doc)) errors.push_back(e);
         for (const std::string& e : validateGame(scene, [&](const std::string& key) { return doc.where(key, source); }))
             errors.push_back(e);
-        if (scene.ripples.model == interaction::RippleModel::Kang2008 && scene.ripples.boundary == interaction::RippleBoundary::Periodic)
-            errors.push_back(doc.where("ripples.boundary", source) +
-                             ": ripples.boundary: \"periodic\" needs ripples.model = \"ewave\" (kang2008 has \"fixed\" "
-                             "or \"absorbing\")");
+        for (const interaction::RippleDefError& e : interaction::validate(scene.ripples))
+            errors.push_back(doc.where("ripples." + e.key, source) + ": ripples." + e.key + ": " + e.message);
         checkSpawnObjects(scene, doc, source, errors);
         checkModels(scene, doc, source, sceneDir, errors);
     }

@@ -40,10 +40,7 @@ void settingsSystem(ecs::World& world, const ecs::Tick&) {
         for (size_t k = 0; k < rigs.size(); ++k) rigs.components()[k].def = settings->def.camera;
     }
     if (seen->ripples.moved(*settings, SceneSection::Ripples))
-        if (auto* patch = world.resource<interaction::RipplePatch>()) {
-            const interaction::RippleDef& r = settings->def.ripples;
-            patch->setDamping(r.damping, r.decay_time, r.viscosity);
-        }
+        if (auto* patch = world.resource<interaction::RipplePatch>()) patch->retune(settings->def.ripples);
 }
 
 } // namespace ob::game

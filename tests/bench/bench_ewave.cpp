@@ -7,11 +7,11 @@
 #include "core/parallel.h"
 #include "core/thread_choice.h"
 #include "gfx/gl.h"
-#include "interaction/gpu/ewave_gpu.h"
+#include "interaction/ewave/gpu/ewave_gpu.h"
 #include "platform/platform.h"
-#include "interaction/ewave_field.h"
+#include "interaction/ewave/ewave_field.h"
 #include "interaction/sphere_stamp.h"
-#include "ocean/fftw_wisdom.h"
+#include "core/fftw_wisdom.h"
 
 #include <benchmark/benchmark.h>
 #include <fftw3.h>

@@ -4,10 +4,10 @@
 #include "core/log.h"
 #include "core/parallel.h"
 #include "gfx/gl.h"
-#include "interaction/gpu/ripple_gpu.h"
+#include "interaction/kang2008/gpu/ripple_gpu.h"
 #include "platform/platform.h"
 #include "sim/fish_swarm.h"
-#include "interaction/ripple_field.h"
+#include "interaction/kang2008/ripple_field.h"
 #include "interaction/sphere_stamp.h"
 #include "interaction/stamp_batch.h"
 

@@ -6,6 +6,7 @@
 #include "foam/foam_map.h"
 #include "gfx/gl.h"
 #include "gfx/renderer.h"
+#include "interaction/kang2008/kang2008_solver.h"
 #include "interaction/ripple_patch.h"
 #include "ocean/gerstner.h"
 #include "ocean/ocean_fft_cpu.h"
@@ -176,7 +177,10 @@ void BM_FoamSources(benchmark::State& state) {
     for (size_t c = 0; c < jacobian.size(); ++c) jacobian[c] = std::sin(float(c) * 0.01f);
     ob::interaction::RippleDef rd;
     ob::interaction::RipplePatch patch(rd);
-    for (size_t c = 0; c < patch.field().current().size(); ++c) patch.field().current()[c] = 0.05f * std::sin(float(c) * 0.3f);
+    // Steep ripples over the whole patch, whichever the model (the default's height).
+    for (int z = 0; z < patch.rows(); ++z)
+        for (int x = 0; x < patch.cols(); ++x)
+            patch.solver().addHeight(x, z, 0.05 * std::sin(double(z * patch.cols() + x) * 0.3));
     for (auto _ : state) {
         if (source == 0) map.addSources({jacobian, 256, 100.0f}, DT);
         if (source == 1) map.addSources({{}, 0, 0.0f, &patch}, DT);  // the ripples alone
@@ -210,11 +214,11 @@ struct FoamScene {
         water = std::make_unique<ob::water::CompositeWater>(waves, od.gravity, fft.get());
         ob::water::primeAt(fft.get(), *water, t);
         ob::interaction::RippleDef rd;
-        rd.model = ob::interaction::RippleModel::Kang2008;  // its field is written directly here
+        rd.model = ob::interaction::rippleModel("kang2008");  // its field is written directly here
         rd.resolution = 256;
         rd.cell_size = 0.2f;
         patch = std::make_unique<ob::interaction::RipplePatch>(rd);
-        std::span<float> h = patch->field().current();
+        std::span<float> h = patch->solverAs<ob::interaction::Kang2008Solver>()->field().current();
         for (int z = 0; z < 256; ++z)
             for (int x = 0; x < 256; ++x) h[size_t(z) * 256 + size_t(x)] = 0.05f * std::sin(float(x) * 0.9f) * std::cos(float(z) * 0.7f);
         ob::foam::FoamDef def;

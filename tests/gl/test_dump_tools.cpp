@@ -2,6 +2,7 @@
 // ocean` and `dump ripples` write is the simulation's own maps, in the documented layout.
 #include "core/error.h"
 #include "core/npy.h"
+#include "interaction/kang2008/kang2008_solver.h"
 #include "interaction/ripple_patch.h"
 #include "ocean/ocean_fft_cpu.h"
 #include "support/test_support.h"
@@ -36,7 +37,7 @@ TEST_CASE("dump ocean writes cascade 0's maps as [N, N, 5] float32 (the layout: 
 TEST_CASE("dump ripples writes the patch's Vh(t) after K steps as [N, N] float32, and refuses a scene without ripples",
           "[ripple][cli]") {
     ob::game::SceneDef scene;
-    scene.ripples.model = RippleModel::Kang2008;
+    scene.ripples.model = rippleModel("kang2008");
     scene.ripples.resolution = 32;
     scene.ocean.resolution = 16;
     const std::string out = ob::test::tempPath("ripples.npy");
@@ -48,7 +49,7 @@ TEST_CASE("dump ripples writes the patch's Vh(t) after K steps as [N, N] float32
     for (int k = 0; k < 3; ++k) sandbox.step();
     const auto* patch = sandbox.world().resource<RipplePatch>();
     REQUIRE(patch);
-    const auto field = patch->field().current();
+    const auto field = patch->solverAs<ob::interaction::Kang2008Solver>()->field().current();
     CHECK(std::equal(field.begin(), field.end(), a.data.begin()));
     scene.ripples.enabled = false;
     CHECK_THROWS_AS(ob::game::dumpRipples(scene, 3, out), ob::InputError);

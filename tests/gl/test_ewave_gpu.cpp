@@ -3,9 +3,10 @@
 // against theory (one Fourier mode: cos(K·X)·cos ωt, ω² = g·k + (σ/ρ)·k³; SPEC §2.5b), and end
 // to end through ripples.backend = "gpu". Timings under a hidden tag.
 #include "gfx/gl.h"
-#include "interaction/ewave_field.h"
-#include "interaction/gpu/ewave_gpu.h"
-#include "interaction/gpu/ripple_offload.h"
+#include "interaction/ewave/ewave_field.h"
+#include "interaction/ewave/ewave_solver.h"
+#include "interaction/ewave/gpu/ewave_gpu.h"
+#include "interaction/gpu/attach_gpu.h"
 #include "interaction/ripple_def.h"
 #include "interaction/ripple_patch.h"
 #include "platform/platform.h"
@@ -198,7 +199,7 @@ TEST_CASE("RipplePatch on the ewave GPU twin: written state (fieldEdited) and sc
     auto context = glContext();
     const int errorsBefore = gfx::glErrorCount();
     RippleDef def;
-    def.model = interaction::RippleModel::EWave;
+    def.model = interaction::rippleModel("ewave");
     def.resolution = 64;
     def.cell_size = 0.25f;
     def.boundary = interaction::RippleBoundary::Absorbing;
@@ -212,12 +213,12 @@ TEST_CASE("RipplePatch on the ewave GPU twin: written state (fieldEdited) and sc
         if (k == 5) {
             // A smooth bump written straight into h, as splash landings do.
             for (RipplePatch* p : {&cpu, &gpu}) {
-                auto h = p->ewave()->editHeight();
+                auto h = p->solverAs<interaction::EWaveSolver>()->field().editHeight();
                 for (int z = 0; z < 64; ++z)
                     for (int x = 0; x < 64; ++x)
                         h[size_t(z * 64 + x)] += 0.1 * std::exp(-((x - 30) * (x - 30) + (z - 25) * (z - 25)) / 20.0);
-                p->ewave()->syncHeight();
-                p->fieldEdited();
+                p->solverAs<interaction::EWaveSolver>()->field().syncHeight();
+                p->solverAs<interaction::EWaveSolver>()->fieldEdited();
             }
         }
         if (k == 20 || k == 30)
@@ -226,11 +227,11 @@ TEST_CASE("RipplePatch on the ewave GPU twin: written state (fieldEdited) and sc
         gpu.step(dt);
     }
     REQUIRE(gpu.origin() == cpu.origin());
-    const double error = relativeError(gpu.ewave()->heightState(), cpu.ewave()->heightState());
+    const double error = relativeError(gpu.solverAs<interaction::EWaveSolver>()->field().heightState(), cpu.solverAs<interaction::EWaveSolver>()->field().heightState());
     INFO("max |gpu - cpu| / max |cpu| " << error);
     CHECK(error <= 1e-5 * std::log2(64.0));
     // The height copy the renderer and queries read is the GPU's h.
-    CHECK(gpu.height()[size_t(25 * 64 + 30)] == float(gpu.ewave()->heightState()[size_t(25 * 64 + 30)]));
+    CHECK(gpu.height()[size_t(25 * 64 + 30)] == float(gpu.solverAs<interaction::EWaveSolver>()->field().heightState()[size_t(25 * 64 + 30)]));
     CHECK(gfx::glErrorCount() == errorsBefore);
 }
 
@@ -247,10 +248,10 @@ TEST_CASE("a ball dropped into the ewave field rings out on the GPU as on the CP
         game::Sandbox sandbox(scene);
         sandbox.attachPlatform(*platform, false);
         auto* patch = sandbox.world().resource<interaction::RipplePatch>();
-        REQUIRE(patch->isEWave());
+        REQUIRE(patch->solverAs<interaction::EWaveSolver>());
         REQUIRE(patch->onGpu() == (std::string(backend) == "gpu"));
         for (int i = 0; i < 90; ++i) sandbox.step();
-        auto h = patch->ewave()->heightState();
+        auto h = patch->solverAs<interaction::EWaveSolver>()->field().heightState();
         return std::vector<double>(h.begin(), h.end());
     };
     const std::vector<double> cpu = run("cpu"), gpu = run("gpu");

@@ -2,8 +2,8 @@
 // with both boundaries, eq. 5 + 7 stamps with and without overlap, scrolling, Table 2 planning
 // on the CPU, readback (SPEC §2.5, seed 001; timings: tests/bench/bench_ripple.cpp).
 #include "gfx/gl.h"
-#include "interaction/ripple_field.h"
-#include "interaction/gpu/ripple_gpu.h"
+#include "interaction/kang2008/ripple_field.h"
+#include "interaction/kang2008/gpu/ripple_gpu.h"
 #include "interaction/sphere_stamp.h"
 #include "platform/platform.h"
 

@@ -3,6 +3,7 @@
 #include "tools/cmd_soak.h"
 #include "core/error.h"
 #include "ecs/components.h"
+#include "interaction/kang2008/kang2008_solver.h"
 #include "interaction/ripple_patch.h"
 #include "sim/objects.h"
 #include "world/sandbox.h"
@@ -36,7 +37,7 @@ TEST_CASE("soak invariants hold for a fresh scene and name the cell, the bound o
     game::Sandbox sandbox(scene);
     for (int i = 0; i < 10; ++i) sandbox.step();
     CHECK(invariantError(sandbox).empty());
-    auto& field = sandbox.world().resource<interaction::RipplePatch>()->field();
+    auto& field = sandbox.world().resource<interaction::RipplePatch>()->solverAs<ob::interaction::Kang2008Solver>()->field();
 
     SECTION("a NaN in the ripple field") {
         field.current()[size_t(5 * 64 + 7)] = std::numeric_limits<float>::quiet_NaN();

@@ -1,7 +1,7 @@
 // Test references for the ripple field: seed 001 eq. 1–2 written plainly in double, its
 // conserved energy, and random fields (header-only; shared by the unit, gl and scenario suites).
 #pragma once
-#include "interaction/ripple_field.h"
+#include "interaction/kang2008/ripple_field.h"
 
 #include <algorithm>
 #include <random>

@@ -148,3 +148,25 @@ TEST_CASE("cannons fire on events and at their rate, balls sink and are removed 
     for (int i = 0; i < 120; ++i) rated.step();
     CHECK(rated.world().pool<game::Cannon>().components()[0].shots == 4);
 }
+
+TEST_CASE("paper bounding spheres are sized in metres: the ripple cell size changes neither a ball's nor a ship's", "[cannon][ship]") {
+    // A cell size only turns metres into SR cells where a sphere stamps (planStamp), so the
+    // splash crowns and the wake foam, which read the radius in metres, do not depend on it.
+    auto spheres = [](const char* cellSize) {
+        game::Sandbox sandbox(game::parseScene(std::string("[ripples]\nmodel = \"kang2008\"\ncell_size = ") + cellSize +
+                                                   "\n[[objects]]\ntype = \"cannon\"\nball_radius = 0.3\n"
+                                                   "[[objects]]\ntype = \"ship\"\nposition = [0.0, 0.3, 20.0]\n",
+                                               "spheres.toml"));
+        ecs::World& world = sandbox.world();
+        std::pair<float, float> radii{0.0f, 0.0f};  // ball, ship
+        for (const game::Cannon& c : world.pool<game::Cannon>().components()) radii.first = c.ballSphere.radius;
+        auto& sets = world.pool<interaction::SphereSet>();
+        for (size_t k = 0; k < sets.size(); ++k)
+            if (sets.components()[k].hull) radii.second = sets.components()[k].spheres.at(0).radius;
+        return radii;
+    };
+    const auto fine = spheres("0.1"), coarse = spheres("0.3");
+    CHECK(fine.first == 0.3f);   // the ball itself
+    CHECK(fine.second == 1.4f);  // seed 001's SR 7 on the ship scene's 0.2 m cells
+    CHECK(coarse == fine);
+}

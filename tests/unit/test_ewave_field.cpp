@@ -5,7 +5,7 @@
 // here (double-precision FFTW), not taken from the solver.
 #include "core/parallel.h"
 #include "core/thread_choice.h"
-#include "interaction/ewave_field.h"
+#include "interaction/ewave/ewave_field.h"
 
 #include <catch2/catch.hpp>
 

@@ -2,6 +2,7 @@
 // the surface (Table 2), pushing the water up on the way out (SD +1) and down on the way
 // back in (SD −1); between jumps it swims at depth and leaves the water alone.
 #include "behaviours/fish.h"
+#include "interaction/kang2008/kang2008_solver.h"
 #include "interaction/ripple_patch.h"
 #include "world/sandbox.h"
 
@@ -57,7 +58,7 @@ TEST_CASE("a fish stamps only while crossing the surface: up on the way out, dow
         if (gap > r + std::abs(v.y) * dt + 0.05f) ++badStamps;
         // Eq. 5 with SD from the motion: Vh(t) at the centre (now the previous level) went up
         // for a rising fish and down for a falling one.
-        const float stampedHeight = patch->field().previous()[size_t(std::lround(patch->toGrid({p.x, p.z}).y)) * 256 +
+        const float stampedHeight = patch->solverAs<ob::interaction::Kang2008Solver>()->field().previous()[size_t(std::lround(patch->toGrid({p.x, p.z}).y)) * 256 +
                                                               size_t(std::lround(patch->toGrid({p.x, p.z}).x))];
         if (v.y > 0.0f) ++rising, wrongSign += stampedHeight <= 0.0f;
         else ++falling, wrongSign += stampedHeight >= 0.0f;

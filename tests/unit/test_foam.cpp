@@ -5,6 +5,7 @@
 #include "core/parallel.h"
 #include "core/thread_choice.h"
 #include "foam/foam_map.h"
+#include "interaction/kang2008/kang2008_solver.h"
 #include "interaction/ripple_patch.h"
 #include "splash/splash_particles.h"
 #include "water/composite_water.h"
@@ -356,12 +357,12 @@ TEST_CASE("whitecaps, steep ripples and landed drops feed foam by their laws", "
     }
     SECTION("ripples: ripple_weight·(|∇h| − s_0)·dt where the ripples are steep") {
         interaction::RippleDef rd;
-        rd.model = interaction::RippleModel::Kang2008;  // its field is written directly here
+        rd.model = interaction::rippleModel("kang2008");  // its field is written directly here
         rd.resolution = 64;
         rd.cell_size = 0.25f;
         interaction::RipplePatch patch(rd);
         // A ramp of slope 0.8 over x ∈ [2, 4] m of the patch, flat elsewhere.
-        std::span<float> h = patch.field().current();
+        std::span<float> h = patch.solverAs<ob::interaction::Kang2008Solver>()->field().current();
         for (int z = 1; z < 63; ++z)
             for (int x = 1; x < 63; ++x) {
                 const float wx = patch.origin().x + float(x) * rd.cell_size;
@@ -512,11 +513,11 @@ TEST_CASE("update() in one sweep gives the bits of the whitecaps, then the rippl
         for (int j = 0; j < n; ++j)
             for (int i = 0; i < n; ++i) jac[size_t(j) * n + size_t(i)] = 0.6f + 0.5f * std::sin(0.3f * float(i)) * std::cos(0.2f * float(j));
         interaction::RippleDef rd;
-        rd.model = interaction::RippleModel::Kang2008;  // its field is written directly here
+        rd.model = interaction::rippleModel("kang2008");  // its field is written directly here
         rd.resolution = 64;
         rd.cell_size = rippleCell;
         interaction::RipplePatch patch(rd);
-        std::span<float> h = patch.field().current();
+        std::span<float> h = patch.solverAs<ob::interaction::Kang2008Solver>()->field().current();
         for (int z = 0; z < 64; ++z)
             for (int x = 0; x < 64; ++x) h[size_t(z) * 64 + size_t(x)] = 0.8f * rippleCell * float(x % 9) * std::sin(0.4f * float(z));
         FoamMap calls(def, 32.0f, glm::vec2(1.3f, -0.6f)), swept(def, 32.0f, glm::vec2(1.3f, -0.6f));
@@ -555,10 +556,10 @@ TEST_CASE("update() gives bit-identical foam for any worker count, scrolling, wi
         std::vector<float> jac(size_t(n) * n);
         for (size_t c = 0; c < jac.size(); ++c) jac[c] = 0.5f + 0.4f * std::sin(float(c) * 0.37f);
         interaction::RippleDef rd;
-        rd.model = interaction::RippleModel::Kang2008;
+        rd.model = interaction::rippleModel("kang2008");
         rd.resolution = 64;
         interaction::RipplePatch patch(rd);
-        std::span<float> height = patch.field().current();
+        std::span<float> height = patch.solverAs<ob::interaction::Kang2008Solver>()->field().current();
         for (size_t c = 0; c < height.size(); ++c) height[c] = 0.2f * std::sin(float(c) * 1.3f);
         foam::FoamInputs in;
         in.jacobian = jac;

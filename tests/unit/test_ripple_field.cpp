@@ -4,7 +4,7 @@
 #include "core/error.h"
 #include "core/npy.h"
 #include "core/parallel.h"
-#include "interaction/ripple_field.h"
+#include "interaction/kang2008/ripple_field.h"
 #include "support/test_support.h"
 
 #include <catch2/catch.hpp>

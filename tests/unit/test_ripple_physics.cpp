@@ -4,7 +4,7 @@
 // when a moving sphere stamps; and `dump ripples`.
 #include "core/error.h"
 #include "core/npy.h"
-#include "interaction/ripple_field.h"
+#include "interaction/kang2008/ripple_field.h"
 #include "interaction/ripple_patch.h"
 #include "interaction/sphere_stamp.h"
 #include "world/sandbox.h"

@@ -2,6 +2,7 @@
 // §V-3, fig. 16): at rest a standing deformation, slow a rebound behind the stern, five
 // times faster a longer wake.
 #include "ecs/components.h"
+#include "interaction/kang2008/kang2008_solver.h"
 #include "interaction/ripple_patch.h"
 #include "sim/objects.h"
 #include "world/sandbox.h"
@@ -62,7 +63,7 @@ Wake sail(float speed, float seconds) {
     auto* patch = sandbox.world().resource<interaction::RipplePatch>();
     std::vector<float> before;
     for (int i = 0; i < steps; ++i) {
-        if (i == steps - 60) before.assign(patch->field().current().begin(), patch->field().current().end());
+        if (i == steps - 60) before.assign(patch->solverAs<ob::interaction::Kang2008Solver>()->field().current().begin(), patch->solverAs<ob::interaction::Kang2008Solver>()->field().current().end());
         sandbox.step();
     }
     const ecs::Entity ship = sandbox.world().pool<game::Ship>().entities()[0];
@@ -81,7 +82,7 @@ Wake sail(float speed, float seconds) {
         if (a > threshold) w.length = d;
     }
     for (float z = stern; z <= stern + game::ShipDef{}.hull.z; z += 0.1f) w.depth = std::min(w.depth, patch->heightAt({0.0f, z}));
-    auto now = patch->field().current();
+    auto now = patch->solverAs<ob::interaction::Kang2008Solver>()->field().current();
     for (size_t i = 0; i < now.size(); ++i) w.change = std::max(w.change, std::abs(now[i] - before[i]));
     REQUIRE(std::abs(sandbox.world().get<ecs::Motion>(ship).velocity.z - speed) < 0.05f * speed + 0.01f);  // held its speed
     return w;

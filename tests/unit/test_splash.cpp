@@ -3,6 +3,7 @@
 // energy landings put into the ripple layer, bow spray's rate, the cap, and determinism.
 #include "core/hash.h"
 #include "core/parallel.h"
+#include "interaction/kang2008/kang2008_solver.h"
 #include "interaction/ripple_patch.h"
 #include "splash/splash_particles.h"
 #include "water/water_query.h"
@@ -216,7 +217,7 @@ TEST_CASE("drops fly the closed form of linear drag, for any step", "[splash]") 
 
 TEST_CASE("landing drops put ε of their kinetic energy into the ripple layer", "[splash]") {
     interaction::RippleDef rd;
-    rd.model = interaction::RippleModel::Kang2008;  // its Vh(t) is written and read here; ewave takes the same craters into h
+    rd.model = interaction::rippleModel("kang2008");  // its Vh(t) is written and read here; ewave takes the same craters into h
     rd.resolution = 64;
     rd.cell_size = 0.25f;
     rd.boundary = interaction::RippleBoundary::Fixed;
@@ -243,7 +244,7 @@ TEST_CASE("landing drops put ε of their kinetic energy into the ripple layer", 
         CHECK(put == Approx(0.2 * kinetic).epsilon(1e-6));
         CHECK(potential(patch) == Approx(0.2 * kinetic).epsilon(1e-4));
         double volume = 0.0;
-        for (float h : patch.field().current()) volume += h;
+        for (float h : patch.solverAs<ob::interaction::Kang2008Solver>()->field().current()) volume += h;
         CHECK(volume < 0.0);  // craters: the water goes down where drops land
         // A landing outside the patch is skipped.
         splash::Landing far = landings[0];

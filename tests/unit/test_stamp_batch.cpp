@@ -3,7 +3,7 @@
 // each stamp in order; reads between pushes see what the sequential stamps would have written.
 #include "core/parallel.h"
 #include "sim/fish_swarm.h"
-#include "interaction/ripple_field.h"
+#include "interaction/kang2008/ripple_field.h"
 #include "interaction/sphere_stamp.h"
 #include "interaction/stamp_batch.h"
 

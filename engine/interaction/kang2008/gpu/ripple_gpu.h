@@ -2,7 +2,7 @@
 // or absorbing sponge) and of stampFootprint (eq. 5 then eq. 7), tested against them (SPEC §2.5).
 #pragma once
 #include "gfx/handles.h"
-#include "interaction/ripple_field.h"
+#include "interaction/kang2008/ripple_field.h"
 #include "interaction/sphere_stamp.h"
 
 #include <cstdint>

@@ -1,14 +1,16 @@
 // Dispersive ripple field: exact per-mode rotation of (ĥ, v̂) with FFTW real-to-complex
 // transforms of the step's change (SPEC §2.5b; Tessendorf, "eWave", 2014), then the boundary
 // in real space.
-#include "interaction/ewave_field.h"
+#include "interaction/ewave/ewave_field.h"
+
+#include "core/scrolling_grid.h"
 
 #include "core/error.h"
 #include "core/parallel.h"
 #include "core/simd.h"
 #include "core/thread_choice.h"
-#include "interaction/ripple_field.h"
-#include "ocean/fftw_wisdom.h"
+#include "interaction/sponge.h"
+#include "core/fftw_wisdom.h"
 
 #include <algorithm>
 #include <cassert>
@@ -183,7 +185,7 @@ double EWaveField::modeStepMinusOne(double k, float dt, float decayTime, float v
     return (dm1 * std::cos(omega(k) * dtd) - 2.0 * half * half) * scale;
 }
 
-// Sponge: friction γ = SPONGE_MAX_RATE·(1 − s_row·s_col) with RippleField's sin² profile s
+// Sponge: friction γ = SPONGE_MAX_RATE·(1 − s_row·s_col) with the sin² profile s (spongeProfile)
 // (0 at the outer ring, 1 from the band's inner edge, zero slope there, so the band starts
 // without a step in the medium); each step multiplies h and v by exp(−γΔt). A wave that
 // crosses the band twice (out, and back in through the periodic wrap) keeps little: 32
@@ -192,9 +194,9 @@ std::vector<float> EWaveField::spongeFactors(int rows, int cols, int spongeWidth
     const double dtd = dt;
     std::vector<float> sponge(size_t(rows) * size_t(cols), 1.0f);
     for (int z = 0; z < rows; ++z) {
-        const float sz = RippleField::spongeFactor(std::min(z, rows - 1 - z), spongeWidth);
+        const float sz = spongeProfile(std::min(z, rows - 1 - z), spongeWidth);
         for (int x = 0; x < cols; ++x) {
-            const float sx = RippleField::spongeFactor(std::min(x, cols - 1 - x), spongeWidth);
+            const float sx = spongeProfile(std::min(x, cols - 1 - x), spongeWidth);
             const double gamma = SPONGE_MAX_RATE * (1.0 - double(sz) * double(sx));
             sponge[size_t(z) * size_t(cols) + size_t(x)] = float(std::exp(-gamma * dtd));
         }
@@ -383,30 +385,7 @@ void EWaveField::addSources(std::span<const EWaveSource> sources, float dt) {
 void EWaveField::scroll(int dx, int dz) {
     if (dx == 0 && dz == 0) return;
     applySources();
-    const int rows = m_rows, cols = m_cols;
-    if (std::abs(dx) >= cols || std::abs(dz) >= rows) {
-        clear();
-        return;
-    }
-    const int xa = std::max(0, -dx), xb = std::min(cols, cols - dx);
-    for (double* level : {m_h, m_v}) {
-        auto shiftRow = [&](int z) {
-            double* dst = level + size_t(z) * size_t(cols);
-            const int sz = z + dz;
-            if (sz < 0 || sz >= rows) {
-                std::fill(dst, dst + cols, 0.0);
-                return;
-            }
-            const double* src = level + size_t(sz) * size_t(cols);
-            std::memmove(dst + xa, src + xa + dx, size_t(xb - xa) * sizeof(double));
-            std::fill(dst, dst + xa, 0.0);
-            std::fill(dst + xb, dst + cols, 0.0);
-        };
-        if (dz >= 0)
-            for (int z = 0; z < rows; ++z) shiftRow(z);
-        else
-            for (int z = rows - 1; z >= 0; --z) shiftRow(z);
-    }
+    for (double* level : {m_h, m_v}) scrollCells(level, m_rows, m_cols, glm::ivec2(dx, dz), 0.0);
     syncHeight();
 }
 

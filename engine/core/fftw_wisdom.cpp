@@ -1,6 +1,6 @@
 // Shared FFTW wisdom: one measured plan per transform and machine, read and written under
 // an inter-process file lock.
-#include "ocean/fftw_wisdom.h"
+#include "core/fftw_wisdom.h"
 
 #include "core/cache_file.h"
 #include "core/log.h"

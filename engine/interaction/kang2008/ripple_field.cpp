@@ -1,7 +1,10 @@
 // Ripple field: linear convolution, seed 001 eq. 1–2; fixed ring or absorbing sponge (SPEC §2.5).
 // Vh(t+1) is written over Vh(t−1) in place (eq. 2 reads Vh(t−1) only at the cell it writes),
 // so two levels suffice; they then swap roles.
-#include "interaction/ripple_field.h"
+#include "interaction/kang2008/ripple_field.h"
+
+#include "core/scrolling_grid.h"
+#include "interaction/sponge.h"
 
 #include "core/parallel.h"
 
@@ -87,12 +90,7 @@ RippleField::RippleField(int rows, int cols, RippleBoundary boundary, int sponge
 // the medium (a step reflects), and reaches SPONGE_MAX_FRICTION at the ring. Measured with
 // a Gaussian bump in a 129² patch (energy coming back to the centre), w = 16 returns about
 // 4 % of what a fixed edge reflects, w = 24 about 1.5 %, w = 32 about 0.7 %.
-float RippleField::spongeFactor(int d, int w) {
-    if (d >= w) return 1.0f;
-    if (d <= 0) return 0.0f;
-    const double s = std::sin(0.5 * std::numbers::pi * double(d) / double(w));
-    return float(s * s);
-}
+float RippleField::spongeFactor(int d, int w) { return spongeProfile(d, w); }
 
 void RippleField::setBoundary(RippleBoundary boundary, int spongeWidth) {
     m_boundary = boundary;
@@ -159,30 +157,8 @@ void RippleField::step(float damping) {
 void RippleField::scroll(int dx, int dz) {
     if (dx == 0 && dz == 0) return;
     const int rows = m_rows, cols = m_cols;
-    if (std::abs(dx) >= cols || std::abs(dz) >= rows) {
-        clear();
-        return;
-    }
-    // Destination columns [xa, xb) take source columns [xa+dx, xb+dx).
-    const int xa = std::max(0, -dx), xb = std::min(cols, cols - dx);
     for (float* level : {m_cur, m_prev}) {
-        auto shiftRow = [&](int z) {
-            float* dst = level + size_t(z) * size_t(cols);
-            const int sz = z + dz;
-            if (sz < 0 || sz >= rows) {
-                std::fill(dst, dst + cols, 0.0f);
-                return;
-            }
-            const float* src = level + size_t(sz) * size_t(cols);
-            std::memmove(dst + xa, src + xa + dx, size_t(xb - xa) * sizeof(float));
-            std::fill(dst, dst + xa, 0.0f);
-            std::fill(dst + xb, dst + cols, 0.0f);
-        };
-        // Walk rows so that each source row is read before it is overwritten.
-        if (dz >= 0)
-            for (int z = 0; z < rows; ++z) shiftRow(z);
-        else
-            for (int z = rows - 1; z >= 0; --z) shiftRow(z);
+        scrollCells(level, rows, cols, glm::ivec2(dx, dz), 0.0f);
         // Outer ring back to 0.
         std::fill(level, level + cols, 0.0f);
         std::fill(level + size_t(rows - 1) * size_t(cols), level + m_cells, 0.0f);

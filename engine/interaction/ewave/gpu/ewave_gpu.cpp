@@ -1,6 +1,6 @@
 // Dispersive ripple field on the GPU: e^{+} line FFTs (shaders/ocean_fft.comp), the exact
 // per-mode rotation and the real-space boundary (shaders/ewave_step.comp). SPEC §2.5b.
-#include "interaction/gpu/ewave_gpu.h"
+#include "interaction/ewave/gpu/ewave_gpu.h"
 
 #include "gfx/shader.h"
 

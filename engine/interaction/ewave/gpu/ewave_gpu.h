@@ -3,7 +3,7 @@
 // shaders/ewave_step.comp, tested against the CPU field.
 #pragma once
 #include "gfx/handles.h"
-#include "interaction/ewave_field.h"
+#include "interaction/ewave/ewave_field.h"
 
 #include <span>
 #include <vector>

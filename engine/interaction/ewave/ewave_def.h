@@ -1,0 +1,44 @@
+// The ewave ripple solver's settings and its registration (dispersive waves, SPEC §2.5b): its
+// keys sit flat in [ripples]; the solver itself is in ewave_solver.h.
+#pragma once
+#include "core/schema.h"
+#include "interaction/ripple_knob.h"
+
+#include <memory>
+#include <vector>
+
+namespace ob::interaction {
+
+struct RippleDef;
+class RippleSolver;
+struct RippleDefError;
+
+/// ewave's own keys of [ripples].
+struct EWaveDef {
+    float decay_time = 3.0f;    ///< e-folding time of every wave's amplitude, s, [0, 1e6]; 0 = no decay
+    float viscosity = 1.0e-3f;  ///< effective viscosity, m²/s, [0, 10]: a wave of wavenumber k also decays as
+                                ///< exp(−2νk²t) (short waves first); 0 = none
+};
+
+template <class V> void describe(V& v, EWaveDef& d) {
+    v.field("decay_time", d.decay_time, range(0, 1e6), "ewave: e-folding time of a wave's amplitude (s; 0 = none)", LIVE);
+    v.field("viscosity", d.viscosity, range(0, 10), "ewave: effective viscosity, damps short waves (m2/s; 0 = none)", LIVE);
+}
+
+/// The registration of ewave (interaction/ripple_solvers.h lists it).
+struct EWaveModel {
+    static constexpr const char* NAME = "ewave";  ///< ripples.model's word
+    using Def = EWaveDef;
+    /// The live panel's knob.
+    static constexpr RippleKnob<Def> KNOB{"ripples.decay_time", &Def::decay_time, "ripple decay s", 0.0f, 60.0f, "%.1f",
+                                          "e-folding time of the ripples' amplitude (0 = none: only viscosity damps)"};
+    /// Checks across keys this model adds: none (every boundary is ewave's).
+    static std::vector<RippleDefError> validate(const RippleDef& def);
+    /// The CPU solver (EWaveField, FFTW) of a checked Def (ewave_solver.cpp).
+    static std::unique_ptr<RippleSolver> make(const RippleDef& def);
+    /// Moves a solver `make` made onto EWaveGpu (ewave/gpu/, the GL library only); false, with
+    /// a warning, above EWaveGpu::MAX_RESOLUTION.
+    static bool moveToGpu(RippleSolver& solver);
+};
+
+} // namespace ob::interaction

@@ -1,0 +1,71 @@
+// The ewave solver: EWaveField and its pressure sources behind RippleSolver.
+#include "interaction/ewave/ewave_solver.h"
+
+#include "interaction/ripple_def.h"
+
+namespace ob::interaction {
+
+std::vector<RippleDefError> EWaveModel::validate(const RippleDef& /*def*/) { return {}; }
+
+std::unique_ptr<RippleSolver> EWaveModel::make(const RippleDef& def) {
+    return std::make_unique<EWaveSolver>(def.resolution, def.cell_size, def, def.boundary, def.sponge_width);
+}
+
+EWaveSolver::EWaveSolver(int n, float cellSize, const EWaveDef& def, RippleBoundary boundary, int spongeWidth)
+    : m_field(n, n, cellSize, boundary, spongeWidth), m_cellSize(cellSize) {
+    m_field.setDamping(def.decay_time, def.viscosity);
+}
+
+bool EWaveSolver::addSphere(const BoundingSphere& sphere, SphereContact& contact, const SphereMotion& motion) {
+    RippleStamp stamp;
+    const EWaveField& f = m_field;
+    if (!planStamp(f.rows(), f.cols(), m_cellSize, sphere, contact, motion, [&f](int x, int z) { return f.heightAt(x, z); },
+                   stamp))
+        return false;
+    m_sources.push_back(ewaveSource(stamp, motion.gridX, motion.gridZ, m_cellSize, motion.verticalVelocity));
+    return true;
+}
+
+void EWaveSolver::addHeight(int x, int z, double dh) {
+    m_field.addHeight(size_t(z) * size_t(m_field.cols()) + size_t(x), dh);
+    m_changed = true;
+}
+
+void EWaveSolver::step(float dt) {
+    if (!m_sources.empty()) m_changed = true;
+    m_field.addSources(m_sources, dt);
+    m_sources.clear();
+    if (m_offload) m_offload->step(dt, m_changed);
+    else m_field.step(dt);
+    m_changed = false;
+}
+
+void EWaveSolver::scroll(glm::ivec2 shift) {
+    m_field.scroll(shift.x, shift.y);
+    for (EWaveSource& s : m_sources) {  // queued in the old grid's coordinates
+        s.gx -= float(shift.x);
+        s.gz -= float(shift.y);
+    }
+    m_changed = true;
+}
+
+void EWaveSolver::clear() {
+    m_field.clear();
+    m_sources.clear();
+    m_changed = true;
+}
+
+float EWaveSolver::velocityAt(glm::vec2 g, float /*dt*/) const {
+    return bilinear<double>(m_field.velocityState(), m_field.rows(), m_field.cols(), g);
+}
+
+void EWaveSolver::hashState(StateHasher& h) const {
+    // The whole state of the dispersive model: h and v, in double.
+    h.bytes(m_field.heightState().data(), m_field.heightState().size_bytes());
+    h.bytes(m_field.velocityState().data(), m_field.velocityState().size_bytes());
+}
+
+// The GPU twin takes the damping from the field at its next step.
+void EWaveSolver::retune(const RippleDef& def) { m_field.setDamping(def.decay_time, def.viscosity); }
+
+} // namespace ob::interaction

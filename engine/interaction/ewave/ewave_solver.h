@@ -1,0 +1,69 @@
+// The ewave ripple solver: the dispersive EWaveField (SPEC §2.5b) whose sources are the
+// bounding spheres' Table 2 stamps as pressure (ewaveSource), on the CPU (FFTW) or through its
+// GPU twin (ewave/gpu/).
+#pragma once
+#include "interaction/ewave/ewave_def.h"
+#include "interaction/ewave/ewave_field.h"
+#include "interaction/ripple_solver.h"
+
+#include <memory>
+#include <vector>
+
+namespace ob::interaction {
+
+/// EWaveField behind the solver interface. Table 2 decides as for kang2008 (planStamp) and
+/// each stamp becomes a source on v, queued in grid coordinates and added over the next
+/// step's dt. Queries, hashing and rendering read h and v.
+///
+/// On the GPU (setOffload, ewave/gpu/): the sources are still added to the CPU field, which is
+/// uploaded whenever it changed (sources, scrolling, addHeight, fieldEdited), stepped there,
+/// and h, v are read back after each step.
+class EWaveSolver final : public RippleSolver {
+public:
+    /// Where the step runs when not on the CPU.
+    class Offload {
+    public:
+        virtual ~Offload() = default;
+        /// One step of dt seconds; `cpuChanged`: the CPU field was written since the last step
+        /// (upload it first). Writes h and v back into the CPU field.
+        virtual void step(float dt, bool cpuChanged) = 0;
+    };
+
+    /// An n × n field of cells `cellSize` metres, h = v = 0, damped as the Def says.
+    EWaveSolver(int n, float cellSize, const EWaveDef& def, RippleBoundary boundary, int spongeWidth);
+    /// Steps through `offload` from now on (EWaveModel::moveToGpu).
+    void setOffload(std::unique_ptr<Offload> offload) { m_offload = std::move(offload); }
+
+    /// The field, writable: on the GPU, call fieldEdited() after writing its state.
+    EWaveField& field() { return m_field; }
+    const EWaveField& field() const { return m_field; }
+    /// The field was written outside the interface: on the GPU the next step uploads it.
+    void fieldEdited() { m_changed = true; }
+
+    int rows() const override { return m_field.rows(); }
+    int cols() const override { return m_field.cols(); }
+    bool addSphere(const BoundingSphere& sphere, SphereContact& contact, const SphereMotion& motion) override;
+    void addHeight(int x, int z, double dh) override;
+    /// The queued sources over dt, then the exact per-mode step over dt.
+    void step(float dt) override;
+    void scroll(glm::ivec2 shift) override;
+    void clear() override;
+    /// h, its float copy.
+    std::span<const float> height() const override { return m_field.height(); }
+    /// v, bilinear at g in double (dt unused).
+    float velocityAt(glm::vec2 g, float dt) const override;
+    std::vector<RippleLevel> levels() const override { return {{"h", m_field.height()}}; }
+    void hashState(StateHasher& h) const override;
+    void retune(const RippleDef& def) override;
+    bool onGpu() const override { return m_offload != nullptr; }
+    const char* backendName() const override { return onGpu() ? "gpu (compute shaders, float FFT)" : "cpu (FFTW)"; }
+
+private:
+    EWaveField m_field;
+    float m_cellSize;                    // m
+    std::vector<EWaveSource> m_sources;  // this step's stamps, grid coordinates, applied over the step's dt
+    std::unique_ptr<Offload> m_offload;
+    bool m_changed = false;              // the CPU state was written since the last step (the offload uploads it)
+};
+
+} // namespace ob::interaction

@@ -1,0 +1,78 @@
+// The ripple solver interface: what the patch (and through it splash, tools, hashing, dumps)
+// asks of any ripple model. Each model implements it in its own folder (kang2008/, ewave/)
+// and registers it in ripple_solvers.h.
+#pragma once
+#include "core/hash.h"
+#include "interaction/sphere_stamp.h"
+
+#include <cmath>
+#include <glm/vec2.hpp>
+#include <span>
+#include <vector>
+
+namespace ob::interaction {
+
+struct RippleDef;
+
+/// One named float level of a solver's state (a soak checks each is finite).
+struct RippleLevel {
+    const char* name;               ///< "Vh(t)", "h", … as messages name it
+    std::span<const float> values;  ///< rows·cols, row-major (z·cols + x)
+};
+
+/// A ripple solver on a rows × cols grid of square cells (row = z, column = x, row-major),
+/// in grid coordinates: cell centres at integers. Where the grid is in the world is the
+/// patch's business (RipplePatch), not the solver's.
+class RippleSolver {
+public:
+    virtual ~RippleSolver() = default;
+
+    /// Rows (z) of the grid.
+    virtual int rows() const = 0;
+    /// Columns (x) of the grid.
+    virtual int cols() const = 0;
+    /// Table 2 for one bounding sphere this step (planStamp: contact, SD, AF, SR = radius in
+    /// metres / the cell size); when the sphere stamps, its stamp becomes this model's source,
+    /// applied by the next step() at the latest. `motion` in grid coordinates. True: stamped.
+    virtual bool addSphere(const BoundingSphere& sphere, SphereContact& contact, const SphereMotion& motion) = 0;
+    /// Adds dh metres to the height of cell (x, z), in range (a splash drop's crater).
+    virtual void addHeight(int x, int z, double dh) = 0;
+    /// One step of dt seconds (> 0), this step's sources applied.
+    virtual void step(float dt) = 0;
+    /// Moves the data by `shift` cells, new (i, j) = old (i + shift.x, j + shift.y), cells
+    /// from outside 0 (scrollCells), so the waves stay put in the world while the grid moves.
+    virtual void scroll(glm::ivec2 shift) = 0;
+    /// The whole state 0.
+    virtual void clear() = 0;
+    /// The current height level, rows·cols row-major, m: what sampling, rendering and dumps read.
+    virtual std::span<const float> height() const = 0;
+    /// The vertical velocity at grid position `g` (bilinear between cell centres; 0 off the
+    /// interior), m/s; dt is the step in s (a two-level model differences its levels over it).
+    virtual float velocityAt(glm::vec2 g, float dt) const = 0;
+    /// The float levels of the state, the height first (a soak checks them).
+    virtual std::vector<RippleLevel> levels() const = 0;
+    /// Feeds the whole state that the next step reads, bit for bit, to `h` (the state hash).
+    virtual void hashState(StateHasher& h) const = 0;
+    /// Takes the Def's keys that may change live (ripples.damping, .decay_time, .viscosity):
+    /// from the next step on.
+    virtual void retune(const RippleDef& def) = 0;
+    /// True once its step runs on a GPU twin (the model's moveToGpu).
+    virtual bool onGpu() const = 0;
+    /// Where it runs, for the log: "cpu", "cpu (FFTW)", "gpu (compute shaders)", ….
+    virtual const char* backendName() const = 0;
+};
+
+/// Bilinear sample of a row-major rows × cols level (float or double) at grid position g,
+/// 0 where the 2×2 neighbourhood leaves the grid: the one sampler of patch and solvers.
+template <class T>
+float bilinear(std::span<const T> level, int rows, int cols, glm::vec2 g) {
+    const float fx = std::floor(g.x), fz = std::floor(g.y);
+    const int x0 = int(fx), z0 = int(fz);
+    if (x0 < 0 || z0 < 0 || x0 + 1 >= cols || z0 + 1 >= rows) return 0.0f;
+    const float tx = g.x - fx, tz = g.y - fz;
+    const T* r0 = &level[size_t(z0) * size_t(cols) + size_t(x0)];
+    const T* r1 = r0 + cols;
+    return float((r0[0] * T(1 - tx) + r0[1] * T(tx)) * T(1 - tz) + (r1[0] * T(1 - tx) + r1[1] * T(tx)) * T(tz));
+}
+
+} // namespace ob::interaction
