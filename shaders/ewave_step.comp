@@ -3,17 +3,18 @@
 // the GPU twin of EWaveField::step around ocean_fft.comp's transforms. One invocation per cell
 // or mode of the N×N grid. The state is kept conjugated, w = h − i·v, so that ocean_fft.comp's
 // e^{+} transform is the forward one: S = FFT⁺(w) = conj(Z), Z = FFT⁻(h + i·v) (see EWaveGpu).
-layout(local_size_x = 16, local_size_y = 16) in;
+#include "ewave_bindings.glsl"
+layout(local_size_x = EWAVE_TILE, local_size_y = EWAVE_TILE) in;
 
 // Row-major N×N complex floats, index row·N + column.
-layout(std430, binding = 0) readonly buffer Spectrum { vec2 b_spectrum[]; };  // mode 0: S
-layout(std430, binding = 1) buffer Field { vec2 b_field[]; };                 // mode 0: Y out; 1, 2: w in place
+layout(std430, binding = EWAVE_SPECTRUM_BUFFER) readonly buffer Spectrum { vec2 b_spectrum[]; };  // mode 0: S
+layout(std430, binding = EWAVE_FIELD_BUFFER) buffer Field { vec2 b_field[]; };                 // mode 0: Y out; 1, 2: w in place
 // Per |row index|, |column index| in [0, N/2]: (a, b, c, 0) = d·(cos ωΔt, sin(ωΔt)/ω, −ω·sin ωΔt)/N².
-layout(std430, binding = 2) readonly buffer Rotation { vec4 b_rotation[]; };
-layout(std430, binding = 5) readonly buffer Sponge { float b_sponge[]; };     // mode 2: exp(−γΔt) per cell
+layout(std430, binding = EWAVE_ROTATION_BUFFER) readonly buffer Rotation { vec4 b_rotation[]; };
+layout(std430, binding = EWAVE_SPONGE_BUFFER) readonly buffer Sponge { float b_sponge[]; };     // mode 2: exp(−γΔt) per cell
 
-layout(location = 0) uniform int u_n;     // N, power of two
-layout(location = 1) uniform int u_mode;  // 0: rotate every mode; 1: fixed ring to 0; 2: sponge
+layout(location = EWAVE_N_LOCATION) uniform int u_n;
+layout(location = EWAVE_MODE_LOCATION) uniform int u_mode;
 
 vec2 timesI(vec2 a) { return vec2(-a.y, a.x); }
 
@@ -22,11 +23,11 @@ void main() {
     int n = u_n;
     if (p.x >= n || p.y >= n) return;
     int i = p.y * n + p.x;
-    if (u_mode == 1) {
+    if (u_mode == EWAVE_MODE_RING) {
         if (p.x == 0 || p.y == 0 || p.x == n - 1 || p.y == n - 1) b_field[i] = vec2(0.0);
         return;
     }
-    if (u_mode == 2) {
+    if (u_mode == EWAVE_MODE_SPONGE) {
         b_field[i] *= b_sponge[i];
         return;
     }

@@ -4,7 +4,8 @@
 // CPU stamps the list in order. Pass 0 claims cells (atomicMax of stamp index + 1); pass 1
 // lets the owner write both levels and release its claim (back to 0 for the next call).
 // gl_WorkGroupID.z = stamp (from u_firstStamp); x, y cover the stamp's footprint box.
-layout(local_size_x = 8, local_size_y = 8) in;
+#include "kang2008_bindings.glsl"
+layout(local_size_x = KANG2008_STAMP_TILE, local_size_y = KANG2008_STAMP_TILE) in;
 
 // One stamp (std430, 32 bytes; RippleFieldGpu's GpuStamp).
 struct Stamp {
@@ -18,16 +19,16 @@ struct Stamp {
 };
 
 // Row-major N×M floats, index z·M + x.
-layout(std430, binding = 0) buffer Current { float b_current[]; };     // Vh(t)
-layout(std430, binding = 1) buffer Previous { float b_previous[]; };   // Vh(t−1)
-layout(std430, binding = 2) readonly buffer Stamps { Stamp b_stamps[]; };
-layout(std430, binding = 3) readonly buffer Ph { float b_ph[]; };      // eq. 4 PH per box cell (CPU makeFootprint), −1 outside the disc
-layout(std430, binding = 4) buffer Owner { uint b_owner[]; };          // per cell: 0, or the claiming stamp index + 1
+layout(std430, binding = KANG2008_CURRENT_BUFFER) buffer Current { float b_current[]; };     // Vh(t)
+layout(std430, binding = KANG2008_PREVIOUS_BUFFER) buffer Previous { float b_previous[]; };   // Vh(t−1)
+layout(std430, binding = KANG2008_STAMPS_BUFFER) readonly buffer Stamps { Stamp b_stamps[]; };
+layout(std430, binding = KANG2008_PH_BUFFER) readonly buffer Ph { float b_ph[]; };      // eq. 4 PH per box cell (CPU makeFootprint), −1 outside the disc
+layout(std430, binding = KANG2008_OWNER_BUFFER) buffer Owner { uint b_owner[]; };          // per cell: 0, or the claiming stamp index + 1
 
-layout(location = 0) uniform ivec2 u_size;      // (M, N)
-layout(location = 1) uniform int u_pass;        // 0: claim, 1: write
-layout(location = 2) uniform int u_firstStamp;  // stamp of gl_WorkGroupID.z = 0
-layout(location = 3) uniform int u_stampCount;  // stamps in the list
+layout(location = KANG2008_SIZE_LOCATION) uniform ivec2 u_size;      // (M, N)
+layout(location = KANG2008_PASS_LOCATION) uniform int u_pass;        // 0: claim, 1: write
+layout(location = KANG2008_FIRST_STAMP_LOCATION) uniform int u_firstStamp;  // stamp of gl_WorkGroupID.z = 0
+layout(location = KANG2008_STAMP_COUNT_LOCATION) uniform int u_stampCount;  // stamps in the list
 
 void main() {
     int s = u_firstStamp + int(gl_WorkGroupID.z);

@@ -3,18 +3,19 @@
 // of RippleField::step. Every float operation of the CPU loop in the same order, `precise` so
 // that none is fused into a multiply-add: the result is the CPU's to the bit. One invocation
 // per cell; mode 1 instead shifts a level by whole cells (RippleField::scroll) into another.
-layout(local_size_x = 16, local_size_y = 16) in;
+#include "kang2008_bindings.glsl"
+layout(local_size_x = KANG2008_STEP_TILE, local_size_y = KANG2008_STEP_TILE) in;
 
 // Row-major N×M floats, index z·M + x.
-layout(std430, binding = 0) readonly buffer Current { float b_current[]; };  // Vh(t); mode 1: source
-layout(std430, binding = 1) buffer Previous { float b_previous[]; };         // Vh(t−1) in, Vh(t+1) out; mode 1: destination
-layout(std430, binding = 2) readonly buffer Sponge { float b_sponge[]; };    // s(d): N row factors, then M column factors
+layout(std430, binding = KANG2008_CURRENT_BUFFER) readonly buffer Current { float b_current[]; };  // Vh(t); mode 1: source
+layout(std430, binding = KANG2008_PREVIOUS_BUFFER) buffer Previous { float b_previous[]; };         // Vh(t−1) in, Vh(t+1) out; mode 1: destination
+layout(std430, binding = KANG2008_SPONGE_BUFFER) readonly buffer Sponge { float b_sponge[]; };    // s(d): N row factors, then M column factors
 
-layout(location = 0) uniform ivec2 u_size;     // (M columns along x, N rows along z)
-layout(location = 1) uniform float u_damping;  // DF of eq. 2, [0, 1]
-layout(location = 2) uniform int u_sponge;     // 1: absorbing band present (width > 0)
-layout(location = 3) uniform int u_mode;       // 0: eq. 1–2 step, 1: shift
-layout(location = 4) uniform ivec2 u_shift;    // mode 1: (dx, dz), cell (x, z) takes (x + dx, z + dz)
+layout(location = KANG2008_SIZE_LOCATION) uniform ivec2 u_size;     // (M columns along x, N rows along z)
+layout(location = KANG2008_DAMPING_LOCATION) uniform float u_damping;  // DF of eq. 2, [0, 1]
+layout(location = KANG2008_SPONGE_LOCATION) uniform int u_sponge;     // 1: absorbing band present (width > 0)
+layout(location = KANG2008_MODE_LOCATION) uniform int u_mode;
+layout(location = KANG2008_SHIFT_LOCATION) uniform ivec2 u_shift;    // mode 1: (dx, dz), cell (x, z) takes (x + dx, z + dz)
 
 // RippleField's friction at the outer ring (stable below 1/2).
 const float SPONGE_MAX_FRICTION = 0.4;
@@ -26,7 +27,7 @@ void main() {
     int i = p.y * cols + p.x;
     bool ring = p.x == 0 || p.y == 0 || p.x == cols - 1 || p.y == rows - 1;
 
-    if (u_mode == 1) {
+    if (u_mode == KANG2008_MODE_SHIFT) {
         ivec2 s = p + u_shift;
         bool inside = s.x >= 0 && s.y >= 0 && s.x < cols && s.y < rows;
         b_previous[i] = (!ring && inside) ? b_current[s.y * cols + s.x] : 0.0;

@@ -4,6 +4,8 @@
 // compute programs, read back through program interface queries.
 #include "gfx/gl.h"
 #include "gfx/gpu_bindings.h"
+#include "ewave_bindings.glsl"
+#include "kang2008_bindings.glsl"
 #include "gfx/renderer.h"
 #include <glm/gtc/matrix_transform.hpp>
 #include "gfx/shader.h"
@@ -204,5 +206,60 @@ TEST_CASE("every program's bindings, locations and std140 offsets are those of c
         INFO(name);
         CHECK(seen.count("member " + name) == 1);
     }
+    CHECK(gfx::glErrorCount() == errorsBefore);
+}
+
+namespace {
+
+// A ripple solver's compute program against its own table (shaders/<solver>_bindings.glsl):
+// every active uniform and storage block in the table and at its number, every entry met, and
+// the local size the C++ dispatch divides by. Tables by hand from the shaders' meaning.
+void checkSolverProgram(const char* file, const std::map<std::string, int>& locations, const std::map<std::string, int>& storage,
+                        int tile) {
+    INFO("program " << file);
+    const gfx::Program program = gfx::loadProgram(file, {file});
+    const GLuint id = program.id();
+    std::set<std::string> seen;
+    for (GLuint i = 0; i < GLuint(activeCount(id, GL_UNIFORM)); ++i) {
+        const std::string name = resourceName(id, GL_UNIFORM, i);
+        INFO("uniform " << name);
+        REQUIRE(locations.count(name) == 1);
+        CHECK(resourceValue(id, GL_UNIFORM, i, GL_LOCATION) == locations.at(name));
+        seen.insert(name);
+    }
+    for (GLuint i = 0; i < GLuint(activeCount(id, GL_SHADER_STORAGE_BLOCK)); ++i) {
+        const std::string name = resourceName(id, GL_SHADER_STORAGE_BLOCK, i);
+        INFO("storage block " << name);
+        REQUIRE(storage.count(name) == 1);
+        CHECK(resourceValue(id, GL_SHADER_STORAGE_BLOCK, i, GL_BUFFER_BINDING) == storage.at(name));
+        seen.insert(name);
+    }
+    CHECK(seen.size() == locations.size() + storage.size());
+    GLint local[3] = {0, 0, 0};
+    glGetProgramiv(id, GL_COMPUTE_WORK_GROUP_SIZE, local);
+    CHECK(local[0] == tile);
+    CHECK(local[1] == tile);
+}
+
+} // namespace
+
+TEST_CASE("the ripple solvers' compute programs use the numbers of their bindings files", "[gl][ripple_gpu][ewave_gpu][bindings]") {
+    auto platform = platform::createHeadlessPlatform({64, 64});
+    const int errorsBefore = gfx::glErrorCount();
+    checkSolverProgram("ripple_step.comp",
+                       {{"u_size", KANG2008_SIZE_LOCATION}, {"u_damping", KANG2008_DAMPING_LOCATION},
+                        {"u_sponge", KANG2008_SPONGE_LOCATION}, {"u_mode", KANG2008_MODE_LOCATION}, {"u_shift", KANG2008_SHIFT_LOCATION}},
+                       {{"Current", KANG2008_CURRENT_BUFFER}, {"Previous", KANG2008_PREVIOUS_BUFFER}, {"Sponge", KANG2008_SPONGE_BUFFER}},
+                       KANG2008_STEP_TILE);
+    checkSolverProgram("ripple_stamp.comp",
+                       {{"u_size", KANG2008_SIZE_LOCATION}, {"u_pass", KANG2008_PASS_LOCATION},
+                        {"u_firstStamp", KANG2008_FIRST_STAMP_LOCATION}, {"u_stampCount", KANG2008_STAMP_COUNT_LOCATION}},
+                       {{"Current", KANG2008_CURRENT_BUFFER}, {"Previous", KANG2008_PREVIOUS_BUFFER}, {"Stamps", KANG2008_STAMPS_BUFFER},
+                        {"Ph", KANG2008_PH_BUFFER}, {"Owner", KANG2008_OWNER_BUFFER}},
+                       KANG2008_STAMP_TILE);
+    checkSolverProgram("ewave_step.comp", {{"u_n", EWAVE_N_LOCATION}, {"u_mode", EWAVE_MODE_LOCATION}},
+                       {{"Spectrum", EWAVE_SPECTRUM_BUFFER}, {"Field", EWAVE_FIELD_BUFFER}, {"Rotation", EWAVE_ROTATION_BUFFER},
+                        {"Sponge", EWAVE_SPONGE_BUFFER}},
+                       EWAVE_TILE);
     CHECK(gfx::glErrorCount() == errorsBefore);
 }

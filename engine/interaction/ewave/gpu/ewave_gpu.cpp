@@ -2,6 +2,7 @@
 // per-mode rotation and the real-space boundary (shaders/ewave_step.comp). SPEC §2.5b.
 #include "interaction/ewave/gpu/ewave_gpu.h"
 
+#include "gfx/gpu_bindings.h"
 #include "gfx/shader.h"
 
 #include <cassert>
@@ -13,20 +14,14 @@ namespace ob::interaction {
 
 namespace {
 
-// Shader interface (bindings and uniform locations declared in shaders/ewave_step.comp and
-// shaders/ocean_fft.comp).
-constexpr GLuint SPECTRUM_BINDING = 0;
-constexpr GLuint FIELD_BINDING = 1;
-constexpr GLuint ROTATION_BINDING = 2;
-constexpr GLuint FFT_LINES_BINDING = 3;     // ocean_fft.comp: the N² complex plane
-constexpr GLuint FFT_TWIDDLES_BINDING = 4;  // ocean_fft.comp
-constexpr GLuint SPONGE_BINDING = 5;
-constexpr GLint N_LOCATION = 0;
-constexpr GLint MODE_LOCATION = 1;          // ewave_step.comp
-constexpr GLint FFT_LOG2N_LOCATION = 1;     // ocean_fft.comp
-constexpr GLint FFT_COLUMNS_LOCATION = 2;   // ocean_fft.comp
-constexpr GLint MODE_ROTATE = 0, MODE_RING = 1, MODE_SPONGE = 2;
-constexpr GLuint TILE = 16;                 // local size of ewave_step.comp, per axis
+// The step's buffers, locations, modes and local size (shaders/ewave_bindings.glsl); the line
+// FFTs are the ocean's program (shaders/common_bindings.glsl).
+#include "ewave_bindings.glsl"
+using gfx::glsl::OCEAN_COLUMNS_LOCATION;
+using gfx::glsl::OCEAN_LOG2N_LOCATION;
+using gfx::glsl::OCEAN_N_LOCATION;
+using gfx::glsl::OCEAN_SPECTRA_BUFFER;
+using gfx::glsl::OCEAN_TWIDDLES_BUFFER;
 
 struct Rotation {
     float a, b, c, pad;
@@ -37,7 +32,6 @@ GLsizeiptr bytes(size_t count, size_t size) { return GLsizeiptr(count * size); }
 
 } // namespace
 
-bool EWaveGpu::available() { return GLAD_GL_VERSION_4_3 != 0; }
 
 bool EWaveGpu::supports(int rows, int cols) {
     return rows == cols && rows >= 4 && rows <= MAX_RESOLUTION && (rows & (rows - 1)) == 0;
@@ -62,10 +56,10 @@ EWaveGpu::EWaveGpu(const EWaveField& like)
         twiddles[2 * k + 1] = float(std::sin(angle));
     }
     m_twiddles = gfx::createBuffer("ewave FFT twiddles", bytes(n, sizeof(float)), twiddles.data());
-    glProgramUniform1i(m_fft.id(), N_LOCATION, m_n);
-    glProgramUniform1i(m_fft.id(), FFT_LOG2N_LOCATION, m_log2n);
-    glProgramUniform1i(m_step.id(), N_LOCATION, m_n);
-    m_groups = (GLuint(m_n) + TILE - 1) / TILE;
+    glProgramUniform1i(m_fft.id(), OCEAN_N_LOCATION, m_n);
+    glProgramUniform1i(m_fft.id(), OCEAN_LOG2N_LOCATION, m_log2n);
+    glProgramUniform1i(m_step.id(), EWAVE_N_LOCATION, m_n);
+    m_groups = (GLuint(m_n) + EWAVE_TILE - 1) / EWAVE_TILE;
     setDamping(like.decayTime(), like.viscosity());
     upload(like);
 }
@@ -102,11 +96,11 @@ void EWaveGpu::prepare(float dt) {
 }
 
 void EWaveGpu::transform(const gfx::Buffer& field) {
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, FFT_LINES_BINDING, field.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, FFT_TWIDDLES_BINDING, m_twiddles.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, OCEAN_SPECTRA_BUFFER, field.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, OCEAN_TWIDDLES_BUFFER, m_twiddles.id());
     glUseProgram(m_fft.id());
     for (int columns = 0; columns < 2; ++columns) {
-        glProgramUniform1i(m_fft.id(), FFT_COLUMNS_LOCATION, columns);
+        glProgramUniform1i(m_fft.id(), OCEAN_COLUMNS_LOCATION, columns);
         glDispatchCompute(GLuint(m_n), 1, 1);  // one line per work group; plane 0
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     }
@@ -118,11 +112,11 @@ void EWaveGpu::step(float dt) {
     // --- forward: S = conj Z, in place
     transform(m_fields[0]);
     // --- every mode rotated and damped: Y = conj Z'(−K) into the other buffer
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SPECTRUM_BINDING, m_fields[0].id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, FIELD_BINDING, m_fields[1].id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, ROTATION_BINDING, m_rotation.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SPONGE_BINDING, m_sponge.id());
-    glProgramUniform1i(m_step.id(), MODE_LOCATION, MODE_ROTATE);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, EWAVE_SPECTRUM_BUFFER, m_fields[0].id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, EWAVE_FIELD_BUFFER, m_fields[1].id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, EWAVE_ROTATION_BUFFER, m_rotation.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, EWAVE_SPONGE_BUFFER, m_sponge.id());
+    glProgramUniform1i(m_step.id(), EWAVE_MODE_LOCATION, EWAVE_MODE_ROTATE);
     glUseProgram(m_step.id());
     glDispatchCompute(m_groups, m_groups, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
@@ -130,7 +124,7 @@ void EWaveGpu::step(float dt) {
     transform(m_fields[1]);
     // --- the boundary in real space
     if (m_boundary != RippleBoundary::Periodic) {
-        glProgramUniform1i(m_step.id(), MODE_LOCATION, m_boundary == RippleBoundary::Fixed ? MODE_RING : MODE_SPONGE);
+        glProgramUniform1i(m_step.id(), EWAVE_MODE_LOCATION, m_boundary == RippleBoundary::Fixed ? EWAVE_MODE_RING : EWAVE_MODE_SPONGE);
         glUseProgram(m_step.id());
         glDispatchCompute(m_groups, m_groups, 1);
     }

@@ -33,8 +33,6 @@ public:
     /// Largest N: a line must fit ocean_fft.comp's shared array.
     static constexpr int MAX_RESOLUTION = 2048;
 
-    /// Whether the current context runs compute shaders (GL 4.3+).
-    static bool available();
     /// Whether a rows × cols field can run here: square, N a power of two in [4, MAX_RESOLUTION].
     static bool supports(int rows, int cols);
 

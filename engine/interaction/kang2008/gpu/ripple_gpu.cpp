@@ -14,22 +14,8 @@ namespace ob::interaction {
 
 namespace {
 
-// Shader interface (bindings and uniform locations declared in shaders/ripple_*.comp).
-constexpr GLuint CURRENT_BINDING = 0;
-constexpr GLuint PREVIOUS_BINDING = 1;
-constexpr GLuint SPONGE_BINDING = 2;    // ripple_step.comp
-constexpr GLuint STAMPS_BINDING = 2;    // ripple_stamp.comp
-constexpr GLuint PH_BINDING = 3;        // ripple_stamp.comp
-constexpr GLuint OWNER_BINDING = 4;     // ripple_stamp.comp
-constexpr GLint SIZE_LOCATION = 0;
-constexpr GLint DAMPING_LOCATION = 1;   // ripple_step.comp
-constexpr GLint SPONGE_LOCATION = 2;    // ripple_step.comp
-constexpr GLint MODE_LOCATION = 3;      // ripple_step.comp
-constexpr GLint SHIFT_LOCATION = 4;     // ripple_step.comp
-constexpr GLint PASS_LOCATION = 1;      // ripple_stamp.comp
-constexpr GLint FIRST_STAMP_LOCATION = 2;
-constexpr GLint STAMP_COUNT_LOCATION = 3;
-constexpr GLuint STAMP_TILE = 8;        // local size of ripple_stamp.comp, per axis
+// The shaders' buffers, locations, modes and local sizes (shaders/kang2008_bindings.glsl).
+#include "kang2008_bindings.glsl"
 constexpr int MAX_STAMPS_PER_DISPATCH = 65535;  // GL's guaranteed work-group count per axis
 
 // One stamp as ripple_stamp.comp reads it.
@@ -50,7 +36,6 @@ constexpr GLbitfield WRITE_BARRIERS =
 
 } // namespace
 
-bool RippleFieldGpu::available() { return GLAD_GL_VERSION_4_3 != 0; }
 
 RippleFieldGpu::RippleFieldGpu(int rows, int cols, RippleBoundary boundary, int spongeWidth)
     : m_rows(rows), m_cols(cols), m_cells(size_t(rows) * size_t(cols)) {
@@ -72,8 +57,8 @@ RippleFieldGpu::RippleFieldGpu(int rows, int cols, RippleBoundary boundary, int 
     // Storage made without data is undefined until written.
     glClearNamedBufferData(m_owner.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
     clear();
-    glProgramUniform2i(m_stepProgram.id(), SIZE_LOCATION, cols, rows);
-    glProgramUniform2i(m_stampProgram.id(), SIZE_LOCATION, cols, rows);
+    glProgramUniform2i(m_stepProgram.id(), KANG2008_SIZE_LOCATION, cols, rows);
+    glProgramUniform2i(m_stampProgram.id(), KANG2008_SIZE_LOCATION, cols, rows);
     setBoundary(boundary, spongeWidth);
 }
 
@@ -91,7 +76,7 @@ void RippleFieldGpu::setBoundary(RippleBoundary boundary, int spongeWidth) {
     for (int x = 0; x < m_cols; ++x)
         factors[size_t(m_rows + x)] = RippleField::spongeFactor(std::min(x, m_cols - 1 - x), m_spongeWidth);
     glNamedBufferSubData(m_sponge.id(), 0, floatBytes(factors.size()), factors.data());
-    glProgramUniform1i(m_stepProgram.id(), SPONGE_LOCATION, m_spongeWidth > 0 ? 1 : 0);
+    glProgramUniform1i(m_stepProgram.id(), KANG2008_SPONGE_LOCATION, m_spongeWidth > 0 ? 1 : 0);
 }
 
 void RippleFieldGpu::clear() {
@@ -108,11 +93,11 @@ void RippleFieldGpu::upload(std::span<const float> current, std::span<const floa
 }
 
 void RippleFieldGpu::step(float damping) {
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, CURRENT_BINDING, m_levels[m_cur].id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, PREVIOUS_BINDING, m_levels[1 - m_cur].id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SPONGE_BINDING, m_sponge.id());
-    glProgramUniform1f(m_stepProgram.id(), DAMPING_LOCATION, damping);
-    glProgramUniform1i(m_stepProgram.id(), MODE_LOCATION, 0);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, KANG2008_CURRENT_BUFFER, m_levels[m_cur].id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, KANG2008_PREVIOUS_BUFFER, m_levels[1 - m_cur].id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, KANG2008_SPONGE_BUFFER, m_sponge.id());
+    glProgramUniform1f(m_stepProgram.id(), KANG2008_DAMPING_LOCATION, damping);
+    glProgramUniform1i(m_stepProgram.id(), KANG2008_MODE_LOCATION, KANG2008_MODE_STEP);
     glUseProgram(m_stepProgram.id());
     glDispatchCompute(m_stepGroups[0], m_stepGroups[1], 1);
     glMemoryBarrier(WRITE_BARRIERS);
@@ -122,8 +107,8 @@ void RippleFieldGpu::step(float damping) {
 }
 
 void RippleFieldGpu::shift(const gfx::Buffer& src, const gfx::Buffer& dst) {
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, CURRENT_BINDING, src.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, PREVIOUS_BINDING, dst.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, KANG2008_CURRENT_BUFFER, src.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, KANG2008_PREVIOUS_BUFFER, dst.id());
     glDispatchCompute(m_stepGroups[0], m_stepGroups[1], 1);
     glMemoryBarrier(WRITE_BARRIERS);
 }
@@ -133,8 +118,8 @@ void RippleFieldGpu::scroll(int dx, int dz) {
     // Clamped so that the shader's source index cannot overflow; beyond the field it reads nothing.
     dx = std::clamp(dx, -m_cols, m_cols);
     dz = std::clamp(dz, -m_rows, m_rows);
-    glProgramUniform1i(m_stepProgram.id(), MODE_LOCATION, 1);
-    glProgramUniform2i(m_stepProgram.id(), SHIFT_LOCATION, dx, dz);
+    glProgramUniform1i(m_stepProgram.id(), KANG2008_MODE_LOCATION, KANG2008_MODE_SHIFT);
+    glProgramUniform2i(m_stepProgram.id(), KANG2008_SHIFT_LOCATION, dx, dz);
     glUseProgram(m_stepProgram.id());
     // Each level goes into the scratch buffer, which takes its place.
     for (int level = 0; level < 2; ++level) {
@@ -196,20 +181,20 @@ void RippleFieldGpu::stamp(std::span<const RippleStamp> stamps) {
     glNamedBufferSubData(m_stamps.id(), 0, GLsizeiptr(list.size() * sizeof(GpuStamp)), list.data());
 
     // --- claim pass, then write pass (each over every stamp, in chunks of work groups)
-    const GLuint groups = (GLuint(maxBox) + STAMP_TILE - 1) / STAMP_TILE;
+    const GLuint groups = (GLuint(maxBox) + KANG2008_STAMP_TILE - 1) / KANG2008_STAMP_TILE;
     const int count = int(list.size());
     const GLuint program = m_stampProgram.id();
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, CURRENT_BINDING, m_levels[m_cur].id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, PREVIOUS_BINDING, m_levels[1 - m_cur].id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, STAMPS_BINDING, m_stamps.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, PH_BINDING, m_phBuffer.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, OWNER_BINDING, m_owner.id());
-    glProgramUniform1i(program, STAMP_COUNT_LOCATION, count);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, KANG2008_CURRENT_BUFFER, m_levels[m_cur].id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, KANG2008_PREVIOUS_BUFFER, m_levels[1 - m_cur].id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, KANG2008_STAMPS_BUFFER, m_stamps.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, KANG2008_PH_BUFFER, m_phBuffer.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, KANG2008_OWNER_BUFFER, m_owner.id());
+    glProgramUniform1i(program, KANG2008_STAMP_COUNT_LOCATION, count);
     glUseProgram(program);
     for (int pass = 0; pass < 2; ++pass) {
-        glProgramUniform1i(program, PASS_LOCATION, pass);
+        glProgramUniform1i(program, KANG2008_PASS_LOCATION, pass);
         for (int first = 0; first < count; first += MAX_STAMPS_PER_DISPATCH) {
-            glProgramUniform1i(program, FIRST_STAMP_LOCATION, first);
+            glProgramUniform1i(program, KANG2008_FIRST_STAMP_LOCATION, first);
             glDispatchCompute(groups, groups, GLuint(std::min(MAX_STAMPS_PER_DISPATCH, count - first)));
         }
         glMemoryBarrier(WRITE_BARRIERS);

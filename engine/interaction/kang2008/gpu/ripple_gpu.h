@@ -38,9 +38,6 @@ namespace ob::interaction {
 /// Needs a current GL 4.3+ context for its whole life.
 class RippleFieldGpu {
 public:
-    /// Whether the current context runs compute shaders (GL 4.3+).
-    static bool available();
-
     /// As RippleField's constructor: rows (N, z) and cols (M, x) >= 1, sponge width clamped to
     /// half the smaller side; both levels 0. Throws ob::RuntimeError if a shader fails to build.
     RippleFieldGpu(int rows, int cols, RippleBoundary boundary = RippleBoundary::Fixed,
