@@ -21,12 +21,14 @@ uvec3 pcg3d(uvec3 v) {
 }
 
 // `display` (encoded colour, 0..1) plus TPDF noise of `lsb` levels of 1/255 per channel, each
-// channel its own noise; `pixel` is gl_FragCoord.xy. lsb 0 returns the colour unchanged.
+// channel its own noise: the two uniform noises are the low and high 16 bits of its hash word
+// (one hash a pixel; 16 bits resolve the noise far below a level). `pixel` is gl_FragCoord.xy;
+// lsb 0 returns the colour unchanged.
 vec3 dither8(vec3 display, vec2 pixel, float lsb) {
-    uvec2 p = uvec2(pixel);
-    const float UNIT = 1.0 / 4294967296.0;  // a 32-bit word to [0, 1)
-    vec3 a = vec3(pcg3d(uvec3(p, 0u))) * UNIT;
-    vec3 b = vec3(pcg3d(uvec3(p, 1u))) * UNIT;
+    uvec3 h = pcg3d(uvec3(uvec2(pixel), 0u));
+    const float UNIT = 1.0 / 65536.0;  // a 16-bit word to [0, 1)
+    vec3 a = vec3(h & 0xffffu) * UNIT;
+    vec3 b = vec3(h >> 16u) * UNIT;
     return display + (a + b - 1.0) * (lsb / 255.0);
 }
 
