@@ -1,7 +1,7 @@
 // The 8-bit outputs are dithered (shaders/common_dither.glsl): in a calm sea under a smooth sky,
-// no row or column of the sky or of the water holds a run of identical pixels longer than a dithered
-// output can show by chance, while the same frame rounded without the dither shows the long
-// runs (bands) of its gradients.
+// and under water looking down, no row or column of the sky, the water or the deep holds a run
+// of identical pixels longer than a dithered output can show by chance, while the same frame
+// rounded without the dither shows the long runs (bands) of its gradients.
 #include "gfx/gl.h"
 #include "gfx/renderer.h"
 #include "platform/platform.h"
@@ -23,18 +23,19 @@ namespace {
 
 constexpr glm::ivec2 SIZE{640, 360};
 
-// A flat sea (1 m/s wind, no swell) seen from 3 m up toward the horizon: the sky's gradient
-// above it, the water's Fresnel gradient below, each a slope of a fraction of a level a pixel.
-Image renderCalm(bool dither) {
+// A flat sea (1 m/s wind, no swell) seen from `eye` toward `target`: from 3 m up toward the
+// horizon, the sky's gradient above it and the water's Fresnel gradient below; from under the
+// water looking down, the deep's fog. Each a slope of a fraction of a level a pixel.
+Image renderCalm(bool dither, const char* view = "horizon", const char* eye = "[0, 3, -300]", const char* target = "[0, 2, 0]") {
     auto platform = platform::createHeadlessPlatform(SIZE);
     const int errorsBefore = gfx::glErrorCount();
     const std::vector<std::string> overrides = {
-        "ocean.wind_speed=1", "camera.mode=fixed", "camera.position=[0, 3, -300]", "camera.target=[0, 2, 0]",
+        "ocean.wind_speed=1", "camera.mode=fixed", std::string("camera.position=") + eye, std::string("camera.target=") + target,
         std::string("render.dither=") + (dither ? "true" : "false")};
     game::Sandbox sandbox(game::loadScene(std::string(OCEANBOX_SOURCE_DIR) + "/config/scenes/spectrum_only.toml", overrides));
     sandbox.attachPlatform(*platform, false);
     for (int f = 0; f < 3; ++f) sandbox.frame(f / 60.0);
-    const std::string path = test::tempPath(std::string("dither_calm_") + (dither ? "on" : "off") + ".png");
+    const std::string path = test::tempPath(std::string("dither_calm_") + view + (dither ? "_on" : "_off") + ".png");
     gfx::writeScreenshot(path, SIZE);
     CHECK(gfx::glErrorCount() == errorsBefore);
     Image img = test::loadPng(path);
@@ -112,4 +113,15 @@ TEST_CASE("dithered 8-bit outputs show no bands in a calm sea's and sky's gradie
     // The dither is noise about the colour, not a shift of it: the mean stays within 1/4 level.
     const glm::vec3 shift = dithered.mean(0, 0, SIZE.x, SIZE.y) - plain.mean(0, 0, SIZE.x, SIZE.y);
     for (int c = 0; c < 3; ++c) CHECK(std::abs(shift[c]) * 255.0f < 0.25f);
+}
+
+TEST_CASE("dithered 8-bit outputs show no bands under water looking down", "[gl][dither]") {
+    // 5 m under the surface, 45° down: the deep's fog, brighter toward the surface (sky_background.frag).
+    const char* eye = "[0, -5, -300]";
+    const char* target = "[0, -105, -200]";
+    const int plain = longestRun(renderCalm(false, "deep", eye, target), 0, SIZE.y);
+    const int dithered = longestRun(renderCalm(true, "deep", eye, target), 0, SIZE.y);
+    INFO("longest runs: plain " << plain << ", dithered " << dithered << "; bound " << MAX_DITHERED_RUN);
+    CHECK(plain > MAX_DITHERED_RUN);
+    CHECK(dithered <= MAX_DITHERED_RUN);
 }
