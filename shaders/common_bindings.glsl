@@ -78,7 +78,7 @@ UNIFORM_BLOCK(FrameUniforms, FRAME_BLOCK) {
     vec4 surfaceClip;          // x side s (±1; 0 keeps all), y overlap m (m), z 1 = mirror: objects keep s·(y − surface) + m >= 0, mirrored about the surface
     vec4 depthParams;          // near, far (m), water clarity (m), sky cube mip count
     vec4 shading;              // DU/DV strength, normal distortion, glitter strength, glitter shininess
-    vec4 switches;             // reflections, refractions, foam (1 on, 0 off), 0
+    vec4 switches;             // reflections, refractions, foam (1 on, 0 off), dither of the 8-bit outputs (LSB; 0 off)
 } BLOCK_INSTANCE(frame);
 
 SHARED_CONST MAX_GERSTNER_WAVES = 32;

@@ -1,5 +1,6 @@
 // Per-view helpers over the FrameUniforms block (common_bindings.glsl).
 #include "common_bindings.glsl"
+#include "common_dither.glsl"
 
 // World-space view ray through a pixel (ndc in [-1, 1]²).
 vec3 viewRay(vec2 ndc) {
@@ -25,10 +26,13 @@ vec3 underwaterFog(vec3 color, float dist) {
 // linear radiance (the water pass tone-maps what it reads from them). For the FXAA pass the
 // frame's alpha carries the encoded colour's luma (Rec. 601 weights), read there in fours. In
 // the refraction target the objects' shader puts 1 / their eye depth in alpha (object_mesh.frag).
-vec4 finalColor(vec3 radiance) {
+// The encoded colour goes into an 8-bit target (the framebuffer or the internal frame), so it
+// is dithered here, once (common_dither.glsl); `pixel` is gl_FragCoord.xy. The post pass's
+// copies and blends of it keep that noise and are not dithered again (docs/frame.md).
+vec4 finalColor(vec3 radiance, vec2 pixel) {
     if (frame.viewport.z > 0.5 && (frame.viewport.z < 1.5 || frame.viewport.z > 2.5)) return vec4(radiance, 1.0);
     vec3 x = radiance * frame.waterColorExposure.w;
     x = clamp((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
-    vec3 display = pow(x, vec3(1.0 / 2.2));
+    vec3 display = dither8(pow(x, vec3(1.0 / 2.2)), pixel, frame.switches.w);
     return vec4(display, frame.viewport.z > 1.5 ? dot(display, vec3(0.299, 0.587, 0.114)) : 1.0);
 }

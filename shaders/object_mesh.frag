@@ -25,7 +25,7 @@ void main() {
         vec3 haze = skyRadiance(normalize(vec3(-v.x, 0.0, -v.z)), sun);
         color = mix(color, haze, 1.0 - exp(-dist * 0.00025));
     }
-    o_color = finalColor(color);
+    o_color = finalColor(color, gl_FragCoord.xy);
     // In the refraction target alpha is 1 / the eye depth (1/m; cleared to 0: nothing). Filtered,
     // it blends as window depth does (an affine function of it), and the water pass reads what
     // lies below and how deep it lies in one lookup.

@@ -12,8 +12,8 @@ void main() {
     vec3 sun = frame.sunDirectionFresnel.xyz;
     if (eyeUnderwater()) {
         // Brighter toward the surface, darker toward the deep.
-        o_color = finalColor(waterBodyColor() * (0.6 + 0.5 * dir.y));
+        o_color = finalColor(waterBodyColor() * (0.6 + 0.5 * dir.y), gl_FragCoord.xy);
         return;
     }
-    o_color = finalColor(textureLod(u_sky, dir, 0.0).rgb + sunDisk(dir, sun));
+    o_color = finalColor(textureLod(u_sky, dir, 0.0).rgb + sunDisk(dir, sun), gl_FragCoord.xy);
 }

@@ -33,5 +33,5 @@ void main() {
     vec3 haze = skyRadiance(normalize(vec3(-v.x, 0.0, -v.z)), sun);
     color = mix(color, haze, 1.0 - exp(-dist * 0.00025));
     float alpha = OPACITY * v_opacity * smoothstep(1.0, 0.35, d2);
-    o_color = vec4(finalColor(color).rgb * alpha, alpha);
+    o_color = vec4(finalColor(color, gl_FragCoord.xy).rgb * alpha, alpha);
 }

@@ -90,7 +90,7 @@ void main() {
             float transmitted = 1.0 - fresnel(dot(refracted, n), exact);
             color = mix(color, skyRadiance(normalize(refracted), sun), transmitted);
         }
-        o_color = finalColor(underwaterFog(color, dist));
+        o_color = finalColor(underwaterFog(color, dist), gl_FragCoord.xy);
         return;
     }
     vec3 sky = skyRadiance(normalize(r), sun);
@@ -162,5 +162,5 @@ void main() {
     vec3 haze = v_haze;
 #endif
     color = mix(color, haze, 1.0 - exp(-dist * 0.00025));
-    o_color = finalColor(color);
+    o_color = finalColor(color, gl_FragCoord.xy);
 }

@@ -32,7 +32,8 @@ void FrameViews::update(const RenderDef& def, const FrameState& frame, const Cam
     u.waterColorExposure = glm::vec4(def.water_color, def.exposure);
     u.depthParams = glm::vec4(camera.nearM, camera.farM, def.water_clarity, float(skyMips));
     u.shading = glm::vec4(def.dudv_strength, def.normal_distortion, def.glitter, def.glitter_shininess);
-    u.switches = glm::vec4(def.reflections ? 1.0f : 0.0f, def.refractions ? 1.0f : 0.0f, def.foam ? 1.0f : 0.0f, 0.0f);
+    u.switches = glm::vec4(def.reflections ? 1.0f : 0.0f, def.refractions ? 1.0f : 0.0f, def.foam ? 1.0f : 0.0f,
+                           def.dither ? 1.0f : 0.0f);
     const float underwater = frame.underwater ? 1.0f : 0.0f;
 
     const glm::mat4 viewProjection = camera.projection * camera.view;
