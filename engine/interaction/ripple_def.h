@@ -4,6 +4,7 @@
 #include "core/schema.h"
 
 #include "core/backend.h"
+#include "environment/environment_def.h"
 #include "interaction/ripple_solvers.h"
 
 #include <string_view>
@@ -67,6 +68,7 @@ struct RippleDef : RippleModels::Defs {
     RippleFollow follow = RippleFollow::Fixed;  ///< "fixed" at `center`, "camera" or "target"
     glm::vec2 center{0.0f, 0.0f};            ///< patch centre when fixed, world [x, z] m
     RippleReferenceDef reference;            ///< [ripples.reference]: object B of eq. 6
+    environment::EnvironmentDef environment; ///< g, ρ, σ of the waves: the scene's [environment], set when it is built (not a key)
 };
 
 template <class V> void describe(V& v, RippleDef& d) {

@@ -3,6 +3,7 @@
 #pragma once
 #include "core/backend.h"
 #include "core/schema.h"
+#include "environment/environment_def.h"
 
 #include <cstdint>
 #include <string>
@@ -26,7 +27,7 @@ struct OceanDef {
     float small_wave_cutoff = 0.0f;    ///< l, metres, [0, 100]: waves shorter than ~l are damped by exp(−k²l²); 0 = auto, l = 0.001·V²/g (seed 003)
     float choppiness = 1.0f;           ///< c, horizontal displacement strength, [0, 10]: points move to X + λ·D with λ = −c (SPEC eq. 7: λ < 0 sharpens crests); 0 = no displacement
     std::uint64_t seed = 1;            ///< seed of the Gaussian noise ξ (eq. 4); equal seeds give equal seas at any resolution
-    float gravity = 9.81f;             ///< g, m/s², [0.1, 100]; dispersion ω = sqrt(g·k) (eq. 3)
+    float gravity = 9.81f;             ///< g, m/s², > 0; dispersion ω = sqrt(g·k) (eq. 3): environment.gravity, set when the scene is built (not a key)
     int cascades = 1;                  ///< number of tiles, [1, 4]; cascade c has side L/φ^(2c) (φ = golden ratio, never commensurate) and its own band of k
     float fetch = 100000.0f;           ///< F, JONSWAP fetch: distance the wind has blown over water, metres, [100, 10000000]
     float peak_enhancement = 3.3f;     ///< γ, JONSWAP peak enhancement factor, [1, 10] (1 = Pierson–Moskowitz shape)
@@ -43,7 +44,7 @@ template <class V> void describe(V& v, OceanDef& d) {
     v.field("small_wave_cutoff", d.small_wave_cutoff, range(0, 100), "damping length l of short waves, metres; 0 = 0.001·V²/g", LIVE);
     v.field("choppiness", d.choppiness, range(0, 10), "horizontal displacement strength (λ = −choppiness)", LIVE);
     v.field("seed", d.seed, "seed of the spectrum noise");
-    v.field("gravity", d.gravity, range(0.1, 100), "gravity, m/s²");
+    if constexpr (requires { v.refuse("", std::string()); }) v.refuse("gravity", environment::movedHere("gravity"));
     v.field("cascades", d.cascades, range(1, 4), "number of tiles of sizes L/φ^(2c)");
     v.field("fetch", d.fetch, range(100, 10000000), "JONSWAP fetch, metres", LIVE);
     v.field("peak_enhancement", d.peak_enhancement, range(1, 10), "JONSWAP peak enhancement γ", LIVE);

@@ -1,13 +1,14 @@
 // Rigid-body physics and water forces, section [physics].
 #pragma once
 #include "core/schema.h"
+#include "environment/environment_def.h"
 
 namespace ob::physics {
 
 /// The Bullet world and how the water pushes bodies.
 struct PhysicsDef {
-    float gravity = 9.81f;              ///< m/s², downward, [0, 100]
-    float water_density = 1025.0f;      ///< ρ of sea water, kg/m³, [1, 20000]
+    float gravity = 9.81f;              ///< m/s², downward: environment.gravity, set when the scene is built (not a key)
+    float water_density = 1025.0f;      ///< ρ of the water, kg/m³: environment.water_density, set likewise (not a key)
     float linear_drag = 1000.0f;        ///< linear drag per submerged probe area, N·s/m per m², [0, 1e6]; stands in for the
                                         ///< wave-radiation damping of a heaving body (order ρ·ω·r ≈ 2000 for r = 0.5 m)
     float quadratic_drag = 0.6f;        ///< ½·ρ·C_d factor: quadratic drag coefficient C_d, [0, 100]
@@ -17,8 +18,8 @@ struct PhysicsDef {
 };
 
 template <class V> void describe(V& v, PhysicsDef& d) {
-    v.field("gravity", d.gravity, range(0, 100), "gravity, m/s²");
-    v.field("water_density", d.water_density, range(1, 20000), "water density ρ, kg/m³", LIVE);
+    if constexpr (requires { v.refuse("", std::string()); })
+        for (const char* key : {"gravity", "water_density"}) v.refuse(key, environment::movedHere(key));
     v.field("linear_drag", d.linear_drag, range(0, 1e6), "linear drag per submerged probe area, N·s/m per m²", LIVE);
     v.field("quadratic_drag", d.quadratic_drag, range(0, 100), "quadratic drag coefficient C_d", LIVE);
     v.field("angular_damping", d.angular_damping, range(0, 1), "angular velocity damping per second in water", LIVE);

@@ -1,6 +1,7 @@
 // Splash particle settings, section [splash] (docs/splash_foam.md; laws in splash_particles.h).
 #pragma once
 #include "core/schema.h"
+#include "environment/environment_def.h"
 
 namespace ob::splash {
 
@@ -16,6 +17,7 @@ struct SplashDef {
     float max_life = 10.0f;       ///< a drop still airborne after this long is removed (expired), s, [0.1, 1000]
     float bow_speed = 3.0f;       ///< bow spray starts above this horizontal speed, m/s, [0.01, 100]
     float ripple_energy = 0.2f;   ///< ε, fraction of a landing drop's kinetic energy given to the ripple layer, [0, 1]
+    environment::EnvironmentDef environment;  ///< g and ρ of the flight and the drops: the scene's [environment], set when it is built (not a key)
 };
 
 template <class V> void describe(V& v, SplashDef& d) {

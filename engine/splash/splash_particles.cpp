@@ -63,12 +63,12 @@ int impactDropCount(const Impact& impact, const SplashDef& def) {
     return int(std::min(n, 1e9));
 }
 
-float crownHeight(const Impact& impact) {
+float crownHeight(const Impact& impact, float gravity) {
     // H = R·sqrt(Fr) with Fr = v_n²/(g·R), i.e. v_n·sqrt(R/g).
-    return impactNormalSpeed(impact) * std::sqrt(std::max(impact.radius, 0.0f) / GRAVITY);
+    return impactNormalSpeed(impact) * std::sqrt(std::max(impact.radius, 0.0f) / gravity);
 }
 
-float crownSpeed(const Impact& impact) { return std::sqrt(2.0f * GRAVITY * crownHeight(impact)); }
+float crownSpeed(const Impact& impact, float gravity) { return std::sqrt(2.0f * gravity * crownHeight(impact, gravity)); }
 
 SplashParticles::SplashParticles(const SplashDef& def, uint64_t seed) : m_def(def), m_rng(seed) {}
 
@@ -91,7 +91,7 @@ bool SplashParticles::push(const glm::vec3& p, const glm::vec3& v, float r) {
 int SplashParticles::emitImpact(const Impact& impact) {
     const int n = impactDropCount(impact, m_def);
     if (n <= 0) return 0;
-    const float uc = crownSpeed(impact);
+    const float uc = crownSpeed(impact, m_def.environment.gravity);
     const bool exit = impact.kind == Crossing::Exit;
     const float elevationLo = (exit ? 75.0f : 60.0f) * DEG, elevationSpan = (exit ? 14.0f : 20.0f) * DEG;
     const glm::vec3 carry = TANGENT_CARRY * glm::vec3(impact.velocity.x, 0.0f, impact.velocity.z);
@@ -145,7 +145,7 @@ void SplashParticles::step(float dt, const water::WaterQuery& water, float ceili
     if (n == 0) return;
 
     // --- flight: the exact solution of dv/dt = −g·ŷ − k·v over dt (coefficients in double)
-    const double k = m_def.drag, t = dt, kt = k * t;
+    const double k = m_def.drag, t = dt, kt = k * t, g = m_def.environment.gravity;
     double a, b, c;
     if (kt < 1e-4) {  // series: (1 − e^(−kt))/k and (t − b)/k lose every digit as k → 0
         a = std::exp(-kt);
@@ -156,7 +156,7 @@ void SplashParticles::step(float dt, const water::WaterQuery& water, float ceili
         b = -std::expm1(-kt) / k;
         c = (t - b) / k;
     }
-    const float fa = float(a), fb = float(b), gb = float(GRAVITY * b), gc = float(GRAVITY * c);
+    const float fa = float(a), fb = float(b), gb = float(g * b), gc = float(g * c);
     float *x = m_x.data(), *y = m_y.data(), *z = m_z.data(), *vx = m_vx.data(), *vy = m_vy.data(), *vz = m_vz.data(),
           *age = m_age.data();
     parallelFor(0, n, FLIGHT_CHUNK,
@@ -186,7 +186,7 @@ void SplashParticles::step(float dt, const water::WaterQuery& water, float ceili
             l.position = glm::vec3(x[i] + vx[i] * back, h, z[i] + vz[i] * back);
             l.velocity = glm::vec3(vx[i], vy[i], vz[i]);
             l.radius = m_radius[size_t(i)];
-            l.mass = WATER_DENSITY * (4.0f / 3.0f) * std::numbers::pi_v<float> * l.radius * l.radius * l.radius;
+            l.mass = m_def.environment.water_density * (4.0f / 3.0f) * std::numbers::pi_v<float> * l.radius * l.radius * l.radius;
             m_landings.push_back(l);
             m_dead[size_t(i)] = 1;
         }
@@ -240,6 +240,7 @@ double stampLandings(interaction::RipplePatch& patch, std::span<const Landing> l
     // The drop's crater goes into the height of whichever solver runs (kang2008: Vh(t); ewave: h).
     const int rows = patch.rows(), cols = patch.cols();
     const double cell = patch.def().cell_size, area = cell * cell;
+    const environment::EnvironmentDef& env = patch.def().environment;
     interaction::RippleSolver& solver = patch.solver();
     double total = 0.0;
     for (const Landing& l : landings) {
@@ -248,7 +249,7 @@ double stampLandings(interaction::RipplePatch& patch, std::span<const Landing> l
         if (ix < 1 || iz < 1 || ix > cols - 2 || iz > rows - 2) continue;  // the outer ring stays 0
         const double s2 = double(glm::dot(l.velocity, l.velocity));
         const double energy = double(energyFraction) * 0.5 * double(l.mass) * s2;  // J
-        const double depth = std::sqrt(2.0 * energy / (double(WATER_DENSITY) * GRAVITY * area));  // m
+        const double depth = std::sqrt(2.0 * energy / (double(env.water_density) * env.gravity * area));  // m
         solver.addHeight(int(ix), int(iz), -depth);
         total += energy;
     }

@@ -2,7 +2,7 @@
 // with linear drag (exact for any step), and handed back as landings the caller stamps into
 // the ripple layer and the foam map. The CPU simulation is the reference. docs/splash_foam.md.
 //
-// Laws (g = 9.81 m/s², ρ = 1025 kg/m³; an impact is a body of mass m, radius R, velocity v
+// Laws (g and ρ: the Def's environment, 9.81 m/s² and 1025 kg/m³ by default; an impact is a body of mass m, radius R, velocity v
 // meeting a surface of unit normal n moving up at w):
 //   normal speed   v_n = |(v − w·ŷ)·n|                                          m/s
 //   energy         E   = ½·m·v_n²                                                J
@@ -49,10 +49,6 @@ class RipplePatch;
 
 namespace ob::splash {
 
-/// Gravity, m/s² (SPEC §2.1).
-constexpr float GRAVITY = 9.81f;
-/// Density of the water of the drops, kg/m³.
-constexpr float WATER_DENSITY = 1025.0f;
 /// Drops per √J of impact energy at emission_scale 1.
 constexpr float DROPS_PER_SQRT_JOULE = 8.0f;
 /// Bow spray drops per second per m² of hull radius² at U = 2·U_min, emission_scale 1.
@@ -104,10 +100,10 @@ struct Landing {
 float impactNormalSpeed(const Impact& impact);
 /// Drop count N of an impact before the capacity cap (0 below min_speed).
 int impactDropCount(const Impact& impact, const SplashDef& def);
-/// Crown height H = R·sqrt(Fr), m.
-float crownHeight(const Impact& impact);
-/// Crown speed u_c = sqrt(2·g·H), m/s: no drop of the impact is launched faster upward.
-float crownSpeed(const Impact& impact);
+/// Crown height H = R·sqrt(Fr), m, under gravity g (m/s²).
+float crownHeight(const Impact& impact, float gravity);
+/// Crown speed u_c = sqrt(2·g·H), m/s, under gravity g (m/s²): no drop of the impact is launched faster upward.
+float crownSpeed(const Impact& impact, float gravity);
 
 /// Live drops as structure-of-arrays (one float array per quantity, index = drop), world metres.
 class SplashParticles {
@@ -174,7 +170,8 @@ private:
     Stats m_stats;
 };
 
-/// Stamps landings into the ripple layer (the ripple stamp law above, ε = energyFraction): each
+/// Stamps landings into the ripple layer (the ripple stamp law above, ε = energyFraction, g and ρ
+/// the patch Def's environment): each
 /// lowers Vh(t) of the interior cell nearest it; landings outside the patch are skipped.
 /// Returns the energy the law put in, Σ ε·½·m_d·s², J. A GPU patch takes them at its next step.
 double stampLandings(interaction::RipplePatch& patch, std::span<const Landing> landings, float energyFraction);

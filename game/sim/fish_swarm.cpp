@@ -14,7 +14,6 @@ namespace ob::game {
 
 namespace {
 
-constexpr float GRAVITY = 9.81f;  // m/s²
 // Fish per chunk of the parallel passes (at most MAX_CHUNKS chunks): below it a worker costs
 // more than the fish it would take.
 constexpr int FISH_PER_CHUNK = 2048;
@@ -38,8 +37,8 @@ FishSwarm::FishSwarm(const FishSwarmDef& def)
     m_sphere.accelerationFactor = def.acceleration_factor;
     m_dt = 1.0f / def.step_hz;
     m_depth = 2.0f * radius;                                        // launch depth = apex height = 2R
-    m_launchSpeed = std::sqrt(2.0f * GRAVITY * (m_depth + 2.0f * radius));
-    const float period = 2.0f * m_launchSpeed / GRAVITY;
+    m_launchSpeed = std::sqrt(2.0f * m_def.gravity * (m_depth + 2.0f * radius));
+    const float period = 2.0f * m_launchSpeed / m_def.gravity;
 
     const size_t n = size_t(def.count);
     for (auto* v : {&m_gx, &m_gz, &m_vx, &m_vz, &m_y, &m_vy, &m_surface}) v->resize(n);
@@ -67,8 +66,8 @@ FishSwarm::FishSwarm(const FishSwarmDef& def)
         m_vx[i] = s * std::cos(a);
         m_vz[i] = s * std::sin(a);
         const float t = phase(rng);
-        m_y[i] = -m_depth + m_launchSpeed * t - 0.5f * GRAVITY * t * t;
-        m_vy[i] = m_launchSpeed - GRAVITY * t;
+        m_y[i] = -m_depth + m_launchSpeed * t - 0.5f * m_def.gravity * t * t;
+        m_vy[i] = m_launchSpeed - m_def.gravity * t;
     }
 }
 
@@ -183,8 +182,8 @@ void FishSwarm::stepBatched() {
 inline void FishSwarm::moveFish(size_t i) {
     const float dt = m_dt, edge = float(m_def.field - 1);
     // Exact ballistic step; at the launch depth a falling fish turns into a new jump.
-    m_y[i] += m_vy[i] * dt - 0.5f * GRAVITY * dt * dt;
-    m_vy[i] -= GRAVITY * dt;
+    m_y[i] += m_vy[i] * dt - 0.5f * m_def.gravity * dt * dt;
+    m_vy[i] -= m_def.gravity * dt;
     if (m_y[i] < -m_depth && m_vy[i] < 0.0f) {
         m_y[i] = -2.0f * m_depth - m_y[i];
         m_vy[i] = m_launchSpeed;

@@ -1,6 +1,7 @@
 // The jumping-fish swarm of seed 001 Table 5: one bounding sphere per fish on a ballistic jump
 // arc through the water over a ripple field, stamped by Table 2 and eq. 3–7 (SPEC §2.5, §3).
 #pragma once
+#include "environment/environment_def.h"
 #include "interaction/kang2008/ripple_field.h"
 #include "interaction/sphere_stamp.h"
 #include "interaction/stamp_batch.h"
@@ -29,11 +30,12 @@ struct FishSwarmDef {
     float damping = 0.93f;             ///< DF of eq. 2, [0, 1]
     float step_hz = 60.0f;             ///< simulation steps per second
     uint64_t seed = 1;                 ///< positions, headings, speeds and arc phases
+    float gravity = environment::EnvironmentDef{}.gravity;  ///< g of the jump arcs, m/s², > 0 (a scene's environment.gravity)
     StampMode mode = StampMode::Batched;
 };
 
 /// Fish jump from a depth of 2R below the still surface (y = 0) to 2R above it and back, R
-/// the sphere radius in metres, under g = 9.81 m/s² (period 2·sqrt(16R/g): 4 s for R = 5 m),
+/// the sphere radius in metres, under the Def's g (period 2·sqrt(16R/g): 4 s for R = 5 m, g = 9.81 m/s²),
 /// each at its own phase, and swim 0.5–2 m/s in a fixed heading, bouncing off the field's
 /// edges. A fish sees the water surface as y = 0 plus Vh(t) at its centre cell as it was at the
 /// start of the step (all fish see the same water, whatever their order). SD follows the

@@ -7,6 +7,7 @@
 #include "behaviours/cannon.h"
 #include "world/controls.h"
 #include "world/sandbox.h"
+#include "world/scene_settings.h"
 #include "core/error.h"
 #include "ecs/components.h"
 #include "gfx/ui_overlay.h"
@@ -52,6 +53,7 @@ static SceneDef sceneEditor(const SceneDef& scene, std::optional<SceneDef>& rest
     if (!ImGui::CollapsingHeader("scene (applied on restart)")) return edited;
     gfx::UiEditor editor;
     editor.section("sim", edited.sim);
+    editor.section("environment", edited.environment);
     editor.section("camera", edited.camera);
     editor.section("ocean", edited.ocean);
     editor.section("gerstner", edited.gerstner);
@@ -290,7 +292,8 @@ static void toolsPanel(ecs::World& world, double now) {
         if (def.drop == DropKind::Ball) {
             ImGui::SliderFloat("ball radius m", &def.ball_radius, 0.05f, 5.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
             ImGui::SliderFloat("density kg/m3", &def.ball_density, 10.0f, 20000.0f, "%.0f", ImGuiSliderFlags_Logarithmic);
-            ImGui::TextDisabled(def.ball_density < 1025.0f ? "floats (water: 1025 kg/m3)" : "sinks (water: 1025 kg/m3)");
+            const float water = sceneSettings(world).def.environment.water_density;
+            ImGui::TextDisabled("%s (water: %.0f kg/m3)", def.ball_density < water ? "floats" : "sinks", double(water));
         }
         break;
     }

@@ -68,7 +68,8 @@ const ecs::SystemEntry SYSTEMS[] = {
 Sandbox::Sandbox(const SceneDef& scene) : m_schedule(scene.sim) {
     for (const ecs::SystemEntry& s : SYSTEMS) m_schedule.add(s);
     // The one scene of this world: everything below reads it there.
-    const SceneDef& def = addSceneSettings(m_world, scene).def;
+    SceneDef& def = addSceneSettings(m_world, scene).def;
+    applyEnvironment(def);  // a scene edited in the UI comes here unread
     addControls(m_world, def.controls);
     spawnCamera(m_world, def.camera);
     addOcean(m_world, def.ocean, def.gerstner);

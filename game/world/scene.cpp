@@ -80,6 +80,15 @@ static void checkSpawnObjects(const SceneDef& scene, const TomlDocument& doc, co
     }
 }
 
+void applyEnvironment(SceneDef& scene) {
+    const environment::EnvironmentDef& env = scene.environment;
+    scene.physics.gravity = env.gravity;
+    scene.physics.water_density = env.water_density;
+    scene.ocean.gravity = env.gravity;  // spectrum dispersion and Gerstner waves
+    scene.ripples.environment = env;
+    scene.splash.environment = env;
+}
+
 static SceneDef readScene(TomlDocument& doc, const std::string& source, const std::string& sceneDir,
                           std::vector<std::string>& errors, const std::vector<std::string>& overrides) {
     for (const std::string& o : overrides) doc.applyOverride(o, errors);
@@ -87,6 +96,7 @@ static SceneDef readScene(TomlDocument& doc, const std::string& source, const st
     TomlReader reader(doc, errors);
     describe(reader, scene);
     reader.finish();
+    applyEnvironment(scene);
     // Checks across keys and files, once every key is read and in range.
     if (errors.empty()) {
         for (const std::string& e : ocean::validate(scene.gerstner, &scene.ocean)) errors.push_back(source + ": " + e);

@@ -5,6 +5,7 @@
 #include "world/controls.h"
 #include "sim/objects.h"
 #include "ecs/schedule.h"
+#include "environment/environment_def.h"
 #include "foam/foam_def.h"
 #include "view_data/render_def.h"
 #include "interaction/ripple_def.h"
@@ -39,6 +40,7 @@ template <class V> void describe(V& v, SceneInfoDef& d) {
 struct SceneDef {
     SceneInfoDef info;            ///< [scene]
     ecs::SimDef sim;              ///< [sim]
+    environment::EnvironmentDef environment;  ///< [environment]: g, ρ, σ… every part below reads (applyEnvironment)
     platform::WindowDef window;   ///< [window]
     CameraDef camera;             ///< [camera]
     ControlsDef controls;         ///< [controls]
@@ -58,6 +60,7 @@ struct SceneDef {
 template <class V> void describe(V& v, SceneDef& s) {
     v.section("scene", s.info);
     v.section("sim", s.sim);
+    v.section("environment", s.environment);
     v.section("window", s.window);
     v.section("camera", s.camera);
     v.section("controls", s.controls);
@@ -73,6 +76,10 @@ template <class V> void describe(V& v, SceneDef& s) {
     v.list("objects", s.objects, "bodies, ships, cannons, fish schools");
     v.list("events", s.events, "timeline: actions at simulated times");
 }
+
+/// Copies [environment] into every part's Def that uses it (physics, ocean, ripples, splash):
+/// the one place the world's constants are handed out. loadScene and the sandbox call it.
+void applyEnvironment(SceneDef& scene);
 
 /// Loads a scene file and applies `--set key.path=value` overrides (in order). Each
 /// objects[i].model is resolved (absolute as is; relative: next to the scene file, then the

@@ -179,7 +179,7 @@ void BM_EWaveStamp(benchmark::State& state) {
         for (size_t i = 0; i < motions.size(); ++i) {
             RippleStamp st;
             if (planStamp(n, n, cell, def, contacts[i], motions[i], [&](int x, int z) { return field.heightAt(x, z); }, st)) {
-                const EWaveSource s = ewaveSource(st, motions[i].gridX, motions[i].gridZ, cell);
+                const EWaveSource s = ewaveSource(st, motions[i].gridX, motions[i].gridZ, cell, 9.81f);
                 field.addSource(s.gx, s.gz, s.radiusCells, s.accel, 1.0f / 60.0f);
             }
         }

@@ -10,10 +10,10 @@ using ob::test::writeFile;
 
 TEST_CASE("a set event of a key read once at start exits 2 naming file, line and key", "[cli][live_keys]") {
     const std::string path = writeFile(tempPath("set_gravity.toml"),
-                                       "[[events]]\nat = 1\naction = \"set\"\nkey = \"physics.gravity\"\nvalue = 3\n");
+                                       "[[events]]\nat = 1\naction = \"set\"\nkey = \"environment.gravity\"\nvalue = 3\n");
     auto r = runOceanbox("run " + path + " --headless --frames 1");
     CHECK(r.exitCode == 2);
-    CHECK(r.output.find(path + ":4:7: events[0].key: 'physics.gravity' is read once at start; live keys: ") != std::string::npos);
+    CHECK(r.output.find(path + ":4:7: events[0].key: 'environment.gravity' is read once at start; live keys: ") != std::string::npos);
     const std::string live = writeFile(tempPath("set_drag.toml"),
                                        "[ocean]\nresolution = 16\n[[events]]\nat = 0\naction = \"set\"\nkey = \"physics.linear_drag\"\nvalue = 3\n");
     CHECK(runOceanbox("run " + live + " --headless --size 32x32 --frames 2").exitCode == 0);

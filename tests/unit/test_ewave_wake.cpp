@@ -54,7 +54,7 @@ Wake runWake(double speed, double seconds, int rows, int cols, double hz, double
         m.surfaceY = 0.0f;
         RippleStamp st;
         if (planStamp(rows, cols, cell, sphere, contact, m, [&](int cx, int cz) { return field.heightAt(cx, cz); }, st)) {
-            const EWaveSource src = ewaveSource(st, m.gridX, m.gridZ, cell);
+            const EWaveSource src = ewaveSource(st, m.gridX, m.gridZ, cell, 9.81f);
             double ramp = std::min(1.0, s * double(dt) / 3.0);
             ramp = ramp * ramp * (3.0 - 2.0 * ramp);
             field.addSource(src.gx, src.gz, src.radiusCells, float(src.accel * ramp), dt);

@@ -49,7 +49,7 @@ float valueIn(const game::SceneKey& k) {
 TEST_CASE("the keys the Sea panel and the presets set, and every [render] key the live panel shows, are live", "[live_keys][config]") {
     for (const char* key : {"ocean.wind_speed", "ocean.wind_direction_deg", "ocean.choppiness", "gerstner.amplitude_scale",
                             "gerstner.count", "ripples.damping", "ripples.decay_time", "render.time_of_day", "render.exposure",
-                            "render.grid_resolution", "render.reflections", "physics.water_density", "camera.fov_deg"})
+                            "render.grid_resolution", "render.reflections", "physics.linear_drag", "camera.fov_deg"})
         CHECK(isLive(key));
     // the live panel shows [render] through the LIVE marks: every number and switch there is marked
     for (const game::SceneKey& k : game::sceneKeys())
@@ -57,8 +57,8 @@ TEST_CASE("the keys the Sea panel and the presets set, and every [render] key th
 }
 
 TEST_CASE("keys that size or seed the world are not live, and a run-time set of one is refused with the live list", "[live_keys][config]") {
-    for (const char* key : {"ocean.resolution", "ocean.patch_size", "ocean.cascades", "ocean.gravity", "ripples.resolution",
-                            "ripples.cell_size", "physics.gravity", "physics.substeps", "sim.step_hz", "window.width",
+    for (const char* key : {"ocean.resolution", "ocean.patch_size", "ocean.cascades", "environment.gravity", "ripples.resolution",
+                            "ripples.cell_size", "environment.water_density", "physics.substeps", "sim.step_hz", "window.width",
                             "splash.max_particles", "foam.resolution"}) {
         INFO(key);
         CHECK_FALSE(isLive(key));
@@ -82,12 +82,12 @@ TEST_CASE("every key marked LIVE is accepted by a run-time set and refused below
         if (std::isfinite(k.limits.min) && !k.switch_)
             CHECK(game::checkLiveSet(k.path, float(k.limits.min) - 1.0f).rfind("value: ", 0) == 0);
     }
-    CHECK(live > 30);  // [render], [camera], the sea's, [physics] drag and density, ripple damping
+    CHECK(live > 30);  // [render], [camera], the sea's, [physics] drag, ripple damping
 }
 
 TEST_CASE("a live set reaches what keeps the section: physics in place, the ripple patch and camera by version", "[live_keys]") {
     const std::string text = "[ocean]\nresolution = 16\n[ripples]\nresolution = 32\n[[events]]\nat = 0.1\naction = \"set\"\n"
-                             "key = \"physics.water_density\"\nvalue = 1200\n[[events]]\nat = 0.1\naction = \"set\"\n"
+                             "key = \"physics.linear_drag\"\nvalue = 1200\n[[events]]\nat = 0.1\naction = \"set\"\n"
                              "key = \"ripples.damping\"\nvalue = 0.9\n[[events]]\nat = 0.1\naction = \"set\"\n"
                              "key = \"camera.fov_deg\"\nvalue = 75\n";
     game::Sandbox sandbox(game::parseScene(text, "live.toml"));
@@ -99,7 +99,7 @@ TEST_CASE("a live set reaches what keeps the section: physics in place, the ripp
     CHECK(settings.version(game::SceneSection::Ripples) == 1);
     CHECK(settings.version(game::SceneSection::Camera) == 1);
     CHECK(settings.version(game::SceneSection::Render) == 0);
-    CHECK(game::physicsDef(world).water_density == 1200.0f);  // the physics system reads the scene's section itself
+    CHECK(game::physicsDef(world).linear_drag == 1200.0f);  // the physics system reads the scene's section itself
     CHECK(&game::physicsDef(world) == &sandbox.scene().physics);
     CHECK(world.resource<interaction::RipplePatch>()->def().damping == 0.9f);
     CHECK(world.pool<game::CameraRig>().components()[0].def.fov_deg == 75.0f);

@@ -84,7 +84,7 @@ OB_VECTOR_KERNEL void scaleKernel(double* __restrict f, float* __restrict copy, 
 
 } // namespace
 
-double EWaveField::omega(double k) { return std::sqrt(GRAVITY * k + SURFACE_TENSION * k * k * k); }
+double EWaveMedium::omega(double k) const { return std::sqrt(gravity * k + capillarity * k * k * k); }
 
 EWaveField::EWaveField(int rows, int cols, float cellSize, RippleBoundary boundary, int spongeWidth)
     : m_rows(rows), m_cols(cols), m_specCols(cols / 2 + 1), m_cells(size_t(rows) * size_t(cols)),
@@ -156,6 +156,12 @@ EWaveField::~EWaveField() {
     }
 }
 
+void EWaveField::setMedium(const EWaveMedium& medium) {
+    assert(medium.gravity > 0.0 && medium.capillarity >= 0.0);
+    m_medium = medium;
+    m_preparedDt = -1.0f;
+}
+
 void EWaveField::setDamping(float decayTime, float viscosity) {
     assert(decayTime >= 0.0f && viscosity >= 0.0f);
     if (decayTime == m_decayTime && viscosity == m_viscosity) return;
@@ -164,25 +170,26 @@ void EWaveField::setDamping(float decayTime, float viscosity) {
     m_preparedDt = -1.0f;
 }
 
-EWaveField::ModeStep EWaveField::modeStep(double k, float dt, float decayTime, float viscosity, double scale) {
+EWaveField::ModeStep EWaveField::modeStep(const EWaveMedium& medium, double k, float dt, float decayTime, float viscosity, double scale) {
     const double dtd = dt;
     const double rate = decayTime > 0.0f ? 1.0 / double(decayTime) : 0.0;
     const double d = std::exp(-(rate + 2.0 * double(viscosity) * k * k) * dtd) * scale;
     if (k == 0.0) return {d, d * dtd, 0.0};
-    const double w = omega(k);
+    const double w = medium.omega(k);
     const double cs = std::cos(w * dtd), sn = std::sin(w * dtd);
     return {d * cs, d * sn / w, -d * w * sn};
 }
 
 // d·cos θ − 1 = (d − 1)·cos θ − 2·sin²(θ/2): no cancellation for the small θ and 1 − d of
 // long waves, whose change is the whole point.
-double EWaveField::modeStepMinusOne(double k, float dt, float decayTime, float viscosity, double scale) {
+double EWaveField::modeStepMinusOne(const EWaveMedium& medium, double k, float dt, float decayTime, float viscosity,
+                                    double scale) {
     const double dtd = dt;
     const double rate = decayTime > 0.0f ? 1.0 / double(decayTime) : 0.0;
     const double dm1 = std::expm1(-(rate + 2.0 * double(viscosity) * k * k) * dtd);
     if (k == 0.0) return dm1 * scale;
-    const double half = std::sin(0.5 * omega(k) * dtd);
-    return (dm1 * std::cos(omega(k) * dtd) - 2.0 * half * half) * scale;
+    const double half = std::sin(0.5 * medium.omega(k) * dtd);
+    return (dm1 * std::cos(medium.omega(k) * dtd) - 2.0 * half * half) * scale;
 }
 
 // Sponge: friction γ = SPONGE_MAX_RATE·(1 − s_row·s_col) with the sin² profile s (spongeProfile)
@@ -218,8 +225,8 @@ void EWaveField::prepare(float dt) {
             const double kx = twoPi * i / lx;
             const double k = std::sqrt(kx * kx + kz * kz);
             double* c = m_coef.data() + 3 * (size_t(j) * size_t(m_specCols) + size_t(i));
-            c[0] = modeStepMinusOne(k, dt, m_decayTime, m_viscosity, norm);
-            const ModeStep s = modeStep(k, dt, m_decayTime, m_viscosity, norm);
+            c[0] = modeStepMinusOne(m_medium, k, dt, m_decayTime, m_viscosity, norm);
+            const ModeStep s = modeStep(m_medium, k, dt, m_decayTime, m_viscosity, norm);
             c[1] = s.b;
             c[2] = s.c;
         }
@@ -389,7 +396,7 @@ void EWaveField::scroll(int dx, int dz) {
     syncHeight();
 }
 
-EWaveSource ewaveSource(const RippleStamp& stamp, float gx, float gz, float cellSize, float verticalVelocity) {
+EWaveSource ewaveSource(const RippleStamp& stamp, float gx, float gz, float cellSize, float gravity, float verticalVelocity) {
     EWaveSource s;
     s.gx = gx;
     s.gz = gz;
@@ -398,12 +405,12 @@ EWaveSource ewaveSource(const RippleStamp& stamp, float gx, float gz, float cell
     // pressure ρ·v²/2 over the same patch adds v²/(2R), pushing the way SD points.
     const float sd = stamp.heightScale < 0.0f ? -1.0f : 1.0f;
     const float radius = std::max(stamp.radiusCells, 1.0f) * cellSize;
-    const float hydrostatic = float(EWaveField::GRAVITY) * (stamp.heightScale / cellSize);
+    const float hydrostatic = gravity * (stamp.heightScale / cellSize);
     // Capped at MAX_DYNAMIC_G·g: over a crossing of 2R/|v| the stagnation term gives the water
     // an impulse of about |v|, which for a fast ball (16 m/s) is a jet, not a ring; linear
     // waves cannot carry it (the default scene's cannonballs made 1.1 m spikes uncapped).
     const float dynamic = sd * std::min(verticalVelocity * verticalVelocity / (2.0f * radius),
-                                        MAX_DYNAMIC_G * float(EWaveField::GRAVITY));
+                                        MAX_DYNAMIC_G * gravity);
     s.accel = (hydrostatic + dynamic) * std::max(0.0f, 1.0f + stamp.accelerationFactor);
     return s;
 }

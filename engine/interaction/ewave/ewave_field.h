@@ -19,6 +19,16 @@ namespace ob::interaction {
 
 struct EWaveSource;
 
+/// The water's restoring forces of the dispersion ω² = g·k + (σ/ρ)·k³.
+struct EWaveMedium {
+    double gravity;      ///< g, m/s², > 0
+    double capillarity;  ///< σ/ρ, m³/s², >= 0
+    /// g and σ/ρ of an [environment].
+    static EWaveMedium of(const environment::EnvironmentDef& env) { return {double(env.gravity), environment::capillarity(env)}; }
+    /// ω(k) = sqrt(g·k + (σ/ρ)·k³), rad/s, for a wavenumber k in rad/m.
+    double omega(double k) const;
+};
+
 /// The dispersive ripple field: state (h, v) stepped exactly per Fourier mode.
 ///
 /// State in double precision, transforms in float, applied to the step's change only: a step
@@ -49,10 +59,6 @@ struct EWaveSource;
 /// (m²/s; 0 = none) that damps short waves more (energy of a mode falls as exp(−2t/τ − 4νk²t)).
 class EWaveField {
 public:
-    /// Gravity, m/s².
-    static constexpr double GRAVITY = 9.81;
-    /// Surface tension over density σ/ρ, m³/s².
-    static constexpr double SURFACE_TENSION = 7.4e-5;
     /// Friction at the outer edge of the absorbing sponge, 1/s (see the .cpp).
     static constexpr double SPONGE_MAX_RATE = 6.0;
 
@@ -64,23 +70,26 @@ public:
     EWaveField(const EWaveField&) = delete;
     EWaveField& operator=(const EWaveField&) = delete;
 
-    /// ω(k) = sqrt(g·k + (σ/ρ)·k³), rad/s, for a wavenumber k in rad/m.
-    static double omega(double k);
+    /// ω(k) of the field's medium, rad/s, for a wavenumber k in rad/m.
+    double omega(double k) const { return m_medium.omega(k); }
     /// One mode's step: ĥ' = a·ĥ + b·v̂, v̂' = c·ĥ + a·v̂ with a = d·cos ωΔt, b = d·sin(ωΔt)/ω,
     /// c = −d·ω·sin ωΔt (k = 0: a = d, b = d·Δt, c = 0), d the damping times `scale`.
     struct ModeStep {
         double a, b, c;
     };
-    /// ModeStep of wavenumber k (rad/m) over dt seconds with decay time τ (s; 0 = none) and
-    /// viscosity ν (m²/s), times `scale` (the transforms' 1/(rows·cols)). The GPU twin uses it too.
-    static ModeStep modeStep(double k, float dt, float decayTime, float viscosity, double scale);
+    /// ModeStep of wavenumber k (rad/m) in `medium` over dt seconds with decay time τ (s; 0 = none)
+    /// and viscosity ν (m²/s), times `scale` (the transforms' 1/(rows·cols)). The GPU twin uses it too.
+    static ModeStep modeStep(const EWaveMedium& medium, double k, float dt, float decayTime, float viscosity, double scale);
     /// modeStep's a − 1 before `scale`, times `scale`: d·cos ωΔt − 1 without the cancellation
     /// of forming it from a (the coefficient of the step's change, see the class comment).
-    static double modeStepMinusOne(double k, float dt, float decayTime, float viscosity, double scale);
+    static double modeStepMinusOne(const EWaveMedium& medium, double k, float dt, float decayTime, float viscosity,
+                                   double scale);
     /// The absorbing sponge's per-cell factors exp(−γΔt), row-major rows·cols (1 away from the
     /// band of `spongeWidth` cells), for a step of dt seconds.
     static std::vector<float> spongeFactors(int rows, int cols, int spongeWidth, float dt);
 
+    /// Sets g and σ/ρ (until then: those of a default [environment]).
+    void setMedium(const EWaveMedium& medium);
     /// Sets the damping: decayTime τ in s (0 = none), viscosity ν in m²/s (0 = none).
     void setDamping(float decayTime, float viscosity);
     /// Advances h and v by dt seconds (> 0). Allocates nothing once dt has been seen.
@@ -113,6 +122,7 @@ public:
     int spongeWidth() const { return m_spongeWidth; }
     float decayTime() const { return m_decayTime; }
     float viscosity() const { return m_viscosity; }
+    const EWaveMedium& medium() const { return m_medium; }
 
     /// The state h, rows·cols values row-major (index z·cols + x), metres.
     std::span<const double> heightState() const { return {m_h, m_cells}; }
@@ -161,6 +171,7 @@ private:
     RippleBoundary m_boundary;
     int m_spongeWidth = 0;
     float m_decayTime = 0.0f, m_viscosity = 0.0f;
+    EWaveMedium m_medium = EWaveMedium::of({});
     float m_preparedDt = -1.0f;        // dt of the coefficients below (and the sponge factors)
     int m_stepThreads = 1;             // the step's passes on 1 or 2 workers (measured, chooseThreads)
     int m_sourceThreads = 1;           // addSources' row bands on 1 or workerCount() workers (measured)
@@ -202,7 +213,8 @@ struct EWaveSource {
 /// Eq. 7's AF scales it by (1 + AF) (clamped at 0): AF > 0 a stronger push, AF < 0 a weaker
 /// one. Eq. 5's base height is not used (a pressure acts on whatever the water does).
 /// (gx, gz): the sphere's exact grid position (not the snapped centre cell), so a moving
-/// source makes no grid noise. verticalVelocity in m/s.
-EWaveSource ewaveSource(const RippleStamp& stamp, float gx, float gz, float cellSize, float verticalVelocity = 0.0f);
+/// source makes no grid noise. gravity g in m/s², verticalVelocity in m/s.
+EWaveSource ewaveSource(const RippleStamp& stamp, float gx, float gz, float cellSize, float gravity,
+                        float verticalVelocity = 0.0f);
 
 } // namespace ob::interaction

@@ -8,11 +8,14 @@ namespace ob::interaction {
 std::vector<RippleDefError> EWaveModel::validate(const RippleDef& /*def*/) { return {}; }
 
 std::unique_ptr<RippleSolver> EWaveModel::make(const RippleDef& def) {
-    return std::make_unique<EWaveSolver>(def.resolution, def.cell_size, def, def.boundary, def.sponge_width);
+    return std::make_unique<EWaveSolver>(def.resolution, def.cell_size, def, EWaveMedium::of(def.environment), def.boundary,
+                                         def.sponge_width);
 }
 
-EWaveSolver::EWaveSolver(int n, float cellSize, const EWaveDef& def, RippleBoundary boundary, int spongeWidth)
+EWaveSolver::EWaveSolver(int n, float cellSize, const EWaveDef& def, const EWaveMedium& medium, RippleBoundary boundary,
+                         int spongeWidth)
     : m_field(n, n, cellSize, boundary, spongeWidth), m_cellSize(cellSize) {
+    m_field.setMedium(medium);
     m_field.setDamping(def.decay_time, def.viscosity);
 }
 
@@ -22,7 +25,8 @@ bool EWaveSolver::addSphere(const BoundingSphere& sphere, SphereContact& contact
     if (!planStamp(f.rows(), f.cols(), m_cellSize, sphere, contact, motion, [&f](int x, int z) { return f.heightAt(x, z); },
                    stamp))
         return false;
-    m_sources.push_back(ewaveSource(stamp, motion.gridX, motion.gridZ, m_cellSize, motion.verticalVelocity));
+    m_sources.push_back(ewaveSource(stamp, motion.gridX, motion.gridZ, m_cellSize, float(m_field.medium().gravity),
+                                    motion.verticalVelocity));
     return true;
 }
 

@@ -29,8 +29,8 @@ public:
         virtual void step(float dt, bool cpuChanged) = 0;
     };
 
-    /// An n × n field of cells `cellSize` metres, h = v = 0, damped as the Def says.
-    EWaveSolver(int n, float cellSize, const EWaveDef& def, RippleBoundary boundary, int spongeWidth);
+    /// An n × n field of cells `cellSize` metres in `medium` (g, σ/ρ), h = v = 0, damped as the Def says.
+    EWaveSolver(int n, float cellSize, const EWaveDef& def, const EWaveMedium& medium, RippleBoundary boundary, int spongeWidth);
     /// Steps through `offload` from now on (EWaveModel::moveToGpu).
     void setOffload(std::unique_ptr<Offload> offload) { m_offload = std::move(offload); }
 

@@ -60,6 +60,7 @@ EWaveGpu::EWaveGpu(const EWaveField& like)
     glProgramUniform1i(m_fft.id(), OCEAN_LOG2N_LOCATION, m_log2n);
     glProgramUniform1i(m_step.id(), EWAVE_N_LOCATION, m_n);
     m_groups = (GLuint(m_n) + EWAVE_TILE - 1) / EWAVE_TILE;
+    m_medium = like.medium();
     setDamping(like.decayTime(), like.viscosity());
     upload(like);
 }
@@ -83,7 +84,7 @@ void EWaveGpu::prepare(float dt) {
         const double kz = dk * j;
         for (int i = 0; i < quarter; ++i) {
             const double kx = dk * i;
-            const EWaveField::ModeStep s = EWaveField::modeStep(std::sqrt(kx * kx + kz * kz), dt, m_decayTime, m_viscosity, norm);
+            const EWaveField::ModeStep s = EWaveField::modeStep(m_medium, std::sqrt(kx * kx + kz * kz), dt, m_decayTime, m_viscosity, norm);
             rotation[size_t(j) * size_t(quarter) + size_t(i)] = {float(s.a), float(s.b), float(s.c), 0.0f};
         }
     }

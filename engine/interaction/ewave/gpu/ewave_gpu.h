@@ -69,6 +69,7 @@ private:
     RippleBoundary m_boundary;
     int m_spongeWidth;
     float m_decayTime = 0.0f, m_viscosity = 0.0f;
+    EWaveMedium m_medium = EWaveMedium::of({});  // `like`'s g and σ/ρ
     float m_preparedDt = -1.0f;  // dt of m_rotation and m_sponge
     GLuint m_groups = 1;         // work groups of ewave_step.comp per axis
     gfx::Program m_fft;          // ocean_fft.comp: e^{+} transform of every row or column, in place
