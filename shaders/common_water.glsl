@@ -1,4 +1,4 @@
-// The composite water surface (SPEC §2.3): Gerstner waves (analytic) + FFT cascades
+// The composite water surface (docs/references.md#composite-ocean): Gerstner waves (analytic) + FFT cascades
 // (textures) + ripples, with normals added in slope form. The parameters: WaterUniforms
 // (common_bindings.glsl).
 #include "common_bindings.glsl"
@@ -56,13 +56,13 @@ vec2 rippleSlope(vec2 world) {
 #endif
 }
 
-// The projected grid point (u, v): homogeneous bilinear interpolation, w clamped (seed 000).
+// The projected grid point (u, v): homogeneous bilinear interpolation, w clamped ([Lee2007]).
 vec2 gridPoint(vec2 uv) {
     vec4 p = mix(mix(water.corner[0], water.corner[1], uv.x), mix(water.corner[2], water.corner[3], uv.x), uv.y);
     return p.xz / max(p.w, water.waterParams.w);
 }
 
-// Gerstner waves at rest point (α, β), time t (SPEC §2.2), in one pass over the waves:
+// Gerstner waves at rest point (α, β), time t (docs/references.md#gerstner-waves), in one pass over the waves:
 // the displacement (x − α, y, z − β), and the slope (∂y/∂x, ∂y/∂z) of the displaced surface
 // from the analytic normal n = ∂r/∂β × ∂r/∂α, as −n.xz / n.y. `spacing` (m): the distance
 // between the grid's vertices there (0: exact). A wave shorter than three spacings fades out

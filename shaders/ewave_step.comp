@@ -1,5 +1,5 @@
 #version 450 core
-// Dispersive ripple step, the per-mode and real-space passes (SPEC §2.5b; Tessendorf, eWave 2014):
+// Dispersive ripple step, the per-mode and real-space passes (docs/references.md#dispersive-ripples; Tessendorf, eWave 2014):
 // the GPU twin of EWaveField::step around ocean_fft.comp's transforms. One invocation per cell
 // or mode of the N×N grid. The state is kept conjugated, w = h − i·v, so that ocean_fft.comp's
 // e^{+} transform is the forward one: S = FFT⁺(w) = conj(Z), Z = FFT⁻(h + i·v) (see EWaveGpu).

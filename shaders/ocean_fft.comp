@@ -1,7 +1,7 @@
 #version 450 core
 #include "common_bindings.glsl"
-// Ocean inverse FFT (SPEC §2.1 eq. 1; seed 000 §3.3: radix-2 decimation in time on bit-reversed
-// input; seed 003: compute shaders). One workgroup transforms one line of N complex values in
+// Ocean inverse FFT (docs/references.md#spectral-ocean eq. 1; [Lee2007] §3.3: radix-2 decimation in time on bit-reversed
+// input; [CodingTower]: compute shaders). One workgroup transforms one line of N complex values in
 // place, X[j] = Σ_k x[k]·exp(+2πi·jk/N) (unnormalised, FFTW_BACKWARD): a bit-reversed load
 // into shared memory, the log2 N butterfly stages paired into radix-4 steps with a barrier
 // after each, a natural-order store. Pass 0 transforms rows, pass 1 columns (rows then columns

@@ -1,6 +1,6 @@
 #version 450 core
 #include "common_bindings.glsl"
-// Ocean synthesis (SPEC §2.1 eq. 2, 6, 7, 9): h̃(K,t) per mode and the four packed spectra the
+// Ocean synthesis (docs/references.md#spectral-ocean eq. 2, 6, 7, 9): h̃(K,t) per mode and the four packed spectra the
 // inverse FFT turns into (h, ∂Dx/∂z), (Dx, Dz), (∂h/∂x, ∂h/∂z), (∂Dx/∂x, ∂Dz/∂z). GPU twin
 // of CascadeSpectrum::synthesize (engine/ocean/spectrum.cpp): same coefficients, same phase.
 // One invocation per mode: x the column, y the row (FFT order), gl_WorkGroupID.z the cascade.

@@ -1,7 +1,7 @@
 #version 450 core
 #include "common_bindings.glsl"
-// Ocean maps from the four inverse-transformed packed spectra (SPEC §2.1 eq. 9: f = Re,
-// g = Im) and the foam Jacobian (seed 003 "Future"), as OceanFftCpu's unpack:
+// Ocean maps from the four inverse-transformed packed spectra (docs/references.md#spectral-ocean eq. 9: f = Re,
+// g = Im) and the foam Jacobian ([CodingTower] "Future"), as OceanFftCpu's unpack:
 //   displacement = (Dx, h, Dz, J),   slopes = (∂h/∂x, ∂h/∂z, J, 0),
 //   J = (1 + λ∂Dx/∂x)(1 + λ∂Dz/∂z) − (λ∂Dx/∂z)².
 // One invocation per texel: x along i, y along j, gl_WorkGroupID.z the cascade (= layer).

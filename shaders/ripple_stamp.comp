@@ -1,5 +1,5 @@
 #version 450 core
-// Bounding-sphere stamps, seed 001 eq. 5 then eq. 7 (SPEC §2.5): the GPU twin of stampFootprint
+// Bounding-sphere stamps, [Kang2008] eq. 5 then eq. 7 (docs/references.md#ripple-layer): the GPU twin of stampFootprint
 // for a list of stamps. Overlaps: the last stamp in list order wins every cell, as when the
 // CPU stamps the list in order. Pass 0 claims cells (atomicMax of stamp index + 1); pass 1
 // lets the owner write both levels and release its claim (back to 0 for the next call).

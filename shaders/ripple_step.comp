@@ -1,5 +1,5 @@
 #version 450 core
-// Ripple field step, seed 001 eq. 1–2, fixed ring or absorbing sponge (SPEC §2.5): the GPU twin
+// Ripple field step, [Kang2008] eq. 1–2, fixed ring or absorbing sponge (docs/references.md#ripple-layer): the GPU twin
 // of RippleField::step. Every float operation of the CPU loop in the same order, `precise` so
 // that none is fused into a multiply-add: the result is the CPU's to the bit. One invocation
 // per cell; mode 1 instead shifts a level by whole cells (RippleField::scroll) into another.

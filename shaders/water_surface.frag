@@ -1,10 +1,10 @@
 #version 450 core
-// Water surface shading (SPEC §2.6): composite normal in slope form (Gerstner + FFT cascades
+// Water surface shading (docs/references.md#water-rendering): composite normal in slope form (Gerstner + FFT cascades
 // + ripples); reflection = sky cube with the mirrored local objects blended over it by their
-// coverage; refraction = what lies below, faded to the water colour by its depth (seed 004
-// eq. 7); both looked up at the pixel offset by the normal (seed 000) and a DU/DV map
-// scrolled in time (seed 004 eq. 4–5); mixed by Fresnel (n = 1.33); plus sun glitter
-// (seed 000) and foam where the FFT Jacobian folds or the ripples are steep, and where the
+// coverage; refraction = what lies below, faded to the water colour by its depth ([KTSDE2017]
+// eq. 7); both looked up at the pixel offset by the normal ([Lee2007]) and a DU/DV map
+// scrolled in time ([KTSDE2017] eq. 4–5); mixed by Fresnel (n = 1.33); plus sun glitter
+// ([Lee2007]) and foam where the FFT Jacobian folds or the ripples are steep, and where the
 // persistent foam map holds coverage (its bubble pattern thins as the coverage decays).
 // Each FFT cascade's slopes fade out with distance ([render] far_fade) as its displacement does.
 // Compiled per gfx::WaterVariant: the cascade count and the switches (WATER_REFLECTIONS,

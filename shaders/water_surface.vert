@@ -1,6 +1,6 @@
 #version 450 core
 // Water surface vertices: projected grid point → Gerstner displacement + every FFT cascade's
-// choppy displacement (seed 000 vertex shader) + the ripple height at the displaced point;
+// choppy displacement ([Lee2007] vertex shader) + the ripple height at the displaced point;
 // past the grid's reach, a wall to the horizon. Each cascade fades out with distance.
 #include "common_frame.glsl"
 #include "common_water.glsl"

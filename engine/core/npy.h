@@ -1,4 +1,4 @@
-// NumPy .npy files: little-endian float32, C order, any rank (SPEC §4 field files).
+// NumPy .npy files: little-endian float32, C order, any rank (docs/references.md#contracts field files).
 // Format: numpy.lib.format, version 1.0 (2.0 is also read: same, with a 4-byte header length).
 #pragma once
 #include <cstddef>

@@ -1,4 +1,4 @@
-// Projected grid (seed 000 §3.4, eq. 11; after Johanson's projector): a regular grid whose
+// Projected grid ([Lee2007] §3.4, eq. 11; after Johanson's projector): a regular grid whose
 // points, interpolated in homogeneous coordinates between four corners on the mean water
 // plane y = 0, are dense near the camera and sparse toward the horizon. The corners come from
 // a projector that sees every rest point whose displaced surface point can be on screen.
@@ -44,7 +44,7 @@ struct GridCorners {
 GridCorners projectedGridCorners(const glm::mat4& viewProjection, const glm::vec3& eye, const SurfaceBounds& bounds);
 
 /// World (x, z) of grid point (u, v) ∈ [0, 1]²: bilinear interpolation of the homogeneous
-/// corners, then the division by w with w clamped from below by `minW` (seed 000: the
+/// corners, then the division by w with w clamped from below by `minW` ([Lee2007]: the
 /// division never overflows). Mirrors the vertex shader (shaders/common_water.glsl).
 glm::vec2 projectedGridPoint(const GridCorners& corners, glm::vec2 uv, float minW);
 

@@ -16,7 +16,7 @@
 namespace ob::gfx {
 
 /// The views a frame is drawn from: the camera; the camera seeing the objects mirrored in the
-/// water surface, keeping what is above it (seed 004 eq. 1–3); the camera keeping what is below.
+/// water surface, keeping what is above it ([KTSDE2017] eq. 1–3); the camera keeping what is below.
 enum View { MAIN_VIEW, REFLECTION_VIEW, REFRACTION_VIEW, VIEW_COUNT };
 
 /// The passes, in the order Renderer::render runs them (and their timers are reported).

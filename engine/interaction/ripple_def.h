@@ -1,4 +1,4 @@
-// Interactive ripple layer settings, section [ripples] (SPEC §2.5; seed 001 §III–V): the keys
+// Interactive ripple layer settings, section [ripples] (docs/references.md#ripple-layer; [Kang2008] §III–V): the keys
 // every solver reads, and each solver's own (its Def, interaction/<model>/, a base of RippleDef).
 #pragma once
 #include "core/schema.h"
@@ -12,8 +12,8 @@
 namespace ob::interaction {
 
 /// Which solver steps the patch: an index into RippleModels, its words the solvers' NAMEs
-/// ("kang2008": seed 001 eq. 1–2, the paper's scenes and benches; "ewave": dispersive water
-/// waves, every Fourier mode at its own speed, SPEC §2.5b).
+/// ("kang2008": [Kang2008] eq. 1–2, the paper's scenes and benches; "ewave": dispersive water
+/// waves, every Fourier mode at its own speed, docs/references.md#dispersive-ripples).
 enum class RippleModel : uint8_t {};
 constexpr std::array<const char*, RippleModels::COUNT> names(RippleModel) { return RippleModels::NAMES; }
 
@@ -74,7 +74,7 @@ struct RippleDef : RippleModels::Defs {
 template <class V> void describe(V& v, RippleDef& d) {
     v.field("enabled", d.enabled, "ripple layer on or off");
     v.field("model", d.model,
-            "kang2008: seed 001 eq. 1-2 (the paper); ewave: dispersive water waves (exact per Fourier mode)");
+            "kang2008: [Kang2008] eq. 1-2 (the paper); ewave: dispersive water waves (exact per Fourier mode)");
     v.field("backend", d.backend, "where the ripple step runs (either model; ewave on the GPU up to 2048 cells per side)");
     v.field("resolution", d.resolution, powerOfTwo(16, 4096), "cells per side (N)");
     v.field("cell_size", d.cell_size, range(0.01, 100), "metres per cell");

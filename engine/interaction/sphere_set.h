@@ -6,7 +6,7 @@
 
 namespace ob::interaction {
 
-/// Spheres in the object's local frame, stamped into the ripple patch in order (seed 001:
+/// Spheres in the object's local frame, stamped into the ripple patch in order ([Kang2008]:
 /// an object is one sphere or a set of spheres).
 struct SphereSet {
     std::vector<BoundingSphere> spheres;

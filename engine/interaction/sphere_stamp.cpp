@@ -1,4 +1,4 @@
-// Bounding-sphere stamping: seed 001 eq. 3–7 and Table 2, base height read as in SPEC §2.5.
+// Bounding-sphere stamping: [Kang2008] eq. 3–7 and Table 2, base height read as in docs/references.md#ripple-layer.
 // Eq. 5's base Vh(x,z)(t) is the centre cell's ripple height remembered at first contact,
 // so a sphere resting on the water rewrites the same shape each step instead of digging.
 #include "interaction/sphere_stamp.h"

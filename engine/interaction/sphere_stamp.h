@@ -1,4 +1,4 @@
-// Bounding-sphere stamping of the ripple field: seed 001 eq. 3–7 and Table 2 (SPEC §2.5).
+// Bounding-sphere stamping of the ripple field: [Kang2008] eq. 3–7 and Table 2 (docs/references.md#ripple-layer).
 // An object is a set of spheres; each sphere, each step, decides by Table 2 whether to stamp
 // its footprint into Vh(t) (eq. 5) and rewrite Vh(t−1) over it (eq. 7).
 #pragma once
@@ -30,7 +30,7 @@ struct AccelerationRef {
     float size = 1.0f;    ///< sphere radius, m, > 0
 };
 
-/// One bounding sphere of an object (SPEC §2.5; paper: cannon SR 5, SHR 1.0, AF 0;
+/// One bounding sphere of an object (docs/references.md#ripple-layer; paper: cannon SR 5, SHR 1.0, AF 0;
 /// fish SHR 1.4, AF −0.3, SD by motion; ship 6 spheres SR 7, SHR 0.2, AF 0.3).
 struct BoundingSphere {
     glm::vec3 offset{0.0f};  ///< centre in the object's local frame, m

@@ -1,4 +1,4 @@
-// Batched bounding-sphere stamps (seed 001 eq. 5, 7 and Table 2; SPEC §2.5): the list is
+// Batched bounding-sphere stamps ([Kang2008] eq. 5, 7 and Table 2; docs/references.md#ripple-layer): the list is
 // applied backwards, each cell written once by the last stamp that covers it.
 #include "interaction/stamp_batch.h"
 

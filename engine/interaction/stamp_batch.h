@@ -1,6 +1,6 @@
 // Batched bounding-sphere stamps: many eq. 5 + eq. 7 footprints applied with the result of
-// stampFootprint called for each in list order, each cell written at most once (seed 001
-// Table 2, SPEC §2.5).
+// stampFootprint called for each in list order, each cell written at most once ([Kang2008]
+// Table 2, docs/references.md#ripple-layer).
 #pragma once
 #include "interaction/kang2008/ripple_field.h"
 #include "interaction/sphere_stamp.h"

@@ -1,5 +1,5 @@
 // Gerstner waves: validation, spectrum-derived generation (after Thon et al. 2000) and the
-// vectorised evaluation of SPEC §2.2 (seed 000 eq. 8, seed 002 §2; normal from ∂r/∂β × ∂r/∂α).
+// vectorised evaluation of docs/references.md#gerstner-waves ([Lee2007] eq. 8, [Min2023] §2; normal from ∂r/∂β × ∂r/∂α).
 #include "core/simd.h"
 #include "ocean/fast_trig.h"
 #include "ocean/gerstner.h"

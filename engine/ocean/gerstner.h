@@ -1,5 +1,5 @@
-// Gerstner waves (trochoids): SPEC §2.2, seed 000 eq. 8 and §2.3, seed 002 §2; waves drawn
-// from the ocean's spectrum for the band the FFT leaves out, after Thon et al. 2000 (seed 000 §1).
+// Gerstner waves (trochoids): docs/references.md#gerstner-waves, [Lee2007] eq. 8 and §2.3, [Min2023] §2; waves drawn
+// from the ocean's spectrum for the band the FFT leaves out, after Thon et al. 2000 ([Lee2007] §1).
 #pragma once
 #include "core/schema.h"
 #include "ocean/ocean_def.h"
@@ -14,7 +14,7 @@
 
 namespace ob::ocean {
 
-/// One trochoid (seed 002's form): θ = kx·α + kz·β − ω·t − φ, ω = sqrt(g·k). The wave travels
+/// One trochoid ([Min2023]'s form): θ = kx·α + kz·β − ω·t − φ, ω = sqrt(g·k). The wave travels
 /// toward +K; every particle circles its rest point with radius `amplitude`.
 struct GerstnerWave {
     float kx = 0.1f;        ///< wave vector x, rad/m, [−1000, 1000]; K = (kx, kz) must not be 0
@@ -93,11 +93,11 @@ std::vector<GerstnerWave> resolveWaves(const GerstnerDef& def, const OceanDef& o
 double steepnessSum(std::span<const GerstnerWave> waves);
 
 // ---------------------------------------------------------------------------------------
-// Evaluation (SPEC §2.2). With C = cos θ, S = sin θ, per wave a, k, ω, K̂ = K/k:
+// Evaluation (docs/references.md#gerstner-waves). With C = cos θ, S = sin θ, per wave a, k, ω, K̂ = K/k:
 //   x = α − Σ K̂x·a·S,   z = β − Σ K̂z·a·S,   y = Σ a·C
 //   ∂r/∂α = (1 − Σ kx²/k·a·C, −Σ kx·a·S, −Σ kx·kz/k·a·C)   in (x, y, z)
 //   ∂r/∂β = (−Σ kx·kz/k·a·C, −Σ kz·a·S, 1 − Σ kz²/k·a·C)
-//   n = ∂r/∂β × ∂r/∂α (y up; seed 002's α × β in its (x, z, y) order), n.y = det ∂(x,z)/∂(α,β).
+//   n = ∂r/∂β × ∂r/∂α (y up; [Min2023]'s α × β in its (x, z, y) order), n.y = det ∂(x,z)/∂(α,β).
 //   ∂y/∂t = Σ a·ω·S,   ∂(x, z)/∂t = Σ K̂·a·ω·C   (at the fixed rest point: particle velocity)
 
 /// The raw sums at one rest point, from which position, normal, Jacobian and velocity follow.

@@ -1,5 +1,5 @@
-// Spectral ocean settings, section [ocean]: one field per scene key (SPEC §2.1; seed 000 §2.1,
-// seed 003). Formulas behind each key: engine/ocean/spectrum.h.
+// Spectral ocean settings, section [ocean]: one field per scene key (docs/references.md#spectral-ocean; [Lee2007] §2.1,
+// [CodingTower]). Formulas behind each key: engine/ocean/spectrum.h.
 #pragma once
 #include "core/backend.h"
 #include "core/schema.h"
@@ -24,7 +24,7 @@ struct OceanDef {
     float amplitude = 0.0009f;         ///< A, dimensionless Phillips constant, [0, 1]; eq. 5 is applied with A·(2π/L)² per mode, so heights do not depend on N or L; 0.0009 gives the Pierson–Moskowitz Hs ≈ 0.21·V²/g (unused by jonswap)
     float wind_speed = 10.0f;          ///< V, wind speed 10 m above the sea, m/s, [0, 60]; sets L_w = V²/g, the largest wave
     glm::vec2 wind_direction{1.0f, 0.0f}; ///< direction the wind blows toward, [x, z] in the water plane; any non-zero vector (normalised on use)
-    float small_wave_cutoff = 0.0f;    ///< l, metres, [0, 100]: waves shorter than ~l are damped by exp(−k²l²); 0 = auto, l = 0.001·V²/g (seed 003)
+    float small_wave_cutoff = 0.0f;    ///< l, metres, [0, 100]: waves shorter than ~l are damped by exp(−k²l²); 0 = auto, l = 0.001·V²/g ([CodingTower])
     float choppiness = 1.0f;           ///< c, horizontal displacement strength, [0, 10]: points move to X + λ·D with λ = −c (SPEC eq. 7: λ < 0 sharpens crests); 0 = no displacement
     std::uint64_t seed = 1;            ///< seed of the Gaussian noise ξ (eq. 4); equal seeds give equal seas at any resolution
     float gravity = 9.81f;             ///< g, m/s², > 0; dispersion ω = sqrt(g·k) (eq. 3): environment.gravity, set when the scene is built (not a key)

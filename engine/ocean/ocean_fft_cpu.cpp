@@ -1,5 +1,5 @@
 // CPU spectral ocean: synthesis (eq. 2, 6, 7) → four packed inverse FFTs (eq. 1, 9, FFTW) →
-// SoA channels and the foam Jacobian. SPEC §2.1; seed 000 §2.1, §3.3; seed 003 "Future".
+// SoA channels and the foam Jacobian. docs/references.md#spectral-ocean; [Lee2007] §2.1, §3.3; [CodingTower] "Future".
 #include "core/simd.h"
 #include "ocean/ocean_fft_cpu.h"
 

@@ -1,5 +1,5 @@
 // CPU spectral ocean: per cascade, h̃(K,t) and its derivative spectra inverse-transformed with
-// FFTW, two real fields per complex transform. SPEC §2.1 eq. 1–9; seed 000 §2.1, §3.3.
+// FFTW, two real fields per complex transform. docs/references.md#spectral-ocean eq. 1–9; [Lee2007] §2.1, §3.3.
 #pragma once
 #include "ocean/displacement_bounds.h"
 #include "ocean/ocean_def.h"
@@ -25,7 +25,7 @@ enum class OceanChannel : int {
 
 /// Number of OceanChannel maps.
 constexpr int OCEAN_CHANNEL_COUNT = 6;
-/// Channels of the `dump ocean` array [N, N, 5]: h, Dx, Dz, ∂h/∂x, ∂h/∂z (SPEC §4).
+/// Channels of the `dump ocean` array [N, N, 5]: h, Dx, Dz, ∂h/∂x, ∂h/∂z (docs/references.md#contracts).
 constexpr int OCEAN_DUMP_CHANNELS = 5;
 /// Packed complex transforms per cascade (PackedSpectra, eq. 9).
 constexpr int OCEAN_PACKED_TRANSFORMS = 4;
@@ -71,7 +71,7 @@ public:
         double transforms = 0.0;  ///< the packed inverse FFTs (FFTW)
         double unpack = 0.0;      ///< channels and the Jacobian
     };
-    /// Stage times of the last update() (benchmarks: seed 000 Table 3's "FFT only").
+    /// Stage times of the last update() (benchmarks: [Lee2007] Table 3's "FFT only").
     const StageMs& lastStageMs() const { return m_stageMs; }
 
     /// Channel ch of cascade c after the last update(): N·N floats, row-major [j][i].

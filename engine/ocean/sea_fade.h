@@ -1,6 +1,6 @@
 // A live change of the sea: the FFT spectrum, λ and the Gerstner waves cross-fade from the sea
 // as it is to a new [ocean]/[gerstner] over about 2 s, keeping the spectrum's random phases
-// (SPEC §2.1 eq. 2 and 4: h̃0 = ξ·sqrt(Ph/2), the same ξ for any wind).
+// (docs/references.md#spectral-ocean eq. 2 and 4: h̃0 = ξ·sqrt(Ph/2), the same ξ for any wind).
 //
 // Where the fade happens: in k-space, on h̃0. Eq. 2 is linear in h̃0 and ω(k) = sqrt(g·k) does
 // not depend on the wind, so blending h̃0 is exactly blending the two seas' h̃(K,t), hence

@@ -1,5 +1,5 @@
-// Wave spectra, seeded h̃0(K) and the vectorised synthesis of h̃(K,t): SPEC §2.1 eq. 2–7,
-// seed 000 §2.1, seed 003; JONSWAP after Hasselmann et al. 1973 (formulas in spectrum.h).
+// Wave spectra, seeded h̃0(K) and the vectorised synthesis of h̃(K,t): docs/references.md#spectral-ocean eq. 2–7,
+// [Lee2007] §2.1, [CodingTower]; JONSWAP after Hasselmann et al. 1973 (formulas in spectrum.h).
 #include "core/error.h"
 #include "core/parallel.h"
 #include "core/simd.h"

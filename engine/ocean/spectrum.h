@@ -1,5 +1,5 @@
-// Wave spectra and the time-dependent spectrum h̃(K,t) of the FFT ocean: SPEC §2.1 eq. 2–7
-// (seed 000 §2.1, seed 003 "Phillips"/"hTilde"); JONSWAP after Hasselmann et al. 1973.
+// Wave spectra and the time-dependent spectrum h̃(K,t) of the FFT ocean: docs/references.md#spectral-ocean eq. 2–7
+// ([Lee2007] §2.1, [CodingTower] "Phillips"/"hTilde"); JONSWAP after Hasselmann et al. 1973.
 #pragma once
 #include "core/random.h"
 #include "ocean/ocean_def.h"

@@ -29,7 +29,7 @@ struct RenderDef {
     bool refractions = true;                        ///< refraction pass (objects below the water, depth colour); off: body colour only
     float rtt_scale = 0.5f;                         ///< reflection/refraction target size / framebuffer size, [0.1, 1]
     float dudv_strength = 0.02f;                    ///< DU/DV distortion of the reflection/refraction lookups (fraction of the screen), [0, 0.2]
-    float normal_distortion = 0.05f;                ///< offset of those lookups by the surface normal's slope (seed 000), [0, 0.5]
+    float normal_distortion = 0.05f;                ///< offset of those lookups by the surface normal's slope ([Lee2007]), [0, 0.5]
     float water_clarity = 4.0f;                     ///< depth (m) over which refracted light fades to the water colour by 1/e, [0.05, 1000]
     bool foam = true;                               ///< whitecaps where the FFT Jacobian folds, splash rings where ripples are steep, and the persistent foam map
     bool splash_drops = true;                       ///< splash drops drawn as lit sprites (main view and reflection)

@@ -1,5 +1,5 @@
 // Composite water query: inversion of the horizontal displacement (Newton or fixed point),
-// then height, slope-form normal (SPEC §2.3) and Eulerian vertical velocity at the rest point.
+// then height, slope-form normal (docs/references.md#composite-ocean) and Eulerian vertical velocity at the rest point.
 #include "water/composite_water.h"
 
 #include "core/parallel.h"
@@ -251,7 +251,7 @@ WaterSample CompositeWater::finish(const Eval& e, float x, float z, bool ripples
         const float det = std::max(jxx * jzz - jxz * jxz, MIN_DET);
         const float yx = -g.qx + f.sx, yz = -g.qz + f.sz;
         slope = glm::vec2{(jzz * yx - jxz * yz) / det, (jxx * yz - jxz * yx) / det};
-    } else {  // SPEC §2.3: Gerstner world slope (−n.xz/n.y) + FFT slope maps
+    } else {  // docs/references.md#composite-ocean: Gerstner world slope (−n.xz/n.y) + FFT slope maps
         const glm::vec3 n = g.normalRaw();
         const float ny = std::max(n.y, MIN_DET);
         slope = glm::vec2{-n.x / ny + f.sx, -n.z / ny + f.sz};

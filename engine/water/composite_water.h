@@ -1,4 +1,4 @@
-// The composite surface (SPEC §2.3, seed 000 §2.3, §3.5) as a WaterQuery: Gerstner (analytic) +
+// The composite surface (docs/references.md#composite-ocean, [Lee2007] §2.3, §3.5) as a WaterQuery: Gerstner (analytic) +
 // every FFT cascade (bilinear on the CPU maps) + a ripple hook, inverted to world (x, z).
 #pragma once
 #include "ocean/gerstner.h"
@@ -31,7 +31,7 @@ struct CompositeSettings {
     /// with a plain fixed-point step where det J < 0.1 (near folds). FixedPoint: α ← x − D(α),
     /// linear with rate ≈ ‖∂D/∂α‖ (≤ Σ k·a for Gerstner).
     enum class Inversion { Newton, FixedPoint };
-    /// SlopeSum (SPEC §2.3, what the renderer does): slope = Gerstner world slope (−n.xz/n.y of
+    /// SlopeSum (docs/references.md#composite-ocean, what the renderer does): slope = Gerstner world slope (−n.xz/n.y of
     /// its analytic normal) + the FFT slope maps ∂h/∂X at the rest point + ripple slope.
     /// Exact: the normal of the displaced parametric surface, slope = J^-T ∇_α y (differs from
     /// SlopeSum where the FFT is choppy or rides on a steep Gerstner wave).
@@ -62,8 +62,8 @@ struct RestPoint {
 /// kink and the one-sided value of the cell the rest point is in is returned). Gerstner rates
 /// are analytic; the FFT's come from the maps of the last three update()s (3-point backward
 /// difference, second order, error ≈ (ω·Δt)²/3 relative: 0.3% for ω = 6 rad/s at 60 Hz;
-/// first order with two updates, 0 with one: see primeAt()). Inversion, measured on seed
-/// 002's 8 waves (Σ k·a = 0.68) + the default 256² cascade over 20 000 points: Newton is at
+/// first order with two updates, 0 with one: see primeAt()). Inversion, measured on
+/// [Min2023]'s 8 waves (Σ k·a = 0.68) + the default 256² cascade over 20 000 points: Newton is at
 /// float precision (~1e-5 m) after 4 evaluations everywhere, mean 3.1 to reach 1e-4 m; fixed
 /// point needs ~6 (median) to 12+ (near folds).
 /// The normal uses the FFT's analytic slope maps (smooth), not the bilinear gradients.

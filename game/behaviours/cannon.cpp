@@ -17,8 +17,8 @@ constexpr float AIM_RATE_DEG_S = 30.0f;                // arrow keys turn the ba
 constexpr glm::vec3 BALL_COLOR{0.05f, 0.05f, 0.06f};   // iron
 constexpr glm::vec3 PILLAR_COLOR{0.35f, 0.33f, 0.30f}; // stone
 
-// The paper's cannonball sphere (seed 001 §V-1): SHR 1.0, AF 0; it falls in, so it pushes the
-// water down. Its size in metres is the ball's own (seed 001's SR 5 cells are its 0.5 m ball on
+// The paper's cannonball sphere ([Kang2008] §V-1): SHR 1.0, AF 0; it falls in, so it pushes the
+// water down. Its size in metres is the ball's own ([Kang2008]'s SR 5 cells are its 0.5 m ball on
 // 0.1 m cells, cannon.toml), so the ripple cell size changes neither the stamp's extent in the
 // world nor the splash crown.
 interaction::BoundingSphere paperBallSphere(float ballRadius) {

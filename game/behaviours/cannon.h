@@ -1,4 +1,4 @@
-// Cannons and cannonballs (seed 001 §V-1): a cannon aims (yaw, elevation) and fires Bullet
+// Cannons and cannonballs ([Kang2008] §V-1): a cannon aims (yaw, elevation) and fires Bullet
 // spheres; each ball carries the paper's bounding sphere (SR 5 cells, SHR 1, AF 0), splashes,
 // sinks, and is removed below its cannon's sink depth.
 #pragma once

@@ -19,7 +19,7 @@ namespace {
 // Time until a fish's next jump: uniform in [0.5, 1.5] × the mean interval.
 float nextJumpDelay(FishSchool& s) { return s.def.jump_interval * float(0.5 + uniform01(s.rng)); }
 
-// The paper's fish sphere (seed 001 §V-2): smaller than the body (radius 0.35 × length),
+// The paper's fish sphere ([Kang2008] §V-2): smaller than the body (radius 0.35 × length),
 // SHR 1.4, AF −0.3, SD from the motion (+1 rising, −1 falling).
 interaction::BoundingSphere paperFishSphere(float length) {
     interaction::BoundingSphere s;

@@ -1,4 +1,4 @@
-// Fish schools (seed 001 §V-2): kinematic fish that swim below the surface and jump on
+// Fish schools ([Kang2008] §V-2): kinematic fish that swim below the surface and jump on
 // ballistic arcs; one bounding sphere each, smaller than the body, SD +1 rising and −1
 // falling, SHR 1.4, AF −0.3. A school is one entity with its fish in flat arrays, so a
 // swarm of 100,000 costs a few arrays and only the fish near the surface query the water.
@@ -56,7 +56,7 @@ float fishMass(float length);
 ecs::Entity spawnFishSchool(ecs::World& world, const ObjectDef& def, uint64_t seed);
 /// Script phase: every fish swims or flies its arc one step.
 void fishSystem(ecs::World& world, const ecs::Tick& tick);
-/// The fish as a stamp source (school then fish order; 1 kg each in eq. 6, as seed 001's sweep).
+/// The fish as a stamp source (school then fish order; 1 kg each in eq. 6, as [Kang2008]'s sweep).
 StampSource fishSource();
 /// Appends the fish to draw (facing their velocity) to the opaque pass's list.
 void appendFishDraws(ecs::World& world, std::vector<gfx::ObjectDraw>& draws);

@@ -34,8 +34,8 @@ float wrapAngle(float a) {
     return a;
 }
 
-// The paper's ship sphere (seed 001 §V-3): SHR 0.2, AF 0.3; it presses down. Its size is in
-// metres (seed 001's SR 7 cells on the ship scene's 0.2 m cells), so the ripple cell size
+// The paper's ship sphere ([Kang2008] §V-3): SHR 0.2, AF 0.3; it presses down. Its size is in
+// metres ([Kang2008]'s SR 7 cells on the ship scene's 0.2 m cells), so the ripple cell size
 // changes neither the wake's width in the world nor the foam it leaves.
 constexpr float PAPER_SHIP_SPHERE_RADIUS = 1.4f;  // m
 
@@ -65,7 +65,7 @@ ecs::Entity spawnShip(ecs::World& world, const ObjectDef& o) {
     world.get<Body>(e).horizontalDrag = 0.0f;  // the hull model below resists horizontal motion
 
     // Six spheres on the keel line at the still-water line (draft = hull depth · density ratio),
-    // so they always cross the surface (seed 001: "always in contact").
+    // so they always cross the surface ([Kang2008]: "always in contact").
     const float draft = o.ship.hull.y * std::min(o.ship.density / physicsDef(world).water_density, 1.0f);
     interaction::BoundingSphere sphere = boundingSphereFor(o, paperShipSphere(), rippleCellSize(world));
     interaction::SphereSet set;

@@ -1,6 +1,6 @@
 // Ships: buoyant box hulls steered by thrust and a rudder at the stern, by the player
 // (W/S throttle, A/D rudder) or along waypoints; six bounding spheres along the keel line
-// make the wake (seed 001 §V-3: SR 7, SHR 0.2, AF 0.3).
+// make the wake ([Kang2008] §V-3: SR 7, SHR 0.2, AF 0.3).
 #pragma once
 #include "ecs/schedule.h"
 #include "sim/objects.h"
@@ -10,7 +10,7 @@
 
 namespace ob::game {
 
-/// Bounding spheres along the hull (seed 001 fig. 15).
+/// Bounding spheres along the hull ([Kang2008] fig. 15).
 constexpr int SHIP_SPHERES = 6;
 
 /// A ship: its [[objects]] settings as written, and the pilot's state.

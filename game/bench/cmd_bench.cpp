@@ -1,4 +1,4 @@
-// `oceanbox bench`: the subcommands' flags, and the spheres bench (seed 001 Table 5).
+// `oceanbox bench`: the subcommands' flags, and the spheres bench ([Kang2008] Table 5).
 #include "bench/cmd_bench.h"
 #include "cli/cli_checks.h"
 #include "cli/commands.h"
@@ -88,7 +88,7 @@ void checkSpheresArgs(const SpheresBenchArgs& a) {
     checkRange("--workers", a.workers, 0, 256);
 }
 
-// The chart: our fps against seed 001's Table 5.
+// The chart: our fps against [Kang2008]'s Table 5.
 void writeSpheresChart(const SpheresBenchArgs& a, const ChartSeries& ours) {
     Chart chart;
     char title[128];
@@ -99,7 +99,7 @@ void writeSpheresChart(const SpheresBenchArgs& a, const ChartSeries& ours) {
     chart.logX = true;
     chart.logY = true;
     chart.series.push_back(ours);
-    ChartSeries paper{"seed 001 Table 5 (2.6 GHz CPU, 2008)", {}, {}, true, 1};
+    ChartSeries paper{"[Kang2008] Table 5 (2.6 GHz CPU, 2008)", {}, {}, true, 1};
     for (const PaperSwarmFps& p : SEED001_TABLE5) {
         paper.x.push_back(p.count);
         paper.y.push_back(p.fps);
@@ -219,7 +219,7 @@ void addBenchCommand(CLI::App& app, CommandAction& action, const std::string& co
     // bench spheres
     auto spheres = std::make_shared<SpheresBenchArgs>();
     spheres->output.command = commandLine;
-    CLI::App* s = bench->add_subcommand("spheres", "seed 001 Table 5: fps against the number of jumping fish (one sphere each)");
+    CLI::App* s = bench->add_subcommand("spheres", "[Kang2008] Table 5: fps against the number of jumping fish (one sphere each)");
     s->add_option("--counts", spheres->counts, "fish counts, comma-separated")->delimiter(',');
     s->add_flag("--render", spheres->render, "also draw the water with the ripple layer each frame (headless)");
     s->add_option("--size", spheres->size, "framebuffer WxH with --render (default 800x600, the paper's)");
@@ -237,7 +237,7 @@ void addBenchCommand(CLI::App& app, CommandAction& action, const std::string& co
     // bench fields
     auto fields = std::make_shared<FieldsBenchArgs>();
     fields->output.command = commandLine;
-    CLI::App* f = bench->add_subcommand("fields", "seed 001 Table 3: fps by scene and ripple field size, rendered and spheres only");
+    CLI::App* f = bench->add_subcommand("fields", "[Kang2008] Table 3: fps by scene and ripple field size, rendered and spheres only");
     f->add_option("--sizes", fields->sizes, "ripple field sizes (ripples.resolution), comma-separated")->delimiter(',');
     f->add_option("--scenes", fields->scenes, "scene names (config/scenes/NAME.toml) or paths, comma-separated")->delimiter(',');
     f->add_option("--model", fields->model, "ripple model of every run: kang2008 (default, the paper's) or ewave")
@@ -253,7 +253,7 @@ void addBenchCommand(CLI::App& app, CommandAction& action, const std::string& co
     // bench ocean
     auto ocean = std::make_shared<OceanBenchArgs>();
     ocean->output.command = commandLine;
-    CLI::App* o = bench->add_subcommand("ocean", "seed 000 Tables 1-3: fps against spectrum size (sim + render, sim, FFT, FFTW)");
+    CLI::App* o = bench->add_subcommand("ocean", "[Lee2007] Tables 1-3: fps against spectrum size (sim + render, sim, FFT, FFTW)");
     o->add_option("--sizes", ocean->sizes, "spectrum sizes N (ocean.resolution), comma-separated")->delimiter(',');
     o->add_option("--backend", ocean->backendWords, "cpu, gpu or both, comma-separated")->delimiter(',');
     o->add_option("--scene", ocean->scene, "scene drawn for sim + render (default config/scenes/default.toml)");

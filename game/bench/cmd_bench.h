@@ -1,7 +1,7 @@
-// `oceanbox bench KIND`: the papers' performance tables measured on this machine (SPEC §3, §4).
-//   spheres — seed 001 Table 5, fps against the number of jumping fish
-//   fields  — seed 001 Table 3, fps by scene and ripple field size, rendered and spheres only
-//   ocean   — seed 000 Tables 1–3, fps against spectrum size: sim + render, sim, FFT, FFTW
+// `oceanbox bench KIND`: the papers' performance tables measured on this machine (docs/references.md#paper-experiments, docs/references.md#contracts).
+//   spheres — [Kang2008] Table 5, fps against the number of jumping fish
+//   fields  — [Kang2008] Table 3, fps by scene and ripple field size, rendered and spheres only
+//   ocean   — [Lee2007] Tables 1–3, fps against spectrum size: sim + render, sim, FFT, FFTW
 //   frame   — every per-phase and per-pass time of one scene's frame
 //   sea     — frame times across a live change of the sea (the cross-fade): max frame / median
 // Each prints a Markdown table, and writes CSV (--out) and an SVG chart (--chart).
@@ -42,7 +42,7 @@ struct FieldsBenchArgs {
     BenchOutput output;
     std::vector<long> sizes{64, 128, 256, 512, 1024, 2048};
     std::vector<std::string> scenes{"cannon", "fish", "ship", "all"};
-    std::string model = "kang2008";  ///< ripples.model for every run: "kang2008" (seed 001's) or "ewave"
+    std::string model = "kang2008";  ///< ripples.model for every run: "kang2008" ([Kang2008]'s) or "ewave"
     bool noRender = false;     ///< only the spheres-only rows
     std::string size = "800x600";
     int frames = 30;

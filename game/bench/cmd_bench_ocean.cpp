@@ -1,4 +1,4 @@
-// `oceanbox bench ocean`: seed 000 Tables 1–3 on this machine. Per spectrum size N and backend:
+// `oceanbox bench ocean`: [Lee2007] Tables 1–3 on this machine. Per spectrum size N and backend:
 // a scene's whole frame (sim + render), the spectral ocean update alone (sim), its inverse FFT
 // stage alone, and FFTW alone on the same transforms with the same threads (the reference).
 #include "tools/app.h"
@@ -145,7 +145,7 @@ void checkOceanArgs(const OceanBenchArgs& a) {
     checkRange("--warmup", a.warmup, 0, 1000000);
 }
 
-// The chart: our series against seed 000's Tables 1–3.
+// The chart: our series against [Lee2007]'s Tables 1–3.
 void writeOceanChart(const OceanBenchArgs& a, const std::map<std::string, ChartSeries>& series) {
     Chart chart;
     chart.title = "Spectral ocean: fps against spectrum size";
@@ -160,12 +160,12 @@ void writeOceanChart(const OceanBenchArgs& a, const std::map<std::string, ChartS
         bool render;
         int colour;
     };
-    const Column columns[] = {{"seed 000 T1 sim + render CPU", &PaperOceanFps::simRenderCpu, true, 0},
-                              {"seed 000 T2 sim CPU", &PaperOceanFps::simCpu, false, 1},
-                              {"seed 000 T3 FFTW (P4 3 GHz)", &PaperOceanFps::fftCpuFftw, false, 3},
-                              {"seed 000 T1 sim + render GPU", &PaperOceanFps::simRenderGpu, true, 4},
-                              {"seed 000 T2 sim GPU", &PaperOceanFps::simGpu, false, 5},
-                              {"seed 000 T3 FFT GPU", &PaperOceanFps::fftGpu, false, 6}};
+    const Column columns[] = {{"[Lee2007] T1 sim + render CPU", &PaperOceanFps::simRenderCpu, true, 0},
+                              {"[Lee2007] T2 sim CPU", &PaperOceanFps::simCpu, false, 1},
+                              {"[Lee2007] T3 FFTW (P4 3 GHz)", &PaperOceanFps::fftCpuFftw, false, 3},
+                              {"[Lee2007] T1 sim + render GPU", &PaperOceanFps::simRenderGpu, true, 4},
+                              {"[Lee2007] T2 sim GPU", &PaperOceanFps::simGpu, false, 5},
+                              {"[Lee2007] T3 FFT GPU", &PaperOceanFps::fftGpu, false, 6}};
     for (const Column& c : columns) {
         if (c.render && a.noRender) continue;
         ChartSeries paper{c.label, {}, {}, true, c.colour};

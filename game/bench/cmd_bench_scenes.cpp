@@ -1,4 +1,4 @@
-// `oceanbox bench fields` (seed 001 Table 3) and `oceanbox bench frame`: scenes run headless
+// `oceanbox bench fields` ([Kang2008] Table 3) and `oceanbox bench frame`: scenes run headless
 // through the sandbox, timed by its phase table.
 #include "tools/app.h"
 #include "bench/bench_report.h"
@@ -59,7 +59,7 @@ void checkFieldsArgs(const FieldsBenchArgs& a) {
     checkRange("--warmup", a.warmup, 0, 1000000);
 }
 
-// The chart: our series against seed 001's Table 3.
+// The chart: our series against [Kang2008]'s Table 3.
 void writeFieldsChart(const FieldsBenchArgs& a, const std::map<std::string, ChartSeries>& series) {
     Chart chart;
     chart.title = "Scenes: fps against ripple field size";
@@ -79,8 +79,8 @@ void writeFieldsChart(const FieldsBenchArgs& a, const std::map<std::string, Char
             }
     if (paperScenes.empty()) paperScenes.emplace_back("all", 2 * int(a.scenes.size()));
     for (const auto& [s, colour] : paperScenes) {
-        ChartSeries full{"seed 001 Table 3 " + s, {}, {}, true, colour};
-        ChartSeries only{"seed 001 Table 3 " + s + ", spheres only", {}, {}, true, colour + 1};
+        ChartSeries full{"[Kang2008] Table 3 " + s, {}, {}, true, colour};
+        ChartSeries only{"[Kang2008] Table 3 " + s + ", spheres only", {}, {}, true, colour + 1};
         for (const PaperFieldFps& p : SEED001_TABLE3) {
             if (s != p.scene) continue;
             full.x.push_back(p.size);

@@ -1,11 +1,11 @@
-// The papers' measured numbers the benches chart beside ours (SPEC §3). Kept here because the
+// The papers' measured numbers the benches chart beside ours (docs/references.md#paper-experiments). Kept here because the
 // papers are not part of the repository.
 #pragma once
 #include <cmath>
 
 namespace ob::game {
 
-/// Seed 001 (Kang et al. 2008) Table 5: fps against the number of jumping fish, one bounding
+/// [Kang2008] (Kang et al. 2008) Table 5: fps against the number of jumping fish, one bounding
 /// sphere each, SR 20, fish not drawn; 2.6 GHz CPU, DirectX 9, 800×600.
 struct PaperSwarmFps {
     int count;
@@ -16,7 +16,7 @@ inline constexpr PaperSwarmFps SEED001_TABLE5[] = {
     {1000, 37.1}, {3000, 32.5}, {10000, 23.7}, {30000, 13.3}, {100000, 5.4},
 };
 
-/// Seed 001 Table 3: fps by height-field size and scenario, all drawn ("full") and with the
+/// [Kang2008] Table 3: fps by height-field size and scenario, all drawn ("full") and with the
 /// objects not rendered ("spheres only"); same machine.
 struct PaperFieldFps {
     int size;
@@ -28,7 +28,7 @@ inline constexpr PaperFieldFps SEED001_TABLE3[] = {
     {128, "cannon", 41, 43}, {128, "fish", 41, 43}, {128, "ship", 32, 42}, {128, "all", 31, 42},
 };
 
-/// Seed 000 (Lee & Lee 2007) Tables 1–3: fps against spectrum resolution on a GeForce 6800
+/// [Lee2007] (Lee & Lee 2007) Tables 1–3: fps against spectrum resolution on a GeForce 6800
 /// Ultra against a Pentium 4 3 GHz with FFTW. Table 1: simulation + rendering (1280×1024,
 /// Gerstner 128² × 16 trochoids, reflection/refraction maps 256²); Table 2: simulation only;
 /// Table 3: the Fourier transform only (complex to complex). NAN: not measured.

@@ -1,5 +1,5 @@
 // The command line: one subcommand per file in this folder (commands.h), parsed here,
-// errors mapped to exit codes (SPEC §4).
+// errors mapped to exit codes (docs/references.md#contracts).
 #include "cli/cli.h"
 
 #include "cli/commands.h"

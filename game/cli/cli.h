@@ -1,4 +1,4 @@
-// The command line: play, run, bench, dump, ripple, soak, make-models (SPEC §4).
+// The command line: play, run, bench, dump, ripple, soak, make-models (docs/references.md#contracts).
 #pragma once
 
 namespace ob::game {

@@ -1,5 +1,5 @@
 // One function per subcommand: each adds its flags to the app and, when it is the one
-// parsed, sets `action` to the work it runs (SPEC §4). runCli (cli.cpp) parses and maps errors.
+// parsed, sets `action` to the work it runs (docs/references.md#contracts). runCli (cli.cpp) parses and maps errors.
 #pragma once
 #include <functional>
 #include <string>

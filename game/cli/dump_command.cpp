@@ -1,4 +1,4 @@
-// oceanbox dump LAYER SCENE: a layer of the water as a NumPy .npy field (SPEC §4).
+// oceanbox dump LAYER SCENE: a layer of the water as a NumPy .npy field (docs/references.md#contracts).
 #include "cli/cli_checks.h"
 #include "cli/commands.h"
 #include "cli/scene_flags.h"

@@ -1,4 +1,4 @@
-// oceanbox ripple: a bare ripple solver on .npy fields, no scene (SPEC §4).
+// oceanbox ripple: a bare ripple solver on .npy fields, no scene (docs/references.md#contracts).
 #include "cli/cli_checks.h"
 #include "cli/commands.h"
 #include "core/file_write.h"
@@ -11,7 +11,7 @@ namespace ob::game {
 
 void addRippleCommand(CLI::App& app, CommandAction& action) {
     auto ripple = std::make_shared<RippleArgs>();
-    CLI::App* cmd = app.add_subcommand("ripple", "run a bare ripple solver on a .npy field: kang2008 (seed 001 eq. 1-2, "
+    CLI::App* cmd = app.add_subcommand("ripple", "run a bare ripple solver on a .npy field: kang2008 ([Kang2008] eq. 1-2, "
                                                  "fixed boundary) or ewave (dispersive, exact per Fourier mode)");
     cmd->add_option("--model", ripple->model, "kang2008 (default) or ewave");
     cmd->add_option("--in", ripple->in, "kang2008 Vh(t), ewave h: float32 .npy [N, M]")->required()->check(NON_EMPTY_PATH);

@@ -1,4 +1,4 @@
-// The seed 001 Table 5 fish swarm: ballistic jump arcs, Table 2 per fish, batched stamps.
+// The [Kang2008] Table 5 fish swarm: ballistic jump arcs, Table 2 per fish, batched stamps.
 #include "sim/fish_swarm.h"
 
 #include "core/parallel.h"

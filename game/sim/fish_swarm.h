@@ -1,5 +1,5 @@
-// The jumping-fish swarm of seed 001 Table 5: one bounding sphere per fish on a ballistic jump
-// arc through the water over a ripple field, stamped by Table 2 and eq. 3–7 (SPEC §2.5, §3).
+// The jumping-fish swarm of [Kang2008] Table 5: one bounding sphere per fish on a ballistic jump
+// arc through the water over a ripple field, stamped by Table 2 and eq. 3–7 (docs/references.md#ripple-layer, docs/references.md#paper-experiments).
 #pragma once
 #include "environment/environment_def.h"
 #include "interaction/kang2008/ripple_field.h"
@@ -18,7 +18,7 @@ enum class StampMode : uint8_t {
     Sequential,  ///< stepSphere per fish, in order: the reference the batch must match bit for bit
 };
 
-/// The swarm. Defaults are the paper's fish (SPEC §2.5: SHR 1.4, AF −0.3, DF 0.93) on its
+/// The swarm. Defaults are the paper's fish (docs/references.md#ripple-layer: SHR 1.4, AF −0.3, DF 0.93) on its
 /// 128² field with SR 20.
 struct FishSwarmDef {
     int count = 1000;                  ///< fish (one sphere each), >= 0
@@ -44,7 +44,7 @@ class FishSwarm {
 public:
     explicit FishSwarm(const FishSwarmDef& def);
 
-    /// One step: Table 2 and the stamps in fish order (seed 001: stamp, then move), the fish
+    /// One step: Table 2 and the stamps in fish order ([Kang2008]: stamp, then move), the fish
     /// move, then the convolution step (eq. 1–2). Allocates nothing once the batch has grown.
     /// Batched, the moves run in the Table 2 pass (their time counts as stamping).
     void step();

@@ -24,7 +24,7 @@ constexpr std::array<const char*, 2> names(SchoolShape) { return {"circle", "reg
 
 /// Where an object's bounding-sphere values come from.
 enum class SphereValues : uint8_t {
-    Paper,   ///< seed 001 §V's values for the type
+    Paper,   ///< [Kang2008] §V's values for the type
     Custom,  ///< the sphere_cells, sphere_height_ratio and sphere_af keys
 };
 constexpr std::array<const char*, 2> names(SphereValues) { return {"paper", "custom"}; }
@@ -76,7 +76,7 @@ template <class V> void describe(V& v, ShipDef& d) {
     v.field("waypoints", d.waypoints, any(), "scripted: [[x, z], ...] visited in order, looping, m");
 }
 
-/// [[objects]] type "cannon": fires iron balls (seed 001 §V-1).
+/// [[objects]] type "cannon": fires iron balls ([Kang2008] §V-1).
 struct CannonDef {
     bool player = false;          ///< aimed with the arrows, fires with Space
     float yaw_deg = 0.0f;         ///< aim azimuth, deg about +y, 0 faces +z, 90 faces +x, [-360, 360]
@@ -99,7 +99,7 @@ template <class V> void describe(V& v, CannonDef& d) {
     v.field("sink_depth", d.sink_depth, range(0.1, 10000), "balls deeper than this are removed, m");
 }
 
-/// [[objects]] type "fish_school": fish swimming and jumping (seed 001 §V-2).
+/// [[objects]] type "fish_school": fish swimming and jumping ([Kang2008] §V-2).
 struct FishSchoolDef {
     float radius = 0.5f;                      ///< "circle": radius of its circle, m, [0.01, 10000]
     glm::vec3 size{1.0f, 1.0f, 1.0f};         ///< "region": [x, _, z] extent, m, [0.01, 10000]
@@ -134,8 +134,8 @@ struct ObjectDef {
     glm::vec3 position{0.0f, 2.0f, 0.0f}; ///< start centre, world m (fish_school: centre of its water, y ignored)
     glm::vec3 color{0.75f, 0.32f, 0.18f}; ///< base colour, linear RGB
     std::string model;                    ///< glTF 2.0 file drawn instead of the built-in mesh ("" = built-in)
-    // --- bounding spheres (seed 001 §V)
-    SphereValues spheres = SphereValues::Paper; ///< "paper": the type's values from seed 001 §V; "custom": the three keys below
+    // --- bounding spheres ([Kang2008] §V)
+    SphereValues spheres = SphereValues::Paper; ///< "paper": the type's values from [Kang2008] §V; "custom": the three keys below
     float sphere_cells = 5.0f;            ///< custom: SR, sphere radius in ripple cells, [0.1, 512]
     float sphere_height_ratio = 1.0f;     ///< custom: SHR, [0.01, 100]
     float sphere_af = 0.0f;               ///< custom: AF (eq. 7), [-0.99, 10]
@@ -157,7 +157,7 @@ template <class V> void describe(V& v, ObjectDef& d) {
     v.field("position", d.position, any(), "start centre, world m (fish_school: centre, y ignored)");
     v.field("color", d.color, range(0, 1), "base colour (linear RGB)");
     v.field("model", d.model, "glTF 2.0 file (.gltf/.glb) drawn instead of the built-in mesh");
-    v.field("spheres", d.spheres, "bounding spheres: seed 001's values for the type, or custom");
+    v.field("spheres", d.spheres, "bounding spheres: [Kang2008]'s values for the type, or custom");
     v.field("sphere_cells", d.sphere_cells, range(0.1, 512), "custom spheres: SR, radius in ripple cells");
     v.field("sphere_height_ratio", d.sphere_height_ratio, range(0.01, 100), "custom spheres: SHR");
     v.field("sphere_af", d.sphere_af, range(-0.99, 10), "custom spheres: AF (eq. 7)");

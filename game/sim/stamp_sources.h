@@ -23,7 +23,7 @@ struct PlacedSphere {
     interaction::SphereContact* contact = nullptr;  ///< its Table 2 state
     glm::vec3 centre{0.0f};     ///< world, m
     glm::vec3 velocity{0.0f};   ///< m/s
-    float stampMass = 1.0f;     ///< kg that eq. 6 weighs its stamp by (a body's mass; 1 for a fish, as seed 001's sweep)
+    float stampMass = 1.0f;     ///< kg that eq. 6 weighs its stamp by (a body's mass; 1 for a fish, as [Kang2008]'s sweep)
     float crossingMass = 0.0f;  ///< kg it carries through the surface (splash crowns): a body's share, a fish's own
     bool underwater = false;    ///< known to be under the surface without a query (a swimming fish)
     bool hull = false;          ///< a hull's sphere: its stern and bow make foam while wetted

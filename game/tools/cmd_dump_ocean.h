@@ -1,4 +1,4 @@
-// `oceanbox dump ocean`: the first cascade of the CPU FFT ocean at one time, as .npy (SPEC §4).
+// `oceanbox dump ocean`: the first cascade of the CPU FFT ocean at one time, as .npy (docs/references.md#contracts).
 #pragma once
 #include "ocean/ocean_def.h"
 

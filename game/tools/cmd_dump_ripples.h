@@ -1,4 +1,4 @@
-// `oceanbox dump ripples`: the scene's ripple patch after K simulation steps, as .npy (SPEC §4, §2.5).
+// `oceanbox dump ripples`: the scene's ripple patch after K simulation steps, as .npy (docs/references.md#contracts, docs/references.md#ripple-layer).
 #pragma once
 #include "world/scene.h"
 

@@ -1,5 +1,5 @@
 // `oceanbox dump gerstner` and `dump surface`: the Gerstner layer on a rest grid, and the
-// composite surface at given world points, as float32 .npy (SPEC §4).
+// composite surface at given world points, as float32 .npy (docs/references.md#contracts).
 #pragma once
 #include "ocean/gerstner.h"
 #include "ocean/ocean_def.h"

@@ -117,7 +117,7 @@ int ewaveCommand(const RippleArgs& args) {
 
 int rippleCommand(const RippleArgs& args) {
     if (args.model != "kang2008" && args.model != "ewave")
-        throw InputError("ripple: --model " + args.model + ": need kang2008 (seed 001 eq. 1-2) or ewave");
+        throw InputError("ripple: --model " + args.model + ": need kang2008 ([Kang2008] eq. 1-2) or ewave");
     if (args.in.empty()) throw InputError("ripple: --in is required (a float32 .npy field [N, M])");
     if (args.out.empty()) throw InputError("ripple: --out is required (the .npy file to write)");
     if (args.steps < 0) throw InputError("ripple: --steps " + std::to_string(args.steps) + " is negative (need >= 0)");

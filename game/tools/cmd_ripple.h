@@ -1,5 +1,5 @@
-// `oceanbox ripple`: a bare ripple solver on .npy fields (SPEC §4): seed 001 eq. 1–2 (kang2008)
-// or the dispersive ewave field (SPEC §2.5b).
+// `oceanbox ripple`: a bare ripple solver on .npy fields (docs/references.md#contracts): [Kang2008] eq. 1–2 (kang2008)
+// or the dispersive ewave field (docs/references.md#dispersive-ripples).
 #pragma once
 #include <string>
 

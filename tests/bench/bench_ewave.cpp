@@ -1,4 +1,4 @@
-// Dispersive ripple field benchmarks (SPEC §2.5b): one ewave step per field size and worker
+// Dispersive ripple field benchmarks (docs/references.md#dispersive-ripples): one ewave step per field size and worker
 // count, the same four float FFTW transforms alone (the floor of a step; and the double ones
 // the step used before), and
 // 100,000 bounding spheres of SR 20 stamping into ewave (planStamp + the biweight source) to

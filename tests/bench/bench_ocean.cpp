@@ -1,4 +1,4 @@
-// Spectral ocean benchmarks (SPEC §2.1, seed 000 §3.3): OceanFftCpu::update against FFTW alone
+// Spectral ocean benchmarks (docs/references.md#spectral-ocean, [Lee2007] §3.3): OceanFftCpu::update against FFTW alone
 // on the same four packed N×N inverse transforms (eq. 9), and OceanFftGpu::update on OSMesa.
 #include "core/log.h"
 #include "gfx/gl.h"

@@ -1,4 +1,4 @@
-// Ripple layer benchmarks (SPEC §2.5, seed 001): the eq. 1–2 step per field size, boundary and
+// Ripple layer benchmarks (docs/references.md#ripple-layer, [Kang2008]): the eq. 1–2 step per field size, boundary and
 // worker count, bounding-sphere stamping (Table 2, eq. 3–7) of many spheres in contact, one by
 // one and batched, and the Table 5 fish swarm.
 #include "core/log.h"
@@ -22,7 +22,7 @@ namespace {
 
 constexpr float DAMPING = 0.95f;   // RippleDef default DF
 constexpr float CELL_SIZE = 0.25f; // RippleDef default, m per cell
-constexpr int STAMP_FIELD = 128;   // seed 001's larger field
+constexpr int STAMP_FIELD = 128;   // [Kang2008]'s larger field
 // Waves decay by about sqrt(DF) per step (faster in the sponge); the field is refilled (not
 // timed) this often so it never reaches subnormal floats, which would time the FPU, not the kernel.
 constexpr int REFILL_STEPS = 128;

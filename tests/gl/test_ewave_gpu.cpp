@@ -1,6 +1,6 @@
 // GPU ewave field (EWaveGpu: shaders/ocean_fft.comp + shaders/ewave_step.comp) against its CPU
 // twin EWaveField (double, FFTW) on random fields with every boundary, damping and sources,
-// against theory (one Fourier mode: cos(K·X)·cos ωt, ω² = g·k + (σ/ρ)·k³; SPEC §2.5b), and end
+// against theory (one Fourier mode: cos(K·X)·cos ωt, ω² = g·k + (σ/ρ)·k³; docs/references.md#dispersive-ripples), and end
 // to end through ripples.backend = "gpu". Timings under a hidden tag.
 #include "gfx/gl.h"
 #include "interaction/ewave/ewave_field.h"

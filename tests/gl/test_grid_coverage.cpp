@@ -1,4 +1,4 @@
-// Projected grid coverage (SPEC 2.4, seed 000 §3.4): the water pass covers every pixel whose
+// Projected grid coverage (docs/references.md#projected-grid, [Lee2007] §3.4): the water pass covers every pixel whose
 // view ray points below the horizon, for 2,000 random cameras (0.5–500 m above the local crest,
 // pitch −89° to +10°, roll ±35°, any heading, fov 30–100°) over the roughest seas validation
 // accepts (wind 60 m/s, choppiness 10, Gerstner steepness at its limits, a ripple patch under

@@ -1,4 +1,4 @@
-// Projected grid (seed 000 §3.4, after Johanson's projector): for flat water the grid is the
+// Projected grid ([Lee2007] §3.4, after Johanson's projector): for flat water the grid is the
 // camera's own screen-space grid; for displaced water its rest domain holds every rest point
 // whose displaced point can be seen (checked by casting pixel rays, not by the frustum
 // algebra the grid uses), for any roll, pitch and field of view; no cell folds or explodes.
@@ -58,7 +58,7 @@ struct Domain {
 TEST_CASE("over flat water the grid is the camera's screen grid: rows are screen rows, evenly spaced", "[grid]") {
     // With no displacement and the eye well above the plane the projector is the camera: the
     // screen-to-plane map is a homography, and in the camera's own (s, t) both screen axes
-    // are affine, so grid lines are screen-aligned and evenly spaced (SPEC 2.4).
+    // are affine, so grid lines are screen-aligned and evenly spaced (docs/references.md#projected-grid).
     glm::vec3 eye(3, 25, -5);
     glm::mat4 vp = camera(eye, 0.4f, glm::radians(-20.0f));
     GridCorners g = projectedGridCorners(vp, eye, {});

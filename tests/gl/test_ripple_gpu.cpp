@@ -1,6 +1,6 @@
 // GPU ripple field (RippleFieldGpu, shaders/ripple_*.comp) against its CPU twin: eq. 1–2 steps
 // with both boundaries, eq. 5 + 7 stamps with and without overlap, scrolling, Table 2 planning
-// on the CPU, readback (SPEC §2.5, seed 001; timings: tests/bench/bench_ripple.cpp).
+// on the CPU, readback (docs/references.md#ripple-layer, [Kang2008]; timings: tests/bench/bench_ripple.cpp).
 #include "gfx/gl.h"
 #include "interaction/kang2008/ripple_field.h"
 #include "interaction/kang2008/gpu/ripple_gpu.h"

@@ -1,4 +1,4 @@
-// The water renderer's passes (SPEC §2.6): Fresnel against the textbook equations, the
+// The water renderer's passes (docs/references.md#water-rendering): Fresnel against the textbook equations, the
 // reflection/refraction clip planes at the mirrored positions, and structural checks of a
 // rendered frame (sky vs sea, the reflection switch, a red ship's reflection).
 #include "gfx/gl.h"
@@ -238,8 +238,8 @@ TEST_CASE("an object wholly under the water is seen through it from above, by th
 }
 
 TEST_CASE("the refraction target carries 1 / the eye depth of what lies below, 0 where nothing does", "[gl][render]") {
-    // The water pass reads the depth below the surface from the refraction colour's alpha (seed
-    // 004 eq. 7's fade). A sphere of radius 1.5 m centred 3 m under the surface, on the camera's
+    // The water pass reads the depth below the surface from the refraction colour's alpha
+    // ([KTSDE2017] eq. 7's fade). A sphere of radius 1.5 m centred 3 m under the surface, on the camera's
     // axis: at the frame's centre the eye depth of its front is |centre − eye| − r (its back,
     // |centre − eye| + r, where a mesh wound inside out is culled at the front).
     gfx::requestDebugOutput(true);

@@ -1,4 +1,4 @@
-// `oceanbox bench` end to end on tiny sweeps (SPEC §3, §4): each bench writes a CSV of the
+// `oceanbox bench` end to end on tiny sweeps (docs/references.md#paper-experiments, docs/references.md#contracts): each bench writes a CSV of the
 // papers' table form (its header, one row per point, machine and settings in # lines), prints
 // the Markdown table, and draws an SVG chart with one line per series; bad flags exit 2.
 // Timings are never checked: benchmarks are not tests.
@@ -119,7 +119,7 @@ TEST_CASE("bench fields: scene x size x (full, spheres only) rows in Table 3's f
     checkCsv(csv, "scene,size,render,fps,ms_frame", 2);
 }
 
-TEST_CASE("bench ocean: size x backend rows with the seed 000 columns and FFTW alone", "[bench]") {
+TEST_CASE("bench ocean: size x backend rows with the [Lee2007] columns and FFTW alone", "[bench]") {
     const std::string csv = tempPath("ocean.csv"), svg = tempPath("ocean.svg");
     auto r = runOceanbox("bench ocean --sizes 16,32 --backend cpu,gpu --frames 2 --warmup 1 --size 64x48 --out " + csv +
                          " --chart " + svg);

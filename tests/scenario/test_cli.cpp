@@ -1,4 +1,4 @@
-// The oceanbox executable end to end: exit codes and messages of SPEC §4, and a headless
+// The oceanbox executable end to end: exit codes and messages of docs/references.md#contracts, and a headless
 // run that writes a screenshot and stats.
 #include "support/test_support.h"
 

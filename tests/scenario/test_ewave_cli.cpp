@@ -1,4 +1,4 @@
-// `oceanbox ripple --model ewave` and the ewave scenes end to end (SPEC §2.5b, §4): one Fourier
+// `oceanbox ripple --model ewave` and the ewave scenes end to end (docs/references.md#dispersive-ripples, docs/references.md#contracts): one Fourier
 // mode through the tool follows cos(K·X)·cos(ωt) with a standing velocity field too; bad
 // flags exit 2; `dump ripples` writes the ewave height; the new scenes run and hash the same
 // twice.

@@ -1,6 +1,6 @@
 // ripples.backend = "gpu" under model = "ewave", end to end: the drop scene runs on the GPU
 // twin without a GL error, and its ripple heights (`dump ripples`) stay those of the CPU run
-// within the float field's rounding (SPEC §2.5b; tests_gl "[ewave_gpu]" derives the bound).
+// within the float field's rounding (docs/references.md#dispersive-ripples; tests_gl "[ewave_gpu]" derives the bound).
 #include "core/npy.h"
 #include "support/test_support.h"
 

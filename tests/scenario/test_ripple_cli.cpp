@@ -1,4 +1,4 @@
-// `oceanbox ripple` end to end (SPEC §4): eq. 1–2 with the fixed boundary on .npy files,
+// `oceanbox ripple` end to end (docs/references.md#contracts): eq. 1–2 with the fixed boundary on .npy files,
 // checked against a naive double-precision reference; bad input exits 2 with a clear message.
 #include "core/npy.h"
 #include "support/ripple_reference.h"

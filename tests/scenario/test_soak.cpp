@@ -83,7 +83,7 @@ TEST_CASE("oceanbox soak runs a scene headless, checks every step and reports ra
 }
 
 TEST_CASE("the soak's ripple bound counts balls and fish spawned later and an object's overlapping spheres", "[soak]") {
-    // Seed 001's spheres: a ball SR 5 cells, SHR 1; a ship six of SR 7, SHR 0.2, which chain
+    // [Kang2008]'s spheres: a ball SR 5 cells, SHR 1; a ship six of SR 7, SHR 0.2, which chain
     // through eq. 5's base where they overlap; a fish radius 0.35 × length, SHR 1.4. The
     // bound is 4 stamps of the largest source, before any ball is fired or fish jumps.
     const std::string dir = std::string(OCEANBOX_SOURCE_DIR) + "/config/scenes/";

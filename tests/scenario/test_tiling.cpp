@@ -1,4 +1,4 @@
-// The composite ocean hides the FFT tile's repetition (seed 000 §2.3): with the spectrum
+// The composite ocean hides the FFT tile's repetition ([Lee2007] §2.3): with the spectrum
 // alone, the surface one tile (L) away is the same surface; with Gerstner swell and a
 // second, non-commensurate cascade it is not.
 #include "core/npy.h"

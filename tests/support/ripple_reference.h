@@ -1,4 +1,4 @@
-// Test references for the ripple field: seed 001 eq. 1–2 written plainly in double, its
+// Test references for the ripple field: [Kang2008] eq. 1–2 written plainly in double, its
 // conserved energy, and random fields (header-only; shared by the unit, gl and scenario suites).
 #pragma once
 #include "interaction/kang2008/ripple_field.h"

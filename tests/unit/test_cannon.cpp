@@ -1,4 +1,4 @@
-// Cannon and cannonballs (seed 001 §V-1): a ball fired into calm water rings the ripple
+// Cannon and cannonballs ([Kang2008] §V-1): a ball fired into calm water rings the ripple
 // field; the ring is a circle around the impact, and its front runs at the speed eq. 1–2
 // give long waves: Vh(t+1) − 2Vh(t) + Vh(t−1) ≈ ¾∇²Vh, so c = √3/2 cells per step.
 #include "behaviours/cannon.h"
@@ -167,6 +167,6 @@ TEST_CASE("paper bounding spheres are sized in metres: the ripple cell size chan
     };
     const auto fine = spheres("0.1"), coarse = spheres("0.3");
     CHECK(fine.first == 0.3f);   // the ball itself
-    CHECK(fine.second == 1.4f);  // seed 001's SR 7 on the ship scene's 0.2 m cells
+    CHECK(fine.second == 1.4f);  // [Kang2008]'s SR 7 on the ship scene's 0.2 m cells
     CHECK(coarse == fine);
 }

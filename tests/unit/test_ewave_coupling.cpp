@@ -1,4 +1,4 @@
-// Two-way coupling through the ewave ripple layer (SPEC §2.5b): a ship's Kelvin wake rocks a
+// Two-way coupling through the ewave ripple layer (docs/references.md#dispersive-ripples): a ship's Kelvin wake rocks a
 // floating box beside its track; a floating body's own ripples damp its heave instead of
 // driving it into a limit cycle. Figures are given (INFO) to the checks, shown when one fails.
 #include "ecs/components.h"

@@ -1,4 +1,4 @@
-// The dispersive ripple field (SPEC §2.5b) against theory: one Fourier mode follows
+// The dispersive ripple field (docs/references.md#dispersive-ripples) against theory: one Fourier mode follows
 // cos(K·X)·cos(ωt) with deep-water capillary-gravity dispersion; the discrete energy is
 // conserved without damping and decays at the documented rate with it; a drop's ring train
 // has the Cauchy–Poisson wavenumber g·t²/(4r²). The reference ω and the energy are computed

@@ -1,4 +1,4 @@
-// Kelvin wake of the dispersive ripple model (SPEC §2.5b): a bounding sphere moving at constant
+// Kelvin wake of the dispersive ripple model (docs/references.md#dispersive-ripples): a bounding sphere moving at constant
 // speed U over still deep water, stamped by Table 2 (planStamp) as an ewave pressure source,
 // leaves a wake whose outer envelope makes arcsin(1/3) = 19.47° with its track, for any U.
 #include "interaction/ewave/ewave_field.h"

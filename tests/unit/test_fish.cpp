@@ -1,4 +1,4 @@
-// Jumping fish (seed 001 §V-2): a fish stamps the ripple field only while its sphere crosses
+// Jumping fish ([Kang2008] §V-2): a fish stamps the ripple field only while its sphere crosses
 // the surface (Table 2), pushing the water up on the way out (SD +1) and down on the way
 // back in (SD −1); between jumps it swims at depth and leaves the water alone.
 #include "behaviours/fish.h"

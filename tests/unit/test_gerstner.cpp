@@ -1,4 +1,4 @@
-// Gerstner waves (SPEC §2.2; seed 000 eq. 8, seed 002 §2): circular orbits, the trochoid's
+// Gerstner waves (docs/references.md#gerstner-waves; [Lee2007] eq. 8, [Min2023] §2): circular orbits, the trochoid's
 // sharp crest, dispersion, analytic normals against finite differences of a double-precision
 // reference written from the SPEC, validation of k·a, spectrum-derived waves, the dump.
 #include "tools/cmd_dump_surface.h"
@@ -23,7 +23,7 @@ namespace {
 constexpr double PI = std::numbers::pi;
 constexpr double G = double(9.81f);  // the float the code receives, so ω·t agrees at t = 1e5 s
 
-// Seed 002's 13 example waves (kx, kz, a, φ); the paper uses the first 8 (SPEC §2.2).
+// [Min2023]'s 13 example waves (kx, kz, a, φ); the paper uses the first 8 (docs/references.md#gerstner-waves).
 const std::vector<GerstnerWave> SEED002 = {
     {0.3f, -0.46f, 0.2f, 0.0f},   {-0.33f, 0.40f, 0.12f, 0.0f}, {0.0f, 0.56f, 0.2f, 0.2f},
     {-0.33f, 0.0f, 0.12f, 0.3f},  {0.3f, -0.26f, 0.2f, 0.7f},   {-0.33f, 0.20f, 0.12f, 0.9f},
@@ -42,7 +42,7 @@ Vec3d unit(Vec3d a) {
     return {a.x / l, a.y / l, a.z / l};
 }
 
-// SPEC §2.2 written plainly, in double: the position of rest point (α, β) at time t.
+// docs/references.md#gerstner-waves written plainly, in double: the position of rest point (α, β) at time t.
 Vec3d reference(const std::vector<GerstnerWave>& waves, double alpha, double beta, double t, double g = G) {
     Vec3d r{alpha, 0.0, beta};
     for (const GerstnerWave& w : waves) {
@@ -63,7 +63,7 @@ Vec3d finiteDifferenceNormal(const std::vector<GerstnerWave>& waves, double alph
     return unit(cross(db, da));
 }
 
-// Seed 002's shader normal with its slip: sin θ where ∂x/∂α, ∂x/∂β, ∂z/∂β need cos θ.
+// [Min2023]'s shader normal with its slip: sin θ where ∂x/∂α, ∂x/∂β, ∂z/∂β need cos θ.
 Vec3d seed002SlipNormal(const std::vector<GerstnerWave>& waves, double alpha, double beta, double t) {
     double sxx = 0, sxz = 0, szz = 0, qx = 0, qz = 0;
     for (const GerstnerWave& w : waves) {
@@ -199,13 +199,13 @@ TEST_CASE("Gerstner: the trochoid's crest is sharper than its trough (curvature 
     CHECK(above / wavelength < 0.5);
 }
 
-TEST_CASE("Gerstner: analytic normals equal the cross product of central differences of the positions (seed 002 waves)", "[gerstner]") {
+TEST_CASE("Gerstner: analytic normals equal the cross product of central differences of the positions ([Min2023] waves)", "[gerstner]") {
     const std::vector<GerstnerWave> mixed = {{0.8f, 0.1f, 0.3f, 0.2f}, {-0.05f, 0.3f, 1.5f, 1.0f}, {1.9f, -1.4f, 0.05f, -2.0f}};
     struct Case {
         const char* name;
         const std::vector<GerstnerWave>* waves;
     };
-    for (const Case& c : {Case{"seed 002, first 8", &SEED002_FIRST8}, Case{"seed 002, all 13", &SEED002}, Case{"mixed", &mixed}}) {
+    for (const Case& c : {Case{"[Min2023], first 8", &SEED002_FIRST8}, Case{"[Min2023], all 13", &SEED002}, Case{"mixed", &mixed}}) {
         GerstnerField field(*c.waves, float(G));
         double worst = 0.0, worstSlip = 0.0, worstPosition = 0.0;
         for (const double t : {0.0, 1.3, 47.9}) {
@@ -225,11 +225,11 @@ TEST_CASE("Gerstner: analytic normals equal the cross product of central differe
                     worstSlip = std::max(worstSlip, angleBetween(finiteDifferenceNormal(*c.waves, alpha, beta, t), slip));
                 }
         }
-        INFO(c.name << ": worst normal angle " << worst << " rad, seed 002's sin form " << worstSlip
+        INFO(c.name << ": worst normal angle " << worst << " rad, [Min2023]'s sin form " << worstSlip
                     << " rad, worst position error " << worstPosition << " m");
         CHECK(worst < 2e-5);
         CHECK(worstPosition < 2e-5);
-        CHECK(worstSlip > 0.05);  // the test tells the derivative from seed 002's slip
+        CHECK(worstSlip > 0.05);  // the test tells the derivative from [Min2023]'s slip
     }
 }
 
@@ -259,7 +259,7 @@ TEST_CASE("Gerstner: the batch (vectorised over points) equals the single-point 
     }
 }
 
-TEST_CASE("Gerstner: a wave with k·a ≥ 1 is rejected with its key path (seed 000 fig. 2: the surface self-intersects)", "[gerstner]") {
+TEST_CASE("Gerstner: a wave with k·a ≥ 1 is rejected with its key path ([Lee2007] fig. 2: the surface self-intersects)", "[gerstner]") {
     GerstnerDef def;
     def.waves = {{0.1f, 0.0f, 1.0f, 0.0f}, {0.0f, 0.2f, 1.0f, 0.0f}, {0.3f, 0.4f, 0.2f, 0.0f}, {1.2f, 0.0f, 1.0f, 0.0f}};
     std::vector<std::string> errors = validate(def);
@@ -415,7 +415,7 @@ TEST_CASE("Gerstner: dump gerstner writes [N, N, 6] = (x, y, z, nx, ny, nz) of r
     }
 }
 
-TEST_CASE("Gerstner: the [gerstner] section reads seed 002's wave list and the generation keys through describe()", "[gerstner]") {
+TEST_CASE("Gerstner: the [gerstner] section reads [Min2023]'s wave list and the generation keys through describe()", "[gerstner]") {
     GerstnerScene scene;
     CHECK(loadGerstner("", scene).empty());  // every key optional: no waves, nothing generated
     CHECK(scene.gerstner.waves.empty());

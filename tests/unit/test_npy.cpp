@@ -1,4 +1,4 @@
-// NumPy .npy I/O (SPEC §4 field files): byte layout as numpy writes it, round trips, bad files.
+// NumPy .npy I/O (docs/references.md#contracts field files): byte layout as numpy writes it, round trips, bad files.
 #include "core/error.h"
 #include "core/npy.h"
 #include "support/test_support.h"

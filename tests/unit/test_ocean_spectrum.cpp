@@ -1,5 +1,5 @@
 // Spectral ocean, spectrum side: noise (eq. 4), Phillips (eq. 5), JONSWAP, h̃(K,t) (eq. 2–3),
-// cascades. Every expectation comes from the formulas of SPEC §2.1, written out here.
+// cascades. Every expectation comes from the formulas of docs/references.md#spectral-ocean, written out here.
 #include "ocean/spectrum.h"
 
 #include <catch2/catch.hpp>

@@ -1,4 +1,4 @@
-// Ripple field, seed 001 eq. 1–2: the kernel by hand, a naive double reference, boundaries,
+// Ripple field, [Kang2008] eq. 1–2: the kernel by hand, a naive double reference, boundaries,
 // scrolling, the worker pool, and the `ripple` command on files.
 #include "tools/cmd_ripple.h"
 #include "core/error.h"

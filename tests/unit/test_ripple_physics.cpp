@@ -1,4 +1,4 @@
-// Ripple layer physics, seed 001 eq. 1–7 and Table 2 (SPEC §2.5), beyond the kernel-by-hand
+// Ripple layer physics, [Kang2008] eq. 1–7 and Table 2 (docs/references.md#ripple-layer), beyond the kernel-by-hand
 // tests of test_ripple_field.cpp and test_sphere_stamp.cpp: isotropy and speed of a drop's
 // ring, energy over long runs, what AF does to a splash, how much the sponge reflects, and
 // when a moving sphere stamps; and `dump ripples`.
@@ -211,9 +211,9 @@ TEST_CASE("eq. 7: AF sets the stamp's vertical velocity AF*Vh, one step later th
     }
 }
 
-TEST_CASE("eq. 6-7 as seed 001 describes AF: AF > 0 drives the splash further (a deeper crater), AF < 0 returns the surface to rest sooner",
+TEST_CASE("eq. 6-7 as [Kang2008] describes AF: AF > 0 drives the splash further (a deeper crater), AF < 0 returns the surface to rest sooner",
           "[ripple]") {
-    // Seed 001 §IV-2.1: AF > 0 strengthens the water's reaction, AF < 0 makes the deformation
+    // [Kang2008] §IV-2.1: AF > 0 strengthens the water's reaction, AF < 0 makes the deformation
     // die down and the surface return to its original height quickly. SR 5 drop 0.5 m deep
     // (the cannonball), DF 0.95; AF ±0.3 as the paper's fish (−0.3) and ship (+0.3).
     // Measured (centre, m): AF −0.3: at rest height after 3 steps, first crest +0.83;

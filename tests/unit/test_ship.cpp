@@ -1,4 +1,4 @@
-// Ships: afloat and upright on the default sea; the paper's wake observation (seed 001
+// Ships: afloat and upright on the default sea; the paper's wake observation ([Kang2008]
 // §V-3, fig. 16): at rest a standing deformation, slow a rebound behind the stern, five
 // times faster a longer wake.
 #include "ecs/components.h"
@@ -90,7 +90,7 @@ Wake sail(float speed, float seconds) {
 
 } // namespace
 
-TEST_CASE("seed 001 fig. 16: a ship at rest leaves a standing deformation, slow a rebound behind the stern, 5x faster a longer wake", "[ship]") {
+TEST_CASE("[Kang2008] fig. 16: a ship at rest leaves a standing deformation, slow a rebound behind the stern, 5x faster a longer wake", "[ship]") {
     const Wake rest = sail(0.0f, 6.0f), slow = sail(1.0f, 6.0f), fast = sail(5.0f, 6.0f);
     INFO("wake length behind the stern (|Vh| > 1.4 cm): rest " << rest.length << " m, 1 m/s " << slow.length << " m, 5 m/s "
                                                               << fast.length << " m; rebound rest " << rest.rebound << " slow "

@@ -1,4 +1,4 @@
-// Bounding spheres, seed 001 eq. 3–7 and Table 2 (SPEC §2.5): footprints by hand, AF by
+// Bounding spheres, [Kang2008] eq. 3–7 and Table 2 (docs/references.md#ripple-layer): footprints by hand, AF by
 // hand, the stamp/no-stamp decisions, and the remembered base height.
 #include "interaction/kang2008/ripple_field.h"
 #include "interaction/sphere_stamp.h"

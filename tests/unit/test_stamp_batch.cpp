@@ -1,4 +1,4 @@
-// Batched stamping (seed 001 eq. 5, 7, Table 2; SPEC §2.5): applying a list of stamps once,
+// Batched stamping ([Kang2008] eq. 5, 7, Table 2; docs/references.md#ripple-layer): applying a list of stamps once,
 // in row bands on any number of workers, leaves the field bit for bit as stampFootprint for
 // each stamp in order; reads between pushes see what the sequential stamps would have written.
 #include "core/parallel.h"

@@ -1,5 +1,5 @@
-// WaterQuery (SPEC §2.3): the flat stub; the composite surface inverted to world (x, z) on a
-// Gerstner-only sea (against a double reference of SPEC §2.2), an FFT-only sea (displaced grid
+// WaterQuery (docs/references.md#composite-ocean): the flat stub; the composite surface inverted to world (x, z) on a
+// Gerstner-only sea (against a double reference of docs/references.md#gerstner-waves), an FFT-only sea (displaced grid
 // points X + λD(X) return h(X)), both together; vertical velocity against finite differences
 // in time; the ripple hook; batch = single; the `dump surface` file contract.
 #include "tools/cmd_dump_surface.h"
@@ -27,7 +27,7 @@ constexpr double PI = std::numbers::pi;
 constexpr float GF = 9.81f;
 constexpr double G = double(GF);
 
-// Seed 002's first 8 waves (kx, kz, a, φ), SPEC §2.2: Σ k·a = 0.68.
+// [Min2023]'s first 8 waves (kx, kz, a, φ), docs/references.md#gerstner-waves: Σ k·a = 0.68.
 const std::vector<GerstnerWave> SEED002_FIRST8 = {
     {0.3f, -0.46f, 0.2f, 0.0f},  {-0.33f, 0.40f, 0.12f, 0.0f}, {0.0f, 0.56f, 0.2f, 0.2f},
     {-0.33f, 0.0f, 0.12f, 0.3f}, {0.3f, -0.26f, 0.2f, 0.7f},   {-0.33f, 0.20f, 0.12f, 0.9f},
@@ -37,7 +37,7 @@ struct Vec3d {
     double x, y, z;
 };
 
-// SPEC §2.2 in double: position of rest point (α, β) at t, and its unit normal from the
+// docs/references.md#gerstner-waves in double: position of rest point (α, β) at t, and its unit normal from the
 // cross product of central differences (∂r/∂β × ∂r/∂α, y up).
 Vec3d reference(const std::vector<GerstnerWave>& waves, double alpha, double beta, double t) {
     Vec3d r{alpha, 0.0, beta};
@@ -222,7 +222,7 @@ TEST_CASE("Composite sea (Gerstner + 2 FFT cascades): the displaced rest point's
         if (jxx * jzz - jxz * jxz < 0.3f) continue;  // near a fold
         ++checked;
         const glm::vec3 p = water.displace(alpha, beta);
-        CHECK(p.x == Approx(alpha + g.dx + f.dx).margin(1e-5));  // displacements add (SPEC §2.3)
+        CHECK(p.x == Approx(alpha + g.dx + f.dx).margin(1e-5));  // displacements add (docs/references.md#composite-ocean)
         CHECK(p.y == Approx(g.y + f.h).margin(1e-5));            // heights add
         const RestPoint r = water.restPoint(p.x, p.z);
         maxIterations = std::max(maxIterations, r.iterations);
@@ -453,7 +453,7 @@ TEST_CASE("Horizontal velocity is the particle's ∂(x, z)/∂t: differences in 
         double closedForm = 0.0;
         for (size_t k = 0; k < points.size(); ++k) {
             rests.push_back(water.restPoint(points[k].x, points[k].y).rest);
-            if (!c.fft) {  // Σ K̂·a·ω·cos θ at the rest point (SPEC §2.2 differentiated in t)
+            if (!c.fft) {  // Σ K̂·a·ω·cos θ at the rest point (docs/references.md#gerstner-waves differentiated in t)
                 glm::dvec2 v(0.0);
                 for (const GerstnerWave& w : waves) {
                     const double kk = std::hypot(double(w.kx), double(w.kz)), omega = std::sqrt(G * kk);

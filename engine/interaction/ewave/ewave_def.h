@@ -1,4 +1,4 @@
-// The ewave ripple solver's settings and its registration (dispersive waves, SPEC §2.5b): its
+// The ewave ripple solver's settings and its registration (dispersive waves, docs/references.md#dispersive-ripples): its
 // keys sit flat in [ripples]; the solver itself is in ewave_solver.h.
 #pragma once
 #include "core/schema.h"

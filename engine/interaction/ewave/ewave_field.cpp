@@ -1,5 +1,5 @@
 // Dispersive ripple field: exact per-mode rotation of (ĥ, v̂) with FFTW real-to-complex
-// transforms of the step's change (SPEC §2.5b; Tessendorf, "eWave", 2014), then the boundary
+// transforms of the step's change (docs/references.md#dispersive-ripples; Tessendorf, "eWave", 2014), then the boundary
 // in real space.
 #include "interaction/ewave/ewave_field.h"
 

@@ -1,5 +1,5 @@
 // Dispersive ripple field ("ewave"): Tessendorf's exponential solver of the iWave equation
-// (iWave 2004, eWave 2014; SPEC §2.5b). Height h and vertical velocity v per cell; each step
+// (iWave 2004, eWave 2014; docs/references.md#dispersive-ripples). Height h and vertical velocity v per cell; each step
 // advances every Fourier mode of the periodic grid exactly by ω(k)² = g·k + (σ/ρ)·k³.
 // Row-major rows×cols floats, row = z, column = x; h in metres, v in m/s.
 #pragma once
@@ -38,7 +38,7 @@ struct EWaveMedium {
 /// twiddle factors are not of modulus 1 exactly); replacing the state, it repeats every step
 /// and the energy drifts by 1.2e-3 over 10,000 steps (measured); on the change, which is
 /// ωΔt (≲ 0.2) of the state and a quarter turn out of phase with it, that error leaves the
-/// energy to 3e-6 over 10,000 steps (SPEC §2.5b's energy test holds 1e-5), at the cost of
+/// energy to 3e-6 over 10,000 steps (the energy test of docs/references.md#dispersive-ripples holds 1e-5), at the cost of
 /// float transforms. Beside the state the field keeps its float copy, which the forward
 /// transforms read: height() is that copy of h, for the renderer, dumps and the WaterQuery. Every
 /// write keeps it current (step, addHeight, scroll, clear) or marks it: the rows the sources

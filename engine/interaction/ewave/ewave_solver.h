@@ -1,4 +1,4 @@
-// The ewave ripple solver: the dispersive EWaveField (SPEC §2.5b) whose sources are the
+// The ewave ripple solver: the dispersive EWaveField (docs/references.md#dispersive-ripples) whose sources are the
 // bounding spheres' Table 2 stamps as pressure (ewaveSource), on the CPU (FFTW) or through its
 // GPU twin (ewave/gpu/).
 #pragma once

@@ -1,4 +1,4 @@
-// The kang2008 ripple solver's settings and its registration (seed 001 eq. 1–2, SPEC §2.5):
+// The kang2008 ripple solver's settings and its registration ([Kang2008] eq. 1–2, docs/references.md#ripple-layer):
 // its keys sit flat in [ripples]; the solver itself is in kang2008_solver.h.
 #pragma once
 #include "core/schema.h"

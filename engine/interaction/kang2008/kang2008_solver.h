@@ -1,4 +1,4 @@
-// The kang2008 ripple solver: seed 001's RippleField (eq. 1–2) stamped by bounding spheres
+// The kang2008 ripple solver: [Kang2008]'s RippleField (eq. 1–2) stamped by bounding spheres
 // (Table 2, eq. 3–7), on the CPU or through its GPU twin (kang2008/gpu/).
 #pragma once
 #include "interaction/kang2008/kang2008_def.h"

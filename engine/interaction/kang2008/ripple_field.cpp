@@ -1,4 +1,4 @@
-// Ripple field: linear convolution, seed 001 eq. 1–2; fixed ring or absorbing sponge (SPEC §2.5).
+// Ripple field: linear convolution, [Kang2008] eq. 1–2; fixed ring or absorbing sponge (docs/references.md#ripple-layer).
 // Vh(t+1) is written over Vh(t−1) in place (eq. 2 reads Vh(t−1) only at the cell it writes),
 // so two levels suffice; they then swap roles.
 #include "interaction/kang2008/ripple_field.h"

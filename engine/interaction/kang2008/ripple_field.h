@@ -1,4 +1,4 @@
-// Ripple field: linear convolution of a two-level height field, seed 001 eq. 1–2 (SPEC §2.5).
+// Ripple field: linear convolution of a two-level height field, [Kang2008] eq. 1–2 (docs/references.md#ripple-layer).
 // Row-major N×M floats, row = z, column = x; heights in metres; one cell per vertex.
 #pragma once
 #include "interaction/ripple_def.h"

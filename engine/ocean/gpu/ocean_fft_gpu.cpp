@@ -1,5 +1,5 @@
 // GPU spectral ocean: synthesis (eq. 2, 6, 7, 9) → row FFTs → column FFTs (eq. 1) → unpack
-// into OceanTextures with imageStore. SPEC §2.1; seed 000 §3.3; seed 003.
+// into OceanTextures with imageStore. docs/references.md#spectral-ocean; [Lee2007] §3.3; [CodingTower].
 #include "ocean/gpu/ocean_fft_gpu.h"
 
 #include "core/error.h"

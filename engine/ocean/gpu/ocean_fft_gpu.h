@@ -1,6 +1,6 @@
 // GPU spectral ocean: compute shaders synthesise h̃(K,t) and the packed derivative spectra,
 // run the 2-D inverse FFT (radix-2 DIT, stages paired into radix-4 steps, one line per
-// workgroup in shared memory, rows then columns; seed 000 §3.3, seed 003) and write
+// workgroup in shared memory, rows then columns; [Lee2007] §3.3, [CodingTower]) and write
 // OceanTextures with imageStore. The CPU twin is OceanFftCpu.
 #pragma once
 #include "gfx/handles.h"
@@ -62,7 +62,7 @@ public:
     double time() const { return m_time; }
 
     /// Benchmarks: with profiling on, update() finishes the GL queue before and after the
-    /// inverse FFT dispatches (stage 2) and keeps their wall time (seed 000 Table 3's "FFT
+    /// inverse FFT dispatches (stage 2) and keeps their wall time ([Lee2007] Table 3's "FFT
     /// only"). Off by default: the two glFinish calls stall the pipeline.
     void setProfiling(bool on) { m_profiling = on; }
     /// Wall ms of the last profiled update()'s FFT dispatches (0 when not profiling).

@@ -1,5 +1,5 @@
 // The GPU-side ocean maps every FFT backend writes and the renderer samples: one RGBA32F
-// 2-D array texture layer per cascade for displacement and one for slopes (SPEC §2.1).
+// 2-D array texture layer per cascade for displacement and one for slopes (docs/references.md#spectral-ocean).
 #pragma once
 #include "gfx/handles.h"
 

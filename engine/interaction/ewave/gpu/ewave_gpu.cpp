@@ -1,5 +1,5 @@
 // Dispersive ripple field on the GPU: e^{+} line FFTs (shaders/ocean_fft.comp), the exact
-// per-mode rotation and the real-space boundary (shaders/ewave_step.comp). SPEC §2.5b.
+// per-mode rotation and the real-space boundary (shaders/ewave_step.comp). docs/references.md#dispersive-ripples.
 #include "interaction/ewave/gpu/ewave_gpu.h"
 
 #include "gfx/gpu_bindings.h"

@@ -1,4 +1,4 @@
-// Dispersive ripple field on the GPU: the compute-shader twin of EWaveField::step (SPEC §2.5b;
+// Dispersive ripple field on the GPU: the compute-shader twin of EWaveField::step (docs/references.md#dispersive-ripples;
 // Tessendorf, eWave 2014) on the ocean's line FFT (shaders/ocean_fft.comp) and
 // shaders/ewave_step.comp, tested against the CPU field.
 #pragma once

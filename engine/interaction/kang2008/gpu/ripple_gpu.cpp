@@ -1,6 +1,6 @@
 // Ripple field on the GPU: eq. 1–2 step, eq. 5 + 7 stamps and scrolling in compute shaders
 // (shaders/ripple_step.comp, shaders/ripple_stamp.comp), the twin of RippleField and
-// stampFootprint (seed 001; SPEC §2.5). Table 2 stays on the CPU (planSphereStamp).
+// stampFootprint ([Kang2008]; docs/references.md#ripple-layer). Table 2 stays on the CPU (planSphereStamp).
 #include "interaction/kang2008/gpu/ripple_gpu.h"
 
 #include "gfx/shader.h"

@@ -1,5 +1,5 @@
-// Ripple field on the GPU: the compute-shader twin of RippleField (seed 001 eq. 1–2, fixed ring
-// or absorbing sponge) and of stampFootprint (eq. 5 then eq. 7), tested against them (SPEC §2.5).
+// Ripple field on the GPU: the compute-shader twin of RippleField ([Kang2008] eq. 1–2, fixed ring
+// or absorbing sponge) and of stampFootprint (eq. 5 then eq. 7), tested against them (docs/references.md#ripple-layer).
 #pragma once
 #include "gfx/handles.h"
 #include "interaction/kang2008/ripple_field.h"
