@@ -52,15 +52,7 @@ TEST_CASE("every scene opened as play opens it headless: 300 frames without a GL
 }
 
 TEST_CASE("play says a benchmark scene is one", "[scenes][play]") {
-    // Under AddressSanitizer this child's exit reliably crashes LeakSanitizer's own tracer
-    // ("Tracer caught signal 11", google/sanitizers#1353) when started from this test (not
-    // from a shell): its leaks are checked by the other play runs instead.
-#if defined(__SANITIZE_ADDRESS__)
-    const std::string noLeakCheck = "ASAN_OPTIONS=detect_leaks=0 ";
-#else
-    const std::string noLeakCheck;
-#endif
-    auto r = test::runShell(noLeakCheck + "\"$OCEANBOX\" play config/scenes/fish_swarm.toml --headless --size 32x32 --frames 1 --screenshot " +
+    auto r = test::runShell(test::withoutLeakCheck() + "\"$OCEANBOX\" play config/scenes/fish_swarm.toml --headless --size 32x32 --frames 1 --screenshot " +
                                test::tempPath("swarm.png"));
     INFO(r.output);
     REQUIRE(r.exitCode == 0);

@@ -18,6 +18,14 @@ namespace ob::test {
 
 ProcessResult runOceanbox(const std::string& args) { return runShell("\"$OCEANBOX\" " + args); }
 
+std::string withoutLeakCheck() {
+#if defined(__SANITIZE_ADDRESS__)
+    return "ASAN_OPTIONS=detect_leaks=0 ";
+#else
+    return "";
+#endif
+}
+
 ProcessResult runShell(const std::string& command) {
     std::string cmd = std::string("cd '") + OCEANBOX_SOURCE_DIR + "' && OCEANBOX='" + OCEANBOX_EXE + "' && { " + command +
                       "; } 2>&1";

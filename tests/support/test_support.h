@@ -20,6 +20,11 @@ ProcessResult runOceanbox(const std::string& args);
 /// executable (build/bin/oceanbox).
 ProcessResult runShell(const std::string& command);
 
+/// "ASAN_OPTIONS=detect_leaks=0 " under AddressSanitizer, else "": the prefix of a `play`
+/// child whose exit crashes LeakSanitizer's own tracer when a test starts it ("Tracer caught
+/// signal 11", google/sanitizers#1353; not a leak). Its leaks are checked by the other runs.
+std::string withoutLeakCheck();
+
 /// Runs `load` on a thread of its own: the ob::InputError message it throws ("" when it
 /// returns, "not an InputError: ..." for another exception), or nullopt when it has not
 /// returned after `seconds` (a hang: the thread is left blocked, the test fails instead).
