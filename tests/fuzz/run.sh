@@ -1,5 +1,5 @@
 #!/bin/sh
-# Builds the libFuzzer targets (clang, -fsanitize=fuzzer,address,undefined) in build-fuzz/
+# Builds the libFuzzer targets (clang -O1, libFuzzer's advice; -fsanitize=fuzzer,address,undefined) in build-fuzz/
 # and runs each for SECONDS (default 60) on its seeds: tests/fuzz/corpus/<target>/ plus the
 # project's scenes (config/scenes) and models (assets/models); the --set key-path parser and
 # the .npy reader from their seeds alone. New inputs go to
@@ -12,7 +12,8 @@ build=${2:-$root/build-fuzz}
 jobs=${OCEANBOX_FUZZ_BUILD_JOBS:-2}
 
 cmake -S "$root" -B "$build" -DOCEANBOX_FUZZ=ON -DOCEANBOX_TESTS=OFF \
-  -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo > /dev/null
+  -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -DNDEBUG" -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -DNDEBUG" > /dev/null
 cmake --build "$build" -j"$jobs" --target fuzz_scene fuzz_gltf fuzz_keypath fuzz_npy
 
 status=0

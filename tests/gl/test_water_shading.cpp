@@ -145,7 +145,7 @@ Image drawRings(gfx::Renderer& renderer, glm::ivec2 size, const std::vector<floa
 
 } // namespace
 
-TEST_CASE("the optimised water shading keeps the full-quality frame of every scene: SSIM over 0.985, mean difference under 1 of 255", "[gl][render][water]") {
+TEST_CASE("the optimised water shading keeps the full-quality frame of every scene: SSIM over 0.985, mean difference under 1 of 255", "[gl][render][water][long]") {
     gfx::requestDebugOutput(true);
     const glm::ivec2 size(320, 180);
     // The shipped shading differs from full quality where a software rasteriser filters the

@@ -54,7 +54,7 @@ struct WorkerCountGuard {
 
 } // namespace
 
-TEST_CASE("the default scene stepped twice for 120 steps gives the same state hash", "[determinism][threads]") {
+TEST_CASE("the default scene stepped twice for 120 steps gives the same state hash", "[determinism][threads][long]") {
     game::SceneDef scene = game::loadScene(game::defaultScenePath());
     uint64_t a = hashAfterSteps(scene, 120);
     CHECK(a == hashAfterSteps(scene, 120));
@@ -64,13 +64,13 @@ TEST_CASE("the default scene stepped twice for 120 steps gives the same state ha
     CHECK(a != hashAfterSteps(scene, 119));
 }
 
-TEST_CASE("two headless runs of 120 frames report the same state hash", "[determinism]") {
+TEST_CASE("two headless runs of 120 frames report the same state hash", "[determinism][long]") {
     std::string a = cliHash("");
     CHECK(a == cliHash(""));
     CHECK(a != cliHash("--set camera.follow_height_m=8"));
 }
 
-TEST_CASE("the GPU ocean backend (whose query maps are computed a step ahead on another thread) gives the CPU backend's state hash", "[determinism][threads]") {
+TEST_CASE("the GPU ocean backend (whose query maps are computed a step ahead on another thread) gives the CPU backend's state hash", "[determinism][threads][long]") {
     // 40 frames: the GPU transforms on a software rasteriser are slow, and every frame's
     // maps enter the hash (the ships and the crate float on them from the first step).
     std::string gpuLog, cpuLog;
@@ -80,7 +80,7 @@ TEST_CASE("the GPU ocean backend (whose query maps are computed a step ahead on 
     CHECK(cpuLog.find("ocean: cpu (FFTW) backend") != std::string::npos);
 }
 
-TEST_CASE("the state hash is the same with 1, 2, 3 and 8 workers (ripple rows and ocean threads split)", "[determinism][parallel][threads]") {
+TEST_CASE("the state hash is the same with 1, 2, 3 and 8 workers (ripple rows and ocean threads split)", "[determinism][parallel][threads][long]") {
     // A 1024² patch splits its 1022 interior rows into chunks of 32 (MIN_CELLS_PER_CHUNK /
     // 1024), so every worker count here really splits it; the 256² ocean runs on 2 threads
     // once 2 workers are set (measuring off: whatever this machine measured, the split runs).
@@ -101,7 +101,7 @@ TEST_CASE("the state hash is the same with 1, 2, 3 and 8 workers (ripple rows an
     for (size_t i = 1; i < hashes.size(); ++i) CHECK(hashes[i] == hashes[0]);
 }
 
-TEST_CASE("the state hash of the ewave default scene is the same on 1, 2 and 3 workers, and with thread counts measured", "[determinism][parallel][threads]") {
+TEST_CASE("the state hash of the ewave default scene is the same on 1, 2 and 3 workers, and with thread counts measured", "[determinism][parallel][threads][long]") {
     // Measuring off: the ewave step's two transforms and the ocean split over the workers (the
     // sources' row bands too, for a step with enough footprint: tests_unit "many sources");
     // measuring on: whatever this machine chose.

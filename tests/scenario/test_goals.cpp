@@ -32,7 +32,7 @@ nlohmann::json play(const std::string& scene, const std::string& input, long fra
 
 } // namespace
 
-TEST_CASE("targets.toml: the scripted aim hits all five targets and wins, no input loses at the time limit", "[goals][scenes]") {
+TEST_CASE("targets.toml: the scripted aim hits all five targets and wins, no input loses at the time limit", "[goals][scenes][long]") {
     const nlohmann::json won = play("config/scenes/targets.toml", DATA + "targets_win.toml", 3000);
     const nlohmann::json& game = won["game"];
     INFO(game.dump());
@@ -54,7 +54,7 @@ TEST_CASE("targets.toml: the scripted aim hits all five targets and wins, no inp
     CHECK(lost["steps"] == 300);
 }
 
-TEST_CASE("race.toml: the scripted slalom passes the four gates in order and wins, no input loses", "[goals][scenes]") {
+TEST_CASE("race.toml: the scripted slalom passes the four gates in order and wins, no input loses", "[goals][scenes][long]") {
     const nlohmann::json won = play("config/scenes/race.toml", DATA + "race_win.toml", 3000);
     const nlohmann::json& game = won["game"];
     INFO(game.dump());
@@ -71,7 +71,7 @@ TEST_CASE("race.toml: the scripted slalom passes the four gates in order and win
     CHECK(lost["game"]["next_gate"] == 1);
 }
 
-TEST_CASE("race.toml: full throttle without steering skips gate 2 (it lies to starboard): missed, penalised, lost", "[goals][scenes]") {
+TEST_CASE("race.toml: full throttle without steering skips gate 2 (it lies to starboard): missed, penalised, lost", "[goals][scenes][long]") {
     // The ship holds on to gate 1, passes wide of gate 2 and its drift takes it outside gate 3:
     // crossing gate 4 marks gates 2 and 3 missed, and the 2 × 10 s penalty takes the race
     // time over the 45 s limit.
@@ -85,7 +85,7 @@ TEST_CASE("race.toml: full throttle without steering skips gate 2 (it lies to st
     CHECK(game["result"] == "lost");
 }
 
-TEST_CASE("herd.toml: pushing the crates in line ahead wins", "[goals][scenes]") {
+TEST_CASE("herd.toml: pushing the crates in line ahead wins", "[goals][scenes][long]") {
     const nlohmann::json won = play("config/scenes/herd.toml", DATA + "herd_win.toml", 3000);
     const nlohmann::json& game = won["game"];
     INFO(game.dump());
@@ -111,7 +111,7 @@ TEST_CASE("a goal ends on the same step with the same state hash at 1 and 8 step
 }
 
 TEST_CASE("[sim] end_time ends any run: play headless stops there, a scene without a goal ends, a goal undecided is lost",
-          "[goals][scenes]") {
+          "[goals][scenes][long]") {
     const std::string calm = "[ocean]\nresolution = 32\namplitude = 0.0\n[gerstner]\ncount = 0\n[ripples]\nenabled = false\n";
     const std::string scene = writeFile(tempPath("end_scene.toml"), calm + "[sim]\nend_time = 0.5\n");
     const std::string stats = tempPath("end_stats.json");

@@ -51,7 +51,7 @@ Motion boxBesideWake(bool ripples) {
 
 } // namespace
 
-TEST_CASE("ewave coupling: a ship's wake rocks a floating box 15 m beside its track", "[ewave][coupling]") {
+TEST_CASE("ewave coupling: a ship's wake rocks a floating box 15 m beside its track", "[ewave][coupling][long]") {
     const Motion on = boxBesideWake(true), off = boxBesideWake(false);
     INFO("box 15 m beside a ship at 6 m/s, 10-20 s: heave std " << on.heave << " m with ewave, " << off.heave
                                                                  << " m without; largest roll/pitch " << on.roll << " deg with, "
