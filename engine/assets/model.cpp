@@ -459,6 +459,12 @@ void checkVersions(const std::vector<unsigned char>& bytes, bool binary, const t
 
 } // namespace
 
+std::string projectModel(const std::string& stem) {
+    const std::filesystem::path file = std::filesystem::path(OCEANBOX_SOURCE_DIR) / "assets" / "models" / (stem + ".gltf");
+    std::error_code ec;
+    return std::filesystem::is_regular_file(file, ec) ? file.string() : "";
+}
+
 std::string lodTwinPath(const std::string& file) {
     std::filesystem::path far(file);
     far.replace_extension(".lod1" + far.extension().string());

@@ -31,6 +31,10 @@ ModelData loadGltfModel(const std::string& path);
 ModelData parseGltfModel(const std::vector<unsigned char>& bytes, const std::string& sourceName,
                          const std::string& baseDir = "");
 
+/// One of the project's own models (`oceanbox make-models`): assets/models/<stem>.gltf of the
+/// source tree, absolute; "" when it is not there (the object falls back to a built-in mesh).
+std::string projectModel(const std::string& stem);
+
 /// The far twin of a model drawn at a distance: X.lod1.gltf beside X.gltf (X.lod1.glb beside X.glb).
 std::string lodTwinPath(const std::string& file);
 

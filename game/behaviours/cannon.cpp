@@ -1,6 +1,7 @@
 // Cannon behaviour: aiming, firing (a Bullet sphere per shot), removing sunk balls.
 #include "behaviours/cannon.h"
 
+#include "assets/model.h"
 #include "ecs/components.h"
 #include "interaction/sphere_set.h"
 #include "behaviours/step_input.h"
@@ -46,7 +47,7 @@ void fire(ecs::World& world, Cannon& cannon, glm::vec3 pivot) {
     start.linearVelocity = aim * cannon.def.muzzle_speed;
     physics::BodyId id = physicsWorld.addSphere(r, mass, start);
     ecs::Entity ball = spawnBody(world, ObjectType::Sphere, "", id, {Probe{glm::vec3(0.0f), r}}, volume, mass, start,
-                                 Renderable{gfx::MeshKind::Sphere, glm::vec3(r), BALL_COLOR, ""});
+                                 Renderable{gfx::MeshKind::Sphere, glm::vec3(r), BALL_COLOR, cannon.ballModel});
     world.add<interaction::SphereSet>(ball, {{cannon.ballSphere}, {}, false});
     world.add<Cannonball>(ball, {cannon.def.sink_depth});
     ++cannon.shots;
@@ -65,7 +66,8 @@ ecs::Entity spawnCannon(ecs::World& world, const ObjectDef& o) {
     if (top > bottom) {
         ecs::Entity pillar = world.create();
         world.add<ecs::Transform>(pillar, {glm::vec3(o.position.x, 0.5f * (bottom + top), o.position.z)});
-        world.add<Renderable>(pillar, {gfx::MeshKind::Box, glm::vec3(0.8f, 0.5f * (top - bottom), 0.8f), PILLAR_COLOR, ""});
+        world.add<Renderable>(pillar, {gfx::MeshKind::Box, glm::vec3(0.8f, 0.5f * (top - bottom), 0.8f), PILLAR_COLOR,
+                                          assets::projectModel("pillar")});
     }
     ecs::Entity e = world.create();
     world.add<ecs::Transform>(e, {o.position, aimRotation(o.cannon.yaw_deg, o.cannon.elevation_deg)});
@@ -77,6 +79,7 @@ ecs::Entity spawnCannon(ecs::World& world, const ObjectDef& o) {
     cannon.def = o.cannon;
     cannon.yawDeg = o.cannon.yaw_deg;
     cannon.elevationDeg = o.cannon.elevation_deg;
+    cannon.ballModel = assets::projectModel("cannonball");
     cannon.ballSphere = boundingSphereFor(o, paperBallSphere(o.cannon.ball_radius), rippleCellSize(world));
     world.add<Cannon>(e, cannon);
     return e;

@@ -2,6 +2,7 @@
 // spheres; each ball carries the paper's bounding sphere (SR 5 cells, SHR 1, AF 0), splashes,
 // sinks, and is removed below its cannon's sink depth.
 #pragma once
+#include <string>
 #include "ecs/schedule.h"
 #include "interaction/sphere_stamp.h"
 #include "sim/objects.h"
@@ -16,6 +17,7 @@ struct Cannon {
     float yawDeg = 0.0f;          ///< aim azimuth now, deg about +y, 0 faces +z (starts at def.yaw_deg)
     float elevationDeg = 30.0f;   ///< barrel above the horizon now, deg (starts at def.elevation_deg)
     interaction::BoundingSphere ballSphere;  ///< every ball's bounding sphere
+    std::string ballModel;        ///< every ball's model (the project's cannonball; "" = built-in sphere)
     double cooldown = 0.0;        ///< s until the next automatic shot
     bool fireRequested = false;   ///< fire this step (events, keys)
     int shots = 0;                ///< balls fired so far

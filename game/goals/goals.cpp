@@ -2,6 +2,7 @@
 // make, and the fixed-step judge (docs/games.md has the rules in words).
 #include "goals/goals.h"
 
+#include "assets/model.h"
 #include "behaviours/cannon.h"
 #include "behaviours/ship.h"
 #include "ecs/components.h"
@@ -313,7 +314,7 @@ void addGame(ecs::World& world, const SceneDef& scene) {
             const ecs::Entity e = world.create();
             world.add<ecs::Transform>(e, {glm::vec3(c.x + def.herd.zone_radius * std::cos(a), 0.0f,
                                                     c.y + def.herd.zone_radius * std::sin(a))});
-            world.add<Renderable>(e, {gfx::MeshKind::Sphere, glm::vec3(MARKER_RADIUS), MARKER_COLOR, ""});
+            world.add<Renderable>(e, {gfx::MeshKind::Sphere, glm::vec3(MARKER_RADIUS), MARKER_COLOR, assets::projectModel("buoy")});
             game.markers.push_back(e);
         }
         break;

@@ -140,9 +140,9 @@ ecs::Entity spawnFloatingBody(ecs::World& world, const ObjectDef& o, uint64_t /*
     start.position = o.position;
     start.linearVelocity = sphere ? o.sphere.velocity : o.box.velocity;
     physics::BodyId id = sphere ? physicsWorld.addSphere(radius, mass, start) : physicsWorld.addBox(size * 0.5f, mass, start);
-    // Built-in meshes are unit shapes; a box's model is in metres, a sphere's of radius 1.
-    const glm::vec3 boxScale = o.model.empty() ? size * 0.5f : glm::vec3(1.0f);
-    Renderable look{sphere ? gfx::MeshKind::Sphere : gfx::MeshKind::Box, sphere ? glm::vec3(radius) : boxScale, o.color, o.model};
+    // Built-in meshes and models alike are unit shapes, [−1, 1]³ or of radius 1 (the props of
+    // tools/model_props.cpp): the body's size stretches them.
+    Renderable look{sphere ? gfx::MeshKind::Sphere : gfx::MeshKind::Box, sphere ? glm::vec3(radius) : size * 0.5f, o.color, o.model};
     ecs::Entity e = spawnBody(world, o.type, o.name, id, probesFor(o), volume, mass, start, look);
     interaction::BoundingSphere paper;
     paper.radius = sphere ? radius : 0.5f * std::min({size.x, size.y, size.z});

@@ -1,4 +1,4 @@
-// The project's own models built in code (ship, fish, cannonball, cannon): closed,
+// The project's own models built in code (ship, fish, cannonball, cannon and the props): closed,
 // outward-facing triangle meshes in glTF conventions (metres, +y up, front towards +z).
 #pragma once
 #include <cstdint>
@@ -26,7 +26,7 @@ struct ShapeModel {
     std::vector<ShapePart> parts;
 };
 
-/// The four models, in this order:
+/// Every model, in this order (the props after the four below, see buildPropModels):
 /// - ship: hull z ∈ [−5, 5] (bow at +z), x ∈ [−1.5, 1.5], keel y = −0.75 to deck y = 0.75;
 ///   cabin, mast, yard and sail on deck up to y = 7.
 /// - fish: z ∈ [−0.5, 0.5] (nose at +z), tail fin at −z, dorsal fin on top; origin on the
@@ -37,5 +37,10 @@ struct ShapeModel {
 /// The output depends on nothing but this code: every number comes from +, −, ×, ÷ and
 /// sqrt (no libm transcendental), so the files are the same bytes on every machine.
 std::vector<ShapeModel> buildProjectModels();
+
+/// The props (model_props.cpp): crate, barrel, raft and target span [−1, 1]³ (a box object
+/// stretches them to its size); ball and buoy are of radius 1 (the buoy's topmark stands
+/// above it, to y = 2.3); the pillar spans [−1, 1]³ (the cannon stands on it).
+std::vector<ShapeModel> buildPropModels();
 
 } // namespace ob::game

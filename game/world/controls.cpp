@@ -1,6 +1,7 @@
 // The player's controls: the input queue's two consumers and the keys of the frame.
 #include "world/controls.h"
 
+#include "assets/model.h"
 #include "world/camera.h"
 #include "core/log.h"
 #include "sim/objects.h"
@@ -98,6 +99,7 @@ ObjectDef fishSchoolOf(const ControlsDef& def) {
     fish.school.jump_interval = def.fish_jump_interval;
     fish.school.length = def.fish_length;
     fish.color = def.fish_color;
+    fish.model = assets::projectModel("fish");
     return fish;
 }
 

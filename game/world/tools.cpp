@@ -2,6 +2,7 @@
 // moving source sphere through the bodies' stamp path), drop, erase and the cannon's aim.
 #include "world/tools.h"
 
+#include "assets/model.h"
 #include "behaviours/cannon.h"
 #include "behaviours/fish.h"
 #include "behaviours/spawning.h"
@@ -111,14 +112,17 @@ void stopStirring(ecs::World& world, PlayerTools& tools) {
     tools.stirrer = ecs::Entity::None;
 }
 
+} // namespace
+
 ObjectDef dropDef(const PlayerTools& tools, glm::vec3 at, float yawDeg) {
     ObjectDef o;
     o.position = at + glm::vec3(0.0f, tools.def.drop_height, 0.0f);
-    const auto box = [&](glm::vec3 size, float density, glm::vec3 color) {
+    const auto box = [&](glm::vec3 size, float density, glm::vec3 color, const char* model) {
         o.type = ObjectType::Box;
         o.box.size = size;
         o.box.density = density;
         o.color = color;
+        o.model = assets::projectModel(model);
     };
     switch (tools.def.drop) {
     case DropKind::Ball:
@@ -126,16 +130,18 @@ ObjectDef dropDef(const PlayerTools& tools, glm::vec3 at, float yawDeg) {
         o.sphere.radius = tools.def.ball_radius;
         o.sphere.density = tools.def.ball_density;
         o.color = {0.8f, 0.25f, 0.1f};
+        o.model = assets::projectModel("ball");
         break;
-    case DropKind::Crate: box({1.0f, 1.0f, 1.0f}, 450.0f, {0.55f, 0.38f, 0.2f}); break;
-    case DropKind::Barrel: box({0.6f, 0.9f, 0.6f}, 550.0f, {0.35f, 0.2f, 0.1f}); break;
+    case DropKind::Crate: box({1.0f, 1.0f, 1.0f}, 450.0f, {0.55f, 0.38f, 0.2f}, "crate"); break;
+    case DropKind::Barrel: box({0.6f, 0.9f, 0.6f}, 550.0f, {0.35f, 0.2f, 0.1f}, "barrel"); break;
     case DropKind::Buoy:
         o.type = ObjectType::Sphere;
         o.sphere.radius = 0.45f;
         o.sphere.density = 250.0f;
         o.color = {0.9f, 0.1f, 0.05f};
+        o.model = assets::projectModel("buoy");
         break;
-    case DropKind::Raft: box({3.0f, 0.35f, 2.2f}, 500.0f, {0.6f, 0.5f, 0.3f}); break;
+    case DropKind::Raft: box({3.0f, 0.35f, 2.2f}, 500.0f, {0.6f, 0.5f, 0.3f}, "raft"); break;
     case DropKind::FishSchool:
         o = tools.fishTemplate;
         o.position = at;
@@ -149,6 +155,8 @@ ObjectDef dropDef(const PlayerTools& tools, glm::vec3 at, float yawDeg) {
     o.name = std::string(enumName(tools.def.drop)) + "_" + std::to_string(tools.drops + 1);
     return o;
 }
+
+namespace {
 
 // The body to erase: a fish's school, a ball, a ship... (not the player's cannon, which is not a body).
 void erase(ecs::World& world, PlayerTools& tools, ecs::Entity e) {

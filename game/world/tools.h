@@ -83,6 +83,9 @@ struct PlayerTools {
 /// fish school and ship are copies of the templates.
 void addPlayerTools(ecs::World& world, const ToolsDef& def, glm::ivec2 viewportSize, const ObjectDef& fishTemplate,
                     const ObjectDef& shipTemplate);
+/// What the drop tool drops at `at` (on the water; the body starts drop_height above it),
+/// turned `yawDeg`: the palette's choice with its size, density and model.
+ObjectDef dropDef(const PlayerTools& tools, glm::vec3 at, float yawDeg);
 /// Script phase, after the steps' input: 1–5 choose the tool; the cursor's ray is picked
 /// against the water and the bodies; the tool acts (grab's spring, stir's source, a drop,
 /// an erase, the cannon's aim and shot).

@@ -1,68 +1,56 @@
-// Scene objects' model paths: resolved next to the scene first, then in the current folder,
-// then in the source tree; stored back absolute; a bad file is one error at its key.
-#include "core/error.h"
+// Every body of every shipped scene is drawn with a model, not a built-in placeholder: the
+// scene's objects, the cannon's pillar and balls, fish schools and whatever the drop tool drops.
+#include "assets/model.h"
+#include "behaviours/cannon.h"
+#include "behaviours/fish.h"
+#include "behaviours/spawning.h"
+#include "sim/objects.h"
+#include "world/sandbox.h"
 #include "world/scene.h"
-#include "support/test_support.h"
+#include "world/tools.h"
 
 #include <catch2/catch.hpp>
 #include <filesystem>
 
-using ob::InputError;
-using ob::test::tempPath;
-using ob::test::writeFile;
-namespace fs = std::filesystem;
+using namespace ob;
 
 namespace {
 
-const std::string SOURCE_BALL = std::string(OCEANBOX_SOURCE_DIR) + "/assets/models/cannonball.gltf";
-
-std::string sceneError(const std::string& path) {
-    try {
-        ob::game::loadScene(path);
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
+// The models of what the world draws: every Renderable's and every fish school's.
+std::vector<std::string> drawnModels(ecs::World& world) {
+    std::vector<std::string> models;
+    for (const game::Renderable& r : world.pool<game::Renderable>().components()) models.push_back(r.model);
+    for (const game::FishSchool& s : world.pool<game::FishSchool>().components()) models.push_back(s.model);
+    return models;
 }
 
 } // namespace
 
-TEST_CASE("a relative model path is found next to the scene before the current folder and the source tree", "[scene][models]") {
-    // The scene's folder holds its own assets/models/cannonball.gltf, shadowing the source tree's.
-    const fs::path folder = fs::path(tempPath("scene_folder"));
-    fs::create_directories(folder / "assets/models");
-    fs::copy_file(SOURCE_BALL, folder / "assets/models/cannonball.gltf");
-    const std::string scene = writeFile((folder / "s.toml").string(), "[[objects]]\nmodel = \"assets/models/cannonball.gltf\"\n[[objects]]\n");
-    ob::game::SceneDef def = ob::game::loadScene(scene);
-    REQUIRE(def.objects.size() == 2);
-    CHECK(fs::path(def.objects[0].model).is_absolute());
-    CHECK(fs::equivalent(def.objects[0].model, folder / "assets/models/cannonball.gltf"));
-    CHECK(def.objects[1].model.empty());  // no model: the built-in mesh
-}
-
-TEST_CASE("a relative model path absent next to the scene resolves in the source tree and an absolute one stays", "[scene][models]") {
-    const std::string scene = writeFile(tempPath("elsewhere.toml"), "[[objects]]\nmodel = \"assets/models/cannonball.gltf\"\n"
-                                                                    "[[objects]]\nmodel = \"" + SOURCE_BALL + "\"\n");
-    // From a working folder that has no assets/: only the source tree holds the file.
-    struct Cwd {
-        fs::path saved = fs::current_path();
-        ~Cwd() { fs::current_path(saved); }
-    } restore;
-    fs::current_path(fs::path(scene).parent_path());
-    ob::game::SceneDef def = ob::game::loadScene(scene);
-    CHECK(fs::equivalent(def.objects[0].model, SOURCE_BALL));
-    CHECK(def.objects[1].model == SOURCE_BALL);
-}
-
-TEST_CASE("missing and corrupt model files are each reported at their key, with the other scene errors' format", "[scene][models]") {
-    const std::string scene = tempPath("two_bad.toml");
-    const std::string bad = (fs::path(scene).parent_path() / "lines_only.gltf").string();
-    writeFile(bad, R"({"asset": {"version": "2.0"}, "meshes": [{"primitives": [{"attributes": {}, "mode": 1}]}],
-                       "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}]})");
-    writeFile(scene, "[[objects]]\nmodel = \"nowhere/none.glb\"\n[[objects]]\nmodel = \"lines_only.gltf\"\n");
-    const std::string e = sceneError(scene);
-    INFO(e);
-    CHECK(e.find(scene + ":2:9: objects[0].model: glTF file 'nowhere/none.glb' not found") != std::string::npos);
-    CHECK(e.find(scene + ":4:9: objects[1].model: " + bad + ": no triangles") != std::string::npos);
-    CHECK(std::count(e.begin(), e.end(), '\n') == 1);  // two problems, two lines
+TEST_CASE("every body of every shipped scene is drawn with a model: objects, pillars, balls, schools and drops", "[models][scenes]") {
+    int scenes = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(std::string(OCEANBOX_SOURCE_DIR) + "/config/scenes")) {
+        if (entry.path().extension() != ".toml") continue;
+        ++scenes;
+        INFO(entry.path().filename().string());
+        game::Sandbox sandbox(game::loadScene(entry.path().string()));
+        ecs::World& world = sandbox.world();
+        // A shot from every cannon, and one of each thing the drop tool makes.
+        for (game::Cannon& c : world.pool<game::Cannon>().components()) c.fireRequested = true;
+        if (auto* tools = world.resource<game::PlayerTools>())
+            for (game::DropKind kind : {game::DropKind::Ball, game::DropKind::Crate, game::DropKind::Barrel, game::DropKind::Buoy,
+                                        game::DropKind::Raft, game::DropKind::FishSchool, game::DropKind::Ship}) {
+                tools->def.drop = kind;
+                game::spawnObject(world, game::dropDef(*tools, glm::vec3(40.0f, 0.0f, 40.0f), 0.0f), 1);
+            }
+        for (int k = 0; k < 10; ++k) sandbox.step();
+        if (!world.pool<game::Cannon>().components().empty()) CHECK(!world.pool<game::Cannonball>().components().empty());
+        const std::vector<std::string> models = drawnModels(world);
+        CHECK(models.size() >= 7);  // the drops at least
+        for (const std::string& model : models) {
+            INFO("a body drawn with '" << model << "'");
+            CHECK(!model.empty());
+            CHECK(std::filesystem::is_regular_file(model));
+        }
+    }
+    CHECK(scenes >= 13);
 }
