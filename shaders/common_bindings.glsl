@@ -77,7 +77,7 @@ UNIFORM_BLOCK(FrameUniforms, FRAME_BLOCK) {
     vec4 viewport;             // xy target size (px), z output: 0 display colour, 1 linear radiance + coverage (reflection), 2 display colour + luma in alpha (FXAA), 3 linear radiance + 1 / eye depth in alpha (refraction); w 1 = eye under water
     vec4 surfaceClip;          // x side s (±1; 0 keeps all), y overlap m (m), z 1 = mirror: objects keep s·(y − surface) + m >= 0, mirrored about the surface
     vec4 depthParams;          // near, far (m), water clarity (m), sky cube mip count
-    vec4 shading;              // DU/DV strength, normal distortion, glitter strength, glitter shininess
+    vec4 shading;              // DU/DV strength, normal distortion, the sun's irradiance for the glitter, 0
     vec4 switches;             // reflections, refractions, foam (1 on, 0 off), dither of the 8-bit outputs (LSB; 0 off)
 } BLOCK_INSTANCE(frame);
 
@@ -94,6 +94,8 @@ UNIFORM_BLOCK(WaterUniforms, WATER_BLOCK) {
     vec4 cascadeFade;        // per cascade: eye distance (m) where its fade begins
     vec4 cascadeFadeEnd;     // per cascade: eye distance (m) past which it is gone; 0: never fades
     vec4 farFade;            // x 1: Gerstner waves fade where the grid is too sparse for them (0: exact)
+    vec4 cascadeSlopeVariance;  // per cascade: mean square slope of its waves (unused cascades 0)
+    vec4 glitterParams;      // x Cox–Munk mean square slope of the wind's sea, 0.003 + 5.12e-3·U10
     vec4 gerstner[MAX_GERSTNER_WAVES];  // (kx, kz, amplitude, phase) per wave
 } BLOCK_INSTANCE(water);
 

@@ -4,7 +4,7 @@
 // coverage; refraction = what lies below, faded to the water colour by its depth ([KTSDE2017]
 // eq. 7); both looked up at the pixel offset by the normal ([Lee2007]) and a DU/DV map
 // scrolled in time ([KTSDE2017] eq. 4–5); mixed by Fresnel (n = 1.33); plus sun glitter
-// ([Lee2007]) and foam where the FFT Jacobian folds or the ripples are steep, and where the
+// (Cox & Munk 1954: the slopes no layer draws, common_glitter.glsl) and foam where the FFT Jacobian folds or the ripples are steep, and where the
 // persistent foam map holds coverage (its bubble pattern thins as the coverage decays).
 // Each FFT cascade's slopes fade out with distance ([render] far_fade) as its displacement does.
 // Compiled per gfx::WaterVariant: the cascade count and the switches (WATER_REFLECTIONS,
@@ -16,6 +16,7 @@
 #include "common_frame.glsl"
 #include "common_sky.glsl"
 #include "common_fresnel.glsl"
+#include "common_glitter.glsl"
 #include "common_water.glsl"
 #include "common_detail.glsl"
 
@@ -34,6 +35,7 @@ out vec4 o_color;
 const float DETAIL_TILE = 24.0;            // m per repeat of the detail map
 const vec2 DETAIL_DRIFT = vec2(0.031, 0.017);  // detail map scroll (repeats per s)
 const vec3 SUN_COLOR = vec3(1.0, 0.9, 0.7);
+const float MIN_GLITTER_SLOPE_VARIANCE = 0.001;
 const float FOAM_TILE = 5.0;               // m per repeat of the persistent foam's bubble pattern
 const float FOAM_EDGE = 0.08;              // softness of the pattern's threshold
 const float FOAM_DENSE = 0.85;             // the share of the surface foam at coverage 1 covers
@@ -56,6 +58,7 @@ void main() {
     vec2 ripple = rippleSlope(v_world.xz);
     vec2 slope = v_gerstnerSlope + ripple;
     float jacobian = 1.0;
+    float resolvedSlopes = 0.0;  // mean square slope the cascades draw here (faded ones less)
     for (int c = 0; c < WATER_CASCADES; ++c) {
         vec3 uv = cascadeCoord(v_rest, c);
         // (dh/dx, dh/dz, J), faded out with distance as the vertex shader fades the displacement
@@ -66,6 +69,7 @@ void main() {
         float weight = v_cascadeWeight[c];
 #endif
         slope += weight * s.xy;
+        resolvedSlopes += weight * weight * water.cascadeSlopeVariance[c];
         jacobian = min(jacobian, mix(1.0, s.z, weight));
     }
     vec3 n = normalize(vec3(-slope.x, 1.0, -slope.y));
@@ -129,7 +133,10 @@ void main() {
 
     float F = fresnel(cosV, exact);
     vec3 color = mix(refraction, reflection, F);
-    color += SUN_COLOR * sunTint(sun) * frame.shading.z * pow(max(dot(r, sun), 0.0), frame.shading.w);
+    // The slopes no layer draws: the sea's whole variance less the cascades' (at least that
+    // of capillary ripples on a glassy sea, so the sun never shrinks to a point).
+    float unresolved = max(water.glitterParams.x - resolvedSlopes, MIN_GLITTER_SLOPE_VARIANCE);
+    color += SUN_COLOR * sunTint(sun) * frame.shading.z * glitterRadiance(n, v, sun, unresolved, exact);
 
     if (WATER_FOAM) {
         float whitecap = smoothstep(0.6, 0.1, jacobian);

@@ -24,6 +24,8 @@ struct WaterView {
     int cascades = 0;                       ///< FFT cascades in the textures, [0, 4]
     int resolution = 1;                     ///< FFT N
     std::array<float, 4> cascadeSize{};     ///< tile side per cascade (m)
+    std::array<float, 4> cascadeSlopeVariance{};  ///< mean square slope of each cascade's waves (ocean::cascadeSlopeVariance)
+    float seaSlopeVariance = 0.0f;          ///< the whole sea's mean square slope (ocean::coxMunkSlopeVariance): the glitter's spread
     float lambda = 0.0f;                    ///< choppy displacement factor λ (X + λ·D)
     float gravity = 9.81f;                  ///< m/s², Gerstner dispersion
     std::vector<glm::vec4> gerstner;        ///< (kx, kz, amplitude, phase) per wave, at most 32

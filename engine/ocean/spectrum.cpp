@@ -199,6 +199,21 @@ double modeVariance(double kx, double kz, double dk, const SpectrumParams& p) {
 
 // --- cascades --------------------------------------------------------------------------
 
+double cascadeSlopeVariance(const OceanDef& def, int cascade) {
+    const SpectrumParams params = spectrumParams(def);
+    const WaveBand band = cascadeBand(def, cascade);
+    const double dk = TWO_PI / cascadePatchSize(def, cascade);
+    const int half = def.resolution / 2;
+    double sum = 0.0;
+    for (int m = -half + 1; m < half; ++m)
+        for (int n = -half + 1; n < half; ++n) {
+            const double kx = dk * n, kz = dk * m, k2 = kx * kx + kz * kz;
+            if (k2 < band.kMin * band.kMin || k2 >= band.kMax * band.kMax) continue;
+            sum += k2 * (modeVariance(kx, kz, dk, params) + modeVariance(-kx, -kz, dk, params));
+        }
+    return sum;
+}
+
 double cascadePatchSize(const OceanDef& def, int cascade) {
     const double phi2 = std::numbers::phi * std::numbers::phi;
     return double(def.patch_size) / std::pow(phi2, cascade);

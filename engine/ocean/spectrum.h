@@ -109,6 +109,15 @@ struct WaveBand {
 /// Band of cascade c of def.
 WaveBand cascadeBand(const OceanDef& def, int cascade);
 
+/// The mean square slope ⟨|∇h|²⟩ of cascade c's waves (the ensemble mean over the noise):
+/// Σ k²·(Ph(K) + Ph(−K)) over the modes of its band, as ⟨h²⟩ = Σ (Ph(K) + Ph(−K)). The
+/// renderer's sun glitter adds what the cascades do not resolve (Cox & Munk 1954).
+double cascadeSlopeVariance(const OceanDef& def, int cascade);
+
+/// The mean square slope of a wind sea, waves of every length: Cox & Munk (1954)'s fit to
+/// their photographs of sun glitter, 0.003 + 5.12e-3·U10 (U10 in m/s, clean surface).
+inline double coxMunkSlopeVariance(double windSpeed) { return 0.003 + 5.12e-3 * windSpeed; }
+
 // ---------------------------------------------------------------------------------------
 // The spectrum of one cascade. Layout: N×N, row-major, FFT order. Row r holds wave index
 // m = r for r < N/2 and m = r − N above (kz = 2πm/L), column c likewise n (kx = 2πn/L), so

@@ -34,8 +34,7 @@ struct RenderDef {
     bool foam = true;                               ///< whitecaps where the FFT Jacobian folds, splash rings where ripples are steep, and the persistent foam map
     bool splash_drops = true;                       ///< splash drops drawn as lit sprites (main view and reflection)
     float splash_sprite_scale = 6.0f;               ///< sprite radius / drop radius: a simulated drop stands for a cluster of spray, [1, 100]
-    float glitter = 6.0f;                           ///< sun glitter strength (× sun colour), [0, 100]
-    float glitter_shininess = 600.0f;               ///< sun glitter exponent (Phong), [1, 10000]
+    float glitter = 6.0f;                           ///< the sun's irradiance on the water (× sun colour, relative to the sky's radiance), [0, 100]; its glitter spreads as the sea's slopes (Cox & Munk 1954)
     float exposure = 1.0f;                          ///< scene exposure multiplier before tone mapping, [0.01, 16]
     float resolution_scale = 1.0f;                  ///< internal render size / framebuffer size, [0.25, 1]; below 1 the frame is scaled up (bilinear)
     float target_fps = 30.0f;                       ///< dynamic resolution: the internal scale follows the frame time to hold this rate (play; run only when set on the command line), [0, 1000]; 0 = off (resolution_scale as set)
@@ -64,8 +63,9 @@ template <class V> void describe(V& v, RenderDef& d) {
     v.field("foam", d.foam, "whitecaps (FFT Jacobian), splash rings (steep ripples) and the persistent foam map", LIVE);
     v.field("splash_drops", d.splash_drops, "draw the splash drops as lit sprites", LIVE);
     v.field("splash_sprite_scale", d.splash_sprite_scale, range(1, 100), "sprite radius / drop radius (a drop stands for a cluster of spray)", LIVE);
-    v.field("glitter", d.glitter, range(0, 100), "sun glitter strength", LIVE);
-    v.field("glitter_shininess", d.glitter_shininess, range(1, 10000), "sun glitter exponent (Phong)", LIVE);
+    v.field("glitter", d.glitter, range(0, 100), "the sun's irradiance on the water (its glitter spreads as the sea's slopes)", LIVE);
+    if constexpr (requires { v.refuse("", std::string()); })
+        v.refuse("glitter_shininess", "removed: the glitter spreads as the sea's slopes (Cox & Munk 1954), set by ocean.wind_speed");
     v.field("exposure", d.exposure, range(0.01, 16), "exposure multiplier before tone mapping", LIVE);
     v.field("resolution_scale", d.resolution_scale, range(0.25, 1), "internal render size / framebuffer size (scaled up below 1)", LIVE);
     v.field("target_fps", d.target_fps, range(0, 1000), "dynamic resolution holds this frame rate (play); 0 = off", LIVE);

@@ -87,6 +87,15 @@ gfx::WaterView prepareWaterView(ecs::World& world, double time) {
     view.cascades = ocean->def.cascades;
     view.resolution = ocean->def.resolution;
     for (int c = 0; c < ocean->def.cascades; ++c) view.cascadeSize[size_t(c)] = float(ocean::cascadePatchSize(ocean->def, c));
+    // The cascades' mean square slopes: summed again when a spectrum key changes (a live sea).
+    const ocean::OceanDef& d = ocean->def;
+    const std::array<float, 6> sea{d.wind_speed, d.amplitude, d.small_wave_cutoff, d.fetch, d.peak_enhancement, float(d.spectrum)};
+    if (sea != side->slopeSea) {
+        for (int c = 0; c < d.cascades; ++c) side->slopeVariance[size_t(c)] = float(ocean::cascadeSlopeVariance(d, c));
+        side->slopeSea = sea;
+    }
+    view.cascadeSlopeVariance = side->slopeVariance;
+    view.seaSlopeVariance = float(ocean::coxMunkSlopeVariance(d.wind_speed));
     view.lambda = ocean->cpu->lambda();  // mid-fade: the blend
     view.gravity = ocean->def.gravity;
     // How far the grid must reach: the extremes of the CPU maps (at the step's end). The GPU

@@ -4,6 +4,7 @@
 #include "ecs/world.h"
 #include "gfx/renderer.h"
 
+#include <array>
 #include <cstdint>
 #include <memory>
 
@@ -20,6 +21,8 @@ struct OceanGpu {
     std::unique_ptr<ocean::OceanFftGpu> gpu;  ///< set when the GPU backend renders
     double uploadedTime = -1.0;               ///< time of the maps in the textures (s)
     std::uint64_t seaVersion = 0;             ///< OceanState::seaVersion the GPU FFT's h̃0 and λ follow
+    std::array<float, 4> slopeVariance{};     ///< ocean::cascadeSlopeVariance per cascade, of the sea in `slopeSea`
+    std::array<float, 6> slopeSea{-1.0f};     ///< the spectrum keys it was summed for (a live change sums again)
     ~OceanGpu();
 };
 
