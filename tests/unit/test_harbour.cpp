@@ -1,5 +1,5 @@
-// The harbour scene (config/scenes/harbour.toml): fixed walls, a pier, a post and moored hulls
-// obstruct the ripple layer. It is deterministic, nothing moves inside a wall, and a ring
+// The harbour scene (config/scenes/harbour.toml): fixed walls, a pier and a post obstruct the
+// ripple layer. It is deterministic, nothing moves inside a wall, and a ring
 // raised in front of the breakwater reaches the harbour through the gap only: behind the gap
 // the water moves, behind the walls it barely does (a wall 6 cells thick keeps 1 %, by energy,
 // of what passes a gap as wide, test_obstacles.cpp's shadow bound being 10 %).
