@@ -34,6 +34,16 @@ void RipplePatch::centerOn(glm::vec2 worldCenter) {
     if (shift != glm::ivec2(0)) m_solver->scroll(shift);
 }
 
+// No obstacles, and none before: the solver is not told, so its step is what it always was.
+void RipplePatch::step(float dt) {
+    if (!m_obstacles.empty() || !m_obstruction.empty()) {
+        rasteriseObstacles(m_obstacles, rows(), cols(), m_def.cell_size, [this](glm::vec2 w) { return toGrid(w); },
+                           m_obstruction);
+        m_solver->setObstruction(m_obstruction);
+    }
+    m_solver->step(dt);
+}
+
 float RipplePatch::heightAt(glm::vec2 world) const { return bilinear(height(), rows(), cols(), toGrid(world)); }
 
 bool RipplePatch::stampSphere(const BoundingSphere& sphere, SphereContact& contact, const glm::vec3& centre,

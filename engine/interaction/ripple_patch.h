@@ -47,8 +47,14 @@ public:
     /// m/s; mass kg; surfaceY the water height there, m. True: it stamped.
     bool stampSphere(const BoundingSphere& sphere, SphereContact& contact, const glm::vec3& centre,
                      const glm::vec3& velocity, float mass, float surfaceY);
-    /// One step of dt seconds.
-    void step(float dt) { m_solver->step(dt); }
+    /// The footprints of the bodies that cut the surface this step (world m; fixed bodies,
+    /// hulls), replacing the last ones: step() rasterises them on the grid where it then
+    /// stands and hands the cells to the solver (RippleSolver::setObstruction).
+    void setObstacles(std::span<const ObstacleShape> shapes) { m_obstacles.assign(shapes.begin(), shapes.end()); }
+    /// The cells the last step obstructed (interaction/obstruction.h), for tests and views.
+    std::span<const ObstructionCell> obstruction() const { return m_obstruction; }
+    /// One step of dt seconds (the obstacles rasterised first, when there are or were some).
+    void step(float dt);
 
     const RippleDef& def() const { return m_def; }
     /// Takes `def`'s solver keys (every model's: ripples.damping, .decay_time, .viscosity)
@@ -67,6 +73,8 @@ private:
     RippleDef m_def;
     ScrollingGrid m_grid;  // placement: origin cell, cell size, resolution
     std::unique_ptr<RippleSolver> m_solver;
+    std::vector<ObstacleShape> m_obstacles;       // setObstacles', world m
+    std::vector<ObstructionCell> m_obstruction;   // their cells at the last step
 };
 
 } // namespace ob::interaction

@@ -3,6 +3,7 @@
 // and registers it in ripple_solvers.h.
 #pragma once
 #include "core/hash.h"
+#include "interaction/obstruction.h"
 #include "interaction/sphere_stamp.h"
 
 #include <cmath>
@@ -37,8 +38,13 @@ public:
     virtual bool addSphere(const BoundingSphere& sphere, SphereContact& contact, const SphereMotion& motion) = 0;
     /// Adds dh metres to the height of cell (x, z), in range (a splash drop's crater).
     virtual void addHeight(int x, int z, double dh) = 0;
-    /// One step of dt seconds (> 0), this step's sources applied.
+    /// One step of dt seconds (> 0), this step's sources applied, then the obstruction.
     virtual void step(float dt) = 0;
+    /// The cells bodies occupy on the surface (interaction/obstruction.h: fixed bodies, hulls),
+    /// for the steps from the next on until set again: after each step every level of the state
+    /// is scaled there by the cell's keep factor and what that removed is spread evenly over
+    /// the grid (the mean level kept). Empty (the default): no obstruction, the step as before.
+    virtual void setObstruction(std::span<const ObstructionCell> cells) = 0;
     /// Moves the data by `shift` cells, new (i, j) = old (i + shift.x, j + shift.y), cells
     /// from outside 0 (scrollCells), so the waves stay put in the world while the grid moves.
     virtual void scroll(glm::ivec2 shift) = 0;

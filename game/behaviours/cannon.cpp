@@ -61,13 +61,17 @@ glm::vec3 cannonAim(float yawDeg, float elevationDeg) {
 }
 
 ecs::Entity spawnCannon(ecs::World& world, const ObjectDef& o) {
-    // The pillar it stands on: from below the waves up to the pivot (drawn only).
+    // The pillar it stands on, from below the waves up to the pivot: a fixed body (static in
+    // Bullet, balls bounce off it) that obstructs the ripples where it stands in the water.
     const float bottom = -6.0f, top = o.position.y - 0.4f;
     if (top > bottom) {
-        ecs::Entity pillar = world.create();
-        world.add<ecs::Transform>(pillar, {glm::vec3(o.position.x, 0.5f * (bottom + top), o.position.z)});
-        world.add<Renderable>(pillar, {gfx::MeshKind::Box, glm::vec3(0.8f, 0.5f * (top - bottom), 0.8f), PILLAR_COLOR,
-                                          assets::projectModel("pillar")});
+        const glm::vec3 half(0.8f, 0.5f * (top - bottom), 0.8f);
+        physics::BodyState start;
+        start.position = glm::vec3(o.position.x, 0.5f * (bottom + top), o.position.z);
+        const physics::BodyId id = world.resource<physics::PhysicsWorld>()->addBox(half, 0.0f, start);
+        ecs::Entity pillar = spawnBody(world, ObjectType::Box, "", id, {}, 8.0f * half.x * half.y * half.z, 0.0f, start,
+                                       Renderable{gfx::MeshKind::Box, half, PILLAR_COLOR, assets::projectModel("pillar")});
+        world.add<Obstacle>(pillar, {Obstacle::Shape::Box, half});
     }
     ecs::Entity e = world.create();
     world.add<ecs::Transform>(e, {o.position, aimRotation(o.cannon.yaw_deg, o.cannon.elevation_deg)});

@@ -128,22 +128,30 @@ ecs::Entity findObject(ecs::World& world, const std::string& name) {
 }
 
 // A sphere or a box: a floating body whose bounding sphere is the body itself (the paper's
-// cannonball: SHR 1, AF 0, SD −1: it pushes the water down).
+// cannonball: SHR 1, AF 0, SD −1: it pushes the water down). A fixed one is a static Bullet
+// body (mass 0: balls bounce off it) with no probes and no bounding sphere: it obstructs the
+// ripples instead of pushing them (Obstacle).
 ecs::Entity spawnFloatingBody(ecs::World& world, const ObjectDef& o, uint64_t /*seed*/) {
     auto& physicsWorld = *world.resource<physics::PhysicsWorld>();
     const bool sphere = o.type == ObjectType::Sphere;
+    const bool fixed = sphere ? o.sphere.fixed : o.box.fixed;
     const float radius = o.sphere.radius;
     const glm::vec3 size = o.box.size;
     float volume = sphere ? 4.0f / 3.0f * float(M_PI) * radius * radius * radius : size.x * size.y * size.z;
-    float mass = (sphere ? o.sphere.density : o.box.density) * volume;
+    float mass = fixed ? 0.0f : (sphere ? o.sphere.density : o.box.density) * volume;
     physics::BodyState start;
     start.position = o.position;
-    start.linearVelocity = sphere ? o.sphere.velocity : o.box.velocity;
+    if (!sphere && o.box.yaw_deg != 0.0f) start.rotation = glm::angleAxis(glm::radians(o.box.yaw_deg), glm::vec3(0, 1, 0));
+    if (!fixed) start.linearVelocity = sphere ? o.sphere.velocity : o.box.velocity;
     physics::BodyId id = sphere ? physicsWorld.addSphere(radius, mass, start) : physicsWorld.addBox(size * 0.5f, mass, start);
     // Built-in meshes and models alike are unit shapes, [−1, 1]³ or of radius 1 (the props of
     // tools/model_props.cpp): the body's size stretches them.
     Renderable look{sphere ? gfx::MeshKind::Sphere : gfx::MeshKind::Box, sphere ? glm::vec3(radius) : size * 0.5f, o.color, o.model};
-    ecs::Entity e = spawnBody(world, o.type, o.name, id, probesFor(o), volume, mass, start, look);
+    ecs::Entity e = spawnBody(world, o.type, o.name, id, fixed ? std::vector<Probe>{} : probesFor(o), volume, mass, start, look);
+    if (fixed) {
+        world.add<Obstacle>(e, {sphere ? Obstacle::Shape::Sphere : Obstacle::Shape::Box, sphere ? glm::vec3(radius) : size * 0.5f});
+        return e;
+    }
     interaction::BoundingSphere paper;
     paper.radius = sphere ? radius : 0.5f * std::min({size.x, size.y, size.z});
     paper.direction = interaction::SphereDirection::Down;  // a floating body pushes the water down

@@ -34,12 +34,14 @@ struct SphereBodyDef {
     glm::vec3 velocity{0.0f};  ///< start velocity, m/s
     float radius = 0.5f;       ///< m, [0.01, 10000]
     float density = 500.0f;    ///< kg/m³, [1, 100000] (water: 1025; below floats)
+    bool fixed = false;        ///< never moves: a static body (balls bounce off) that obstructs the ripples where it cuts the surface
 };
 
 template <class V> void describe(V& v, SphereBodyDef& d) {
     v.field("velocity", d.velocity, any(), "start velocity, m/s");
     v.field("radius", d.radius, range(0.01, 10000), "sphere radius, m");
     v.field("density", d.density, range(1, 100000), "density, kg/m³ (water 1025)");
+    v.field("fixed", d.fixed, "never moves; obstructs the ripples where it cuts the surface");
 }
 
 /// [[objects]] type "box": a floating box.
@@ -47,12 +49,16 @@ struct BoxBodyDef {
     glm::vec3 velocity{0.0f};          ///< start velocity, m/s
     glm::vec3 size{1.0f, 1.0f, 1.0f};  ///< edge lengths [x, y, z], m, [0.01, 10000]
     float density = 500.0f;            ///< kg/m³, [1, 100000] (water: 1025; below floats)
+    float yaw_deg = 0.0f;              ///< start turn about +y, deg, [-360, 360] (a wall's direction)
+    bool fixed = false;                ///< never moves: a static body (a wall, a pier, a post) that obstructs the ripples where it cuts the surface
 };
 
 template <class V> void describe(V& v, BoxBodyDef& d) {
     v.field("velocity", d.velocity, any(), "start velocity, m/s");
     v.field("size", d.size, range(0.01, 10000), "box edge lengths, m");
     v.field("density", d.density, range(1, 100000), "density, kg/m³ (water 1025)");
+    v.field("yaw_deg", d.yaw_deg, range(-360, 360), "start turn about +y, deg");
+    v.field("fixed", d.fixed, "never moves (a wall, a pier, a post); obstructs the ripples where it cuts the surface");
 }
 
 /// [[objects]] type "ship": a box hull driven by a pilot (the player or its waypoints).
@@ -199,6 +205,18 @@ struct Body {  // what it is: the entity's ObjectTag
     float horizontalDrag = 1.0f;     ///< scale of the probes' drag on horizontal motion (ships: 0, the hull model resists)
     glm::vec3 angularVelocity{0.0f}; ///< rad/s, world, after the last step
     std::vector<AppliedForce> forces;  ///< behaviour forces for the next step (cleared by the step)
+};
+
+/// A body that obstructs the ripple layer where it cuts the mean water plane (y = 0): its
+/// footprint there (interaction/obstruction.h), from its pose each step (sim/obstacles.h).
+struct Obstacle {
+    enum class Shape : uint8_t {
+        Box,     ///< a box of half extents `half` (fixed boxes, walls, the cannon's pillar)
+        Sphere,  ///< a sphere of radius half.x: the disc where it cuts the plane
+        Hull,    ///< a hull box of half extents `half` (beam, depth, length): its waterplane, an ellipse
+    };
+    Shape shape = Shape::Box;
+    glm::vec3 half{0.5f};  ///< m, in the body's frame
 };
 
 /// How an object looks: mesh, scale (unit mesh → object), colour.

@@ -4,6 +4,7 @@
 #include "core/log.h"
 #include "ecs/components.h"
 #include "interaction/ripple_patch.h"
+#include "sim/obstacles.h"
 #include "sim/stamp_sources.h"
 #include "ocean/gerstner.h"
 #include "ocean/ocean_fft_cpu.h"
@@ -109,6 +110,8 @@ void interactionSystem(ecs::World& world, const ecs::Tick& tick) {
         const float surface = ocean->water->sample(p.centre.x, p.centre.z).height;
         return patch->stampSphere(*p.sphere, *p.contact, p.centre, p.velocity, p.stampMass, surface);
     });
+    // --- the bodies that cut the surface obstruct the step (fixed bodies, hulls; none: no change)
+    patch->setObstacles(obstacleFootprints(world));
     // --- the solver's step: eq. 1–2 (kang2008) or the exact per-mode step over dt (ewave)
     patch->step(float(tick.dt));
 }

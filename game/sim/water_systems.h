@@ -59,7 +59,8 @@ void changeSea(ecs::World& world, const ocean::OceanDef& def, const ocean::Gerst
 /// adds it to the ocean's query; stepSeconds: the simulation step (s).
 void addRipples(ecs::World& world, const interaction::RippleDef& def, float stepSeconds);
 /// Interaction phase: every stamp source's spheres stamp the ripple patch (sim/stamp_sources.h;
-/// Table 2), then the solver's step ([Kang2008] eq. 1–7, or the ewave step and its sources).
+/// Table 2), the obstacles' footprints are handed to it (sim/obstacles.h), then the solver's
+/// step ([Kang2008] eq. 1–7, or the ewave step and its sources), obstructed where they are.
 void interactionSystem(ecs::World& world, const ecs::Tick& tick);
 
 } // namespace ob::game

@@ -1,5 +1,5 @@
-// The props that float, mark and stand in the scenes: crate, barrel, raft, target, buoy, ball
-// and the cannon's pillar. Box-like props span [−1, 1]³ and a round prop is of radius 1, as
+// The props that float, mark and stand in the scenes: crate, barrel, raft, target, buoy, ball,
+// the cannon's pillar and a breakwater's wall. Box-like props span [−1, 1]³ and a round prop is of radius 1, as
 // the built-in box and sphere: the object's size stretches them (sim/objects.cpp).
 #include "tools/model_geometry.h"
 
@@ -159,10 +159,25 @@ ShapeModel buildPillar() {
     return {"pillar", {stone, cap, courses}};
 }
 
+// A breakwater's length of wall: dressed stone under a coping that overhangs it a little, with
+// mortar courses along it.
+ShapeModel buildWall() {
+    ShapePart stone = makePart("stone", {0.30f, 0.28f, 0.25f}, 0.0f, 0.95f);
+    ShapePart coping = makePart("coping", {0.40f, 0.38f, 0.34f}, 0.0f, 0.9f);
+    ShapePart courses = makePart("courses", {0.20f, 0.19f, 0.17f}, 0.0f, 0.95f);
+    addBox(stone, {-1.0, -1.0, -0.92}, {1.0, 0.85, 0.92});
+    addBox(coping, {-1.0, 0.85, -1.0}, {1.0, 1.0, 1.0});
+    for (int k = 1; k < 6; ++k) {
+        const double y = -1.0 + 0.3 * k;
+        addBox(courses, {-1.0, y - 0.012, -0.93}, {1.0, y + 0.012, 0.93});
+    }
+    return {"wall", {stone, coping, courses}};
+}
+
 } // namespace
 
 std::vector<ShapeModel> buildPropModels() {
-    return {buildCrate(), buildBarrel(), buildRaft(), buildTarget(), buildBall(), buildBuoy(), buildPillar()};
+    return {buildCrate(), buildBarrel(), buildRaft(), buildTarget(), buildBall(), buildBuoy(), buildPillar(), buildWall()};
 }
 
 } // namespace ob::game

@@ -40,7 +40,8 @@ std::vector<ShapeModel> buildProjectModels();
 
 /// The props (model_props.cpp): crate, barrel, raft and target span [−1, 1]³ (a box object
 /// stretches them to its size); ball and buoy are of radius 1 (the buoy's topmark stands
-/// above it, to y = 2.3); the pillar spans [−1, 1]³ (the cannon stands on it).
+/// above it, to y = 2.3); the pillar and the wall span [−1, 1]³ (the cannon stands on one,
+/// the harbour's breakwaters are the other).
 std::vector<ShapeModel> buildPropModels();
 
 } // namespace ob::game

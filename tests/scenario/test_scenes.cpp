@@ -19,7 +19,7 @@ namespace {
 
 // The scenes with a test below; the last test checks the folder holds no other.
 const std::set<std::string> SCENES{"default", "spectrum_only", "cannon", "fish", "ship", "all", "fish_swarm", "drop", "wake",
-                                 "sandbox", "targets", "race", "herd"};
+                                 "sandbox", "targets", "race", "herd", "harbour"};
 
 struct Run {
     int exitCode = -1;
@@ -73,6 +73,7 @@ TEST_CASE("scene sandbox.toml: 600 headless frames without error, the same state
 TEST_CASE("scene targets.toml: 600 headless frames without error, the same state hash twice", "[scenes][long]") { checkScene("targets"); }
 TEST_CASE("scene race.toml: 600 headless frames without error, the same state hash twice", "[scenes][long]") { checkScene("race"); }
 TEST_CASE("scene herd.toml: 600 headless frames without error, the same state hash twice", "[scenes][long]") { checkScene("herd"); }
+TEST_CASE("scene harbour.toml: 600 headless frames without error, the same state hash twice", "[scenes][long]") { checkScene("harbour"); }
 
 TEST_CASE("every scene in config/scenes has a determinism test", "[scenes]") {
     std::set<std::string> found;

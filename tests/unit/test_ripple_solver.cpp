@@ -35,6 +35,7 @@ public:
     std::vector<glm::ivec2> shifts;
     std::vector<float> steps;
     std::vector<float> dampings;  // retune's damping key, per call
+    std::vector<std::vector<ObstructionCell>> obstructions;  // setObstruction's cells, per call
 
     int rows() const override { return m_n; }
     int cols() const override { return m_n; }
@@ -44,6 +45,7 @@ public:
     }
     void addHeight(int x, int z, double dh) override { heights.push_back({x, z, dh}); }
     void step(float dt) override { steps.push_back(dt); }
+    void setObstruction(std::span<const ObstructionCell> cells) override { obstructions.emplace_back(cells.begin(), cells.end()); }
     void scroll(glm::ivec2 shift) override {
         shifts.push_back(shift);
         ob::scrollCells(m_height.data(), m_n, m_n, shift, std::nanf(""));

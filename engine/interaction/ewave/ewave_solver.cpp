@@ -42,6 +42,21 @@ void EWaveSolver::step(float dt) {
     if (m_offload) m_offload->step(dt, m_changed);
     else m_field.step(dt);
     m_changed = false;
+    if (!m_obstruction.empty()) obstruct();
+}
+
+// The iWave projection after the exact step (operator splitting: free evolution over dt, then
+// h = v = 0 inside the bodies), each level's sum kept (docs/ewave.md#obstacles). On the GPU it
+// runs on the read-back mirror, and the next step uploads the result.
+void EWaveSolver::obstruct() {
+    obstructField(m_field, m_obstruction);
+    m_changed = onGpu();
+}
+
+void obstructField(EWaveField& field, std::span<const ObstructionCell> cells) {
+    obstructKeepingMean(field.editHeight(), cells);
+    obstructKeepingMean(field.editVelocity(), cells);
+    field.syncHeight();
 }
 
 void EWaveSolver::scroll(glm::ivec2 shift) {

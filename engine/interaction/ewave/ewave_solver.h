@@ -46,6 +46,9 @@ public:
     void addHeight(int x, int z, double dh) override;
     /// The queued sources over dt, then the exact per-mode step over dt.
     void step(float dt) override;
+    /// Applied after the CPU step, or after the GPU step's read-back on the CPU mirror (which
+    /// the next step then uploads).
+    void setObstruction(std::span<const ObstructionCell> cells) override { m_obstruction.assign(cells.begin(), cells.end()); }
     void scroll(glm::ivec2 shift) override;
     void clear() override;
     /// h, its float copy.
@@ -59,11 +62,19 @@ public:
     const char* backendName() const override { return onGpu() ? "gpu (compute shaders, float FFT)" : "cpu (FFTW)"; }
 
 private:
+    void obstruct();
+
     EWaveField m_field;
     float m_cellSize;                    // m
     std::vector<EWaveSource> m_sources;  // this step's stamps, grid coordinates, applied over the step's dt
     std::unique_ptr<Offload> m_offload;
     bool m_changed = false;              // the CPU state was written since the last step (the offload uploads it)
+    std::vector<ObstructionCell> m_obstruction;  // setObstruction's cells, applied after each step
 };
+
+/// The iWave projection on an ewave field (docs/ewave.md#obstacles): h and v scaled by the
+/// cells' keep factors, each level's sum kept (obstructKeepingMean), the float copy rebuilt.
+/// EWaveSolver runs it after each step; tests run it on fields of any shape.
+void obstructField(EWaveField& field, std::span<const ObstructionCell> cells);
 
 } // namespace ob::interaction

@@ -36,6 +36,12 @@ void Kang2008Solver::step(float /*dt*/) {
     if (m_offload) m_offload->step(m_damping, m_edited);
     else m_field.step(m_damping);
     m_edited = false;
+    if (m_obstruction.empty()) return;
+    // The iWave projection (docs/ewave.md#obstacles): both levels 0 inside the bodies, so the
+    // next step sees still, level water there; each level's sum kept.
+    obstructKeepingMean(m_field.current(), m_obstruction);
+    obstructKeepingMean(m_field.previous(), m_obstruction);
+    m_edited = onGpu();
 }
 
 void Kang2008Solver::scroll(glm::ivec2 shift) {

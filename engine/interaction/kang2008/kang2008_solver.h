@@ -47,6 +47,9 @@ public:
     void addHeight(int x, int z, double dh) override;
     /// Eq. 1–2 with the Def's DF (dt unused: the paper steps per frame).
     void step(float dt) override;
+    /// Applied to Vh(t) and Vh(t−1) after each step (on the GPU: on the read-back CPU field,
+    /// which the next step then uploads).
+    void setObstruction(std::span<const ObstructionCell> cells) override { m_obstruction.assign(cells.begin(), cells.end()); }
     void scroll(glm::ivec2 shift) override;
     void clear() override;
     /// Vh(t).
@@ -66,6 +69,7 @@ private:
     FootprintCache m_footprints;
     std::unique_ptr<Offload> m_offload;
     bool m_edited = false;  // offload: the CPU field changed since the last step
+    std::vector<ObstructionCell> m_obstruction;  // setObstruction's cells, applied after each step
 };
 
 } // namespace ob::interaction
