@@ -7,9 +7,11 @@
 // ([Lee2007]) and foam where the FFT Jacobian folds or the ripples are steep, and where the
 // persistent foam map holds coverage (its bubble pattern thins as the coverage decays).
 // Each FFT cascade's slopes fade out with distance ([render] far_fade) as its displacement does.
+// Light through thin crests: common_subsurface.glsl. From below: common_underwater.glsl.
 // Compiled per gfx::WaterVariant: the cascade count and the switches (WATER_REFLECTIONS,
 // WATER_REFRACTIONS, WATER_FOAM, WATER_FOAM_MAP, WATER_RIPPLES), the eye's side
-// (WATER_UNDERWATER) and the Fresnel law (WATER_EXACT_FRESNEL) are constants here. With
+// (WATER_UNDERWATER; WATER_WATERLINE: the surface crosses the near plane, each pixel takes its
+// own) and the Fresnel law (WATER_EXACT_FRESNEL) are constants here. With
 // WATER_FULL_QUALITY ([render] water_full_quality): every term per pixel, the reference the
 // shipped shading is tested against (the ripple slope from four height lookups, the haze from
 // the sky and the cascades' weights per pixel instead of per vertex).
@@ -18,6 +20,8 @@
 #include "common_fresnel.glsl"
 #include "common_water.glsl"
 #include "common_detail.glsl"
+#include "common_underwater.glsl"
+#include "common_subsurface.glsl"
 
 in vec3 v_world;
 in vec2 v_rest;
@@ -80,17 +84,11 @@ void main() {
     r.y = abs(r.y);
 
     // The sky is the analytic one the cube is baked from: on llvmpipe a cube lookup costs more
-    // than the formula.
-    if (WATER_UNDERWATER) {
-        // The surface from below: Snell's window (the sky refracted in) inside the critical
-        // angle, total internal reflection of the dark water outside it.
-        vec3 refracted = refract(-v, -n, WATER_IOR);
-        vec3 color = body * 0.5;
-        if (dot(refracted, refracted) > 0.0) {
-            float transmitted = 1.0 - fresnel(dot(refracted, n), exact);
-            color = mix(color, skyRadiance(normalize(refracted), sun), transmitted);
-        }
-        o_color = finalColor(underwaterFog(color, dist), gl_FragCoord.xy);
+    // than the formula. Seen from below (the eye under water, or this pixel under the
+    // waterline): Snell's window and total internal reflection, faded over the path to the eye.
+    if (WATER_UNDERWATER || (WATER_WATERLINE && pixelUnderwater(gl_FragCoord.xy))) {
+        vec3 below = surfaceFromBelow(-v, n, sun, exact, frame.shading.z, frame.shading.w);
+        o_color = finalColor(underwaterExtinction(below, dist, -v), gl_FragCoord.xy);
         return;
     }
     vec3 sky = skyRadiance(normalize(r), sun);
@@ -130,6 +128,7 @@ void main() {
     float F = fresnel(cosV, exact);
     vec3 color = mix(refraction, reflection, F);
     color += SUN_COLOR * sunTint(sun) * frame.shading.z * pow(max(dot(r, sun), 0.0), frame.shading.w);
+    color += crestSubsurface(v_world.y, water.crest.x, water.crest.y, v, n, sun);  // the mean level is y = 0
 
     if (WATER_FOAM) {
         float whitecap = smoothstep(0.6, 0.1, jacobian);
