@@ -201,7 +201,7 @@ TEST_CASE("thin crests toward the sun glow turquoise; away from the sun, or swit
     const glm::vec3 toward = added(glm::normalize(glm::vec3(0.0f, 0.2f, -1.0f)));
     const glm::vec3 away = added(glm::normalize(glm::vec3(0.0f, 0.2f, 1.0f)));
     INFO("added toward the sun " << toward.x << " " << toward.y << " " << toward.z << ", away " << away.x << " " << away.y << " " << away.z);
-    CHECK(toward.y > 0.01f);             // visible, in 8 bits
+    CHECK(toward.y > 0.006f);            // visible: 1.5 levels of 255 on the mean of the sea (0.013 measured)
     CHECK(toward.y > 5.0f * std::max(away.y, 0.001f));
     CHECK(toward.y > 2.0f * toward.x);   // turquoise: green and blue, little red
     CHECK(toward.z > 2.0f * toward.x);
