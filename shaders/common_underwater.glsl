@@ -1,8 +1,7 @@
 // The view from under water (docs/frame.md, "Under water"): per-channel extinction by
 // Jerlov's oceanic water type I ([Jerlov1976] Kd at 650/550/450 nm), the water's own in-scattered
-// light, the surface seen from below (Snell's window inside the critical angle, total internal
-// reflection outside it) and the per-pixel waterline test at the near plane. Needs
-// common_frame.glsl, common_sky.glsl and common_fresnel.glsl.
+// light and the per-pixel waterline test at the near plane; the surface seen from below is in
+// common_underwater_surface.glsl. Needs common_frame.glsl.
 #ifndef COMMON_UNDERWATER_GLSL
 #define COMMON_UNDERWATER_GLSL
 
@@ -31,21 +30,6 @@ vec3 underwaterInscatter(vec3 dir) {
 vec3 underwaterExtinction(vec3 color, float dist, vec3 dir) {
     vec3 t = underwaterTransmittance(dist);
     return color * t + underwaterInscatter(dir) * (1.0 - t);
-}
-
-// The surface seen from below along `view` (eye → surface, going up) with normal `n` (up):
-// the refracted sky and sun inside Snell's window, weighted by the transmittance (1 − Fresnel;
-// radiance grows by n² entering the denser medium), the water's own light mirrored by the
-// Fresnel reflectance and, past the critical angle asin(1/n) = 48.8°, totally reflected.
-vec3 surfaceFromBelow(vec3 view, vec3 n, vec3 sun, bool exact, float glitter, float shininess) {
-    vec3 mirrored = reflect(view, -n);
-    vec3 inside = underwaterInscatter(normalize(vec3(mirrored.x, min(mirrored.y, 0.0), mirrored.z)));
-    vec3 refracted = refract(view, -n, WATER_IOR);
-    if (dot(refracted, refracted) == 0.0) return inside;  // total internal reflection
-    refracted = normalize(refracted);
-    float transmitted = 1.0 - fresnel(dot(refracted, n), exact);
-    vec3 sky = skyRadiance(refracted, sun) + vec3(1.0, 0.9, 0.7) * sunTint(sun) * glitter * pow(max(dot(refracted, sun), 0.0), shininess);
-    return mix(inside, sky * WATER_IOR * WATER_IOR, transmitted);
 }
 
 // True where the pixel's point on the near plane lies under the water: the affine function of

@@ -5,7 +5,6 @@
 // by the water above it.
 #include "common_frame.glsl"
 #include "common_sky.glsl"
-#include "common_fresnel.glsl"
 #include "common_underwater.glsl"
 
 in vec3 v_world;

@@ -3,7 +3,6 @@
 // water's own in-scattered light (what every extinction under water fades toward).
 #include "common_frame.glsl"
 #include "common_sky.glsl"
-#include "common_fresnel.glsl"
 #include "common_underwater.glsl"
 
 in vec2 v_ndc;

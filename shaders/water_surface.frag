@@ -7,7 +7,7 @@
 // ([Lee2007]) and foam where the FFT Jacobian folds or the ripples are steep, and where the
 // persistent foam map holds coverage (its bubble pattern thins as the coverage decays).
 // Each FFT cascade's slopes fade out with distance ([render] far_fade) as its displacement does.
-// Light through thin crests: common_subsurface.glsl. From below: common_underwater.glsl.
+// Light through thin crests: common_subsurface.glsl. From below: common_underwater*.glsl.
 // Compiled per gfx::WaterVariant: the cascade count and the switches (WATER_REFLECTIONS,
 // WATER_REFRACTIONS, WATER_FOAM, WATER_FOAM_MAP, WATER_RIPPLES), the eye's side
 // (WATER_UNDERWATER; WATER_WATERLINE: the surface crosses the near plane, each pixel takes its
@@ -21,6 +21,7 @@
 #include "common_water.glsl"
 #include "common_detail.glsl"
 #include "common_underwater.glsl"
+#include "common_underwater_surface.glsl"
 #include "common_subsurface.glsl"
 
 in vec3 v_world;
@@ -87,7 +88,7 @@ void main() {
     // than the formula. Seen from below (the eye under water, or this pixel under the
     // waterline): Snell's window and total internal reflection, faded over the path to the eye.
     if (WATER_UNDERWATER || (WATER_WATERLINE && pixelUnderwater(gl_FragCoord.xy))) {
-        vec3 below = surfaceFromBelow(-v, n, sun, exact, frame.shading.z, frame.shading.w);
+        vec3 below = surfaceFromBelow(-v, n, sun, exact, SUN_COLOR * sunTint(sun) * frame.shading.z, frame.shading.w);
         o_color = finalColor(underwaterExtinction(below, dist, -v), gl_FragCoord.xy);
         return;
     }

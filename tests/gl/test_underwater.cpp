@@ -178,7 +178,7 @@ TEST_CASE("a half-dipped camera: below the waterline at the near plane the under
     }
 }
 
-TEST_CASE("thin crests toward the sun glow turquoise; away from the sun, or switched off, they do not", "[gl][render][water]") {
+TEST_CASE("thin crests toward the sun glow turquoise, away from the sun or switched off they do not", "[gl][render][water]") {
     gfx::requestDebugOutput(true);
     const glm::ivec2 size(240, 135);
     // One long swell along z (20 m, 0.8 m high) seen from 2.5 m up, looking along −z.

@@ -1,8 +1,6 @@
 #version 450 core
 // Test probe: the under-water extinction at N distances: the transmittance, and a white object's colour seen along +y.
 #include "common_frame.glsl"
-#include "common_sky.glsl"
-#include "common_fresnel.glsl"
 #include "common_underwater.glsl"
 
 layout(local_size_x = 16) in;
