@@ -79,6 +79,7 @@ UNIFORM_BLOCK(FrameUniforms, FRAME_BLOCK) {
     vec4 depthParams;          // near, far (m), water clarity (m), sky cube mip count
     vec4 shading;              // DU/DV strength, normal distortion, the sun's irradiance for the glitter, 0
     vec4 switches;             // reflections, refractions, foam (1 on, 0 off), dither of the 8-bit outputs (LSB; 0 off)
+    vec4 waterline;            // xyz: height (m) of a pixel's point on the near plane above the water's tangent plane at the eye = x·ndc.x + y·ndc.y + z (< 0: the pixel is under water); w the eye's depth under the surface (m, ≥ 0)
 } BLOCK_INSTANCE(frame);
 
 SHARED_CONST MAX_GERSTNER_WAVES = 32;
@@ -96,6 +97,7 @@ UNIFORM_BLOCK(WaterUniforms, WATER_BLOCK) {
     vec4 farFade;            // x 1: Gerstner waves fade where the grid is too sparse for them (0: exact)
     vec4 cascadeSlopeVariance;  // per cascade: mean square slope of its waves (unused cascades 0)
     vec4 glitterParams;      // x Cox–Munk mean square slope of the wind's sea, 0.003 + 5.12e-3·U10
+    vec4 crest;              // x the tallest crest above the mean level (m), y [render] subsurface strength (0: off)
     vec4 gerstner[MAX_GERSTNER_WAVES];  // (kx, kz, amplitude, phase) per wave
 } BLOCK_INSTANCE(water);
 

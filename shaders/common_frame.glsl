@@ -8,18 +8,11 @@ vec3 viewRay(vec2 ndc) {
     return normalize(farPoint.xyz / farPoint.w - frame.cameraPositionTime.xyz);
 }
 
-bool eyeUnderwater() { return frame.viewport.w > 0.5; }
-
 // Water body colour lit by the sun's height (linear radiance); dark at night (the sun below
 // sin e = −0.18, as common_sky.glsl's daylight()).
 vec3 waterBodyColor() {
     float night = mix(0.06, 1.0, smoothstep(-0.18, 0.10, frame.sunDirectionFresnel.y));
     return frame.waterColorExposure.rgb * (0.35 + 0.65 * max(frame.sunDirectionFresnel.y, 0.0)) * night;
-}
-
-// Light through `dist` metres of water: fades to the body colour (Beer–Lambert by clarity).
-vec3 underwaterFog(vec3 color, float dist) {
-    return mix(waterBodyColor(), color, exp(-dist / (4.0 * frame.depthParams.z)));
 }
 
 // Exposure, filmic tone curve (Narkowicz's ACES fit) and sRGB encoding; render targets keep

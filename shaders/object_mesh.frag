@@ -1,8 +1,11 @@
 #version 450 core
 // Objects lit by the sun (Lambert + a little specular) and the sky (hemispheric ambient),
-// with the water's aerial perspective above and its fog below.
+// with the water's aerial perspective above and, in pixels under the water, its extinction
+// (common_underwater.glsl); under water the sunlight reaching the object is dimmed per channel
+// by the water above it.
 #include "common_frame.glsl"
 #include "common_sky.glsl"
+#include "common_underwater.glsl"
 
 in vec3 v_world;
 in vec3 v_normal;
@@ -19,8 +22,10 @@ void main() {
     vec3 ambient = mix(vec3(0.10, 0.14, 0.18) * daylight(sun), skyRadiance(vec3(0.0, 1.0, 0.0), sun) * 0.45, 0.5 + 0.5 * n.y);
     vec3 light = ambient + vec3(1.0, 0.92, 0.8) * sunTint(sun) * 1.4 * max(dot(n, sun), 0.0);
     vec3 color = u_tint * v_color * light + sunTint(sun) * 0.25 * pow(max(dot(reflect(-sun, n), v), 0.0), 40.0);
-    if (eyeUnderwater()) {
-        color = underwaterFog(color, dist);
+    if (pixelUnderwater(gl_FragCoord.xy)) {
+        // The light reaching the object's depth under the mean level (y = 0), then the path to the eye.
+        color *= underwaterTransmittance(-v_world.y);
+        color = underwaterExtinction(color, dist, -v);
     } else {
         vec3 haze = skyRadiance(normalize(vec3(-v.x, 0.0, -v.z)), sun);
         color = mix(color, haze, 1.0 - exp(-dist * 0.00025));

@@ -7,9 +7,11 @@
 // (Cox & Munk 1954: the slopes no layer draws, common_glitter.glsl) and foam where the FFT Jacobian folds or the ripples are steep, and where the
 // persistent foam map holds coverage (its bubble pattern thins as the coverage decays).
 // Each FFT cascade's slopes fade out with distance ([render] far_fade) as its displacement does.
+// Light through thin crests: common_subsurface.glsl. From below: common_underwater*.glsl.
 // Compiled per gfx::WaterVariant: the cascade count and the switches (WATER_REFLECTIONS,
 // WATER_REFRACTIONS, WATER_FOAM, WATER_FOAM_MAP, WATER_RIPPLES), the eye's side
-// (WATER_UNDERWATER) and the Fresnel law (WATER_EXACT_FRESNEL) are constants here. With
+// (WATER_UNDERWATER; WATER_WATERLINE: the surface crosses the near plane, each pixel takes its
+// own) and the Fresnel law (WATER_EXACT_FRESNEL) are constants here. With
 // WATER_FULL_QUALITY ([render] water_full_quality): every term per pixel, the reference the
 // shipped shading is tested against (the ripple slope from four height lookups, the haze from
 // the sky and the cascades' weights per pixel instead of per vertex).
@@ -19,6 +21,9 @@
 #include "common_glitter.glsl"
 #include "common_water.glsl"
 #include "common_detail.glsl"
+#include "common_underwater.glsl"
+#include "common_underwater_surface.glsl"
+#include "common_subsurface.glsl"
 
 in vec3 v_world;
 in vec2 v_rest;
@@ -36,6 +41,9 @@ const float DETAIL_TILE = 24.0;            // m per repeat of the detail map
 const vec2 DETAIL_DRIFT = vec2(0.031, 0.017);  // detail map scroll (repeats per s)
 const vec3 SUN_COLOR = vec3(1.0, 0.9, 0.7);
 const float MIN_GLITTER_SLOPE_VARIANCE = 0.001;
+// The sun seen through the window from below: a Phong lobe about the refracted ray (an
+// approximation; the slopes' statistics shape only the glitter seen from above).
+const float SUN_FROM_BELOW_SHININESS = 600.0;
 const float FOAM_TILE = 5.0;               // m per repeat of the persistent foam's bubble pattern
 const float FOAM_EDGE = 0.08;              // softness of the pattern's threshold
 const float FOAM_DENSE = 0.85;             // the share of the surface foam at coverage 1 covers
@@ -84,17 +92,11 @@ void main() {
     r.y = abs(r.y);
 
     // The sky is the analytic one the cube is baked from: on llvmpipe a cube lookup costs more
-    // than the formula.
-    if (WATER_UNDERWATER) {
-        // The surface from below: Snell's window (the sky refracted in) inside the critical
-        // angle, total internal reflection of the dark water outside it.
-        vec3 refracted = refract(-v, -n, WATER_IOR);
-        vec3 color = body * 0.5;
-        if (dot(refracted, refracted) > 0.0) {
-            float transmitted = 1.0 - fresnel(dot(refracted, n), exact);
-            color = mix(color, skyRadiance(normalize(refracted), sun), transmitted);
-        }
-        o_color = finalColor(underwaterFog(color, dist), gl_FragCoord.xy);
+    // than the formula. Seen from below (the eye under water, or this pixel under the
+    // waterline): Snell's window and total internal reflection, faded over the path to the eye.
+    if (WATER_UNDERWATER || (WATER_WATERLINE && pixelUnderwater(gl_FragCoord.xy))) {
+        vec3 below = surfaceFromBelow(-v, n, sun, exact, SUN_COLOR * sunTint(sun) * frame.shading.z, SUN_FROM_BELOW_SHININESS);
+        o_color = finalColor(underwaterExtinction(below, dist, -v), gl_FragCoord.xy);
         return;
     }
     vec3 sky = skyRadiance(normalize(r), sun);
@@ -137,6 +139,7 @@ void main() {
     // of capillary ripples on a glassy sea, so the sun never shrinks to a point).
     float unresolved = max(water.glitterParams.x - resolvedSlopes, MIN_GLITTER_SLOPE_VARIANCE);
     color += SUN_COLOR * sunTint(sun) * frame.shading.z * glitterRadiance(n, v, sun, unresolved, exact);
+    color += crestSubsurface(v_world.y, water.crest.x, water.crest.y, v, n, sun);  // the mean level is y = 0
 
     if (WATER_FOAM) {
         float whitecap = smoothstep(0.6, 0.1, jacobian);

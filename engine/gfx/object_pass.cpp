@@ -55,12 +55,13 @@ void ObjectPass::draw(FrameContext& frame, const std::vector<ObjectDraw>& object
         const Mesh& mesh = m_meshes.meshFor(o, state.eye, state.pixelsPerRadian[view]);
         // An object wholly on one side of the surface is skipped by the pass that keeps the
         // other side, and wholly under it by the camera's view from above: the water surface,
-        // drawn after it and opaque, covers it (the refraction pass shows it). The surface per
+        // drawn after it and opaque, covers it (the refraction pass shows it). Seen from under
+        // water, or across the waterline, every object is drawn (with the water's extinction). The surface per
         // vertex (the cut's cost on a software rasteriser) is evaluated only for large objects
         // across it in the passes that cut; the others take its tangent plane.
         const Side side = sideOfSurface(o, mesh);
         if ((view == REFLECTION_VIEW && side == Side::Below) || (view == REFRACTION_VIEW && side == Side::Above) ||
-            (view == MAIN_VIEW && side == Side::Below && !state.underwater && state.waterVisible))
+            (view == MAIN_VIEW && side == Side::Below && !state.underwater && !state.waterline && state.waterVisible))
             continue;
         const bool perVertex = view != MAIN_VIEW && side == Side::Across && boundingRadius(o, mesh) > TANGENT_PLANE_RADIUS;
         const GLuint program = perVertex ? m_waterlineProgram.id() : m_program.id();

@@ -2,6 +2,7 @@
 #include "gfx/render_frame.h"
 #include "gfx/sun.h"
 
+#include <algorithm>
 #include <glm/glm.hpp>
 #include <iterator>
 
@@ -11,6 +12,18 @@ namespace {
 const char* const PASS_NAMES[] = {"sky_bake", "reflection", "refraction", "opaque", "water", "sky", "splash", "post"};
 static_assert(std::size(PASS_NAMES) == PASS_COUNT);
 } // namespace
+
+glm::vec4 nearPlaneWaterHeight(const CameraView& camera) {
+    const glm::mat4 inverse = glm::inverse(camera.projection * camera.view);
+    const auto height = [&](float x, float y) {
+        const glm::vec4 p = inverse * glm::vec4(x, y, -1.0f, 1.0f);
+        const glm::vec3 q = glm::vec3(p) / p.w;
+        const glm::vec2 along = glm::vec2(q.x, q.z) - glm::vec2(camera.position.x, camera.position.z);
+        return q.y - (camera.waterHeight + glm::dot(camera.waterSlope, along));
+    };
+    const float c = height(0.0f, 0.0f);
+    return {height(1.0f, 0.0f) - c, height(0.0f, 1.0f) - c, c, std::max(camera.waterHeight - camera.position.y, 0.0f)};
+}
 
 int mipLevels(int size) {
     int levels = 1;
@@ -34,6 +47,7 @@ void FrameViews::update(const RenderDef& def, const FrameState& frame, const Cam
     u.shading = glm::vec4(def.dudv_strength, def.normal_distortion, def.glitter, 0.0f);
     u.switches = glm::vec4(def.reflections ? 1.0f : 0.0f, def.refractions ? 1.0f : 0.0f, def.foam ? 1.0f : 0.0f,
                            def.dither ? 1.0f : 0.0f);
+    u.waterline = frame.nearPlaneHeight;
     const float underwater = frame.underwater ? 1.0f : 0.0f;
 
     const glm::mat4 viewProjection = camera.projection * camera.view;

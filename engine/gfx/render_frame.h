@@ -9,6 +9,7 @@
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 #include <string>
 #include <utility>
 #include <vector>
@@ -40,7 +41,9 @@ using ProgramList = std::vector<std::pair<std::string, GLuint>>;
 /// This frame's facts, shared by its passes.
 struct FrameState {
     Antialias antialias = Antialias::Off;    ///< this frame's mode (never Auto)
-    bool underwater = false;                 ///< the eye is below the surface under it
+    bool underwater = false;                 ///< the whole near plane is below the surface (the eye's side)
+    bool waterline = false;                  ///< the surface crosses the near plane: each pixel takes its own side (pixelUnderwater)
+    glm::vec4 nearPlaneHeight{0.0f};         ///< FrameUniforms::waterline: the near-plane point's height over the water, affine in ndc; w the eye's depth
     bool waterVisible = false;               ///< some water can be on screen (the projected grid's, WaterPass::prepare)
     glm::ivec2 internal{0};                  ///< the internal frame's size (px)
     glm::vec3 eye{0.0f};                     ///< the camera (m)
@@ -93,6 +96,11 @@ public:
 private:
     GpuTimer& m_timer;
 };
+
+/// The height (m) of each pixel's point on the near plane above the water's tangent plane at the
+/// eye, as (a, b, c) of a·ndc.x + b·ndc.y + c (affine: the near plane and the tangent plane are
+/// planes), and in w the eye's depth under the surface (m, ≥ 0).
+glm::vec4 nearPlaneWaterHeight(const CameraView& camera);
 
 /// Levels of a full mip chain for a square of `size` texels.
 int mipLevels(int size);

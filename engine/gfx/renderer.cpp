@@ -38,7 +38,13 @@ ProgramList Renderer::programs() const {
 void Renderer::beginFrame(const CameraView& camera, double time, glm::ivec2 size) {
     FrameState& state = m_frame.state;
     const RenderDef& def = m_frame.def;
-    state.underwater = camera.position.y < camera.waterHeight;
+    // The eye's side: the near plane's four corners against the water's tangent plane at the eye.
+    state.nearPlaneHeight = nearPlaneWaterHeight(camera);
+    int below = 0;
+    for (float x : {-1.0f, 1.0f})
+        for (float y : {-1.0f, 1.0f}) below += glm::dot(glm::vec3(state.nearPlaneHeight), glm::vec3(x, y, 1.0f)) < 0.0f;
+    state.underwater = below == 4;
+    state.waterline = below > 0 && below < 4;
     state.antialias = antialiasMode(def.antialias, isSoftwareRenderer());
     if (state.antialias == Antialias::Msaa4 && !m_post.msaaSupported()) {
         static bool warned = false;

@@ -19,6 +19,9 @@ namespace {
 constexpr float GRID_REACH = 0.9f;
 // A cascade starts to fade out at this fraction of its fade distance ([render] tile_fade tiles).
 constexpr float TILE_FADE_START = 1.0f / 3.0f;
+// The crest height at which the subsurface term is whole, as a share of the tallest crest the
+// layers can raise (their bound adds every wave's amplitude, which few crests reach).
+constexpr float CREST_SHARE = 0.25f;
 
 // How far the layers can move a rest point: the FFT cascades' extremes (from the view), the
 // Gerstner waves' Σ a (each moves a point by a along its K and by a·cos θ up), the ripple
@@ -41,7 +44,8 @@ SurfaceBounds displacementBounds(const WaterView& water) {
 std::string WaterVariant::defines() const {
     const auto flag = [](const char* name, bool on) { return std::string("#define ") + name + (on ? " true\n" : " false\n"); };
     return "#define WATER_VARIANT\n#define WATER_CASCADES " + std::to_string(cascades) + "\n" + flag("WATER_RIPPLES", ripples) +
-           flag("WATER_FOAM_MAP", foamMap) + flag("WATER_UNDERWATER", underwater) + flag("WATER_EXACT_FRESNEL", exactFresnel) +
+           flag("WATER_FOAM_MAP", foamMap) + flag("WATER_UNDERWATER", underwater) + flag("WATER_WATERLINE", waterline) +
+           flag("WATER_EXACT_FRESNEL", exactFresnel) +
            flag("WATER_REFLECTIONS", reflections) + flag("WATER_REFRACTIONS", refractions) + flag("WATER_FOAM", foam) +
            (fullQuality ? "#define WATER_FULL_QUALITY\n" : "");
 }
@@ -89,6 +93,7 @@ void WaterPass::uploadUniforms(FrameContext& frame, const CameraView& camera, co
     for (int c = 0; c < 4; ++c) u.cascadeSlopeVariance[c] = layers ? water.cascadeSlopeVariance[size_t(c)] : 0.0f;
     u.glitterParams = glm::vec4(water.seaSlopeVariance, 0.0f, 0.0f, 0.0f);
     u.farFade = glm::vec4(def.far_fade ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f);
+    u.crest = glm::vec4(CREST_SHARE * m_crestBound, def.subsurface, 0.0f, 0.0f);
     for (int c = 0; c < 4 && layers && def.far_fade; ++c) {
         u.cascadeFadeEnd[c] = def.tile_fade * water.cascadeSize[size_t(c)];
         u.cascadeFade[c] = TILE_FADE_START * u.cascadeFadeEnd[c];
@@ -102,6 +107,7 @@ void WaterPass::uploadUniforms(FrameContext& frame, const CameraView& camera, co
                  .ripples = u.rippleParams.w > 0.0f,
                  .foamMap = u.foamParams.w > 0.0f,
                  .underwater = frame.state.underwater,
+                 .waterline = frame.state.waterline,
                  .exactFresnel = def.fresnel == Fresnel::Exact,
                  .reflections = def.reflections,
                  .refractions = def.refractions,
@@ -112,7 +118,9 @@ void WaterPass::uploadUniforms(FrameContext& frame, const CameraView& camera, co
 }
 
 void WaterPass::prepare(FrameContext& frame, const CameraView& camera, const WaterView& water) {
-    m_grid = projectedGridCorners(camera.projection * camera.view, camera.position, displacementBounds(water));
+    const SurfaceBounds bounds = displacementBounds(water);
+    m_grid = projectedGridCorners(camera.projection * camera.view, camera.position, bounds);
+    m_crestBound = bounds.up;
     frame.state.waterVisible = m_grid.visible;
     // Auto: a grid row per 3 px of internal height on a GPU, per 12 px on a software rasteriser,
     // within [32, 512]. A software rasteriser shades vertices on one thread, and it shades a 4×4

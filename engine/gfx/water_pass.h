@@ -50,7 +50,8 @@ struct WaterVariant {
     int cascades = 0;          ///< FFT cascades sampled (0: no layers)
     bool ripples = false;      ///< a ripple patch is uploaded
     bool foamMap = false;      ///< a persistent foam map is uploaded
-    bool underwater = false;   ///< the eye is below the surface
+    bool underwater = false;   ///< the whole near plane is below the surface: the surface seen from below
+    bool waterline = false;    ///< the surface crosses the near plane: each pixel takes its side (both shadings compiled)
     bool exactFresnel = false; ///< [render] fresnel = "exact" (else Schlick)
     bool reflections = true, refractions = true, foam = true;  ///< [render] switches
     bool fullQuality = false;  ///< [render] water_full_quality: every term per pixel, the reference
@@ -82,6 +83,7 @@ private:
     GLsizei m_gridIndexCount = 0;
     GridCorners m_grid;           // this frame's projected grid
     WaterVariant m_variant;       // this frame's
+    float m_crestBound = 0.0f;    // this frame's tallest crest above the mean level (m)
     std::map<std::string, Program> m_programs;  // by WaterVariant::defines(), compiled on first use
 };
 

@@ -19,6 +19,7 @@ struct CameraView {
     float nearM = 0.1f;         ///< near clip distance (m)
     float farM = 20000.0f;      ///< far clip distance (m)
     float waterHeight = 0.0f;   ///< composite water surface height under the eye (m): below it, the underwater look
+    glm::vec2 waterSlope{0.0f}; ///< and its slope there (dh/dx, dh/dz): the tangent plane the near plane is tested against
 };
 
 /// The built-in shapes an object can be drawn as.

@@ -78,8 +78,11 @@ void SandboxView::render(ecs::World& world, const ecs::Tick& tick) {
         m_renderer->def().resolution_scale = control->scale();
     }
     gfx::CameraView camera = cameraView(world, size);
-    if (const OceanState* ocean = world.resource<OceanState>(); ocean && ocean->water)
-        camera.waterHeight = ocean->water->sample(camera.position.x, camera.position.z).height;
+    if (const OceanState* ocean = world.resource<OceanState>(); ocean && ocean->water) {
+        const water::WaterSample s = ocean->water->sample(camera.position.x, camera.position.z);
+        camera.waterHeight = s.height;
+        camera.waterSlope = -glm::vec2(s.normal.x, s.normal.z) / s.normal.y;
+    }
     std::vector<gfx::ObjectDraw> draws = objectDraws(world, highlightedBody(world));
     appendFishDraws(world, draws);
     appendToolDraws(world, draws, camera.position);

@@ -66,6 +66,9 @@ constexpr float LOOK_RAD_PER_PX = 0.003f;  // right drag: look (fly)
 constexpr float ZOOM_PER_STEP = 0.9f;      // wheel: the arm's length times this per step in
 constexpr float FLY_WHEEL_M = 2.0f;        // wheel: fly forward this far per step
 constexpr float MIN_ELEVATION = glm::radians(-10.0f), MAX_ELEVATION = glm::radians(89.0f);
+// Under water the orbit's eye may go as far below the point looked at as above it: the view
+// looks up at the surface from below.
+constexpr float MIN_ELEVATION_UNDERWATER = -MAX_ELEVATION;
 
 float waterHeight(ecs::World& world, glm::vec3 p) {
     const OceanState* ocean = world.resource<OceanState>();
@@ -73,14 +76,14 @@ float waterHeight(ecs::World& world, glm::vec3 p) {
 }
 
 // The arm from the point looked at to the eye, turned by `yaw` about the vertical, raised
-// by `lift` (elevation kept in [MIN_ELEVATION, MAX_ELEVATION]) and scaled by `zoom`.
-glm::vec3 steerArm(glm::vec3 arm, float yaw, float lift, float zoom) {
+// by `lift` (elevation kept in [minElevation, MAX_ELEVATION]) and scaled by `zoom`.
+glm::vec3 steerArm(glm::vec3 arm, float yaw, float lift, float zoom, float minElevation = MIN_ELEVATION) {
     const float c = std::cos(yaw), s = std::sin(yaw);
     arm = glm::vec3(c * arm.x + s * arm.z, arm.y, -s * arm.x + c * arm.z);
     if (lift == 0.0f && zoom == 1.0f) return arm;
     const float horizontal = std::hypot(arm.x, arm.z);
     const float length = glm::length(arm) * zoom;
-    const float elevation = glm::clamp(std::atan2(arm.y, horizontal) + lift, MIN_ELEVATION, MAX_ELEVATION);
+    const float elevation = glm::clamp(std::atan2(arm.y, horizontal) + lift, minElevation, MAX_ELEVATION);
     const glm::vec2 dir = horizontal > 1e-6f ? glm::vec2(arm.x, arm.z) / horizontal : glm::vec2(0.0f, -1.0f);
     return {dir.x * length * std::cos(elevation), length * std::sin(elevation), dir.y * length * std::cos(elevation)};
 }
@@ -140,7 +143,8 @@ static void steerCameras(ecs::World& world, const platform::InputState* input, f
             // and by the player's drag and wheel.
             const float angle = (rig.def.mode == CameraMode::Orbit ? glm::radians(rig.def.orbit_speed_deg_s) * simDt : 0.0f) -
                                 drag.x * DRAG_RAD_PER_PX;
-            t.position = rig.def.target + steerArm(t.position - rig.def.target, angle, drag.y * DRAG_RAD_PER_PX, zoom);
+            t.position = rig.def.target + steerArm(t.position - rig.def.target, angle, drag.y * DRAG_RAD_PER_PX, zoom,
+                                                   rig.underwater ? MIN_ELEVATION_UNDERWATER : MIN_ELEVATION);
             if (!rig.underwater) t.position.y = std::max(t.position.y, waterHeight(world, t.position) + CAMERA_CLEARANCE_M);
             lookAt(rig, t.position, rig.def.target);
             rig.focus = rig.def.target;

@@ -184,8 +184,9 @@ Shot randomCamera(std::mt19937& rng, const Sea& sea) {
 
 // Pixels whose view ray points below the horizon by at least a pixel (all four outer corners of
 // the 3×3 block around the pixel look down: the horizon is a straight line on screen) that the
-// water did not cover (depth still at the far plane).
-int holesBelowHorizon(const gfx::CameraView& camera, glm::ivec2 size = SIZE) {
+// water did not cover (depth still at the far plane); `upward`: above the horizon (an eye under
+// the water, which sees the surface's underside there).
+int holesBelowHorizon(const gfx::CameraView& camera, glm::ivec2 size = SIZE, bool upward = false) {
     std::vector<float> depth(size_t(size.x) * size_t(size.y));
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glReadPixels(0, 0, size.x, size.y, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
@@ -193,7 +194,7 @@ int holesBelowHorizon(const gfx::CameraView& camera, glm::ivec2 size = SIZE) {
     const auto looksDown = [&](int px, int py) {
         const glm::dvec2 ndc(2.0 * px / size.x - 1.0, 2.0 * py / size.y - 1.0);
         const glm::dvec4 n = inv * glm::dvec4(ndc, -1.0, 1.0), f = inv * glm::dvec4(ndc, 1.0, 1.0);
-        return f.y / f.w < n.y / n.w;
+        return (f.y / f.w < n.y / n.w) != upward;
     };
     int holes = 0;
     for (int y = 0; y < size.y; ++y)
@@ -283,4 +284,41 @@ TEST_CASE("the showcase's frame 1680, where a wedge of sky once opened under the
     }
     INFO(first);
     CHECK(framesWithHoles == 0);
+}
+
+TEST_CASE("seen from under the water, the surface covers every pixel above the horizon, looking up to 89 degrees", "[gl][grid][underwater]") {
+    // Cameras 0.5-200 m under the lowest trough the layers can dig, pitched from 10 degrees down
+    // to 89 up, any heading, roll and field of view: every upward ray meets the surface's
+    // underside (the grid covers the view from below too, and no face is culled).
+    auto platform = platform::createHeadlessPlatform(SIZE);
+    gfx::Renderer renderer(coverageRenderDef());
+    Sea sea = roughSea();
+    sea.build();
+    float trough = sea.fft->displacementBounds().down + sea.rippleAmplitude;
+    for (const ocean::GerstnerWave& w : sea.waves) trough += w.amplitude;
+    std::mt19937 rng(7u);
+    std::uniform_real_distribution<float> uni(0.0f, 1.0f);
+    int failed = 0;
+    std::string first;
+    for (int i = 0; i < 300; ++i) {
+        const glm::vec2 foot(2000.0f * uni(rng) - 1000.0f, 2000.0f * uni(rng) - 1000.0f);
+        const float below = 0.5f * std::pow(400.0f, uni(rng));
+        const float heading = 6.2831853f * uni(rng), pitch = glm::radians(-10.0f + 99.0f * uni(rng));
+        const float roll = glm::radians(-35.0f + 70.0f * uni(rng)), fov = 30.0f + 70.0f * uni(rng);
+        gfx::CameraView c;
+        c.position = glm::vec3(foot.x, -trough - below, foot.y);
+        const glm::vec3 forward(std::sin(heading) * std::cos(pitch), std::sin(pitch), std::cos(heading) * std::cos(pitch));
+        const glm::vec3 right = glm::normalize(glm::cross(forward, glm::vec3(0, 1, 0)));
+        const glm::vec3 up = std::cos(roll) * glm::cross(right, forward) - std::sin(roll) * right;
+        c.view = glm::lookAtRH(c.position, c.position + forward, up);
+        c.projection = glm::perspectiveRH_NO(glm::radians(fov), float(SIZE.x) / float(SIZE.y), c.nearM, c.farM);
+        c.waterHeight = 0.0f;
+        renderer.render(c, sea.view(foot), {}, sea.time, SIZE);
+        const int holes = holesBelowHorizon(c, SIZE, true);
+        if (holes > 0 && failed++ == 0)
+            first = "camera " + std::to_string(i) + ": " + std::to_string(holes) + " px open, " + std::to_string(below) + " m under the trough, pitch " +
+                    std::to_string(glm::degrees(pitch));
+    }
+    INFO(first);
+    CHECK(failed == 0);
 }

@@ -97,3 +97,21 @@ TEST_CASE("camera: a follow camera never goes below the water behind a ship on a
     }
     CHECK(lowest >= game::CAMERA_CLEARANCE_M - 1e-3f);
 }
+
+TEST_CASE("camera: under water a right drag tilts the orbit camera up toward the surface, above it no further than 10°", "[camera]") {
+    // A drag of −400 px raises the view by 2 rad: above the water the eye stops 10° below the
+    // point looked at (the view up by 10°); under water it may pass under it, to 89°.
+    for (float depth : {-6.0f, 12.0f}) {
+        game::Sandbox sandbox(game::parseScene("[ocean]\namplitude = 0.0\n[gerstner]\ncount = 0\n[ripples]\nenabled = false\n"
+                                               "[camera]\nmode = \"orbit\"\norbit_speed_deg_s = 0.0\nposition = [0, " +
+                                                   std::to_string(depth) + ", -30]\ntarget = [0, " + std::to_string(depth) + ", 0]\n",
+                                               "orbit.toml"));
+        push(sandbox, {T::ButtonDown, 0.0, platform::Key::W, platform::MouseButton::Right});
+        push(sandbox, {T::Move, 0.0, platform::Key::W, platform::MouseButton::Right, {0.0f, -400.0f}});
+        sandbox.frame(1.0 / 60.0);
+        const float pitch = glm::degrees(camera(sandbox).rig->pitch);
+        INFO("eye " << depth << " m: pitch " << pitch << "°");
+        if (depth < 0.0f) CHECK(pitch == Approx(89.0f).margin(0.1f));
+        else CHECK(pitch == Approx(10.0f).margin(0.1f));
+    }
+}

@@ -1,0 +1,209 @@
+// The view from under water and light through thin crests ([Jerlov1976], [Crest], [Atlas2019];
+// docs/frame.md): Snell's window's angular radius asin(1/n) from a flat sea seen straight up,
+// Beer–Lambert extinction per channel at Jerlov type I's Kd, the waterline across a half-dipped
+// camera where the near plane meets the water, and the backlit crests' turquoise toward the sun.
+#include "gfx/gl.h"
+#include "gfx/gpu_bindings.h"
+#include "gfx/renderer.h"
+#include "gfx/shader.h"
+#include "platform/platform.h"
+#include "support/test_image.h"
+#include "support/test_support.h"
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <glm/gtc/matrix_transform.hpp>
+
+using namespace ob;
+using test::Image;
+using test::loadPng;
+namespace fs = std::filesystem;
+
+namespace {
+
+// Jerlov's oceanic type I: Kd (1/m) at 650, 550 and 450 nm, as tabulated ([Jerlov1976] Table
+// XXVI; docs/references.md#under-water-light), typed here from the table, not from the shader.
+const glm::dvec3 JERLOV_I_KD(0.36, 0.063, 0.019);
+
+// A camera at `eye` looking along `forward` (`up` its screen up), `fovDeg` vertical, near 0.1 m.
+gfx::CameraView cameraAt(glm::vec3 eye, glm::vec3 forward, glm::vec3 up, float fovDeg, float aspect) {
+    gfx::CameraView camera;
+    camera.position = eye;
+    camera.view = glm::lookAtRH(eye, eye + forward, up);
+    camera.projection = glm::perspectiveRH_NO(glm::radians(fovDeg), aspect, 0.1f, 2000.0f);
+    camera.nearM = 0.1f;
+    camera.farM = 2000.0f;
+    return camera;
+}
+
+Image renderFrame(const gfx::RenderDef& def, const gfx::CameraView& camera, const gfx::WaterView& water, glm::ivec2 size) {
+    auto platform = platform::createHeadlessPlatform(size);
+    const int errorsBefore = gfx::glErrorCount();
+    gfx::Renderer renderer(def);
+    renderer.render(camera, water, {}, 0.0, size);
+    const std::string path = test::tempPath("underwater.png");
+    gfx::writeScreenshot(path, size);
+    CHECK(gfx::glErrorCount() == errorsBefore);
+    Image img = loadPng(path);
+    REQUIRE(img.w == size.x);
+    return img;
+}
+
+gfx::RenderDef plainDef() {
+    gfx::RenderDef def;
+    def.antialias = gfx::Antialias::Off;
+    def.dither = false;
+    return def;
+}
+
+float luma(glm::vec3 c) { return 0.299f * c.x + 0.587f * c.y + 0.114f * c.z; }
+
+// Runs tests/gl/shaders/<probe> with the engine's shader includes beside it.
+gfx::Program loadProbe(const char* probe) {
+    fs::path dir = test::tempPath("underwater_probe_shaders");
+    fs::create_directories(dir);
+    for (const auto& entry : fs::directory_iterator(fs::path(OCEANBOX_SOURCE_DIR) / "shaders"))
+        fs::copy_file(entry.path(), dir / entry.path().filename(), fs::copy_options::overwrite_existing);
+    fs::copy_file(fs::path(OCEANBOX_SOURCE_DIR) / "tests/gl/shaders" / probe, dir / probe, fs::copy_options::overwrite_existing);
+    setenv("OCEANBOX_SHADER_DIR", dir.c_str(), 1);
+    gfx::Program program = gfx::loadProgram(probe, {probe});
+    unsetenv("OCEANBOX_SHADER_DIR");
+    return program;
+}
+
+} // namespace
+
+TEST_CASE("from under a flat sea, looking straight up: Snell's window spans asin(1/1.333) = 48.6°, the reflected deep outside", "[gl][render][underwater]") {
+    gfx::requestDebugOutput(true);
+    const int side = 240;
+    gfx::RenderDef def = plainDef();
+    def.fresnel = gfx::Fresnel::Exact;
+    def.sun_direction = glm::vec3(0.0f, 1.0f, 0.0f);  // overhead: the window's centre
+    def.glitter = 0.0f;
+    const float fov = 120.0f;
+    const Image img = renderFrame(def, cameraAt({0.0f, -5.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, {0.0f, 0.0f, -1.0f}, fov, 1.0f), {}, {side, side});
+
+    // Along the middle row, pixel x looks at atan(|x − centre| / (side/2) · tan(fov/2)) from the zenith.
+    const auto angleOf = [&](double x) { return glm::degrees(std::atan(std::abs(x - side / 2.0) / (side / 2.0) * std::tan(glm::radians(fov / 2.0)))); };
+    const auto pixelAt = [&](double deg) { return int(side / 2.0 + std::tan(glm::radians(deg)) / std::tan(glm::radians(fov / 2.0)) * side / 2.0); };
+    const int row = side / 2;
+    const auto lumaAt = [&](int x) { return luma(img.mean(x, row - 1, x + 1, row + 2)); };
+    // Inside (40°) against outside (56°…58°): the window is the refracted sky, outside it the
+    // deep's own light totally reflected — several times darker, blue-green like the water.
+    const glm::vec3 inside = img.mean(pixelAt(38.0), row - 2, pixelAt(42.0), row + 3);
+    const glm::vec3 outside = img.mean(pixelAt(56.0), row - 2, pixelAt(58.0), row + 3);
+    INFO("inside " << inside.x << " " << inside.y << " " << inside.z << ", outside " << outside.x << " " << outside.y << " " << outside.z);
+    CHECK(luma(inside) > 3.0f * luma(outside));
+    CHECK(outside.z > outside.x);
+    CHECK(outside.y > outside.x);
+    // The edge: where the row falls half way from the inside to the outside, on both sides.
+    const float half = 0.5f * (luma(inside) + luma(outside));
+    for (int direction : {-1, 1}) {
+        int x = side / 2 + direction * (pixelAt(40.0) - side / 2);
+        while (x > 0 && x < side - 1 && lumaAt(x) > half) x += direction;
+        const double edge = angleOf(x + 0.5);
+        INFO("edge on side " << direction << " at " << edge << "°");
+        CHECK(edge == Approx(glm::degrees(std::asin(1.0 / 1.333))).margin(2.5));
+    }
+}
+
+TEST_CASE("under water an image fades per channel as exp(−Kd·d) toward the water's own light (Jerlov type I)", "[gl][render][underwater]") {
+    gfx::requestDebugOutput(true);
+    auto platform = platform::createHeadlessPlatform({16, 16});
+    gfx::Program program = loadProbe("underwater_probe.comp");
+    // The frame's water colour, a high sun and an eye at the surface, as the renderer sets them.
+    gfx::glsl::FrameUniforms frame{};
+    frame.sunDirectionFresnel = glm::vec4(0.0f, 1.0f, 0.0f, 0.0f);
+    frame.waterColorExposure = glm::vec4(0.015f, 0.09f, 0.13f, 1.0f);
+    gfx::Buffer uniforms = gfx::createBuffer("probe frame", sizeof frame, &frame);
+    glBindBufferBase(GL_UNIFORM_BUFFER, gfx::glsl::FRAME_BLOCK, uniforms.id());
+    const std::vector<float> distances = {0.0f, 2.0f, 10.0f, 1e5f};
+    gfx::Buffer input = gfx::createBuffer("probe distances", GLsizeiptr(distances.size() * sizeof(float)), distances.data());
+    gfx::Buffer result = gfx::createBuffer("probe result", GLsizeiptr(distances.size() * 2 * sizeof(glm::vec4)));
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, input.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, result.id());
+    glUseProgram(program.id());
+    glProgramUniform1i(program.id(), 0, int(distances.size()));
+    glDispatchCompute(1, 1, 1);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    std::vector<glm::vec4> r(distances.size() * 2);  // per distance: transmittance, a white object's colour
+    glGetNamedBufferSubData(result.id(), 0, GLsizeiptr(r.size() * sizeof(glm::vec4)), r.data());
+
+    const glm::vec3 water = glm::vec3(r[7]);  // 100 km: nothing but the water's own light
+    CHECK(glm::vec3(r[1]) == glm::vec3(1.0f));  // at the eye: the object as it is
+    for (size_t i : {size_t(1), size_t(2)}) {
+        const double d = distances[i];
+        for (int c = 0; c < 3; ++c) {
+            INFO("distance " << d << " m, channel " << c);
+            const double expected = std::exp(-JERLOV_I_KD[c] * d);
+            CHECK(r[2 * i][c] == Approx(expected).epsilon(1e-4));
+            // The white object's colour lies that share of the way from the water's light to white.
+            CHECK((r[2 * i + 1][c] - water[c]) / (1.0f - water[c]) == Approx(expected).epsilon(1e-3));
+        }
+    }
+    // Red goes first: after 10 m 3 % of it is left, 83 % of the blue.
+    CHECK(r[4].x < 0.03f);
+    CHECK(r[4].z > 0.8f);
+}
+
+TEST_CASE("a half-dipped camera: below the waterline at the near plane the under-water view, above it the sky", "[gl][render][underwater]") {
+    gfx::requestDebugOutput(true);
+    const glm::ivec2 size(320, 180);
+    const gfx::RenderDef def = plainDef();
+    const auto level = [&](float y) { return renderFrame(def, cameraAt({0.0f, y, 0.0f}, {0.0f, 0.0f, -1.0f}, {0.0f, 1.0f, 0.0f}, 60.0f, 16.0f / 9.0f), {}, size); };
+    const Image above = level(1.0f), below = level(-1.0f);
+    // References: the sky's top rows from above, the under-water view's bottom rows from below.
+    const glm::vec3 sky = above.mean(0, 0, size.x, 40), deep = below.mean(0, size.y - 40, size.x, size.y);
+    REQUIRE(glm::length(sky - deep) > 0.3f);
+    // The near plane (0.1 m ahead, ±0.1·tan 30° high) meets the water at ndc y = −eye / (0.1·tan 30°):
+    // the horizon line for an eye at the surface, a fixed row above or below it for an eye
+    // 2 cm under or over it.
+    for (float eye : {0.0f, -0.02f, 0.02f}) {
+        const Image img = level(eye);
+        const double ndc = -eye / (0.1 * std::tan(glm::radians(30.0)));
+        const double expected = (1.0 - ndc) / 2.0 * size.y;  // rows top-down
+        int boundary = 0;
+        for (int y = 0; y < size.y; ++y) {
+            const glm::vec3 c = img.mean(0, y, size.x, y + 1);
+            if (glm::length(c - deep) < glm::length(c - sky)) break;
+            boundary = y + 1;
+        }
+        INFO("eye at " << eye << " m: the under-water view begins at row " << boundary << ", expected " << expected);
+        CHECK(std::abs(boundary - expected) < 3.0);
+        // The upper part is sky (its top as seen from above), the lower part the deep.
+        CHECK(glm::length(img.mean(0, 0, size.x, 30) - above.mean(0, 0, size.x, 30)) < 0.05f);
+        CHECK(glm::length(img.mean(0, size.y - 30, size.x, size.y) - below.mean(0, size.y - 30, size.x, size.y)) < 0.1f);
+    }
+}
+
+TEST_CASE("thin crests toward the sun glow turquoise, away from the sun or switched off they do not", "[gl][render][water]") {
+    gfx::requestDebugOutput(true);
+    const glm::ivec2 size(240, 135);
+    // One long swell along z (20 m, 0.8 m high) seen from 2.5 m up, looking along −z.
+    gfx::WaterView water;
+    const float k = 2.0f * float(M_PI) / 20.0f;
+    water.gerstner = {glm::vec4(0.0f, -k, 0.8f, 0.0f)};
+    const gfx::CameraView camera = cameraAt({0.0f, 2.5f, 0.0f}, glm::normalize(glm::vec3(0.0f, -0.15f, -1.0f)), {0.0f, 1.0f, 0.0f}, 60.0f, 16.0f / 9.0f);
+    const auto frame = [&](glm::vec3 sun, float subsurface) {
+        gfx::RenderDef def = plainDef();
+        def.sun_direction = sun;
+        def.subsurface = subsurface;
+        def.reflections = false;
+        return renderFrame(def, camera, water, size);
+    };
+    // What the term adds over the sea (the lower half), per channel.
+    const auto added = [&](glm::vec3 sun) {
+        const Image on = frame(sun, 1.0f), off = frame(sun, 0.0f);
+        return on.mean(0, size.y / 2 + 4, size.x, size.y) - off.mean(0, size.y / 2 + 4, size.x, size.y);
+    };
+    const glm::vec3 toward = added(glm::normalize(glm::vec3(0.0f, 0.2f, -1.0f)));
+    const glm::vec3 away = added(glm::normalize(glm::vec3(0.0f, 0.2f, 1.0f)));
+    INFO("added toward the sun " << toward.x << " " << toward.y << " " << toward.z << ", away " << away.x << " " << away.y << " " << away.z);
+    CHECK(toward.y > 0.006f);            // visible: 1.5 levels of 255 on the mean of the sea (0.013 measured)
+    CHECK(toward.y > 5.0f * std::max(away.y, 0.001f));
+    CHECK(toward.y > 2.0f * toward.x);   // turquoise: green and blue, little red
+    CHECK(toward.z > 2.0f * toward.x);
+    CHECK(toward.y < 0.15f);             // and subtle
+}
