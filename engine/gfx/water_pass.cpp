@@ -86,7 +86,7 @@ void WaterPass::uploadUniforms(FrameContext& frame, const CameraView& camera, co
     const bool layers = water.cascades > 0 && water.displacement && water.slopes;
     const int cascades = layers ? water.cascades : 1;
     for (int c = 0; c < 4; ++c) u.cascadeSize[c] = layers ? water.cascadeSize[size_t(c)] : 1.0f;
-    u.farFade = glm::vec4(def.far_fade ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f);
+    u.farFade = glm::vec4(def.far_fade ? 1.0f : 0.0f, water.whitecapJacobian, water.whitecapSigma, water.windAngle);
     for (int c = 0; c < 4 && layers && def.far_fade; ++c) {
         u.cascadeFadeEnd[c] = def.tile_fade * water.cascadeSize[size_t(c)];
         u.cascadeFade[c] = TILE_FADE_START * u.cascadeFadeEnd[c];

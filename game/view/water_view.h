@@ -20,6 +20,10 @@ struct OceanGpu {
     std::unique_ptr<ocean::OceanFftGpu> gpu;  ///< set when the GPU backend renders
     double uploadedTime = -1.0;               ///< time of the maps in the textures (s)
     std::uint64_t seaVersion = 0;             ///< OceanState::seaVersion the GPU FFT's h̃0 and λ follow
+    /// The far sea's whitecaps (gfx::WaterView::whitecapJacobian, whitecapSigma) and the
+    /// OceanState::seaVersion + 1 they were read at (0: never).
+    float whitecapJacobian = 0.0f, whitecapSigma = 0.0f;
+    std::uint64_t whitecapVersion = 0;
     ~OceanGpu();
 };
 
