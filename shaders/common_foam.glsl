@@ -76,7 +76,7 @@ vec3 shadeFoam(vec3 color, vec2 world, vec3 n, vec3 sun, float jacobian, float r
     float t = 1.0 - FOAM_DENSE * density;
     float laceAlpha = mix(foamRamp(lace.z, t), foamRampMean(t), laceBlur);
     float holes = mix(0.55 + 0.45 * bubbles, 0.775, bubbleBlur);
-    float alpha = laceAlpha * holes * (0.25 + 0.75 * density);
+    float alpha = laceAlpha * holes * (0.1 + 0.9 * density * density);
     // --- light: a rough white surface lying on the water (Lambert), greyer as it ages
     vec3 albedo = mix(FOAM_ALBEDO_OLD, FOAM_ALBEDO_FRESH, smoothstep(0.1, 0.9, density));
     vec3 light = FOAM_SUN * sunTint(sun) * max(dot(n, sun), 0.0) + FOAM_SKY * daylight(sun);
