@@ -8,7 +8,6 @@
 layout(binding = FOAM_PATTERN_UNIT) uniform sampler2D u_foamPattern;  // foamPattern() baked over its repeat, RGBA8 (du, dv as 0.5 + 0.5·x)
 
 const float FOAM_TILE = 5.0;            // m per repeat of the lace (foamPattern's first octave; its others 1.9 m, 0.68 m)
-const float FOAM_BUBBLE_SCALE = 5.3;    // the bubbles: the same pattern this many times finer (0.94 m to 0.13 m)
 const float FOAM_STREAK_STRETCH = 3.0;  // the lace is this many times longer along the wind than across it
 const float FOAM_DENSE = 0.9;           // the share of the pattern dense foam (coverage 1) covers
 const float FOAM_SOFT = 0.45;           // width of the lace's opacity ramp, in pattern units: soft edges everywhere
@@ -56,12 +55,14 @@ vec3 shadeFoam(vec3 color, vec2 world, vec3 n, vec3 sun, float jacobian, float r
     float angle = water.farFade.w;
     vec2 along = vec2(cos(angle), sin(angle));
     vec2 fuv = vec2(dot(world, along) / FOAM_STREAK_STRETCH, dot(world, vec2(-along.y, along.x))) / FOAM_TILE;
+    // The bubbles (FOAM_BUBBLE_SCALE times finer: 1 m to 0.14 m) baked beside the lace.
 #ifdef WATER_FULL_QUALITY
     vec3 lace = foamPattern(fuv);
-    float bubbles = foamPattern(fuv * FOAM_BUBBLE_SCALE + 0.41).z;
+    float bubbles = foamPattern(fuv * FOAM_BUBBLE_SCALE + FOAM_BUBBLE_OFFSET).z;
 #else
-    vec3 lace = decodeDetail(texture(u_foamPattern, fuv / FOAM_PATTERN_REPEAT));
-    float bubbles = texture(u_foamPattern, (fuv * FOAM_BUBBLE_SCALE + 0.41) / FOAM_PATTERN_REPEAT).b;
+    vec4 baked = texture(u_foamPattern, fuv / FOAM_PATTERN_REPEAT);
+    vec3 lace = decodeDetail(baked);
+    float bubbles = baked.a;
 #endif
     if (WATER_FOAM_MAP) {
         // The map read at a point pushed up to FOAM_WARP cells by the pattern's DU/DV, so its

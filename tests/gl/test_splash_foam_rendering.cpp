@@ -186,8 +186,10 @@ TEST_CASE("foam at a cannonball's hit: 1 s after it the water there is brighter 
     INFO("luma at the hit: foam 1 s " << at1 << ", 5 s " << at5 << "; no foam 1 s " << none1 << ", 5 s " << none5
                                       << "; coverage there at 5 s " << on.foamAtHit);
     CHECK(on.foamAtHit > 0.05f);  // the simulation still holds foam there
-    CHECK(at1 > none1 + 0.15f);
-    CHECK(at5 > none5 + 0.03f);
+    // Foam thins and turns transparent as its coverage decays (common_foam.glsl: opacity
+    // 0.1 + 0.9·d²), so half-decayed foam shows faintly.
+    CHECK(at1 > none1 + 0.1f);
+    CHECK(at5 > none5 + 0.01f);
     CHECK(at5 - none5 < 0.8f * (at1 - none1));  // coverage e^(−4/6) = 0.51 of 1 s (with no new sources)
 }
 
