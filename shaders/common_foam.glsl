@@ -29,12 +29,9 @@ float foamRampMean(float t) {
     return FOAM_SOFT * (foamRampIntegral((1.0 - t) / FOAM_SOFT + 0.5) - foamRampIntegral(-t / FOAM_SOFT + 0.5));
 }
 
-// How far a pixel averages a pattern at coordinates uv (repeats): 0 it resolves it, 1 it covers
-// several of its finer cells (~a sixth of a repeat) and should see its mean.
-float foamBlur(vec2 uv) {
-    vec2 w = fwidth(uv);
-    return smoothstep(0.04, 0.25, max(w.x, w.y));
-}
+// How far a pixel averages a pattern of which it spans `repeats` repeats: 0 it resolves it, 1 it
+// covers several of its finer cells (~a sixth of a repeat) and should see its mean.
+float foamBlur(float repeats) { return smoothstep(0.04, 0.25, repeats); }
 
 // The whitecaps' density at the per-pixel Jacobian J (J − 1 summed over the cascades): ½ at the
 // threshold that leaves the wind's whitecap share of the sea below it (water.farFade.y,
@@ -70,7 +67,9 @@ vec3 shadeFoam(vec3 color, vec2 world, vec3 n, vec3 sun, float jacobian, float r
         density = max(density, min(foamCoverage(world + lace.xy * FOAM_WARP * water.foamParams.z), 1.0));
     }
     // (the derivatives before any branch)
-    float laceBlur = foamBlur(fuv), bubbleBlur = foamBlur(fuv * FOAM_BUBBLE_SCALE);
+    vec2 span = fwidth(fuv);
+    float repeats = max(span.x, span.y);
+    float laceBlur = foamBlur(repeats), bubbleBlur = foamBlur(repeats * FOAM_BUBBLE_SCALE);
     if (density <= 0.0) return color;
     // --- opacity: the lace's soft ramp (thinner as the density falls), the bubbles' holes,
     // both tending to their means where the pixel averages them; thin old foam lets water through
