@@ -29,12 +29,10 @@ Field cosineField(int n, float tile, int modes) {
     for (int m = 0; m < modes; ++m) {
         const int kx = 1 + (m * 7) % 23, kz = (m * 11) % 29 - 14;  // distinct for m < 667 (23·29), kx ≠ 0
         const double a = 0.02 * (0.5 + next()), phase = twoPi * next();
-        const double k = twoPi / tile * std::sqrt(double(kx * kx + kz * kz));
         f.variance += 0.5 * a * a;
         // central differences see sin(k_x·Δ)/Δ, not k_x
         const double d = double(tile) / n, gx = std::sin(twoPi * kx / n) / d, gz = std::sin(twoPi * kz / n) / d;
         f.gradVariance += 0.5 * a * a * (gx * gx + gz * gz);
-        (void)k;
         for (int r = 0; r < n; ++r)
             for (int c = 0; c < n; ++c)
                 f.j[size_t(r) * size_t(n) + size_t(c)] += float(a * std::cos(twoPi * (kx * c + kz * r) / n + phase));
