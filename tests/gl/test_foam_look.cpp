@@ -124,8 +124,8 @@ TEST_CASE("foam has soft edges: across a step of the coverage no pixel column ju
 }
 
 TEST_CASE("foam is lit by the sun's N·L: flat foam darkens as the sun sinks, by sin(elevation)", "[gl][render][foam]") {
-    // Coverage 1 everywhere, the sun at 70°, 40° and 20°: the foam's luma over the water's with no
-    // foam, mean over the centre; a Lambert surface gains sun·sin e (the sun's tint is white above
+    // Coverage 1 everywhere, the sun at 70°, 40° and 20°: the foam's luma, mean over the centre
+    // (dense foam hides most of the water, which changes little with the sun); a Lambert surface gains sun·sin e (the sun's tint is white above
     // 15°), so the step from 20° to 70° is (sin 70° − sin 20°)/(sin 40° − sin 20°) = 1.99 times the
     // step from 20° to 40° (within 35%: the display transform compresses the bright end).
     double foam[3];
