@@ -11,6 +11,10 @@ const float FOAM_PATTERN_LOW = 0.47;   // pow(ridges, 0.4) at 5% of the detail m
 const float FOAM_PATTERN_HIGH = 0.88;  // ...and at 95%
 // The pattern repeats every this many foam tiles: its octaves are 8/3 and 22/3 of the first.
 const float FOAM_PATTERN_REPEAT = 3.0;
+// The foam's bubbles: the pattern again this many times finer (an integer, so they repeat with it),
+// baked into the map's alpha.
+const float FOAM_BUBBLE_SCALE = 5.0;
+const float FOAM_BUBBLE_OFFSET = 0.41;  // foam tiles, so the bubbles do not line up with the lace
 
 #ifdef FOAM_PATTERN_BAKE
 #define FOAM_DETAIL(uv) textureLod(u_detail, uv, 0.0)  // baked at full detail: the baked map's mips minify

@@ -4,8 +4,9 @@
 // coverage; refraction = what lies below, faded to the water colour by its depth ([KTSDE2017]
 // eq. 7); both looked up at the pixel offset by the normal ([Lee2007]) and a DU/DV map
 // scrolled in time ([KTSDE2017] eq. 4–5); mixed by Fresnel (n = 1.33); plus sun glitter
-// (Cox & Munk 1954: the slopes no layer draws, common_glitter.glsl) and foam where the FFT Jacobian folds or the ripples are steep, and where the
-// persistent foam map holds coverage (its bubble pattern thins as the coverage decays).
+// (Cox & Munk 1954: the slopes no layer draws, common_glitter.glsl) and foam (common_foam.glsl)
+// where the FFT Jacobian folds or the ripples are steep, and where the persistent foam map
+// holds coverage.
 // Each FFT cascade's slopes fade out with distance ([render] far_fade) as its displacement does.
 // Light through thin crests: common_subsurface.glsl. From below: common_underwater*.glsl.
 // Compiled per gfx::WaterVariant: the cascade count and the switches (WATER_REFLECTIONS,
@@ -24,6 +25,7 @@
 #include "common_underwater.glsl"
 #include "common_underwater_surface.glsl"
 #include "common_subsurface.glsl"
+#include "common_foam.glsl"
 
 in vec3 v_world;
 in vec2 v_rest;
@@ -34,7 +36,6 @@ layout(binding = SKY_UNIT) uniform samplerCube u_sky;
 layout(binding = REFLECTION_UNIT) uniform sampler2D u_reflection;       // rgb linear radiance, a coverage
 layout(binding = REFRACTION_UNIT) uniform sampler2D u_refraction;       // rgb linear radiance, a 1 / eye depth (1/m) of what lies below (0: nothing)
 layout(binding = REFLECTION_DEPTH_UNIT) uniform sampler2D u_reflectionDepth;  // window depth of the mirrored objects
-layout(binding = FOAM_PATTERN_UNIT) uniform sampler2D u_foamPattern;     // foamPattern() baked over its repeat, RGBA8 (du, dv as 0.5 + 0.5·x)
 out vec4 o_color;
 
 const float DETAIL_TILE = 24.0;            // m per repeat of the detail map
@@ -44,10 +45,6 @@ const float MIN_GLITTER_SLOPE_VARIANCE = 0.001;
 // The sun seen through the window from below: a Phong lobe about the refracted ray (an
 // approximation; the slopes' statistics shape only the glitter seen from above).
 const float SUN_FROM_BELOW_SHININESS = 600.0;
-const float FOAM_TILE = 5.0;               // m per repeat of the persistent foam's bubble pattern
-const float FOAM_EDGE = 0.08;              // softness of the pattern's threshold
-const float FOAM_DENSE = 0.85;             // the share of the surface foam at coverage 1 covers
-const float FOAM_WARP = 3.0;               // foam map cells the lookup is pushed by the DU/DV field, at most
 // A tilted surface shifts an image by an angle, so the shift grows with the distance of the
 // reflected or refracted object behind the surface: none where it touches it (a hull at the
 // waterline), the full offset from this many metres behind. Without the ramp the offset tears
@@ -78,7 +75,7 @@ void main() {
 #endif
         slope += weight * s.xy;
         resolvedSlopes += weight * weight * water.cascadeSlopeVariance[c];
-        jacobian = min(jacobian, mix(1.0, s.z, weight));
+        jacobian += weight * (s.z - 1.0);  // J − 1 adds over the cascades (first order)
     }
     vec3 n = normalize(vec3(-slope.x, 1.0, -slope.y));
     vec3 eye = frame.cameraPositionTime.xyz;
@@ -141,31 +138,7 @@ void main() {
     color += SUN_COLOR * sunTint(sun) * frame.shading.z * glitterRadiance(n, v, sun, unresolved, exact);
     color += crestSubsurface(v_world.y, water.crest.x, water.crest.y, v, n, sun);  // the mean level is y = 0
 
-    if (WATER_FOAM) {
-        float whitecap = smoothstep(0.6, 0.1, jacobian);
-        float splash = smoothstep(0.12, 0.45, length(ripple));
-        float foam = clamp(max(whitecap, splash) * (0.35 + 0.9 * detail.b), 0.0, 1.0);
-        // Persistent foam: the bubble pattern where it exceeds 1 − FOAM_DENSE·coverage, so
-        // decaying foam breaks up into its brightest streaks and bubbles before it vanishes, and
-        // even dense foam keeps open water in the pattern's darkest cells and its texture in its
-        // brightness (never a flat sheet). The map is read at a point pushed up to FOAM_WARP
-        // cells by the DU/DV field, so its edges fray instead of following the cells.
-        if (WATER_FOAM_MAP) {
-            vec2 fuv = v_world.xz / FOAM_TILE;
-#ifdef WATER_FULL_QUALITY
-            vec3 bubbles = foamPattern(fuv);
-#else
-            vec3 bubbles = decodeDetail(texture(u_foamPattern, fuv / FOAM_PATTERN_REPEAT));
-#endif
-            float coverage = foamCoverage(v_world.xz + bubbles.xy * FOAM_WARP * water.foamParams.z);
-            // The lace covers about FOAM_DENSE × the coverage of the surface (foamPattern()).
-            float pattern = bubbles.z;
-            float threshold = 1.0 - FOAM_DENSE * min(coverage, 1.0);
-            float lace = smoothstep(threshold - FOAM_EDGE, threshold + FOAM_EDGE, pattern);
-            foam = max(foam, coverage > 0.0 ? lace * (0.25 + 0.45 * pattern + 0.3 * min(coverage, 1.0)) : 0.0);
-        }
-        color = mix(color, vec3(0.9, 0.95, 1.0) * (0.4 + 0.6 * max(sun.y, 0.0)) * daylight(sun), foam * 0.85);
-    }
+    if (WATER_FOAM) color = shadeFoam(color, v_world.xz, n, sun, jacobian, length(ripple), detail);
 #ifdef WATER_FULL_QUALITY
     vec3 haze = textureLod(u_sky, normalize(vec3(-v.x, 0.0, -v.z)), 0.0).rgb;
 #else

@@ -13,8 +13,9 @@ struct FoamDef {
     int flow_resolution = 32;       ///< intervals per side of the grid the surface velocity is evaluated on (bilinear between); power of two in [1, 4096], at most resolution (more counts as resolution)
     int flow_refresh_steps = 4;     ///< K: update() re-evaluates each node row of the velocity grid every K steps (in turn, a K-th a step) and carries it between by linear extrapolation in time from its last two values; 1 = every node every step, [1, 64]
     float decay_s = 6.0f;           ///< τ: with no sources coverage falls as exp(−t/τ), s, [0.01, 1e4]
-    float whitecap_weight = 2.0f;   ///< coverage per second per unit of Jacobian below whitecap_jacobian, 1/s, [0, 1000]
-    float whitecap_jacobian = 0.5f; ///< the ocean's Jacobian J below which whitecaps feed foam, [-10, 10]
+    bool whitecap_from_wind = true; ///< true: the threshold and gain of the whitecaps derived from [ocean] wind_speed so their coverage is Monahan's W(U10) (foam_whitecaps.h; whitecap_weight scales the gain, whitecap_jacobian unused); false: the two keys below as given
+    float whitecap_weight = 2.0f;   ///< coverage per second per unit of Jacobian below whitecap_jacobian, 1/s, [0, 1000]; with whitecap_from_wind: the factor on the derived gain (2 = as derived)
+    float whitecap_jacobian = 0.5f; ///< the ocean's Jacobian J below which whitecaps feed foam, [-10, 10] (whitecap_from_wind = false)
     float ripple_weight = 4.0f;     ///< coverage per second per unit of ripple slope above ripple_slope, 1/s, [0, 1000]
     float ripple_slope = 0.5f;      ///< ripple slope |∇h| above which ripples break into foam, [0, 100]
     float splash_weight = 1.0f;     ///< coverage of a landed drop's whitened disc (radius 10·r) per area, [0, 100]
@@ -32,7 +33,8 @@ template <class V> void describe(V& v, FoamDef& d) {
     v.field("flow_resolution", d.flow_resolution, powerOfTwo(1, 4096), "intervals per side of the surface-velocity grid (bilinear between)");
     v.field("flow_refresh_steps", d.flow_refresh_steps, range(1, 64), "steps between evaluations of a velocity node (extrapolated linearly in time between)");
     v.field("decay_s", d.decay_s, range(0.01, 1e4), "decay time τ of exp(−t/τ) (s)");
-    v.field("whitecap_weight", d.whitecap_weight, range(0, 1000), "whitecap source per unit of Jacobian below the threshold (1/s)");
+    v.field("whitecap_from_wind", d.whitecap_from_wind, "whitecap threshold and gain from the wind (Monahan's coverage)");
+    v.field("whitecap_weight", d.whitecap_weight, range(0, 1000), "whitecap source per unit of Jacobian below the threshold (1/s); from the wind: 2 = the derived gain");
     v.field("whitecap_jacobian", d.whitecap_jacobian, range(-10, 10), "Jacobian below which whitecaps make foam");
     v.field("ripple_weight", d.ripple_weight, range(0, 1000), "steep-ripple source per unit of slope above the threshold (1/s)");
     v.field("ripple_slope", d.ripple_slope, range(0, 100), "ripple slope above which ripples make foam");

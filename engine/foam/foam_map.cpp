@@ -53,7 +53,11 @@ double FoamMap::mean() const {
     return sum / double(m_f.size());
 }
 
-void FoamMap::addSources(const FoamInputs& in, float dt) { RowSources(m_def, m_grid, in, dt).addTo(m_f); }
+void FoamMap::addSources(const FoamInputs& in, float dt) {
+    const RowSources sources(m_def, m_grid, in, dt);
+    m_whitecaps = sources.whitecaps();
+    sources.addTo(m_f);
+}
 
 void FoamMap::step(float dt) { m_transport.step(m_f, m_grid, m_flow, m_def.decay_s, dt); }
 
@@ -62,6 +66,7 @@ void FoamMap::update(const FoamInputs& in, float dt) {
     if (in.water) m_flow.refresh(*in.water, m_def.flow_refresh_steps);
     // --- sources and step: one sweep when the flow is from the nodes and within a sample a step
     const RowSources sources(m_def, m_grid, in, dt);
+    m_whitecaps = sources.whitecaps();
     if (m_transport.sweepFits(m_grid, m_flow, dt)) return m_transport.sweep(m_f, m_grid, m_flow, &sources, m_def.decay_s, dt);
     sources.addTo(m_f);
     step(dt);

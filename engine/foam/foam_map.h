@@ -85,6 +85,9 @@ public:
     /// addSources(in, dt), then step(dt).
     void update(const FoamInputs& in, float dt);
 
+    /// Source (a)'s law at the last update or addSources (rate 0: none yet, or no whitecaps).
+    const WhitecapLaw& whitecaps() const { return m_whitecaps; }
+
     const FoamDef& def() const { return m_def; }
     /// Changes the weights, decay and flow settings from the next call on (resolution stays).
     void setDef(const FoamDef& def);
@@ -99,6 +102,7 @@ private:
     std::vector<float> m_f;   // coverage, grid.n² row-major
     FoamFlow m_flow;
     FoamTransport m_transport;
+    WhitecapLaw m_whitecaps;
 };
 
 } // namespace ob::foam

@@ -4,6 +4,7 @@
 
 #include "core/parallel.h"
 #include "core/simd.h"
+#include "foam/foam_whitecaps.h"
 #include "interaction/ripple_patch.h"
 #include "splash/splash_particles.h"
 
@@ -101,8 +102,17 @@ void RowSources::tabulateWhitecaps(const FoamDef& def, const FoamInputs& in, flo
     m_jacobian = in.jacobian.data();
     m_n = n;
     m_toTile = float(n) / in.jacobianTile;
-    m_j0 = def.whitecap_jacobian;
-    m_whitecapRate = def.whitecap_weight * dt;
+    if (def.whitecap_from_wind) {
+        const WhitecapLaw law =
+            deriveWhitecapLaw(jacobianStats(in.jacobian, n, in.jacobianTile), in.windSpeed, in.gravity, def.decay_s);
+        m_law = law;
+        m_law.rate *= 0.5f * def.whitecap_weight;
+    } else {
+        m_law.j0 = def.whitecap_jacobian;
+        m_law.rate = def.whitecap_weight;
+    }
+    m_j0 = m_law.j0;
+    m_whitecapRate = m_law.rate * dt;
     m_c0.resize(size_t(mapN));
     m_ct.resize(size_t(mapN));
     long long k0 = 0;

@@ -5,7 +5,9 @@
 // (i along x, j along z; row-major, index j·n + i). Each source adds S·dt (or a fixed amount)
 // to a sample, clamped to 1:
 //   (a) whitecaps  S = whitecap_weight · max(0, J_0 − J), J the ocean's Jacobian at the sample
-//                  (bilinear in the periodic cascade tile, at rest points), J_0 = whitecap_jacobian
+//                  (bilinear in the periodic cascade tile, at rest points), J_0 = whitecap_jacobian;
+//                  with whitecap_from_wind J_0 and the gain (times whitecap_weight / 2) follow from
+//                  the wind and J's statistics (foam_whitecaps.h: Monahan's coverage)
 //   (b) ripples    S = ripple_weight · max(0, |∇h| − s_0), |∇h| the ripple slope by central
 //                  differences at the ripple cell nearest the sample, s_0 = ripple_slope
 //   (c) drops      a landed drop of radius r adds splash_weight · π·(10·r)² / Δ², spread over the
@@ -27,6 +29,7 @@
 #pragma once
 #include "core/scrolling_grid.h"
 #include "foam/foam_def.h"
+#include "foam/foam_whitecaps.h"
 
 #include <algorithm>
 #include <span>
@@ -64,6 +67,8 @@ struct FoamInputs {
     std::span<const float> jacobian;  ///< (a) an ocean cascade's Jacobian, n×n floats row-major [j][i] at X = (i, j)·tile/n; empty: no whitecaps
     int jacobianN = 0;                ///< n
     float jacobianTile = 0.0f;        ///< tile, m
+    float windSpeed = 0.0f;           ///< U10, m/s: with whitecap_from_wind, sets (a)'s threshold and gain (foam_whitecaps.h)
+    float gravity = 9.81f;            ///< g, m/s²
     const interaction::RipplePatch* ripples = nullptr;  ///< (b) steep ripples of its Vh(t); null: none
     const water::CompositeWater* water = nullptr;       ///< the surface velocity at its time(); null: the velocity set last
 };
@@ -109,6 +114,8 @@ public:
 
     /// Adds them to every row of `f` (the map's coverage), rows split over the worker pool.
     void addTo(std::span<float> f) const;
+    /// Source (a)'s law this update (derived from the wind, or the def's; rate 0: none).
+    const WhitecapLaw& whitecaps() const { return m_law; }
 
 private:
     void tabulateWhitecaps(const FoamDef& def, const FoamInputs& in, float dt);
@@ -128,6 +135,7 @@ private:
     // row between two tile rows whose least J is J_0 or more gains nothing (J is bilinear).
     std::vector<float> m_rowMin;
     float m_j0 = 0.0f, m_whitecapRate = 0.0f;
+    WhitecapLaw m_law;                    // J_0 and the rate per second (before dt)
     // (b) steep ripples: the nearest ripple cell of foam column i and row j (rx, rz), for the
     // columns [iLo, iHi) and rows [jLo, jHi) that have an interior one (a central difference).
     const float* m_height = nullptr;      // null: no ripples

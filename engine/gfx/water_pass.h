@@ -37,6 +37,12 @@ struct WaterView {
     int foamCells = 0;                      ///< foam map cells per side (0: no foam map)
     glm::vec2 foamOrigin{0.0f};             ///< world (x, z) of foam cell (0, 0)'s centre, m
     float foamCellSize = 1.0f;              ///< m per foam cell
+    /// Whitecaps drawn from the per-pixel Jacobian J (shaders/common_foam.glsl): density ½ at
+    /// whitecapJacobian, ramping over whitecapSigma either side (foam::WhitecapLaw's viewJacobian,
+    /// sigma); whitecapSigma 0: the fixed ramp from J = 0.6 to 0.1.
+    float whitecapJacobian = 0.0f;
+    float whitecapSigma = 0.0f;
+    float windAngle = 0.0f;                 ///< direction the wind blows toward, atan2(z, x), rad: the foam's streaks lie along it
     /// How far the FFT cascades together move a rest point (m; λ included): the projected
     /// grid reaches this far past the view. Gerstner and ripple bounds the renderer derives.
     SurfaceBounds fftBounds;

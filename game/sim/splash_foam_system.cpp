@@ -155,9 +155,15 @@ void layWakeTrails(SplashFoamState& state, foam::FoamMap& foam, uint64_t step, f
 void stepFoam(foam::FoamMap& foam, const OceanState& ocean, const interaction::RipplePatch* patch, float dt) {
     const ocean::OceanFftCpu& fft = *ocean.cpu;
     const int n = fft.resolution();
-    foam.update({std::span(fft.channel(0, ocean::OceanChannel::Jacobian), size_t(n) * size_t(n)), n, float(fft.patchSize(0)),
-                 patch, ocean.water.get()},
-                dt);
+    foam::FoamInputs in;
+    in.jacobian = std::span(fft.channel(0, ocean::OceanChannel::Jacobian), size_t(n) * size_t(n));
+    in.jacobianN = n;
+    in.jacobianTile = float(fft.patchSize(0));
+    in.windSpeed = ocean.def.wind_speed;
+    in.gravity = ocean.def.gravity;
+    in.ripples = patch;
+    in.water = ocean.water.get();
+    foam.update(in, dt);
 }
 
 } // namespace

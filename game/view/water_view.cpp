@@ -3,6 +3,7 @@
 
 #include "core/log.h"
 #include "foam/foam_map.h"
+#include "foam/foam_whitecaps.h"
 #include "gfx/gl.h"
 #include "interaction/gpu/attach_gpu.h"
 #include "interaction/ripple_patch.h"
@@ -49,6 +50,28 @@ void attachWaterGpu(ecs::World& world) {
 // Factor on the CPU maps' displacement extremes when the GPU renders another time.
 constexpr float FFT_BOUND_SLACK = 1.1f;
 
+// The far sea's whitecaps (shaders/common_foam.glsl) from the CPU maps, once per sea: J − 1 adds
+// over the cascades to first order (their bands do not overlap, so their σ add in quadrature),
+// and density ½ lies at the J that leaves the wind's whitecap share of the sea below it.
+void readWhitecaps(OceanGpu& side, const OceanState& ocean) {
+    if (side.whitecapVersion == ocean.seaVersion + 1) return;
+    side.whitecapVersion = ocean.seaVersion + 1;
+    const ocean::OceanFftCpu& fft = *ocean.cpu;
+    const int n = fft.resolution();
+    foam::JacobianStats sum;
+    double variance = 0.0;
+    for (int c = 0; c < ocean.def.cascades; ++c) {
+        const foam::JacobianStats s = foam::jacobianStats(
+            std::span(fft.channel(c, ocean::OceanChannel::Jacobian), size_t(n) * size_t(n)), n, float(fft.patchSize(c)));
+        sum.mean += s.mean - 1.0;
+        variance += s.sigma * s.sigma;
+    }
+    sum.sigma = std::sqrt(variance);
+    const double j = foam::instantWhitecapJacobian(sum, ocean.def.wind_speed);
+    side.whitecapSigma = std::isfinite(j) ? float(sum.sigma) : 0.0f;
+    side.whitecapJacobian = std::isfinite(j) ? float(j) : 0.0f;
+}
+
 gfx::WaterView prepareWaterView(ecs::World& world, double time) {
     gfx::WaterView view;
     if (auto* patch = world.resource<interaction::RipplePatch>()) {
@@ -81,6 +104,13 @@ gfx::WaterView prepareWaterView(ecs::World& world, double time) {
         else side->textures->upload(*ocean->cpu);
         side->textures->generateMipmaps();
         side->uploadedTime = wanted;
+    }
+    view.windAngle = std::atan2(ocean->def.wind_direction.y, ocean->def.wind_direction.x);
+    const foam::FoamMap* foam = foamMap(world);
+    if (ocean->mapsTime >= 0.0 && (!foam || foam->def().whitecap_from_wind)) {
+        readWhitecaps(*side, *ocean);
+        view.whitecapJacobian = side->whitecapJacobian;
+        view.whitecapSigma = side->whitecapSigma;
     }
     view.displacement = &side->textures->displacement();
     view.slopes = &side->textures->slopes();

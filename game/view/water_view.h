@@ -23,6 +23,10 @@ struct OceanGpu {
     std::uint64_t seaVersion = 0;             ///< OceanState::seaVersion the GPU FFT's h̃0 and λ follow
     std::array<float, 4> slopeVariance{};     ///< ocean::cascadeSlopeVariance per cascade, of the sea in `slopeSea`
     std::array<float, 6> slopeSea{-1.0f};     ///< the spectrum keys it was summed for (a live change sums again)
+    /// The far sea's whitecaps (gfx::WaterView::whitecapJacobian, whitecapSigma) and the
+    /// OceanState::seaVersion + 1 they were read at (0: never).
+    float whitecapJacobian = 0.0f, whitecapSigma = 0.0f;
+    std::uint64_t whitecapVersion = 0;
     ~OceanGpu();
 };
 

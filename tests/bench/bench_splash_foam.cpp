@@ -68,6 +68,7 @@ void BM_FoamStep(benchmark::State& state) {
     ob::setWorkerCount(int(state.range(2)));
     ob::foam::FoamDef def;
     def.resolution = n;
+    def.whitecap_from_wind = false;  // the given threshold: the same work every run
     ob::foam::FoamMap map(def, 64.0f);
     std::mt19937 rng(1);
     std::uniform_real_distribution<float> u(0.0f, 1.0f);
@@ -172,6 +173,7 @@ void BM_FoamSources(benchmark::State& state) {
     ob::setWorkerCount(int(state.range(2)));
     ob::foam::FoamDef def;
     def.resolution = n;
+    def.whitecap_from_wind = false;  // the given threshold: the same work every run
     ob::foam::FoamMap map(def, 64.0f);
     std::vector<float> jacobian(256 * 256);
     for (size_t c = 0; c < jacobian.size(); ++c) jacobian[c] = std::sin(float(c) * 0.01f);
@@ -223,6 +225,7 @@ struct FoamScene {
             for (int x = 0; x < 256; ++x) h[size_t(z) * 256 + size_t(x)] = 0.05f * std::sin(float(x) * 0.9f) * std::cos(float(z) * 0.7f);
         ob::foam::FoamDef def;
         def.resolution = 512;
+        def.whitecap_from_wind = false;
         const glm::vec2 centre = patch->origin() + glm::vec2(0.5f * 256.0f * 0.2f);
         map = std::make_unique<ob::foam::FoamMap>(def, 102.4f, centre);
     }

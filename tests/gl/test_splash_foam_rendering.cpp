@@ -186,9 +186,34 @@ TEST_CASE("foam at a cannonball's hit: 1 s after it the water there is brighter 
     INFO("luma at the hit: foam 1 s " << at1 << ", 5 s " << at5 << "; no foam 1 s " << none1 << ", 5 s " << none5
                                       << "; coverage there at 5 s " << on.foamAtHit);
     CHECK(on.foamAtHit > 0.05f);  // the simulation still holds foam there
-    CHECK(at1 > none1 + 0.15f);
-    CHECK(at5 > none5 + 0.03f);
+    // Foam thins and turns transparent as its coverage decays (common_foam.glsl: opacity
+    // 0.1 + 0.9·d²), so half-decayed foam shows faintly.
+    CHECK(at1 > none1 + 0.1f);
+    CHECK(at5 > none5 + 0.01f);
     CHECK(at5 - none5 < 0.8f * (at1 - none1));  // coverage e^(−4/6) = 0.51 of 1 s (with no new sources)
+}
+
+TEST_CASE("landed drops leave soft foam spots, not single white pixels: 2 and 4 s after a cannonball's hit", "[gl][render][foam]") {
+    // Drops in flight not drawn, so every bright dot is foam. An isolated dot: a pixel brighter
+    // than all eight neighbours by over 0.1 in luma, in an 80 × 40 px box round the hit (the
+    // ring where the crown's drops land, ~6 m across).
+    const CannonRun on = runCannon({"render.splash_drops=false"}, {120, 240});
+    CHECK(on.errorFree);
+    for (int k : {120, 240}) {
+        const Image& img = imageAt(on, k);
+        const int cx = int(on.hitScreen.x), cy = int(on.hitScreen.y);
+        int dots = 0;
+        for (int y = std::max(1, cy - 20); y < std::min(img.h - 1, cy + 20); ++y)
+            for (int x = std::max(1, cx - 40); x < std::min(img.w - 1, cx + 40); ++x) {
+                float around = 0.0f;
+                for (int dy = -1; dy <= 1; ++dy)
+                    for (int dx = -1; dx <= 1; ++dx)
+                        if (dx || dy) around = std::max(around, luma(img, x + dx, y + dy));
+                dots += luma(img, x, y) > around + 0.1f ? 1 : 0;
+            }
+        INFO(k << " frames after the hit: " << dots << " isolated bright pixels");
+        CHECK(dots <= 2);
+    }
 }
 
 TEST_CASE("the baked foam pattern draws the per-pixel one: 1 s after a cannonball's hit, full quality against shipped", "[gl][render][foam]") {

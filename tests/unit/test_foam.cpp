@@ -62,6 +62,7 @@ foam::FoamInputs ripplesOf(const interaction::RipplePatch& patch) {
 FoamDef smallDef(int resolution = 128) {
     FoamDef d;
     d.resolution = resolution;
+    d.whitecap_from_wind = false;  // law (a) with the threshold and gain as given
     return d;
 }
 

@@ -108,6 +108,7 @@ TEST_CASE("the whitecap source adds whitecap_weight·max(0, J_0 − J)·dt, J bi
     for (int j = 0; j < tn; ++j)
         for (int i = 0; i < tn; ++i) jac[size_t(j) * tn + size_t(i)] = 0.1f + 0.01f * float(i) + 0.005f * float(j);
     foam::FoamDef def;
+    def.whitecap_from_wind = false;
     def.whitecap_weight = 2.0f;
     def.whitecap_jacobian = 0.5f;
     const float dt = 0.1f;

@@ -1,0 +1,84 @@
+// Foam on the water (docs/splash_foam.md §6): a density from the sea (whitecaps where the FFT
+// Jacobian folds, steep ripples) and the persistent foam map's coverage; drawn as three scales of
+// structure (streaks along the wind, lace, bubbles) whose opacity ramps softly with the density
+// (no hard threshold), averaged toward its exact mean where the pixel covers the pattern (no
+// shimmer at a distance), lit as a rough white surface by the sun (N·L) and the sky, and thinner,
+// greyer and more transparent as its coverage decays (coverage stands for age: the map's foam
+// falls as e^(−t/τ)). Needs common_sky.glsl, common_water.glsl and common_detail.glsl.
+layout(binding = FOAM_PATTERN_UNIT) uniform sampler2D u_foamPattern;  // foamPattern() baked over its repeat, RGBA8 (du, dv as 0.5 + 0.5·x)
+
+const float FOAM_TILE = 5.0;            // m per repeat of the lace (foamPattern's first octave; its others 1.9 m, 0.68 m)
+const float FOAM_STREAK_STRETCH = 3.0;  // the lace is this many times longer along the wind than across it
+const float FOAM_DENSE = 0.9;           // the share of the pattern dense foam (coverage 1) covers
+const float FOAM_SOFT = 0.45;           // width of the lace's opacity ramp, in pattern units: soft edges everywhere
+const float FOAM_WARP = 1.0;            // foam map cells the lookup is pushed by the DU/DV field, at most
+const vec3 FOAM_ALBEDO_FRESH = vec3(0.82, 0.85, 0.86);  // fresh whitecap foam (Koepke 1984: ~0.55 effective over a patch of which it is a part)
+const vec3 FOAM_ALBEDO_OLD = vec3(0.55, 0.60, 0.62);    // old foam: a thin film of bubbles over the water, greyer
+const vec3 FOAM_SUN = vec3(1.0, 0.92, 0.8) * 1.4;       // sunlight on a surface facing the sun (the objects' light, object_mesh.frag)
+const vec3 FOAM_SKY = vec3(0.30, 0.38, 0.48);           // skylight on an upward rough surface by day: about the day dome's mean radiance (common_sky.glsl)
+
+// ∫ clamp(u, 0, 1) du from −∞ to x.
+float foamRampIntegral(float x) { return x <= 0.0 ? 0.0 : (x < 1.0 ? 0.5 * x * x : x - 0.5); }
+
+// The lace's opacity ramp at pattern value p, threshold t: clamp((p − t)/FOAM_SOFT + ½, 0, 1).
+float foamRamp(float p, float t) { return clamp((p - t) / FOAM_SOFT + 0.5, 0.0, 1.0); }
+
+// Its mean over the pattern (p uniform on [0, 1], as foamPattern() is made): what a pixel that
+// covers many cells of the pattern sees, exactly, not the ramp of the averaged pattern.
+float foamRampMean(float t) {
+    return FOAM_SOFT * (foamRampIntegral((1.0 - t) / FOAM_SOFT + 0.5) - foamRampIntegral(-t / FOAM_SOFT + 0.5));
+}
+
+// How far a pixel averages a pattern of which it spans `repeats` repeats: 0 it resolves it, 1 it
+// covers several of its finer cells (~a sixth of a repeat) and should see its mean.
+float foamBlur(float repeats) { return smoothstep(0.04, 0.25, repeats); }
+
+// The whitecaps' density at the per-pixel Jacobian J (J − 1 summed over the cascades): ½ at the
+// threshold that leaves the wind's whitecap share of the sea below it (water.farFade.y,
+// foam_whitecaps.h), ramping over one σ of J (farFade.z) either side; without a wind-derived
+// threshold (σ = 0), from J = 0.6 to 0.1.
+float foamWhitecaps(float jacobian) {
+    float sigma = water.farFade.z;
+    if (sigma <= 0.0) return smoothstep(0.6, 0.1, jacobian);
+    return clamp(0.5 + (water.farFade.y - jacobian) / (2.0 * sigma), 0.0, 1.0);
+}
+
+// The colour with foam over it at world point `world`: `n` the water's normal, `sun` toward the
+// sun, `jacobian` the sea's (1 flat, ≤ 0 folded), `rippleSlope` |∇h| of the ripples, `detail`
+// the detail map's (du, dv, streaks) there.
+vec3 shadeFoam(vec3 color, vec2 world, vec3 n, vec3 sun, float jacobian, float rippleSlope, vec3 detail) {
+    float density = max(foamWhitecaps(jacobian), smoothstep(0.12, 0.45, rippleSlope));
+    // --- the lace, laid along the wind (streaks), and the bubbles in it
+    float angle = water.farFade.w;
+    vec2 along = vec2(cos(angle), sin(angle));
+    vec2 fuv = vec2(dot(world, along) / FOAM_STREAK_STRETCH, dot(world, vec2(-along.y, along.x))) / FOAM_TILE;
+    // The bubbles (FOAM_BUBBLE_SCALE times finer: 1 m to 0.14 m) baked beside the lace.
+#ifdef WATER_FULL_QUALITY
+    vec3 lace = foamPattern(fuv);
+    float bubbles = foamPattern(fuv * FOAM_BUBBLE_SCALE + FOAM_BUBBLE_OFFSET).z;
+#else
+    vec4 baked = texture(u_foamPattern, fuv / FOAM_PATTERN_REPEAT);
+    vec3 lace = decodeDetail(baked);
+    float bubbles = baked.a;
+#endif
+    if (WATER_FOAM_MAP) {
+        // The map read at a point pushed up to FOAM_WARP cells by the pattern's DU/DV, so its
+        // edges follow the lace rather than the cells.
+        density = max(density, min(foamCoverage(world + lace.xy * FOAM_WARP * water.foamParams.z), 1.0));
+    }
+    // (the derivatives before any branch)
+    vec2 span = fwidth(fuv);
+    float repeats = max(span.x, span.y);
+    float laceBlur = foamBlur(repeats), bubbleBlur = foamBlur(repeats * FOAM_BUBBLE_SCALE);
+    if (density <= 0.0) return color;
+    // --- opacity: the lace's soft ramp (thinner as the density falls), the bubbles' holes,
+    // both tending to their means where the pixel averages them; thin old foam lets water through
+    float t = 1.0 - FOAM_DENSE * density;
+    float laceAlpha = mix(foamRamp(lace.z, t), foamRampMean(t), laceBlur);
+    float holes = mix(0.55 + 0.45 * bubbles, 0.775, bubbleBlur);
+    float alpha = laceAlpha * holes * (0.1 + 0.9 * density * density);
+    // --- light: a rough white surface lying on the water (Lambert), greyer as it ages
+    vec3 albedo = mix(FOAM_ALBEDO_OLD, FOAM_ALBEDO_FRESH, smoothstep(0.1, 0.9, density));
+    vec3 light = FOAM_SUN * sunTint(sun) * max(dot(n, sun), 0.0) + FOAM_SKY * daylight(sun);
+    return mix(color, albedo * light, alpha);
+}
