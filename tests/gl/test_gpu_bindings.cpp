@@ -257,9 +257,10 @@ TEST_CASE("the ripple solvers' compute programs use the numbers of their binding
                        {{"Current", KANG2008_CURRENT_BUFFER}, {"Previous", KANG2008_PREVIOUS_BUFFER}, {"Stamps", KANG2008_STAMPS_BUFFER},
                         {"Ph", KANG2008_PH_BUFFER}, {"Owner", KANG2008_OWNER_BUFFER}},
                        KANG2008_STAMP_TILE);
-    checkSolverProgram("ewave_step.comp", {{"u_n", EWAVE_N_LOCATION}, {"u_mode", EWAVE_MODE_LOCATION}},
+    checkSolverProgram("ewave_step.comp",
+                       {{"u_n", EWAVE_N_LOCATION}, {"u_mode", EWAVE_MODE_LOCATION}, {"u_level", EWAVE_LEVEL_LOCATION}},
                        {{"Spectrum", EWAVE_SPECTRUM_BUFFER}, {"Field", EWAVE_FIELD_BUFFER}, {"Rotation", EWAVE_ROTATION_BUFFER},
-                        {"Sponge", EWAVE_SPONGE_BUFFER}},
+                        {"Sponge", EWAVE_SPONGE_BUFFER}, {"Sum", EWAVE_SUM_BUFFER}},
                        EWAVE_TILE);
     CHECK(gfx::glErrorCount() == errorsBefore);
 }

@@ -1,6 +1,7 @@
 // Kelvin wake of the dispersive ripple model (docs/references.md#dispersive-ripples): a bounding sphere moving at constant
 // speed U over still deep water, stamped by Table 2 (planStamp) as an ewave pressure source,
-// leaves a wake whose outer envelope makes arcsin(1/3) = 19.47° with its track, for any U.
+// leaves a wake whose outer envelope makes arcsin(1/3) = 19.47° with its track, for any U; over
+// water of depth d it widens to Havelock's (1908) angle as U/√(g·d) nears 1.
 #include "interaction/ewave/ewave_field.h"
 #include "interaction/sphere_stamp.h"
 
@@ -14,6 +15,18 @@
 using namespace ob::interaction;
 
 namespace {
+
+// k0 of the transverse waves: g·k·tanh(k·d) = U²·k² (deep, d = 0: k0 = g/U²), by bisection.
+double transverseWavenumber(double speed, double depth) {
+    const double deep = 9.81 / (speed * speed);
+    if (depth <= 0.0) return deep;
+    double lo = 1e-9, hi = deep;  // tanh(k·d)·g/(U²·k) falls from g·d/U² (> 1 below Fd = 1) through 1
+    for (int i = 0; i < 200; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        (9.81 * std::tanh(mid * depth) > speed * speed * mid ? lo : hi) = mid;
+    }
+    return hi;
+}
 
 struct Wake {
     double angleDeg = 0.0;  // fitted envelope angle
@@ -34,9 +47,13 @@ struct Wake {
 // and y(d) (both sides averaged) is fitted by a straight line y = a + b·d over
 // 1.5λ <= d <= min(0.75·U·t, dCap) (the wake formed after the start, inside the band-free
 // part of the field). The angle is atan(b): the intercept a absorbs the source's size.
-Wake runWake(double speed, double seconds, int rows, int cols, double hz, double dCap) {
+// `depth` m (0: deep water); the transverse wavelength λ is then 2π/k0 with
+// g·k0·tanh(k0·d) = U²·k0² (the waves that keep pace with the sphere along its track).
+Wake runWake(double speed, double seconds, int rows, int cols, double hz, double dCap, double depth = 0.0,
+             double rampSeconds = 3.0) {
     const float cell = 0.25f, dt = float(1.0 / hz);
     EWaveField field(rows, cols, cell, RippleBoundary::Absorbing, 32);
+    if (depth > 0.0) field.setMedium({9.81, 0.074 / 1025.0, depth, 0.0});
     BoundingSphere sphere;
     sphere.radius = 0.5f;
     sphere.direction = SphereDirection::Down;
@@ -55,14 +72,14 @@ Wake runWake(double speed, double seconds, int rows, int cols, double hz, double
         RippleStamp st;
         if (planStamp(rows, cols, cell, sphere, contact, m, [&](int cx, int cz) { return field.heightAt(cx, cz); }, st)) {
             const EWaveSource src = ewaveSource(st, m.gridX, m.gridZ, cell, 9.81f);
-            double ramp = std::min(1.0, s * double(dt) / 3.0);
+            double ramp = std::min(1.0, s * double(dt) / rampSeconds);
             ramp = ramp * ramp * (3.0 - 2.0 * ramp);
             field.addSource(src.gx, src.gz, src.radiusCells, float(src.accel * ramp), dt);
         }
         field.step(dt);
     }
     const double xs = x0 + speed * steps * double(dt);  // the sphere now
-    const double lambda = 2.0 * std::numbers::pi * speed * speed / 9.81;
+    const double lambda = 2.0 * std::numbers::pi / transverseWavenumber(speed, depth);
     const int window = std::max(1, int(std::lround(lambda / cell / 2.0)));
     const int zc = int(std::lround(zTrack / cell));
     const double dMin = 1.5 * lambda, dMax = std::min(0.75 * speed * seconds, dCap);
@@ -97,7 +114,56 @@ Wake runWake(double speed, double seconds, int rows, int cols, double hz, double
     return {std::atan(b) * 180.0 / std::numbers::pi, int(ds.size())};
 }
 
+// Havelock (1908): at depth Froude number Fd = U/√(g·d) < 1 the wave of wavenumber k at angle
+// θ to the track keeps pace with the ship when cos²θ = tanh(κ)/(Fd²·κ), κ = k·d, and its energy
+// runs at the group speed n·c, n = 1/2 + κ/sinh 2κ; in the ship's frame it lies along the ray
+// tan α = n·tan θ/(1 − n + tan²θ). The wake's edge is the largest α over κ (deep water:
+// n = 1/2, tan θ = 1/√2, α = arcsin 1/3). Gravity waves, as Havelock's.
+double havelockAngleDeg(double froude) {
+    double best = 0.0;
+    for (double kappa = 1e-3; kappa < 60.0; kappa *= 1.0002) {
+        const double cos2 = std::tanh(kappa) / (froude * froude * kappa);
+        if (cos2 > 1.0) continue;
+        const double t = std::sqrt(1.0 / cos2 - 1.0), n = 0.5 + kappa / std::sinh(2.0 * kappa);
+        best = std::max(best, std::atan(n * t / (1.0 - n + t * t)));
+    }
+    return best * 180.0 / std::numbers::pi;
+}
+
 } // namespace
+
+TEST_CASE("ewave: Havelock's wake angle is the Kelvin angle in deep water and widens as Fd → 1", "[ewave][wake][depth]") {
+    CHECK(havelockAngleDeg(0.3) == Approx(std::asin(1.0 / 3.0) * 180.0 / std::numbers::pi).margin(0.01));
+    CHECK(havelockAngleDeg(0.9) > 30.0);
+    CHECK(havelockAngleDeg(0.99) > 60.0);
+}
+
+// U = 2 m/s over d = U²/(g·Fd²): 1.63 m at Fd = 0.5 (Havelock: the Kelvin angle still), 0.50 m
+// at 0.9 (Havelock: 34.6°, the cusp waves κ ≈ 1.05, 3 m long). The push ramps up over 10 s:
+// near Fd = 1 a sudden start sheds a ring of long waves at √(g·d) > U that overtakes the
+// wedge's edge. The wedge is fitted over 1.5λ..30 m behind the sphere (the wake made at full
+// push). At Fd = 0.5 the envelope's edge holds Havelock's angle to 2°. At Fd = 0.9 the
+// one-third edge is not a sharp measure: the near-critical pattern's long waves reach a third
+// of the cusp waves far outside the cusp line, and the measured angle moved with the fit's
+// range and the ramp (28°, 46°, 60° for 60 m / 10 s, 45 m / 3 s, 30 m / 10 s); what it does
+// show is the widening, so that is what is checked there (docs/ewave.md).
+TEST_CASE("ewave: in water of depth d the wake holds Havelock's angle at Fd = 0.5 and is markedly wider at Fd = 0.9",
+          "[ewave][wake][depth][long]") {
+    const double speed = 2.0;
+    double angle[2] = {};
+    int i = 0;
+    for (double froude : {0.5, 0.9}) {
+        const double depth = speed * speed / (9.81 * froude * froude);
+        const Wake w = runWake(speed, 40.0, 512, 1024, 60.0, 30.0, depth, 10.0);
+        INFO("Fd = " << froude << " (d = " << depth << " m): envelope " << w.angleDeg << "° over " << w.samples
+                     << " cross-sections, Havelock " << havelockAngleDeg(froude) << "°");
+        CHECK(w.samples >= 40);
+        angle[i++] = w.angleDeg;
+    }
+    INFO("envelope " << angle[0] << "° at Fd = 0.5, " << angle[1] << "° at Fd = 0.9");
+    CHECK(std::abs(angle[0] - havelockAngleDeg(0.5)) <= 2.0);
+    CHECK(angle[1] >= havelockAngleDeg(0.5) + 5.0);
+}
 
 TEST_CASE("ewave: a sphere at constant speed leaves a Kelvin wake of 19.47° for U = 2 and 4 m/s", "[ewave][wake][long]") {
     const double kelvin = std::asin(1.0 / 3.0) * 180.0 / std::numbers::pi;

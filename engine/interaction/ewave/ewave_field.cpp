@@ -74,17 +74,38 @@ OB_VECTOR_KERNEL void addKernel(double* __restrict f, float* __restrict copy, co
     }
 }
 
-// f *= factor (the sponge), and its float copy.
-OB_VECTOR_KERNEL void scaleKernel(double* __restrict f, float* __restrict copy, const float* __restrict factor, int n) {
+// f relaxed towards `level` by factor (the sponge: f − level scaled), and its float copy.
+OB_VECTOR_KERNEL void scaleKernel(double* __restrict f, float* __restrict copy, const float* __restrict factor, int n,
+                                  double level) {
     for (int i = 0; i < n; ++i) {
-        f[i] *= double(factor[i]);
+        f[i] = (f[i] - level) * double(factor[i]) + level;
+        copy[i] = float(f[i]);
+    }
+}
+
+// Σ f in double, in index order (the same bits whatever the workers did before).
+double sumKernel(const double* f, size_t n) {
+    double sum = 0.0;
+    for (size_t i = 0; i < n; ++i) sum += f[i];
+    return sum;
+}
+
+// f += shift, and its float copy.
+OB_VECTOR_KERNEL void shiftKernel(double* __restrict f, float* __restrict copy, double shift, size_t n) {
+    for (size_t i = 0; i < n; ++i) {
+        f[i] += shift;
         copy[i] = float(f[i]);
     }
 }
 
 } // namespace
 
-double EWaveMedium::omega(double k) const { return std::sqrt(gravity * k + capillarity * k * k * k); }
+// Finite depth (Lamb §228): the gravity-capillary restoring force times tanh(k·d); deep water
+// (d = 0, or k·d past 20 where tanh is 1 to 1e-17) skips it.
+double EWaveMedium::omega(double k) const {
+    const double deep = gravity * k + capillarity * k * k * k;
+    return std::sqrt(depth > 0.0 && k * depth < 20.0 ? deep * std::tanh(k * depth) : deep);
+}
 
 EWaveField::EWaveField(int rows, int cols, float cellSize, RippleBoundary boundary, int spongeWidth)
     : m_rows(rows), m_cols(cols), m_specCols(cols / 2 + 1), m_cells(size_t(rows) * size_t(cols)),
@@ -170,11 +191,16 @@ void EWaveField::setDamping(float decayTime, float viscosity) {
     m_preparedDt = -1.0f;
 }
 
-EWaveField::ModeStep EWaveField::modeStep(const EWaveMedium& medium, double k, float dt, float decayTime, float viscosity, double scale) {
-    const double dtd = dt;
+// Amplitude damping over dt: exp(−(1/τ + 2·ν·k²)·dt), ν the medium's viscosity plus the extra one.
+static double dampingExponent(const EWaveMedium& medium, double k, float dt, float decayTime, float viscosity) {
     const double rate = decayTime > 0.0f ? 1.0 / double(decayTime) : 0.0;
-    const double d = std::exp(-(rate + 2.0 * double(viscosity) * k * k) * dtd) * scale;
-    if (k == 0.0) return {d, d * dtd, 0.0};
+    return -(rate + 2.0 * (medium.viscosity + double(viscosity)) * k * k) * double(dt);
+}
+
+EWaveField::ModeStep EWaveField::modeStep(const EWaveMedium& medium, double k, float dt, float decayTime, float viscosity, double scale) {
+    if (k == 0.0) return {scale, 0.0, 0.0};  // the volume: kept, not damped (v̂(0) is dropped by the step)
+    const double dtd = dt;
+    const double d = std::exp(dampingExponent(medium, k, dt, decayTime, viscosity)) * scale;
     const double w = medium.omega(k);
     const double cs = std::cos(w * dtd), sn = std::sin(w * dtd);
     return {d * cs, d * sn / w, -d * w * sn};
@@ -184,17 +210,16 @@ EWaveField::ModeStep EWaveField::modeStep(const EWaveMedium& medium, double k, f
 // long waves, whose change is the whole point.
 double EWaveField::modeStepMinusOne(const EWaveMedium& medium, double k, float dt, float decayTime, float viscosity,
                                     double scale) {
+    if (k == 0.0) return 0.0;
     const double dtd = dt;
-    const double rate = decayTime > 0.0f ? 1.0 / double(decayTime) : 0.0;
-    const double dm1 = std::expm1(-(rate + 2.0 * double(viscosity) * k * k) * dtd);
-    if (k == 0.0) return dm1 * scale;
+    const double dm1 = std::expm1(dampingExponent(medium, k, dt, decayTime, viscosity));
     const double half = std::sin(0.5 * medium.omega(k) * dtd);
     return (dm1 * std::cos(medium.omega(k) * dtd) - 2.0 * half * half) * scale;
 }
 
 // Sponge: friction γ = SPONGE_MAX_RATE·(1 − s_row·s_col) with the sin² profile s (spongeProfile)
 // (0 at the outer ring, 1 from the band's inner edge, zero slope there, so the band starts
-// without a step in the medium); each step multiplies h and v by exp(−γΔt). A wave that
+// without a step in the medium); each step scales h − its mean level and v by exp(−γΔt). A wave that
 // crosses the band twice (out, and back in through the periodic wrap) keeps little: 32
 // cells of 0.25 m damp a 2 m wave (group speed 0.9 m/s) by e^-50 or so.
 std::vector<float> EWaveField::spongeFactors(int rows, int cols, int spongeWidth, float dt) {
@@ -263,14 +288,32 @@ void EWaveField::step(float dt) {
             finishRows(t, 0, m_rows);
         }
     });
+    // --- 4. the volume the rounding and the sponge moved, put back
+    if (m_boundary != RippleBoundary::Fixed) conserveVolume();
+}
+
+// The step changes no mode but k = 0 of h by more than rounding, so the shift is that rounding
+// (~1e-8 of the change's RMS over the field) plus, with the sponge, the water it moved:
+// spread over the whole field it is the k = 0 mode alone, as a volume's rise would be.
+void EWaveField::conserveVolume() {
+    const double shift = (m_volume - sumKernel(m_h, m_cells)) / double(m_cells);
+    shiftKernel(m_h, m_float[0], shift, m_cells);
 }
 
 // Spectrum rows [j0, j1) of both fields: Δĥ = (a − 1)·ĥ + b·v̂, Δv̂ = c·ĥ + (a − 1)·v̂ in place.
+// Mode 0 (in the band of row 0): its coefficients are 0, so ĥ(0) is kept, and v̂(0) is dropped
+// (Δv̂(0) = −v̂(0)): a source's uniform part lifts no water.
 void EWaveField::changeRows(int j0, int j1) {
+    const float v0[2] = {j0 == 0 ? m_spec[1][0] : 0.0f, j0 == 0 ? m_spec[1][1] : 0.0f};
     for (int j = j0; j < j1; ++j) {
         const size_t row = size_t(j) * size_t(m_specCols);
         const size_t coefRow = size_t(std::min(j, m_rows - j)) * size_t(m_specCols);
         changeKernel(m_spec[0] + 2 * row, m_spec[1] + 2 * row, m_coef.data() + 3 * coefRow, m_specCols);
+    }
+    if (j0 == 0) {  // the change's spectrum carries the inverse transform's 1/(rows·cols), as the coefficients do
+        const float norm = float(1.0 / (double(m_rows) * double(m_cols)));
+        m_spec[1][0] = -v0[0] * norm;
+        m_spec[1][1] = -v0[1] * norm;
     }
 }
 
@@ -279,6 +322,7 @@ void EWaveField::changeRows(int j0, int j1) {
 void EWaveField::finishRows(int t, int z0, int z1) {
     const int rows = m_rows, cols = m_cols, w = m_spongeWidth;
     double* const f = t == 0 ? m_h : m_v;
+    const double level = t == 0 ? m_volume / double(m_cells) : 0.0;  // the sponge's far field: the mean level, v = 0
     for (int z = z0; z < z1; ++z) {
         const size_t row = size_t(z) * size_t(cols);
         double* fr = f + row;
@@ -299,10 +343,10 @@ void EWaveField::finishRows(int t, int z0, int z1) {
         case RippleBoundary::Absorbing:
             // Only the band: rows in it whole, the other rows at their two ends.
             if (z < w || z >= rows - w) {
-                scaleKernel(fr, copy, m_sponge.data() + row, cols);
+                scaleKernel(fr, copy, m_sponge.data() + row, cols, level);
             } else {
-                scaleKernel(fr, copy, m_sponge.data() + row, w);
-                scaleKernel(fr + (cols - w), copy + (cols - w), m_sponge.data() + row + size_t(cols - w), w);
+                scaleKernel(fr, copy, m_sponge.data() + row, w, level);
+                scaleKernel(fr + (cols - w), copy + (cols - w), m_sponge.data() + row + size_t(cols - w), w, level);
             }
             break;
         }
@@ -313,6 +357,7 @@ void EWaveField::syncHeight() {
     applySources();
     toFloatKernel(m_float[0], m_h, m_cells);
     toFloatKernel(m_float[1], m_v, m_cells);
+    m_volume = sumKernel(m_h, m_cells);
     m_stale = false;
     m_vRows0 = m_rows;
     m_vRows1 = 0;

@@ -1,6 +1,7 @@
 // Dispersive ripple field ("ewave"): Tessendorf's exponential solver of the iWave equation
 // (iWave 2004, eWave 2014; docs/references.md#dispersive-ripples). Height h and vertical velocity v per cell; each step
-// advances every Fourier mode of the periodic grid exactly by ω(k)² = g·k + (σ/ρ)·k³.
+// advances every Fourier mode of the periodic grid exactly by ω(k)² = (g·k + (σ/ρ)·k³)·tanh(k·d),
+// and keeps the water's volume (the mean of h): pressures and the border move water, never make it.
 // Row-major rows×cols floats, row = z, column = x; h in metres, v in m/s.
 #pragma once
 #include "interaction/ripple_def.h"
@@ -19,13 +20,20 @@ namespace ob::interaction {
 
 struct EWaveSource;
 
-/// The water's restoring forces of the dispersion ω² = g·k + (σ/ρ)·k³.
+/// The water the waves run in: its restoring forces, its depth and its own viscosity, in the
+/// dispersion ω² = (g·k + (σ/ρ)·k³)·tanh(k·d) (d = 0: deep, tanh = 1) and the damping 2νk².
 struct EWaveMedium {
-    double gravity;      ///< g, m/s², > 0
-    double capillarity;  ///< σ/ρ, m³/s², >= 0
-    /// g and σ/ρ of an [environment].
-    static EWaveMedium of(const environment::EnvironmentDef& env) { return {double(env.gravity), environment::capillarity(env)}; }
-    /// ω(k) = sqrt(g·k + (σ/ρ)·k³), rad/s, for a wavenumber k in rad/m.
+    double gravity;           ///< g, m/s², > 0
+    double capillarity;       ///< σ/ρ, m³/s², >= 0
+    double depth = 0.0;       ///< d, m, >= 0; 0 = deep water (no bottom)
+    double viscosity = 0.0;   ///< ν, kinematic, m²/s, >= 0: every wave's amplitude decays as exp(−2νk²t) (Lamb §348)
+    /// g, σ/ρ and ν of an [environment], over water `depth` m deep (0 = deep).
+    static EWaveMedium of(const environment::EnvironmentDef& env, double depth = 0.0) {
+        return {double(env.gravity), environment::capillarity(env), depth, double(env.water_viscosity)};
+    }
+    /// A default [environment]'s g and σ/ρ, deep and without viscosity (a field's medium until told otherwise).
+    static EWaveMedium ideal() { return {double(environment::EnvironmentDef{}.gravity), environment::capillarity({})}; }
+    /// ω(k), rad/s, for a wavenumber k in rad/m.
     double omega(double k) const;
 };
 
@@ -52,11 +60,22 @@ struct EWaveMedium {
 ///   2. per mode, in place, in row bands: Δĥ = (a − 1)·ĥ + b·v̂, Δv̂ = c·ĥ + (a − 1)·v̂ (double;
 ///      a, b, c of modeStep, stored once for rows j and rows − j, which share |k|);
 ///   3. per field: the inverse transform of its change added to it, the boundary in real space,
-///      its float copy.
+///      its float copy;
+///   4. the volume (Periodic, Absorbing): h's sum set back to what it was, exactly (conserveVolume).
+///
+/// Volume. A pressure (a source) or a sponge moves water; it cannot make or remove it, so the
+/// mean of h, the k = 0 mode, is the one thing a step never changes: that mode has ω(0) = 0 and
+/// would only integrate v's mean, which is dropped (ĥ(0)' = ĥ(0), v̂(0)' = 0: a source's uniform
+/// part is no force on incompressible water, the volume a body displaces rises around it); the
+/// sponge relaxes h towards the mean level, not 0; and what the float transforms' rounding and
+/// the sponge still move is put back, exactly in double, as a uniform shift of h (pass 4). The
+/// volume is set by the writes: addHeight adds to it, edits and scrolls recount it, clear zeroes
+/// it. Fixed holds its ring at h = 0, a drain by design: it does not keep the volume.
 ///
 /// Damping, in physical units and independent of the step size: d = exp(−Δt/τ − 2·ν·k²·Δt),
-/// τ the e-folding time of every wave's amplitude (s; 0 = none) and ν an effective viscosity
-/// (m²/s; 0 = none) that damps short waves more (energy of a mode falls as exp(−2t/τ − 4νk²t)).
+/// τ the e-folding time of every wave's amplitude (s; 0 = none) and ν the medium's viscosity
+/// plus an extra one (m²/s), which damps short waves more (energy of a mode falls as
+/// exp(−2t/τ − 4νk²t); water's 1e-6 m²/s takes days to damp a 5 m wave, Lamb §348).
 class EWaveField {
 public:
     /// Friction at the outer edge of the absorbing sponge, 1/s (see the .cpp).
@@ -73,12 +92,13 @@ public:
     /// ω(k) of the field's medium, rad/s, for a wavenumber k in rad/m.
     double omega(double k) const { return m_medium.omega(k); }
     /// One mode's step: ĥ' = a·ĥ + b·v̂, v̂' = c·ĥ + a·v̂ with a = d·cos ωΔt, b = d·sin(ωΔt)/ω,
-    /// c = −d·ω·sin ωΔt (k = 0: a = d, b = d·Δt, c = 0), d the damping times `scale`.
+    /// c = −d·ω·sin ωΔt, d the damping times `scale` (k = 0, the volume: a = `scale`, b = c = 0;
+    /// and v̂(0)' = 0, which the step sets itself).
     struct ModeStep {
         double a, b, c;
     };
     /// ModeStep of wavenumber k (rad/m) in `medium` over dt seconds with decay time τ (s; 0 = none)
-    /// and viscosity ν (m²/s), times `scale` (the transforms' 1/(rows·cols)). The GPU twin uses it too.
+    /// and extra viscosity ν (m²/s, on top of the medium's), times `scale` (the transforms' 1/(rows·cols)). The GPU twin uses it too.
     static ModeStep modeStep(const EWaveMedium& medium, double k, float dt, float decayTime, float viscosity, double scale);
     /// modeStep's a − 1 before `scale`, times `scale`: d·cos ωΔt − 1 without the cancellation
     /// of forming it from a (the coefficient of the step's change, see the class comment).
@@ -88,9 +108,10 @@ public:
     /// band of `spongeWidth` cells), for a step of dt seconds.
     static std::vector<float> spongeFactors(int rows, int cols, int spongeWidth, float dt);
 
-    /// Sets g and σ/ρ (until then: those of a default [environment]).
+    /// Sets g, σ/ρ, the depth and the water's viscosity (until then: EWaveMedium::ideal()).
     void setMedium(const EWaveMedium& medium);
-    /// Sets the damping: decayTime τ in s (0 = none), viscosity ν in m²/s (0 = none).
+    /// Sets the extra damping: decayTime τ in s (0 = none), viscosity ν in m²/s on top of the
+    /// medium's (0 = none).
     void setDamping(float decayTime, float viscosity);
     /// Advances h and v by dt seconds (> 0). Allocates nothing once dt has been seen.
     void step(float dt);
@@ -122,6 +143,8 @@ public:
     int spongeWidth() const { return m_spongeWidth; }
     float decayTime() const { return m_decayTime; }
     float viscosity() const { return m_viscosity; }
+    /// Σh, m (times the cell area: the water's volume above the rest level): what steps keep.
+    double volume() const { return m_volume; }
     const EWaveMedium& medium() const { return m_medium; }
 
     /// The state h, rows·cols values row-major (index z·cols + x), metres.
@@ -147,11 +170,12 @@ public:
     /// h += dh at cell index (z·cols + x), its float copy with it (a drop's crater).
     void addHeight(size_t index, double dh) {
         m_h[index] += dh;
+        m_volume += dh;
         m_float[0][index] = float(m_h[index]);
     }
     /// h as floats, row-major, m: the float copy of the state.
     std::span<const float> height() const { return {m_float[0], m_cells}; }
-    /// Rebuilds the float copies from the state (after editHeight/editVelocity).
+    /// Rebuilds the float copies from the state (after editHeight/editVelocity) and recounts the volume.
     void syncHeight();
     /// h at column x, row z (both in range), m.
     float heightAt(int x, int z) const { return float(m_h[size_t(z) * size_t(m_cols) + size_t(x)]); }
@@ -164,6 +188,7 @@ private:
     void changeRows(int j0, int j1);
     void applySources() const;  // the sources' float sums into v (rows m_sourceRows0..1), then 0
     void finishRows(int t, int z0, int z1);
+    void conserveVolume();  // pass 4: h += (volume − Σh)/cells
 
     int m_rows, m_cols, m_specCols;
     size_t m_cells, m_modes;
@@ -171,7 +196,8 @@ private:
     RippleBoundary m_boundary;
     int m_spongeWidth = 0;
     float m_decayTime = 0.0f, m_viscosity = 0.0f;
-    EWaveMedium m_medium = EWaveMedium::of({});
+    double m_volume = 0.0;             // Σh the step keeps (addHeight adds to it, syncHeight recounts it), m
+    EWaveMedium m_medium = EWaveMedium::ideal();
     float m_preparedDt = -1.0f;        // dt of the coefficients below (and the sponge factors)
     int m_stepThreads = 1;             // the step's passes on 1 or 2 workers (measured, chooseThreads)
     int m_sourceThreads = 1;           // addSources' row bands on 1 or workerCount() workers (measured)

@@ -8,7 +8,7 @@ namespace ob::interaction {
 std::vector<RippleDefError> EWaveModel::validate(const RippleDef& /*def*/) { return {}; }
 
 std::unique_ptr<RippleSolver> EWaveModel::make(const RippleDef& def) {
-    return std::make_unique<EWaveSolver>(def.resolution, def.cell_size, def, EWaveMedium::of(def.environment), def.boundary,
+    return std::make_unique<EWaveSolver>(def.resolution, def.cell_size, def, EWaveMedium::of(def.environment, def.depth), def.boundary,
                                          def.sponge_width);
 }
 
@@ -84,7 +84,7 @@ void EWaveSolver::hashState(StateHasher& h) const {
     h.bytes(m_field.velocityState().data(), m_field.velocityState().size_bytes());
 }
 
-// The GPU twin takes the damping from the field at its next step.
+// The GPU twin takes the damping from the field at its next step (the medium, depth included, is set once).
 void EWaveSolver::retune(const RippleDef& def) { m_field.setDamping(def.decay_time, def.viscosity); }
 
 } // namespace ob::interaction

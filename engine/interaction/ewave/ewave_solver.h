@@ -29,7 +29,7 @@ public:
         virtual void step(float dt, bool cpuChanged) = 0;
     };
 
-    /// An n × n field of cells `cellSize` metres in `medium` (g, σ/ρ), h = v = 0, damped as the Def says.
+    /// An n × n field of cells `cellSize` metres in `medium` (g, σ/ρ, depth, ν), h = v = 0, with the Def's extra damping.
     EWaveSolver(int n, float cellSize, const EWaveDef& def, const EWaveMedium& medium, RippleBoundary boundary, int spongeWidth);
     /// Steps through `offload` from now on (EWaveModel::moveToGpu).
     void setOffload(std::unique_ptr<Offload> offload) { m_offload = std::move(offload); }

@@ -48,6 +48,8 @@ EWaveGpu::EWaveGpu(const EWaveField& like)
     m_fields[1] = gfx::createBuffer("ewave state w = h - i v (or spectrum)", bytes(cells, 2 * sizeof(float)));
     m_rotation = gfx::createBuffer("ewave mode rotation (a, b, c)", bytes(quarter * quarter, sizeof(Rotation)));
     m_sponge = gfx::createBuffer("ewave sponge factors", bytes(m_boundary == RippleBoundary::Absorbing ? cells : 1, sizeof(float)));
+    m_groups = (GLuint(m_n) + EWAVE_TILE - 1) / EWAVE_TILE;
+    m_sum = gfx::createBuffer("ewave sums of h per work group, their total", bytes(size_t(m_groups) * m_groups + 1, sizeof(float)));
     // The ocean's twiddles: exp(+2πi·k/N) rounded from double.
     std::vector<float> twiddles(n);
     for (size_t k = 0; k < n / 2; ++k) {
@@ -59,7 +61,6 @@ EWaveGpu::EWaveGpu(const EWaveField& like)
     glProgramUniform1i(m_fft.id(), OCEAN_N_LOCATION, m_n);
     glProgramUniform1i(m_fft.id(), OCEAN_LOG2N_LOCATION, m_log2n);
     glProgramUniform1i(m_step.id(), EWAVE_N_LOCATION, m_n);
-    m_groups = (GLuint(m_n) + EWAVE_TILE - 1) / EWAVE_TILE;
     m_medium = like.medium();
     setDamping(like.decayTime(), like.viscosity());
     upload(like);
@@ -124,10 +125,18 @@ void EWaveGpu::step(float dt) {
     // --- back: w' = h' − i·v', in place
     transform(m_fields[1]);
     // --- the boundary in real space
-    if (m_boundary != RippleBoundary::Periodic) {
-        glProgramUniform1i(m_step.id(), EWAVE_MODE_LOCATION, m_boundary == RippleBoundary::Fixed ? EWAVE_MODE_RING : EWAVE_MODE_SPONGE);
-        glUseProgram(m_step.id());
-        glDispatchCompute(m_groups, m_groups, 1);
+    if (m_boundary == RippleBoundary::Fixed) {
+        dispatchStep(EWAVE_MODE_RING, m_groups);
+    } else if (m_boundary == RippleBoundary::Absorbing) {
+        // The sponge towards the level with Σh per work group, their total, h shifted back to the
+        // level: the volume kept (EWaveField::conserveVolume; periodic keeps it in the mode pass).
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, EWAVE_SUM_BUFFER, m_sum.id());
+        glProgramUniform1f(m_step.id(), EWAVE_LEVEL_LOCATION, float(m_level));
+        dispatchStep(EWAVE_MODE_SPONGE, m_groups);
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+        dispatchStep(EWAVE_MODE_TOTAL, 1);
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+        dispatchStep(EWAVE_MODE_RESTORE, m_groups);
     }
     // Readers of the state: the next step's dispatches, download (glGetNamedBufferSubData) and
     // upload (glNamedBufferSubData, which must not overtake this step's reads).
@@ -136,9 +145,18 @@ void EWaveGpu::step(float dt) {
     std::swap(m_fields[0], m_fields[1]);
 }
 
+void EWaveGpu::dispatchStep(int mode, GLuint groups) {
+    glProgramUniform1i(m_step.id(), EWAVE_MODE_LOCATION, mode);
+    glUseProgram(m_step.id());
+    glDispatchCompute(groups, groups, 1);
+}
+
 void EWaveGpu::upload(std::span<const double> h, std::span<const double> v) {
     const size_t cells = size_t(m_n) * size_t(m_n);
     assert(h.size() == cells && v.size() == cells);
+    double volume = 0.0;  // in index order, as EWaveField counts it
+    for (double x : h) volume += x;
+    m_level = volume / double(cells);
     m_staging.resize(2 * cells);
     for (size_t i = 0; i < cells; ++i) {
         m_staging[2 * i] = float(h[i]);

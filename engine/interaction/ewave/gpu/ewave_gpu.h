@@ -19,14 +19,17 @@ namespace ob::interaction {
 /// EWaveField::step does (the same EWaveField::modeStep coefficients, rounded to float once)
 /// and written as conj Z'(−K), whose e^{+} transform is w' again: one transform forward, one
 /// back, per step (FFTW needs two real ones each way). Then the boundary in real space: the
-/// ring held at 0 (Fixed) or the CPU's sponge factors (Absorbing; EWaveField::spongeFactors).
+/// ring held at 0 (Fixed) or the CPU's sponge factors (Absorbing; EWaveField::spongeFactors)
+/// towards the mean level, whose volume a sum over the field and a uniform shift then restore
+/// (as EWaveField's conserveVolume, in float). The k = 0 mode keeps h's mean and drops v's.
 ///
 /// Precision: float state and transforms. Each step's two transforms round at 2·log2 N
 /// butterfly stages; the tests bound the difference to the CPU's double field after 100 steps
 /// (tests_gl "[ewave_gpu]"). Sources are added on the CPU (EWaveField::addSource on the
 /// mirror) and uploaded; see RipplePatch.
 ///
-/// Cost (llvmpipe, 2 cores): see docs/benchmarks.md; a step is 6 dispatches, no CPU round trip.
+/// Cost (llvmpipe, 2 cores): see docs/benchmarks.md; a step is 6 dispatches (8 with the
+/// absorbing border), no CPU round trip.
 /// Needs a current GL 4.3+ context for its whole life.
 class EWaveGpu {
 public:
@@ -63,13 +66,14 @@ public:
 private:
     void prepare(float dt);
     void transform(const gfx::Buffer& field);
+    void dispatchStep(int mode, GLuint groups);  // ewave_step.comp in `mode` on groups × groups work groups
 
     int m_n = 0, m_log2n = 0;
     float m_cellSize;
     RippleBoundary m_boundary;
     int m_spongeWidth;
     float m_decayTime = 0.0f, m_viscosity = 0.0f;
-    EWaveMedium m_medium = EWaveMedium::of({});  // `like`'s g and σ/ρ
+    EWaveMedium m_medium = EWaveMedium::ideal();  // `like`'s g and σ/ρ
     float m_preparedDt = -1.0f;  // dt of m_rotation and m_sponge
     GLuint m_groups = 1;         // work groups of ewave_step.comp per axis
     gfx::Program m_fft;          // ocean_fft.comp: e^{+} transform of every row or column, in place
@@ -77,6 +81,8 @@ private:
     gfx::Buffer m_fields[2];     // w = h − i·v (N² vec2); the step transforms [0], writes [1], swaps
     gfx::Buffer m_rotation;      // (N/2 + 1)² vec4 (a, b, c, 0) by |row index|, |column index|
     gfx::Buffer m_sponge;        // N² float exp(−γΔt) (Absorbing)
+    gfx::Buffer m_sum;           // groups² + 1 floats: Σh per work group, then their total (Absorbing)
+    double m_level = 0.0;        // the mean of h at the last upload, m: what the absorbing border keeps
     gfx::Buffer m_twiddles;      // N/2 vec2 exp(+2πi·k/N), computed in double
     mutable std::vector<float> m_staging;  // upload / download: interleaved (h, −v)
 };
