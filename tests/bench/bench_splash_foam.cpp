@@ -185,7 +185,7 @@ void BM_FoamSources(benchmark::State& state) {
             patch.solver().addHeight(x, z, 0.05 * std::sin(double(z * patch.cols() + x) * 0.3));
     for (auto _ : state) {
         if (source == 0) map.addSources({jacobian, 256, 100.0f}, DT);
-        if (source == 1) map.addSources({{}, 0, 0.0f, &patch}, DT);  // the ripples alone
+        if (source == 1) map.addSources({.ripples = &patch}, DT);  // the ripples alone
         if (source == 2)
             for (int s = 0; s < 6; ++s) map.addWake(glm::vec3(float(s) * 1.5f, 0.0f, 0.0f), glm::vec3(6.0f, 0.0f, 0.0f), 1.75f, DT);
         benchmark::DoNotOptimize(map.coverage().data());
@@ -250,7 +250,7 @@ void BM_FoamUpdateCalls(benchmark::State& state) {
         map.addSources({std::span(scene.fft->channel(0, ob::ocean::OceanChannel::Jacobian), size_t(n) * size_t(n)), n,
                         float(scene.fft->patchSize(0))},
                        DT);
-        map.addSources({{}, 0, 0.0f, scene.patch.get()}, DT);  // the ripples alone
+        map.addSources({.ripples = scene.patch.get()}, DT);  // the ripples alone
         nodes = map.flow().nodePositions();
         velocity.resize(nodes.size());
         scene.water->horizontalVelocityBatch(nodes, velocity);
