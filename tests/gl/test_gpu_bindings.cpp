@@ -60,7 +60,8 @@ const std::map<std::string, size_t> CPP_OFFSETS = {
     MEMBER(FrameUniforms, switches), MEMBER(FrameUniforms, waterline), ARRAY(WaterUniforms, corner), MEMBER(WaterUniforms, cascadeSize),
     MEMBER(WaterUniforms, waterParams), MEMBER(WaterUniforms, gridParams), MEMBER(WaterUniforms, rippleParams),
     MEMBER(WaterUniforms, foamParams), MEMBER(WaterUniforms, cascadeFade), MEMBER(WaterUniforms, cascadeFadeEnd),
-    MEMBER(WaterUniforms, farFade), MEMBER(WaterUniforms, crest), ARRAY(WaterUniforms, gerstner),
+    MEMBER(WaterUniforms, farFade), MEMBER(WaterUniforms, cascadeSlopeVariance), MEMBER(WaterUniforms, glitterParams),
+    MEMBER(WaterUniforms, crest), ARRAY(WaterUniforms, gerstner),
 };
 #undef MEMBER
 #undef ARRAY
