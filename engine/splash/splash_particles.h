@@ -19,7 +19,7 @@
 //                  emission_scale · 100 · (R / 1 m)² · (U/U_min − 1) drops per second, at 30°–60°
 //                  to either side, speed 0.6·U·(0.5 + 0.5ξ), plus half the hull's velocity
 //   wind spray     above U10 > U_s = [splash] spray_wind, breaking crests (points of area A each)
-//                  throw emission_scale · 20 · (U10/U_s − 1) drops per second per m² of crest,
+//                  throw emission_scale · 5 · (U10/U_s − 1) drops per second per m² of crest,
 //                  at most [splash] spray_per_step a step; each from a random crest, downwind at
 //                  (0.2 + 0.3ξ)·U10 within ±20° of the wind, up at (1 + 2ξ) m/s
 //   flight         dv/dt = −g·ŷ − k·v (k = [splash] drag), integrated by its exact solution:
@@ -63,7 +63,7 @@ constexpr float BOW_DROPS_PER_SECOND = 100.0f;
 /// Fraction of the body's horizontal velocity an impact's drops carry.
 constexpr float TANGENT_CARRY = 0.3f;
 /// Wind spray drops per second per m² of breaking crest at U10 = 2·U_s, emission_scale 1.
-constexpr float SPRAY_DROPS_PER_M2_SECOND = 20.0f;
+constexpr float SPRAY_DROPS_PER_M2_SECOND = 5.0f;
 /// The air the spray flies in, as a fraction of U10: the log profile 1 m above a sea of roughness 1 mm.
 constexpr float SPRAY_AIR_FRACTION = 0.75f;
 
