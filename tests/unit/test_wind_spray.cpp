@@ -88,3 +88,20 @@ TEST_CASE("the default scene sprays off its crests in a 20 m/s wind, and not in 
     CHECK(spray(10.0f) == 0);
     CHECK(spray(20.0f) > 50);
 }
+
+TEST_CASE("a spray drop relaxes to the air's velocity 0.75·U10 as linear drag's closed form, v = w + (v0 − w)·e^(−kt)", "[splash][spray]") {
+    const water::FlatWater sea(0.0f);
+    const std::vector<glm::vec2> crests = crestPatch();
+    const glm::vec2 wind(16.0f, -12.0f);  // 20 m/s
+    splash::SplashParticles drops(splash::SplashDef{}, 3);
+    while (drops.size() == 0) drops.emitWindSpray(crests, 1.0f, wind, DT, sea);
+    const float vx0 = drops.vx()[0], vz0 = drops.vz()[0], x0 = drops.x()[0];
+    const double k = splash::SplashDef{}.drag, t = 0.1;  // one step of 0.1 s, still ascending
+    drops.step(float(t), sea);
+    REQUIRE(drops.size() > 0);
+    const double a = std::exp(-k * t), wx = 0.75 * wind.x, wz = 0.75 * wind.y;
+    CHECK(drops.vx()[0] == Approx(wx + (vx0 - wx) * a).margin(1e-4));
+    CHECK(drops.vz()[0] == Approx(wz + (vz0 - wz) * a).margin(1e-4));
+    // x(t) = x0 + w·t + (v0 − w)·(1 − e^(−kt))/k
+    CHECK(drops.x()[0] == Approx(x0 + wx * t + (vx0 - wx) * (1.0 - a) / k).margin(1e-4));
+}
