@@ -17,6 +17,8 @@ struct SplashDef {
     float max_life = 10.0f;       ///< a drop still airborne after this long is removed (expired), s, [0.1, 1000]
     float bow_speed = 3.0f;       ///< bow spray starts above this horizontal speed, m/s, [0.01, 100]
     float ripple_energy = 0.2f;   ///< ε, fraction of a landing drop's kinetic energy given to the ripple layer, [0, 1]
+    float spray_wind = 15.0f;     ///< breaking crests throw wind spray above this wind speed U10, m/s, [0, 100]
+    int spray_per_step = 150;     ///< wind spray drops thrown per simulation step at most (the budget), [0, 100,000]
     environment::EnvironmentDef environment;  ///< g and ρ of the flight and the drops: the scene's [environment], set when it is built (not a key)
 };
 
@@ -30,6 +32,8 @@ template <class V> void describe(V& v, SplashDef& d) {
     v.field("max_life", d.max_life, range(0.1, 1000), "airborne drops expire after this long (s)");
     v.field("bow_speed", d.bow_speed, range(0.01, 100), "bow spray above this horizontal speed (m/s)");
     v.field("ripple_energy", d.ripple_energy, range(0, 1), "fraction of a landing drop's kinetic energy put into ripples");
+    v.field("spray_wind", d.spray_wind, range(0, 100), "breaking crests throw spray above this wind speed (m/s)");
+    v.field("spray_per_step", d.spray_per_step, range(0, 100000), "wind spray drops per step at most");
 }
 
 } // namespace ob::splash

@@ -74,7 +74,7 @@ SplashParticles::SplashParticles(const SplashDef& def, uint64_t seed) : m_def(de
 
 float SplashParticles::uniform() { return uniform01f(m_rng); }
 
-bool SplashParticles::push(const glm::vec3& p, const glm::vec3& v, float r) {
+bool SplashParticles::push(const glm::vec3& p, const glm::vec3& v, float r, bool spray) {
     if (size() >= m_def.max_particles) return false;
     m_x.push_back(p.x);
     m_y.push_back(p.y);
@@ -84,7 +84,9 @@ bool SplashParticles::push(const glm::vec3& p, const glm::vec3& v, float r) {
     m_vz.push_back(v.z);
     m_age.push_back(0.0f);
     m_radius.push_back(r);
+    m_spray.push_back(uint8_t(spray));
     ++m_stats.emitted;
+    m_stats.spray += uint64_t(spray);
     return true;
 }
 
@@ -139,6 +141,52 @@ int SplashParticles::emitBowSpray(const glm::vec3& centre, const glm::vec3& velo
     return n;
 }
 
+int SplashParticles::emitWindSpray(std::span<const glm::vec2> crests, float crestArea, glm::vec2 wind, float dt,
+                                   const water::WaterQuery& water) {
+    const float u = glm::length(wind);
+    if (u <= m_def.spray_wind || crests.empty() || dt <= 0.0f) return 0;
+    m_air = SPRAY_AIR_FRACTION * wind;
+    const float area = crestArea * float(crests.size());
+    const float rate = m_def.emission_scale * SPRAY_DROPS_PER_M2_SECOND * area * (u / m_def.spray_wind - 1.0f);
+    const float wanted = std::floor(rate * dt + uniform());  // stochastic rounding: the mean is rate·dt
+    const int n = int(std::min(wanted, float(m_def.spray_per_step)));
+    const glm::vec2 downwind = wind / u;
+    const float half = 0.5f * std::sqrt(crestArea);
+    for (int k = 0; k < n; ++k) {
+        // Draws in a fixed order per drop: crest, offset in its cell (x, z), azimuth, speed, rise, radius.
+        const size_t c = std::min(size_t(uniform() * float(crests.size())), crests.size() - 1);
+        const float ox = half * (2.0f * uniform() - 1.0f);
+        const float oz = half * (2.0f * uniform() - 1.0f);
+        const float turn = 20.0f * DEG * (2.0f * uniform() - 1.0f);
+        const float speed = u * (0.2f + 0.3f * uniform());
+        const float rise = 1.0f + 2.0f * uniform();
+        const float r = m_def.drop_size * (0.5f + uniform());
+        const glm::vec2 at = crests[c] + glm::vec2(ox, oz);
+        const float ct = std::cos(turn), st = std::sin(turn);
+        const glm::vec2 dir(ct * downwind.x - st * downwind.y, st * downwind.x + ct * downwind.y);
+        const glm::vec3 p(at.x, water.sample(at.x, at.y).height, at.y);
+        if (!push(p, glm::vec3(speed * dir.x, rise, speed * dir.y), r, true)) {
+            m_stats.dropped += uint64_t(n - k);
+            return k;
+        }
+    }
+    return n;
+}
+
+// The wind's share of the spray drops' flight: by linearity of dv/dt = −g·ŷ − k·(v − w), the
+// still-air step plus (1 − a)·w to v and (Δt − b)·w to x (the other drops keep their bits).
+void SplashParticles::blowSpray(float dt, float a, float b) {
+    if (m_stats.spray == 0) return;
+    const float dv = 1.0f - a, dx = dt - b;
+    for (size_t i = 0; i < m_spray.size(); ++i) {
+        if (!m_spray[i]) continue;
+        m_vx[i] += dv * m_air.x;
+        m_vz[i] += dv * m_air.y;
+        m_x[i] += dx * m_air.x;
+        m_z[i] += dx * m_air.y;
+    }
+}
+
 void SplashParticles::step(float dt, const water::WaterQuery& water, float ceiling) {
     m_landings.clear();
     const int n = size();
@@ -161,6 +209,7 @@ void SplashParticles::step(float dt, const water::WaterQuery& water, float ceili
           *age = m_age.data();
     parallelFor(0, n, FLIGHT_CHUNK,
                 [&](int lo, int hi) { flyKernel(x, y, z, vx, vy, vz, age, lo, hi, fa, fb, gb, gc, dt); });
+    blowSpray(dt, fa, fb);
 
     // --- landing candidates: descending drops below the ceiling
     m_dead.assign(size_t(n), 0);
@@ -218,10 +267,15 @@ void SplashParticles::removeDead() {
             if (!m_dead[i]) d[w++] = d[i];
         arr->resize(w);
     }
+    size_t w = first;
+    for (size_t i = first; i < n; ++i)
+        if (!m_dead[i]) m_spray[w++] = m_spray[i];
+    m_spray.resize(w);
 }
 
 void SplashParticles::clear() {
     for (std::vector<float>* arr : {&m_x, &m_y, &m_z, &m_vx, &m_vy, &m_vz, &m_age, &m_radius}) arr->clear();
+    m_spray.clear();
     m_landings.clear();
 }
 
@@ -234,6 +288,11 @@ void SplashParticles::hash(StateHasher& h) const {
     h.u64(m_stats.dropped);
     h.u64(m_stats.landed);
     h.u64(m_stats.expired);
+    if (m_stats.spray > 0) {  // a sea that never sprayed hashes as before there was spray
+        h.u64(m_stats.spray);
+        h.bytes(m_spray.data(), m_spray.size());
+        h.f32s(&m_air.x, 2);
+    }
 }
 
 double stampLandings(interaction::RipplePatch& patch, std::span<const Landing> landings, float energyFraction) {

@@ -18,9 +18,16 @@
 //   bow spray      a hull sphere moving at horizontal speed U > U_min = [splash] bow_speed throws
 //                  emission_scale · 100 · (R / 1 m)² · (U/U_min − 1) drops per second, at 30°–60°
 //                  to either side, speed 0.6·U·(0.5 + 0.5ξ), plus half the hull's velocity
+//   wind spray     above U10 > U_s = [splash] spray_wind, breaking crests (points of area A each)
+//                  throw emission_scale · 5 · (U10/U_s − 1) drops per second per m² of crest,
+//                  at most [splash] spray_per_step a step; each from a random crest, downwind at
+//                  (0.2 + 0.3ξ)·U10 within ±20° of the wind, up at (1 + 2ξ) m/s
 //   flight         dv/dt = −g·ŷ − k·v (k = [splash] drag), integrated by its exact solution:
 //                  v(t+Δt) = a·v − g·b·ŷ,  x(t+Δt) = x + b·v − g·c·ŷ,
-//                  a = e^(−kΔt), b = (1 − a)/k, c = (Δt − b)/k   (k → 0: b = Δt, c = Δt²/2)
+//                  a = e^(−kΔt), b = (1 − a)/k, c = (Δt − b)/k   (k → 0: b = Δt, c = Δt²/2);
+//                  wind spray drags against the air instead, dv/dt = −g·ŷ − k·(v − w), w = 0.75·U10
+//                  (the log profile 1 m up, roughness 1 mm), by linearity the same step plus
+//                  (1 − a)·w to v and (Δt − b)·w to x (splash drops fly still air: a short hop)
 //   landing        a descending drop at or below the water height lands (removed, reported);
 //                  on water that stays at the emission height every drop of an impact lands within
 //                  T = 2·u_c/g of it (linear drag only shortens the flight); any drop airborne
@@ -55,6 +62,10 @@ constexpr float DROPS_PER_SQRT_JOULE = 8.0f;
 constexpr float BOW_DROPS_PER_SECOND = 100.0f;
 /// Fraction of the body's horizontal velocity an impact's drops carry.
 constexpr float TANGENT_CARRY = 0.3f;
+/// Wind spray drops per second per m² of breaking crest at U10 = 2·U_s, emission_scale 1.
+constexpr float SPRAY_DROPS_PER_M2_SECOND = 5.0f;
+/// The air the spray flies in, as a fraction of U10: the log profile 1 m above a sea of roughness 1 mm.
+constexpr float SPRAY_AIR_FRACTION = 0.75f;
 
 /// Which way a body crossed the surface.
 enum class Crossing : uint8_t {
@@ -117,6 +128,12 @@ public:
     /// velocity m/s; radius m); returns how many drops were added (0 at or below bow_speed).
     int emitBowSpray(const glm::vec3& centre, const glm::vec3& velocity, float radius, float dt);
 
+    /// Wind spray off breaking crests over a step of dt s: `crests` are world (x, z) points
+    /// breaking now, each standing for `crestArea` m² of sea; wind is U10 (m/s, x and z); the
+    /// launch height is read from `water`. Returns the drops added (0 at or below spray_wind).
+    int emitWindSpray(std::span<const glm::vec2> crests, float crestArea, glm::vec2 wind, float dt,
+                      const water::WaterQuery& water);
+
     /// Flies every drop dt seconds, then lands the descending drops at or below the water (read
     /// from `water`, only for drops below `ceiling`, an upper bound of the surface height in m:
     /// pass it to skip the queries of drops high above the sea) and expires those older than
@@ -143,6 +160,7 @@ public:
         uint64_t dropped = 0;  ///< drops not added because max_particles were alive
         uint64_t landed = 0;   ///< drops that landed
         uint64_t expired = 0;  ///< drops removed by max_life
+        uint64_t spray = 0;    ///< of the added, wind spray
     };
     const Stats& stats() const { return m_stats; }
     const SplashDef& def() const { return m_def; }
@@ -156,12 +174,15 @@ public:
 
 private:
     float uniform();  // next draw of the stream, [0, 1)
-    bool push(const glm::vec3& p, const glm::vec3& v, float r);
+    bool push(const glm::vec3& p, const glm::vec3& v, float r, bool spray = false);
+    void blowSpray(float dt, float a, float b);
     void removeDead();
 
     SplashDef m_def;
     uint64_t m_rng;
     std::vector<float> m_x, m_y, m_z, m_vx, m_vy, m_vz, m_age, m_radius;
+    std::vector<uint8_t> m_spray;      // per drop: 1 = wind spray (flies in the air m_air)
+    glm::vec2 m_air{0.0f};             // the air's velocity, m/s (x, z), at the last wind spray
     std::vector<uint8_t> m_dead;       // per drop, set by step() and cleared by removeDead()
     std::vector<int> m_candidates;     // step(): drops whose water height is read
     std::vector<glm::vec2> m_candidateXZ;  // their (x, z)

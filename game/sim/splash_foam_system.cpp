@@ -42,6 +42,7 @@ struct SplashFoamState {
     };
     std::map<uint32_t, SternTrack> sterns;  // ordered: the foam adds in the same order every run
     float bowSpeed = 3.0f;  ///< [splash] bow_speed: the bow wave breaks above it
+    std::vector<glm::vec2> crests;  ///< the breaking crests of this step (scratch of sprayFromCrests)
 };
 
 // A stern's track keeps a point every this many metres (or two foam cells, if larger) for
@@ -166,6 +167,36 @@ void stepFoam(foam::FoamMap& foam, const OceanState& ocean, const interaction::R
     foam.update(in, dt);
 }
 
+// Wind spray (splash_particles.h): the points of the first cascade's tile that break now (J
+// below the whitecaps' threshold J_b), displaced to X + λ·D (the swell's Gerstner shift left
+// out), in the copy of the tile round the foam map's centre, and inside the map's square.
+void sprayFromCrests(splash::SplashParticles& drops, const foam::FoamMap& foam, const OceanState& ocean,
+                     std::vector<glm::vec2>& crests, float dt) {
+    const glm::vec2 wind = ocean.def.wind_speed * glm::normalize(ocean.def.wind_direction);
+    const foam::WhitecapLaw& law = foam.whitecaps();
+    if (ocean.def.wind_speed <= drops.def().spray_wind || law.rate <= 0.0f) return;
+    const ocean::OceanFftCpu& fft = *ocean.cpu;
+    const int n = fft.resolution();
+    const float tile = float(fft.patchSize(0)), cell = tile / float(n), lambda = -ocean.def.choppiness;
+    const float* jacobian = fft.channel(0, ocean::OceanChannel::Jacobian);
+    const float* dx = fft.channel(0, ocean::OceanChannel::DispX);
+    const float* dz = fft.channel(0, ocean::OceanChannel::DispZ);
+    const ScrollingGrid& grid = foam.grid();
+    const float side = float(grid.n) * grid.cell;
+    const glm::vec2 lo = grid.origin(), centre = lo + glm::vec2(0.5f * side);
+    const glm::vec2 first = centre - glm::vec2(0.5f * tile);  // the copy of the tile round the centre starts here
+    crests.clear();
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const size_t k = size_t(j) * size_t(n) + size_t(i);
+            if (jacobian[k] >= law.j0) continue;
+            glm::vec2 p = cell * glm::vec2(float(i), float(j)) + lambda * glm::vec2(dx[k], dz[k]);
+            p -= tile * glm::floor((p - first) / tile);  // into that copy
+            if (p.x >= lo.x && p.y >= lo.y && p.x < lo.x + side && p.y < lo.y + side) crests.push_back(p);
+        }
+    drops.emitWindSpray(crests, cell * cell, wind, dt, *ocean.water);
+}
+
 } // namespace
 
 void addSplashFoam(ecs::World& world, const splash::SplashDef& splash, const foam::FoamDef& foam, uint64_t seed) {
@@ -193,6 +224,7 @@ void splashFoamSystem(ecs::World& world, const ecs::Tick& tick) {
         if (foam) foam->addLandings(drops->landings());
     }
     if (foam) stepFoam(*foam, *ocean, patch, dt);
+    if (foam && state->particles) sprayFromCrests(*state->particles, *foam, *ocean, state->crests, dt);
 }
 
 const splash::SplashParticles* splashParticles(ecs::World& world) {
