@@ -63,9 +63,9 @@ ecs::Entity spawnShip(ecs::World& world, const ObjectDef& o) {
     Renderable look{gfx::MeshKind::Box, o.model.empty() ? o.ship.hull * 0.5f : o.ship.hull / ShipDef{}.hull, o.color, o.model};
     ecs::Entity e = spawnBody(world, ObjectType::Ship, o.name, id, latticeProbes(o.ship.hull, PROBES), volume, mass, start, look);
     world.get<Body>(e).horizontalDrag = 0.0f;  // the hull model below resists horizontal motion
-    // The hull obstructs the ripple layer: its waterplane is masked after each step, and what
-    // the mask removes (its own pressure sources' trough among it) lands in a ring just outside
-    // it, so the Kelvin wake stays and waves reflect off it (docs/ewave.md#hulls).
+    // The hull: the renderer clips the water out of it (gfx::HullClip), and with
+    // ripples.hulls_obstruct its waterplane obstructs the ripples, pushing what its mask removes
+    // just outside it (docs/ewave.md#hulls).
     world.add<Obstacle>(e, {Obstacle::Shape::Hull, o.ship.hull * 0.5f});
 
     // Six spheres on the keel line at the still-water line (draft = hull depth · density ratio),

@@ -88,6 +88,7 @@ TEST_CASE("no sea inside a hull: a deck under the sea shows where the water woul
     // Interior pixels: the sea's point and the deck's point both 0.15 m inside the outline (the
     // deck's red shows there once the sea is gone). Exterior: the sea's point 0.3 m outside it.
     int interior = 0, deckOn = 0, waterOff = 0, exterior = 0, changed = 0;
+    glm::ivec3 lo(255), hi(0);  // the range of the clipped frame's interior colours
     const float DECK_Y = CENTRE.y + HALF.y;
     for (int y = 0; y < SIZE.y; ++y)
         for (int x = 0; x < SIZE.x; ++x) {
@@ -97,17 +98,23 @@ TEST_CASE("no sea inside a hull: a deck under the sea shows where the water woul
             if (outline(sea) < -0.15f && outline(deck) < -0.15f) {
                 ++interior;
                 if (a.x > a.y + 40 && a.x > a.z + 40) ++deckOn;    // the red deck, not water
-                if (b.z > b.x && b.y > b.x) ++waterOff;           // the sea's blue-green
+                lo = glm::min(lo, a);
+                hi = glm::max(hi, a);
+                // Without the clip the sea is drawn there: the deck seen through 0.45 m of water
+                // (refraction, the water's colour) under the sky's reflection, a colour apart.
+                if (glm::any(glm::greaterThan(glm::abs(a - b), glm::ivec3(12)))) ++waterOff;
             } else if (outline(sea) > 0.3f) {
                 ++exterior;
                 if (glm::any(glm::greaterThan(glm::abs(a - b), glm::ivec3(1)))) ++changed;
             }
         }
-    INFO(interior << " interior pixels: " << deckOn << " show the deck with the clip, " << waterOff
-                  << " show water without it; " << changed << " of " << exterior << " exterior pixels changed");
+    INFO(interior << " interior pixels: " << deckOn << " show the red deck with the clip (colours from " << lo.x << ","
+                  << lo.y << "," << lo.z << " to " << hi.x << "," << hi.y << "," << hi.z << "), " << waterOff
+                  << " differ without it; " << changed << " of " << exterior << " exterior pixels changed");
     REQUIRE(interior > 500);
-    CHECK(waterOff == interior);  // without the clip the sea covers the hull (the check below can fail)
-    CHECK(deckOn == interior);    // with it, no water pixel inside the hull
+    CHECK(waterOff >= interior * 9 / 10);  // without the clip the sea covers the hull (the checks below can fail)
+    CHECK(deckOn == interior);             // with it, no water pixel inside the hull: the deck, one flat lit face
+    CHECK(glm::all(glm::lessThanEqual(hi - lo, glm::ivec3(6))));
     CHECK(changed == 0);          // and the water elsewhere is the same frame
 }
 
