@@ -83,6 +83,7 @@ UNIFORM_BLOCK(FrameUniforms, FRAME_BLOCK) {
 } BLOCK_INSTANCE(frame);
 
 SHARED_CONST MAX_GERSTNER_WAVES = 32;
+SHARED_CONST MAX_HULL_CLIPS = 16;  // hulls whose inside the water skips (common_hull_clip.glsl); the nearest to the eye first
 
 // The composite water surface's parameters (the water pass and whatever cuts at the surface).
 UNIFORM_BLOCK(WaterUniforms, WATER_BLOCK) {
@@ -99,6 +100,9 @@ UNIFORM_BLOCK(WaterUniforms, WATER_BLOCK) {
     vec4 glitterParams;      // x Cox–Munk mean square slope of the wind's sea, 0.003 + 5.12e-3·U10
     vec4 crest;              // x the tallest crest above the mean level (m), y [render] subsurface strength (0: off)
     vec4 gerstner[MAX_GERSTNER_WAVES];  // (kx, kz, amplitude, phase) per wave
+    vec4 hullCount;          // x hulls in hullFromWorld (≤ MAX_HULL_CLIPS)
+    mat4 hullFromWorld[MAX_HULL_CLIPS];  // world → hull box unit cube [−1, 1]³ (gfx::HullClip::worldToHull)
+    vec4 hullPlan[MAX_HULL_CLIPS];       // x the outline: 0 box, 1 the ship model's (gfx::HullClip::Plan)
 } BLOCK_INSTANCE(water);
 
 #undef SHARED_CONST

@@ -9,10 +9,11 @@
 // holds coverage.
 // Each FFT cascade's slopes fade out with distance ([render] far_fade) as its displacement does.
 // Light through thin crests: common_subsurface.glsl. From below: common_underwater*.glsl.
+// Not inside a floating hull (WATER_HULL_CLIP): common_hull_clip.glsl.
 // Compiled per gfx::WaterVariant: the cascade count and the switches (WATER_REFLECTIONS,
 // WATER_REFRACTIONS, WATER_FOAM, WATER_FOAM_MAP, WATER_RIPPLES), the eye's side
 // (WATER_UNDERWATER; WATER_WATERLINE: the surface crosses the near plane, each pixel takes its
-// own) and the Fresnel law (WATER_EXACT_FRESNEL) are constants here. With
+// own), the hulls' clip (WATER_HULL_CLIP) and the Fresnel law (WATER_EXACT_FRESNEL) are constants here. With
 // WATER_FULL_QUALITY ([render] water_full_quality): every term per pixel, the reference the
 // shipped shading is tested against (the ripple slope from four height lookups, the haze from
 // the sky and the cascades' weights per pixel instead of per vertex).
@@ -26,6 +27,7 @@
 #include "common_underwater_surface.glsl"
 #include "common_subsurface.glsl"
 #include "common_foam.glsl"
+#include "common_hull_clip.glsl"
 
 in vec3 v_world;
 in vec2 v_rest;
@@ -59,6 +61,8 @@ float eyeDepth(float windowZ) {
 }
 
 void main() {
+    // Inside a hull there is no sea to draw, from above or below: what the hull holds shows.
+    if (WATER_HULL_CLIP && insideHull(v_world)) discard;
     float t = frame.cameraPositionTime.w;
     vec2 ripple = rippleSlope(v_world.xz);
     vec2 slope = v_gerstnerSlope + ripple;

@@ -58,10 +58,11 @@ void ObjectPass::draw(FrameContext& frame, const std::vector<ObjectDraw>& object
         // drawn after it and opaque, covers it (the refraction pass shows it). Seen from under
         // water, or across the waterline, every object is drawn (with the water's extinction). The surface per
         // vertex (the cut's cost on a software rasteriser) is evaluated only for large objects
-        // across it in the passes that cut; the others take its tangent plane.
+        // across it in the passes that cut; the others take its tangent plane. A hull is drawn
+        // in the main view whatever the sea over it: the water is clipped out of it (HullClip).
         const Side side = sideOfSurface(o, mesh);
         if ((view == REFLECTION_VIEW && side == Side::Below) || (view == REFRACTION_VIEW && side == Side::Above) ||
-            (view == MAIN_VIEW && side == Side::Below && !state.underwater && !state.waterline && state.waterVisible))
+            (view == MAIN_VIEW && side == Side::Below && !o.hull && !state.underwater && !state.waterline && state.waterVisible))
             continue;
         const bool perVertex = view != MAIN_VIEW && side == Side::Across && boundingRadius(o, mesh) > TANGENT_PLANE_RADIUS;
         const GLuint program = perVertex ? m_waterlineProgram.id() : m_program.id();

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <glm/matrix.hpp>
 
 namespace ob::gfx {
 
@@ -47,7 +48,7 @@ std::string WaterVariant::defines() const {
            flag("WATER_FOAM_MAP", foamMap) + flag("WATER_UNDERWATER", underwater) + flag("WATER_WATERLINE", waterline) +
            flag("WATER_EXACT_FRESNEL", exactFresnel) +
            flag("WATER_REFLECTIONS", reflections) + flag("WATER_REFRACTIONS", refractions) + flag("WATER_FOAM", foam) +
-           (fullQuality ? "#define WATER_FULL_QUALITY\n" : "");
+           flag("WATER_HULL_CLIP", hullClip) + (fullQuality ? "#define WATER_FULL_QUALITY\n" : "");
 }
 
 WaterPass::WaterPass() : m_uniforms(createBuffer("water uniforms", sizeof(WaterUniforms))) {}
@@ -83,6 +84,25 @@ void WaterPass::buildGrid(int resolution) {
     glVertexArrayAttribBinding(m_gridVao.id(), GRID_UV_ATTRIB, 0);
 }
 
+// The hulls nearest the eye first, at most MAX_HULL_CLIPS (a far hull past the limit spans few
+// pixels, and its water shows there).
+int WaterPass::uploadHullClips(const WaterView& water, const CameraView& camera, WaterUniforms& u) {
+    std::vector<const HullClip*> order;
+    for (const HullClip& h : water.hulls) order.push_back(&h);
+    const auto eyeDistance = [&camera](const HullClip* h) {  // to the hull box's centre, m
+        return glm::length(glm::vec3(glm::inverse(h->worldToHull)[3]) - camera.position);
+    };
+    const size_t count = std::min(order.size(), size_t(MAX_HULL_CLIPS));
+    std::partial_sort(order.begin(), order.begin() + ptrdiff_t(count), order.end(),
+                      [&](const HullClip* a, const HullClip* b) { return eyeDistance(a) < eyeDistance(b); });
+    for (size_t i = 0; i < count; ++i) {
+        u.hullFromWorld[i] = order[i]->worldToHull;
+        u.hullPlan[i] = glm::vec4(order[i]->plan == HullClip::Plan::Ship ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f);
+    }
+    u.hullCount = glm::vec4(float(count), 0.0f, 0.0f, 0.0f);
+    return int(count);
+}
+
 void WaterPass::uploadUniforms(FrameContext& frame, const CameraView& camera, const WaterView& water) {
     const RenderDef& def = frame.def;
     WaterUniforms u{};
@@ -103,6 +123,7 @@ void WaterPass::uploadUniforms(FrameContext& frame, const CameraView& camera, co
     u.waterParams = glm::vec4(water.lambda, water.gravity, float(waves), 0.5f * m_grid.minW);  // the clamp only guards rounding
     u.gridParams = glm::vec4(float(m_gridResolution), GRID_REACH * camera.farM, float(cascades), float(layers ? water.resolution : 1));
     m_layers.upload(water, layers, def.foam, u);
+    const int hulls = def.hull_clip ? uploadHullClips(water, camera, u) : 0;
     m_variant = {.cascades = layers ? cascades : 0,
                  .ripples = u.rippleParams.w > 0.0f,
                  .foamMap = u.foamParams.w > 0.0f,
@@ -112,7 +133,8 @@ void WaterPass::uploadUniforms(FrameContext& frame, const CameraView& camera, co
                  .reflections = def.reflections,
                  .refractions = def.refractions,
                  .foam = def.foam,
-                 .fullQuality = def.water_full_quality};
+                 .fullQuality = def.water_full_quality,
+                 .hullClip = hulls > 0};
     glNamedBufferSubData(m_uniforms.id(), 0, sizeof u, &u);
     glBindBufferBase(GL_UNIFORM_BUFFER, WATER_BLOCK, m_uniforms.id());
 }

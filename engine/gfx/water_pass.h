@@ -46,6 +46,7 @@ struct WaterView {
     /// How far the FFT cascades together move a rest point (m; λ included): the projected
     /// grid reaches this far past the view. Gerstner and ripple bounds the renderer derives.
     SurfaceBounds fftBounds;
+    std::vector<HullClip> hulls;            ///< floating hulls: no water is drawn inside them ([render] hull_clip)
 };
 
 /// What the water program is compiled for (`#define`s of shaders/water_surface.frag): each a
@@ -61,6 +62,7 @@ struct WaterVariant {
     bool exactFresnel = false; ///< [render] fresnel = "exact" (else Schlick)
     bool reflections = true, refractions = true, foam = true;  ///< [render] switches
     bool fullQuality = false;  ///< [render] water_full_quality: every term per pixel, the reference
+    bool hullClip = false;     ///< hulls are clipped out of the water ([render] hull_clip and at least one hull)
     /// The lines put after the shaders' #version line.
     std::string defines() const;
 };
@@ -78,6 +80,7 @@ public:
 
 private:
     void buildGrid(int resolution);
+    int uploadHullClips(const WaterView& water, const CameraView& camera, WaterUniforms& u);
     void uploadUniforms(FrameContext& frame, const CameraView& camera, const WaterView& water);
 
     WaterDetail m_detail;

@@ -35,7 +35,10 @@ void RipplePatch::centerOn(glm::vec2 worldCenter) {
 }
 
 // No obstacles, and none before: the solver is not told, so its step is what it always was.
+// Hulls only where ripples.hulls_obstruct is on and the model takes them (obstructsHulls).
 void RipplePatch::step(float dt) {
+    if (!m_def.hulls_obstruct || !m_solver->obstructsHulls())
+        std::erase_if(m_obstacles, [](const ObstacleShape& s) { return s.displaces; });
     if (!m_obstacles.empty() || !m_obstruction.empty()) {
         rasteriseObstacles(m_obstacles, rows(), cols(), m_def.cell_size, [this](glm::vec2 w) { return toGrid(w); },
                            m_obstruction);

@@ -45,6 +45,9 @@ public:
     /// is scaled there by the cell's keep factor and what that removed is spread evenly over
     /// the grid (the mean level kept). Empty (the default): no obstruction, the step as before.
     virtual void setObstruction(std::span<const ObstructionCell> cells) = 0;
+    /// Whether floating hulls (displacing footprints) obstruct this model; false: the patch
+    /// hands it fixed bodies only (kang2008: the paper's ship is its six spheres).
+    virtual bool obstructsHulls() const { return true; }
     /// Moves the data by `shift` cells, new (i, j) = old (i + shift.x, j + shift.y), cells
     /// from outside 0 (scrollCells), so the waves stay put in the world while the grid moves.
     virtual void scroll(glm::ivec2 shift) = 0;

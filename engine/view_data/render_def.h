@@ -44,6 +44,7 @@ struct RenderDef {
     bool far_fade = true;                           ///< far field without regular patterns: FFT cascades fade out by tile_fade tiles, Gerstner waves where the grid is too sparse to sample them
     float tile_fade = 6.0f;                         ///< FFT cascade c is gone past this many of its tiles from the eye (fading from a third of it), [1, 1000]
     bool water_full_quality = false;                ///< every water term per pixel (the reference the shipped shading is tested against); slower on a software rasteriser
+    bool hull_clip = true;                          ///< no water drawn inside a floating hull (its clip volume, shaders/common_hull_clip.glsl)
     bool dither = true;                             ///< ±1 LSB triangular noise on every colour written in 8 bits (shaders/common_dither.glsl): no banding in smooth gradients; off: plain rounding
     float subsurface = 1.0f;                        ///< light through thin crests: the turquoise of a backlit crest (shaders/common_subsurface.glsl), × its strength, [0, 4]; 0 = off
 };
@@ -76,6 +77,7 @@ template <class V> void describe(V& v, RenderDef& d) {
     v.field("far_fade", d.far_fade, "FFT cascades fade out with distance, Gerstner waves where the grid cannot sample them", LIVE);
     v.field("tile_fade", d.tile_fade, range(1, 1000), "FFT cascades fade out by this many of their tiles from the eye (far_fade)", LIVE);
     v.field("water_full_quality", d.water_full_quality, "every water term per pixel (reference shading; slower in software)", LIVE);
+    v.field("hull_clip", d.hull_clip, "no water drawn inside a floating hull (the sea over its deck, in an open boat)", LIVE);
     v.field("dither", d.dither, "±1 LSB noise on the 8-bit colour outputs (no banding in gradients); off: plain rounding", LIVE);
     v.field("subsurface", d.subsurface, range(0, 4), "light through thin crests: turquoise of a backlit crest, × this; 0 = off", LIVE);
 }

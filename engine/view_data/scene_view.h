@@ -3,6 +3,7 @@
 // layers, which live in GPU textures, are the renderer's WaterView).
 #pragma once
 #include <cstdint>
+#include <vector>
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -34,6 +35,19 @@ struct ObjectDraw {
     float waterHeight = 0.0f;       ///< the water surface's height under the object's origin (m)
     glm::vec2 waterSlope{0.0f};     ///< and its slope there (dh/dx, dh/dz)
     bool highlight = false;         ///< lit up (the body under the player's cursor)
+    bool hull = false;              ///< a floating hull (the water is clipped out of it): drawn in the main view even when wholly under the surface
+};
+
+/// A floating hull's clip volume: the water surface is not drawn inside it (shaders/
+/// common_hull_clip.glsl), so no sea shows in a hull where the waves rise above its deck or in
+/// an open boat. Its outline on the hull's deck plane tapers with depth as the hull's section.
+struct HullClip {
+    enum class Plan : uint8_t {
+        Box,   ///< the whole box (the built-in box mesh)
+        Ship,  ///< the project's ship model (make-models): round stern, straight waist, pointed bow, round bilge
+    };
+    glm::mat4 worldToHull{1.0f};  ///< world → the hull box's unit cube [−1, 1]³ (x across, y up from keel −1 to deck +1, z to the bow)
+    Plan plan = Plan::Box;
 };
 
 /// One splash drop to draw: world centre (xyz, m) and radius (w, m).

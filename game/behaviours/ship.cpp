@@ -63,9 +63,10 @@ ecs::Entity spawnShip(ecs::World& world, const ObjectDef& o) {
     Renderable look{gfx::MeshKind::Box, o.model.empty() ? o.ship.hull * 0.5f : o.ship.hull / ShipDef{}.hull, o.color, o.model};
     ecs::Entity e = spawnBody(world, ObjectType::Ship, o.name, id, latticeProbes(o.ship.hull, PROBES), volume, mass, start, look);
     world.get<Body>(e).horizontalDrag = 0.0f;  // the hull model below resists horizontal motion
-    // No Obstacle (Obstacle::Shape::Hull) yet: projecting the hull's waterplane away each step
-    // also removes the hull's own pressure sources, which lie inside it, and the Kelvin wake
-    // goes with them (docs/ewave.md#obstacles, "Hulls").
+    // The hull: the renderer clips the water out of it (gfx::HullClip), and with
+    // ripples.hulls_obstruct its waterplane obstructs the ripples, pushing what its mask removes
+    // just outside it (docs/ewave.md#hulls).
+    world.add<Obstacle>(e, {Obstacle::Shape::Hull, o.ship.hull * 0.5f});
 
     // Six spheres on the keel line at the still-water line (draft = hull depth · density ratio),
     // so they always cross the surface ([Kang2008]: "always in contact").

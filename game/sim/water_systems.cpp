@@ -111,7 +111,7 @@ void interactionSystem(ecs::World& world, const ecs::Tick& tick) {
         return patch->stampSphere(*p.sphere, *p.contact, p.centre, p.velocity, p.stampMass, surface);
     });
     // --- the bodies that cut the surface obstruct the step (fixed bodies, hulls; none: no change)
-    patch->setObstacles(obstacleFootprints(world));
+    patch->setObstacles(obstacleFootprints(world, ocean->water.get()));
     // --- the solver's step: eq. 1–2 (kang2008) or the exact per-mode step over dt (ewave)
     patch->step(float(tick.dt));
 }

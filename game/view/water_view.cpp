@@ -11,6 +11,7 @@
 #include "ocean/gpu/ocean_textures.h"
 #include "ocean/gerstner.h"
 #include "ocean/ocean_fft_cpu.h"
+#include "sim/obstacles.h"
 #include "sim/splash_foam_system.h"
 #include "sim/water_systems.h"
 
@@ -74,6 +75,7 @@ void readWhitecaps(OceanGpu& side, const OceanState& ocean) {
 
 gfx::WaterView prepareWaterView(ecs::World& world, double time) {
     gfx::WaterView view;
+    view.hulls = hullClips(world);
     if (auto* patch = world.resource<interaction::RipplePatch>()) {
         view.ripples = patch->height().data();
         view.rippleCells = patch->def().resolution;

@@ -61,7 +61,8 @@ const std::map<std::string, size_t> CPP_OFFSETS = {
     MEMBER(WaterUniforms, waterParams), MEMBER(WaterUniforms, gridParams), MEMBER(WaterUniforms, rippleParams),
     MEMBER(WaterUniforms, foamParams), MEMBER(WaterUniforms, cascadeFade), MEMBER(WaterUniforms, cascadeFadeEnd),
     MEMBER(WaterUniforms, farFade), MEMBER(WaterUniforms, cascadeSlopeVariance), MEMBER(WaterUniforms, glitterParams),
-    MEMBER(WaterUniforms, crest), ARRAY(WaterUniforms, gerstner),
+    MEMBER(WaterUniforms, crest), ARRAY(WaterUniforms, gerstner), MEMBER(WaterUniforms, hullCount),
+    ARRAY(WaterUniforms, hullFromWorld), ARRAY(WaterUniforms, hullPlan),
 };
 #undef MEMBER
 #undef ARRAY

@@ -22,12 +22,35 @@ EWaveSolver::EWaveSolver(int n, float cellSize, const EWaveDef& def, const EWave
 bool EWaveSolver::addSphere(const BoundingSphere& sphere, SphereContact& contact, const SphereMotion& motion) {
     RippleStamp stamp;
     const EWaveField& f = m_field;
-    if (!planStamp(f.rows(), f.cols(), m_cellSize, sphere, contact, motion, [&f](int x, int z) { return f.heightAt(x, z); },
+    if (!planStamp(f.rows(), f.cols(), m_cellSize, sphere, contact, motion, [this](int x, int z) { return contactHeight(x, z); },
                    stamp))
         return false;
     m_sources.push_back(ewaveSource(stamp, motion.gridX, motion.gridZ, m_cellSize, float(m_field.medium().gravity),
                                     motion.verticalVelocity));
     return true;
+}
+
+// A hull's own spheres lie inside its mask, where the projection holds the water at 0: measured
+// there, their stamp would never see the hollow it presses. They measure it where the hull puts
+// that water, just outside. (Alone this does not stop a hull pumping: docs/ewave.md#hulls, "Open".)
+float EWaveSolver::contactHeight(int x, int z) const {
+    const size_t i = size_t(z) * size_t(m_field.cols()) + size_t(x);
+    if (m_displacedFrom.empty() || m_displacedFrom[i] < 0) return m_field.heightAt(x, z);
+    const ObstructionCell& c = m_obstruction[size_t(m_displacedFrom[i])];
+    const auto h = m_field.heightState();
+    const double fx = c.fx, fz = c.fz;
+    return float((1.0 - fx) * (1.0 - fz) * h[c.to] + fx * (1.0 - fz) * h[c.to + 1] + (1.0 - fx) * fz * h[c.to + c.cols] +
+                 fx * fz * h[c.to + c.cols + 1]);
+}
+
+void EWaveSolver::setObstruction(std::span<const ObstructionCell> cells) {
+    m_obstruction.assign(cells.begin(), cells.end());
+    m_displacedFrom.clear();
+    for (size_t k = 0; k < m_obstruction.size(); ++k) {
+        if (m_obstruction[k].to == ObstructionCell::SPREAD_EVENLY) continue;
+        if (m_displacedFrom.empty()) m_displacedFrom.assign(size_t(m_field.rows()) * size_t(m_field.cols()), -1);
+        m_displacedFrom[m_obstruction[k].index] = int32_t(k);
+    }
 }
 
 void EWaveSolver::addHeight(int x, int z, double dh) {
@@ -61,6 +84,7 @@ void obstructField(EWaveField& field, std::span<const ObstructionCell> cells) {
 
 void EWaveSolver::scroll(glm::ivec2 shift) {
     m_field.scroll(shift.x, shift.y);
+    m_displacedFrom.clear();  // the old grid's cells; the next setObstruction maps the new ones
     for (EWaveSource& s : m_sources) {  // queued in the old grid's coordinates
         s.gx -= float(shift.x);
         s.gz -= float(shift.y);

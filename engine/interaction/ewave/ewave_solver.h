@@ -48,7 +48,7 @@ public:
     void step(float dt) override;
     /// Applied after the CPU step, or after the GPU step's read-back on the CPU mirror (which
     /// the next step then uploads).
-    void setObstruction(std::span<const ObstructionCell> cells) override { m_obstruction.assign(cells.begin(), cells.end()); }
+    void setObstruction(std::span<const ObstructionCell> cells) override;
     void scroll(glm::ivec2 shift) override;
     void clear() override;
     /// h, its float copy.
@@ -63,6 +63,9 @@ public:
 
 private:
     void obstruct();
+    // The water level a sphere's stamp measures its contact against at cell (x, z): the field's,
+    // or inside a displacing hull the level where that cell's water is pushed out to.
+    float contactHeight(int x, int z) const;
 
     EWaveField m_field;
     float m_cellSize;                    // m
@@ -70,6 +73,7 @@ private:
     std::unique_ptr<Offload> m_offload;
     bool m_changed = false;              // the CPU state was written since the last step (the offload uploads it)
     std::vector<ObstructionCell> m_obstruction;  // setObstruction's cells, applied after each step
+    std::vector<int32_t> m_displacedFrom;        // per cell: its m_obstruction entry if a hull displaces it, else −1 (empty: none)
 };
 
 /// The iWave projection on an ewave field (docs/ewave.md#obstacles): h and v scaled by the

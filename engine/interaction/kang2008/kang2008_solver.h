@@ -50,6 +50,9 @@ public:
     /// Applied to Vh(t) and Vh(t−1) after each step (on the GPU: on the read-back CPU field,
     /// which the next step then uploads).
     void setObstruction(std::span<const ObstructionCell> cells) override { m_obstruction.assign(cells.begin(), cells.end()); }
+    /// [Kang2008]'s ship is its six bounding spheres pressing a free surface (fig. 16's hollow
+    /// under the hull): a hull mask would hold that hollow at 0, so hulls do not obstruct here.
+    bool obstructsHulls() const override { return false; }
     void scroll(glm::ivec2 shift) override;
     void clear() override;
     /// Vh(t).
