@@ -49,7 +49,8 @@ void EWaveLevels::centerOn(glm::vec2 world) {
         const glm::ivec2 shift = lv.grid.centreOn(world);
         if (shift == glm::ivec2(0)) continue;
         lv.solver->scroll(shift);
-        for (auto* f : {&lv.h0, &lv.v0, &lv.h1, &lv.v1, &lv.shown}) scrollCells(f->data(), lv.grid.n, lv.grid.n, shift);
+        for (auto* f : {&lv.h0, &lv.v0, &lv.h1, &lv.v1}) scrollCells(f->data(), lv.grid.n, lv.grid.n, shift);
+        lv.shownFrame = -1;
     }
 }
 
@@ -83,10 +84,8 @@ bool EWaveLevels::stampSphere(const BoundingSphere& sphere, SphereContact& conta
 void EWaveLevels::step(float dt, std::span<const ObstacleShape> obstacles) {
     ++m_frame;
     m_dt = dt;
-    for (Level& lv : m_levels) {
+    for (Level& lv : m_levels)
         if (m_frame > lv.b) stepLevel(lv, dt, obstacles);
-        interpolate(lv);
-    }
 }
 
 // One step of the level over stride·dt from frame b. Its queued sources, each a frame's push,
@@ -136,16 +135,27 @@ struct Hermite {
 // h(t) between the states at frames a and b (p = (frame − a)/stride, S = stride·dt seconds):
 // h00·h_a + h10·S·v_a + h01·h_b + h11·S·v_b, exact at both ends in h and v; for a wave of
 // ω·S = 0.8 rad (level 2's shortest) its error is under (ωS)⁴/384 ≈ 0.1% of the amplitude.
-void EWaveLevels::interpolate(Level& lv) const {
-    const Hermite w = Hermite::at(phase(lv));
-    const float s = m_dt * float(lv.stride);
-    const float a0 = w.h00, a1 = w.h01, b0 = w.h10 * s, b1 = w.h11 * s;
-    for (size_t i = 0; i < lv.shown.size(); ++i) lv.shown[i] = a0 * lv.h0[i] + a1 * lv.h1[i] + b0 * lv.v0[i] + b1 * lv.v1[i];
+// Made only when asked (the renderer, once a frame): the simulation reads pointwise.
+std::span<const float> EWaveLevels::height(int L) const {
+    const Level& lv = level(L);
+    if (lv.shownFrame != m_frame) {
+        const Hermite w = Hermite::at(phase(lv));
+        const float s = m_dt * float(lv.stride);
+        const float a0 = w.h00, a1 = w.h01, b0 = w.h10 * s, b1 = w.h11 * s;
+        for (size_t i = 0; i < lv.shown.size(); ++i) lv.shown[i] = a0 * lv.h0[i] + a1 * lv.h1[i] + b0 * lv.v0[i] + b1 * lv.v1[i];
+        lv.shownFrame = m_frame;
+    }
+    return lv.shown;
 }
 
 float EWaveLevels::heightAt(int L, glm::vec2 world) const {
     const Level& lv = level(L);
-    return bilinear<float>(lv.shown, lv.grid.n, lv.grid.n, lv.grid.toGrid(world));
+    const glm::vec2 g = lv.grid.toGrid(world);
+    const int n = lv.grid.n;
+    const Hermite w = Hermite::at(phase(lv));
+    const float s = m_dt * float(lv.stride);
+    return w.h00 * bilinear<float>(lv.h0, n, n, g) + w.h01 * bilinear<float>(lv.h1, n, n, g) +
+           s * (w.h10 * bilinear<float>(lv.v0, n, n, g) + w.h11 * bilinear<float>(lv.v1, n, n, g));
 }
 
 float EWaveLevels::velocityAt(int L, glm::vec2 world) const {
@@ -163,7 +173,8 @@ void EWaveLevels::hashState(StateHasher& h) const {
     h.u64(uint64_t(m_frame));
     for (const Level& lv : m_levels) {
         lv.solver->hashState(h);
-        h.f32s(lv.shown.data(), lv.shown.size());
+        h.f32s(lv.h0.data(), lv.h0.size());  // the state before (the Hermite's other end)
+        h.f32s(lv.v0.data(), lv.v0.size());
         for (const WorldSource& s : lv.queued) {
             h.f32s(&s.centre.x, 2);
             h.f32(s.radius);

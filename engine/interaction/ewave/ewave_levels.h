@@ -45,8 +45,10 @@ public:
     const ScrollingGrid& grid(int L) const { return level(L).grid; }
     /// Level L's solver (its state at frame b, not interpolated).
     const EWaveSolver& solver(int L) const { return *level(L).solver; }
-    /// Level L's height at the patch's last step, interpolated in time, rows·cols row-major, m.
-    std::span<const float> height(int L) const { return level(L).shown; }
+    /// Level L's height at the patch's last step, interpolated in time, rows·cols row-major, m
+    /// (the renderer's upload; made on the first call after a step, so not to be called from
+    /// several threads at once: the queries below read pointwise and may).
+    std::span<const float> height(int L) const;
     /// The absorbing band of every level, cells (as the fields clamp it): the composite's fade band.
     int sponge() const { return m_sponge; }
     /// Frames between level L's steps (4^L).
@@ -64,10 +66,11 @@ public:
     /// the source then pushed to the coarser ones. `motion`'s grid position is set here.
     bool stampSphere(const BoundingSphere& sphere, SphereContact& contact, SphereMotion motion, glm::vec2 centre);
     /// One patch frame of dt s: the levels whose turn it is step (sources, obstacles on their
-    /// grids, the exact step over stride·dt), then every level's shown height is interpolated.
+    /// grids, the exact step over stride·dt); the others only move on in their Hermite.
     void step(float dt, std::span<const ObstacleShape> obstacles);
 
-    /// Level L's height (shown) at world (x, z), bilinear; 0 off the grid, m.
+    /// Level L's height at world (x, z): the Hermite of its two states' bilinear heights and
+    /// velocities (equal to bilinear on height(L)); 0 off the grid, m.
     float heightAt(int L, glm::vec2 world) const;
     /// Level L's vertical velocity at world (x, z): the Hermite's time derivative, m/s.
     float velocityAt(int L, glm::vec2 world) const;
@@ -99,13 +102,13 @@ private:
         int stride = 1;                         // frames per step
         int64_t a = 0, b = 0;                   // frames of the two states kept (b = the solver's)
         std::vector<float> h0, v0, h1, v1;      // (h, v) at frames a and b, m and m/s
-        std::vector<float> shown;               // Hermite height at the last frame, m
+        mutable std::vector<float> shown;       // Hermite height at frame shownFrame, m (height())
+        mutable int64_t shownFrame = -1;
         std::vector<WorldSource> queued;        // sources since its last step
         std::vector<ObstructionCell> obstruction;  // its cells at its last step
     };
     const Level& level(int L) const { return m_levels[size_t(L - 1)]; }
     void stepLevel(Level& lv, float dt, std::span<const ObstacleShape> obstacles);
-    void interpolate(Level& lv) const;
     float phase(const Level& lv) const { return float(m_frame - lv.a) / float(lv.stride); }
 
     std::vector<Level> m_levels;  // levels 1..K−1
