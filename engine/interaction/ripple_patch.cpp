@@ -31,6 +31,7 @@ RipplePatch::~RipplePatch() = default;
 void RipplePatch::retune(const RippleDef& def) {
     static_cast<RippleModels::Defs&>(m_def) = def;
     m_solver->retune(m_def);
+    if (m_levels) m_levels->retune(m_def);
 }
 
 void RipplePatch::centerOn(glm::vec2 worldCenter) {
@@ -88,8 +89,10 @@ bool RipplePatch::stampSphere(const BoundingSphere& sphere, SphereContact& conta
     const glm::vec2 at(centre.x, centre.z);
     if (fineWeight(at) <= 0.0f) return m_levels->stampSphere(sphere, contact, motion, at);
     if (!m_solver->addSphere(sphere, contact, motion)) return false;
-    const EWaveSource& s = solverAs<EWaveSolver>()->queuedSources().back();
-    m_levels->pushSource(at, std::max(s.radiusCells, 1.0f) * m_def.cell_size, s.accel, 1);
+    if (const EWaveSolver* ewave = solverAs<EWaveSolver>()) {  // levels are ewave's (a test's own solver has none)
+        const EWaveSource& s = ewave->queuedSources().back();
+        m_levels->pushSource(at, std::max(s.radiusCells, 1.0f) * m_def.cell_size, s.accel, 1);
+    }
     return true;
 }
 

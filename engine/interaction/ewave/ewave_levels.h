@@ -87,6 +87,10 @@ public:
         }
         return sum;
     }
+    /// Every level takes the Def's live keys (decay_time, viscosity) from its next step on.
+    void retune(const RippleDef& def) {
+        for (Level& lv : m_levels) lv.solver->retune(def);
+    }
     /// Every level's state, its frames and its queued sources (the state hash).
     void hashState(StateHasher& h) const;
 
