@@ -32,6 +32,8 @@ SHARED_CONST REFLECTION_DEPTH_UNIT = 7;  // water: the reflection target's depth
 SHARED_CONST FOAM_UNIT = 8;              // water: the persistent foam map
 SHARED_CONST RIPPLE_SLOPES_UNIT = 9;     // water: ripple slopes
 SHARED_CONST FOAM_PATTERN_UNIT = 10;     // water: the baked foam pattern
+SHARED_CONST RIPPLE_LEVELS_UNIT = 11;    // water: the coarse ewave levels' heights, 2D array
+SHARED_CONST RIPPLE_LEVEL_SLOPES_UNIT = 12;  // water: their slopes, 2D array
 SHARED_CONST POST_SOURCE_UNIT = 0;       // post (FXAA, upscale): the frame read
 
 // --- uniform locations, per program
@@ -84,6 +86,7 @@ UNIFORM_BLOCK(FrameUniforms, FRAME_BLOCK) {
 
 SHARED_CONST MAX_GERSTNER_WAVES = 32;
 SHARED_CONST MAX_HULL_CLIPS = 16;  // hulls whose inside the water skips (common_hull_clip.glsl); the nearest to the eye first
+SHARED_CONST MAX_RIPPLE_LEVELS = 3;  // coarse ewave levels (ripples.levels − 1, docs/ewave.md#levels)
 
 // The composite water surface's parameters (the water pass and whatever cuts at the surface).
 UNIFORM_BLOCK(WaterUniforms, WATER_BLOCK) {
@@ -99,6 +102,8 @@ UNIFORM_BLOCK(WaterUniforms, WATER_BLOCK) {
     vec4 cascadeSlopeVariance;  // per cascade: mean square slope of its waves (unused cascades 0)
     vec4 glitterParams;      // x Cox–Munk mean square slope of the wind's sea, 0.003 + 5.12e-3·U10
     vec4 crest;              // x the tallest crest above the mean level (m), y [render] subsurface strength (0: off)
+    vec4 rippleLevels[MAX_RIPPLE_LEVELS];  // coarse level L (layer L − 1): xy world origin of cell (0, 0) (m), z cell size (m)
+    vec4 rippleFade;         // x coarse levels (0: level 0 alone), y the composite's fade band (cells of each level)
     vec4 gerstner[MAX_GERSTNER_WAVES];  // (kx, kz, amplitude, phase) per wave
     vec4 hullCount;          // x hulls in hullFromWorld (≤ MAX_HULL_CLIPS)
     mat4 hullFromWorld[MAX_HULL_CLIPS];  // world → hull box unit cube [−1, 1]³ (gfx::HullClip::worldToHull)

@@ -17,11 +17,43 @@ layout(binding = RIPPLES_UNIT) uniform sampler2D u_ripples;            // ripple
 layout(binding = FOAM_UNIT) uniform sampler2D u_foamMap;            // persistent foam coverage [0, 1], 0 outside
 layout(binding = RIPPLE_SLOPES_UNIT) uniform sampler2D u_rippleSlopes;       // ripple (dh/dx, dh/dz) per cell, one cell of margin round the patch
 
-// Ripple height at world (x, z) (bilinear between cell centres; 0 outside the patch).
+layout(binding = RIPPLE_LEVELS_UNIT) uniform sampler2DArray u_rippleLevels;  // coarse levels' heights (m), layer L − 1, 0 outside
+layout(binding = RIPPLE_LEVEL_SLOPES_UNIT) uniform sampler2DArray u_rippleLevelSlopes;  // their (dh/dx, dh/dz), one cell of margin
+
+// The composite's weight of a level at grid position `cell` (centres at integers; the levels
+// share N): 0 within the fade band of its border, 1 from twice it inwards, a smoothstep per
+// axis between (EWaveLevels' levelWeight, docs/ewave.md#levels).
+float rippleLevelWeight(vec2 cell) {
+    vec2 d = min(cell, water.rippleParams.w - 1.0 - cell);
+    vec2 s = smoothstep(vec2(water.rippleFade.y), vec2(2.0 * water.rippleFade.y), d);
+    return s.x * s.y;
+}
+
+// The coarse levels' share of the composite after level 0 took `weight` of value0; `slope`:
+// the slope layer instead of the height (the weights' own gradient left out, see docs/ewave.md).
+vec2 rippleLevels(vec2 world, vec2 value0, float weight, bool slope) {
+    vec2 sum = weight * value0;
+    float rest = 1.0 - weight;
+    int count = int(water.rippleFade.x);
+    for (int L = 0; L < count && rest > 0.0; ++L) {
+        vec2 c = (world - water.rippleLevels[L].xy) / water.rippleLevels[L].z;
+        float w = L == count - 1 ? 1.0 : rippleLevelWeight(c);
+        vec2 v = slope ? textureLod(u_rippleLevelSlopes, vec3((c + 1.5) / (water.rippleParams.w + 2.0), float(L)), 0.0).xy
+                       : vec2(textureLod(u_rippleLevels, vec3((c + 0.5) / water.rippleParams.w, float(L)), 0.0).r, 0.0);
+        sum += rest * w * v;
+        rest *= 1.0 - w;
+    }
+    return sum;
+}
+
+// Ripple height at world (x, z) (bilinear between cell centres; 0 outside the patch); with
+// coarse levels the composite, cross-faded as the CPU's RipplePatch::heightAt.
 float rippleHeight(vec2 world) {
     if (!WATER_RIPPLES) return 0.0;
-    vec2 uv = ((world - water.rippleParams.xy) / water.rippleParams.z + 0.5) / water.rippleParams.w;
-    return textureLod(u_ripples, uv, 0.0).r;
+    vec2 cell = (world - water.rippleParams.xy) / water.rippleParams.z;
+    float h = textureLod(u_ripples, (cell + 0.5) / water.rippleParams.w, 0.0).r;
+    if (water.rippleFade.x == 0.0) return h;
+    return rippleLevels(world, vec2(h, 0.0), rippleLevelWeight(cell), false).x;
 }
 
 // Persistent foam coverage at world (x, z) (bilinear between cell centres; 0 outside the map),
@@ -34,16 +66,20 @@ float foamCoverage(vec2 world) {
     return fade * textureLod(u_foamMap, (cell + 0.5) / water.foamParams.w, 0.0).r;
 }
 
-// True inside the ripple patch (plus one cell).
+// True inside the ripple patch (plus one cell); with coarse levels, inside the coarsest.
 bool inRipplePatch(vec2 world) {
-    vec2 cell = (world - water.rippleParams.xy) / water.rippleParams.z;
-    return WATER_RIPPLES && all(greaterThan(cell, vec2(-1.0))) && all(lessThan(cell, vec2(water.rippleParams.w)));
+    if (!WATER_RIPPLES) return false;
+    int last = int(water.rippleFade.x) - 1;
+    vec4 grid = last < 0 ? water.rippleParams : vec4(water.rippleLevels[last].xyz, water.rippleParams.w);
+    vec2 cell = (world - grid.xy) / grid.z;
+    return all(greaterThan(cell, vec2(-1.0))) && all(lessThan(cell, vec2(grid.w)));
 }
 
 // Ripple slope (dh/dx, dh/dz) at world (x, z): central differences over one cell of the
 // bilinear heights. Interpolating is linear, so that equals the bilinear interpolation of each
 // cell's central difference, which the renderer stores beside the heights (one lookup, not four;
 // texel (i + 1, j + 1) is cell (i, j), so the margin holds the differences against the zero outside).
+// With coarse levels: each level's slope, cross-faded with the heights' weights.
 vec2 rippleSlope(vec2 world) {
     if (!inRipplePatch(world)) return vec2(0.0);
 #ifdef WATER_FULL_QUALITY
@@ -52,7 +88,9 @@ vec2 rippleSlope(vec2 world) {
                 rippleHeight(world + vec2(0.0, h)) - rippleHeight(world - vec2(0.0, h))) / (2.0 * h);
 #else
     vec2 cell = (world - water.rippleParams.xy) / water.rippleParams.z;
-    return textureLod(u_rippleSlopes, (cell + 1.5) / (water.rippleParams.w + 2.0), 0.0).xy;
+    vec2 s = textureLod(u_rippleSlopes, (cell + 1.5) / (water.rippleParams.w + 2.0), 0.0).xy;
+    if (water.rippleFade.x == 0.0) return s;
+    return rippleLevels(world, s, rippleLevelWeight(cell), true);
 #endif
 }
 

@@ -4,6 +4,7 @@
 #include "gfx/render_target.h"
 #include "gfx/water_pass.h"
 
+#include <algorithm>
 #include <tuple>
 
 namespace ob::gfx {
@@ -33,6 +34,21 @@ Texture borderedMap(const char* label, GLenum format, int cells) {
     glTextureParameterfv(texture.id(), GL_TEXTURE_BORDER_COLOR, zero);
     return texture;
 }
+// A 2D array of MAX_RIPPLE_LEVELS layers of cells², linear, clamped (to a zero border: `bordered`).
+Texture createLevelArray(const char* label, GLenum format, int cells, bool bordered) {
+    GLuint id;
+    glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &id);
+    glObjectLabel(GL_TEXTURE, id, -1, label);
+    glTextureStorage3D(id, 1, format, cells, cells, MAX_RIPPLE_LEVELS);
+    glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    const GLint wrap = bordered ? GL_CLAMP_TO_BORDER : GL_CLAMP_TO_EDGE;
+    glTextureParameteri(id, GL_TEXTURE_WRAP_S, wrap);
+    glTextureParameteri(id, GL_TEXTURE_WRAP_T, wrap);
+    const float zero[4] = {0, 0, 0, 0};
+    glTextureParameterfv(id, GL_TEXTURE_BORDER_COLOR, zero);
+    return Texture(id);
+}
 } // namespace
 
 WaterLayers::WaterLayers() {
@@ -60,6 +76,7 @@ void WaterLayers::upload(const WaterView& water, bool fft, bool foamOn, WaterUni
         rippleSlopes(water.ripples, m_rippleCells, water.rippleCellSize, m_slopeTexels);
         glTextureSubImage2D(m_rippleSlopes.id(), 0, 0, 0, m_rippleCells + 2, m_rippleCells + 2, GL_RG, GL_FLOAT, m_slopeTexels.data());
         u.rippleParams = glm::vec4(water.rippleOrigin, water.rippleCellSize, float(m_rippleCells));
+        uploadLevels(water, u);
     }
     u.foamParams = glm::vec4(0.0f);
     if (foamOn && water.foam && water.foamCells > 0) {
@@ -76,6 +93,30 @@ void WaterLayers::upload(const WaterView& water, bool fft, bool foamOn, WaterUni
     glBindTextureUnit(SLOPES_UNIT, fft ? water.slopes->id() : m_flatSlopes.id());
     glBindTextureUnit(RIPPLES_UNIT, ripples ? m_ripples.id() : 0);
     glBindTextureUnit(RIPPLE_SLOPES_UNIT, ripples ? m_rippleSlopes.id() : 0);
+    const bool levels = ripples && u.rippleFade.x > 0.0f;
+    glBindTextureUnit(RIPPLE_LEVELS_UNIT, levels ? m_levels.id() : 0);
+    glBindTextureUnit(RIPPLE_LEVEL_SLOPES_UNIT, levels ? m_levelSlopes.id() : 0);
+}
+
+// The coarse ewave levels as layers of two arrays (heights with a zero border, slopes with a
+// margin as level 0's), and their placement in rippleLevels / rippleFade.
+void WaterLayers::uploadLevels(const WaterView& water, WaterUniforms& u) {
+    const int count = std::min(int(water.rippleLevels.size()), int(MAX_RIPPLE_LEVELS));
+    u.rippleFade = glm::vec4(float(count), float(water.rippleFadeCells), 0.0f, 0.0f);
+    if (count == 0) return;
+    const int n = water.rippleCells;
+    if (m_levelCells != n) {
+        m_levels = createLevelArray("ripple level heights", GL_R32F, n, true);
+        m_levelSlopes = createLevelArray("ripple level slopes", GL_RG32F, n + 2, false);
+        m_levelCells = n;
+    }
+    for (int L = 0; L < count; ++L) {
+        const WaterView::RippleLevel& level = water.rippleLevels[size_t(L)];
+        glTextureSubImage3D(m_levels.id(), 0, 0, 0, L, n, n, 1, GL_RED, GL_FLOAT, level.heights);
+        rippleSlopes(level.heights, n, level.cellSize, m_slopeTexels);
+        glTextureSubImage3D(m_levelSlopes.id(), 0, 0, 0, L, n + 2, n + 2, 1, GL_RG, GL_FLOAT, m_slopeTexels.data());
+        u.rippleLevels[L] = glm::vec4(level.origin, level.cellSize, 0.0f);
+    }
 }
 
 } // namespace ob::gfx

@@ -36,7 +36,13 @@ SurfaceBounds displacementBounds(const WaterView& water) {
     bounds += {amplitudes, amplitudes, amplitudes};
     if (water.ripples && water.rippleCells > 0) {
         const auto [lo, hi] = std::minmax_element(water.ripples, water.ripples + size_t(water.rippleCells) * size_t(water.rippleCells));
-        bounds += {std::max(*hi, 0.0f), std::max(-*lo, 0.0f), 0.0f};
+        float top = *hi, bottom = *lo;
+        for (const WaterView::RippleLevel& level : water.rippleLevels) {
+            const auto [l, h] = std::minmax_element(level.heights, level.heights + size_t(water.rippleCells) * size_t(water.rippleCells));
+            top = std::max(top, *h);
+            bottom = std::min(bottom, *l);
+        }
+        bounds += {std::max(top, 0.0f), std::max(-bottom, 0.0f), 0.0f};
     }
     return bounds;
 }

@@ -33,6 +33,14 @@ struct WaterView {
     int rippleCells = 0;                    ///< ripple patch cells per side (0: no ripple layer)
     glm::vec2 rippleOrigin{0.0f};           ///< world (x, z) of cell (0, 0)'s centre, m
     float rippleCellSize = 1.0f;            ///< m per cell
+    /// A coarse ewave level (docs/ewave.md#levels): rippleCells² heights like `ripples`, placed by its own origin and cell.
+    struct RippleLevel {
+        const float* heights = nullptr;     ///< rippleCells² row-major (z rows), m
+        glm::vec2 origin{0.0f};             ///< world (x, z) of cell (0, 0)'s centre, m
+        float cellSize = 1.0f;              ///< m per cell
+    };
+    std::vector<RippleLevel> rippleLevels;  ///< levels 1.. of the patch, at most MAX_RIPPLE_LEVELS (none: one grid)
+    int rippleFadeCells = 0;                ///< the composite's fade band, cells of each level (EWaveLevels::sponge)
     const float* foam = nullptr;            ///< persistent foam coverage [0, 1], foamCells² row-major (z rows)
     int foamCells = 0;                      ///< foam map cells per side (0: no foam map)
     glm::vec2 foamOrigin{0.0f};             ///< world (x, z) of foam cell (0, 0)'s centre, m

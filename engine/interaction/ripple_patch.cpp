@@ -1,6 +1,9 @@
 // Ripple patch placement, world sampling and per-sphere stamping; the solver from the table.
 #include "interaction/ripple_patch.h"
 
+#include "interaction/ewave/ewave_levels.h"
+
+#include <algorithm>
 #include <cassert>
 #include <glm/geometric.hpp>
 
@@ -20,6 +23,7 @@ RipplePatch::RipplePatch(const RippleDef& def) : RipplePatch(def, makeSolver(def
 RipplePatch::RipplePatch(const RippleDef& def, std::unique_ptr<RippleSolver> solver)
     : m_def(def), m_grid(ScrollingGrid::centredOn(def.center, def.cell_size, def.resolution)), m_solver(std::move(solver)) {
     assert(m_solver && m_solver->rows() == def.resolution && m_solver->cols() == def.resolution);
+    if (def.levels > 1) m_levels = std::make_unique<EWaveLevels>(def);  // ewave only (validate)
 }
 
 RipplePatch::~RipplePatch() = default;
@@ -27,11 +31,13 @@ RipplePatch::~RipplePatch() = default;
 void RipplePatch::retune(const RippleDef& def) {
     static_cast<RippleModels::Defs&>(m_def) = def;
     m_solver->retune(m_def);
+    if (m_levels) m_levels->retune(m_def);
 }
 
 void RipplePatch::centerOn(glm::vec2 worldCenter) {
     const glm::ivec2 shift = m_grid.centreOn(worldCenter);
     if (shift != glm::ivec2(0)) m_solver->scroll(shift);
+    if (m_levels) m_levels->centerOn(worldCenter);
 }
 
 // No obstacles, and none before: the solver is not told, so its step is what it always was.
@@ -45,9 +51,29 @@ void RipplePatch::step(float dt) {
         m_solver->setObstruction(m_obstruction);
     }
     m_solver->step(dt);
+    if (m_levels) m_levels->step(dt, m_obstacles);
 }
 
-float RipplePatch::heightAt(glm::vec2 world) const { return bilinear(height(), rows(), cols(), toGrid(world)); }
+float RipplePatch::fineWeight(glm::vec2 world) const {
+    return m_levels ? levelWeight(toGrid(world), cols(), m_levels->sponge()) : 1.0f;
+}
+
+float RipplePatch::heightAt(glm::vec2 world) const {
+    const float fine = bilinear(height(), rows(), cols(), toGrid(world));
+    if (!m_levels) return fine;
+    return m_levels->composite(world, fine, fineWeight(world), [this](int L, glm::vec2 w) { return m_levels->heightAt(L, w); });
+}
+
+float RipplePatch::velocityAt(glm::vec2 world, float dt) const {
+    const float fine = m_solver->velocityAt(toGrid(world), dt);
+    if (!m_levels) return fine;
+    return m_levels->composite(world, fine, fineWeight(world), [this](int L, glm::vec2 w) { return m_levels->velocityAt(L, w); });
+}
+
+void RipplePatch::hashState(StateHasher& h) const {
+    m_solver->hashState(h);
+    if (m_levels) m_levels->hashState(h);
+}
 
 bool RipplePatch::stampSphere(const BoundingSphere& sphere, SphereContact& contact, const glm::vec3& centre,
                               const glm::vec3& velocity, float mass, float surfaceY) {
@@ -60,7 +86,17 @@ bool RipplePatch::stampSphere(const BoundingSphere& sphere, SphereContact& conta
     motion.speed = glm::length(velocity);
     motion.mass = mass;
     motion.surfaceY = surfaceY;
-    return m_solver->addSphere(sphere, contact, motion);
+    if (!m_levels) return m_solver->addSphere(sphere, contact, motion);
+    // Levels: the finest level that the composite reads at the centre plans the stamp, and
+    // its source goes to every coarser level too (EWaveLevels::pushSource).
+    const glm::vec2 at(centre.x, centre.z);
+    if (fineWeight(at) <= 0.0f) return m_levels->stampSphere(sphere, contact, motion, at);
+    if (!m_solver->addSphere(sphere, contact, motion)) return false;
+    if (const EWaveSolver* ewave = solverAs<EWaveSolver>()) {  // levels are ewave's (a test's own solver has none)
+        const EWaveSource& s = ewave->queuedSources().back();
+        m_levels->pushSource(at, std::max(s.radiusCells, 1.0f) * m_def.cell_size, s.accel, 1);
+    }
+    return true;
 }
 
 } // namespace ob::interaction

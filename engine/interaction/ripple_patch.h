@@ -12,6 +12,8 @@
 
 namespace ob::interaction {
 
+class EWaveLevels;
+
 /// The Def's solver (RippleModels: its model's make) on a ScrollingGrid. Where the grid is,
 /// and world ↔ grid, are the patch's; everything about the waves is the solver's.
 class RipplePatch {
@@ -29,6 +31,8 @@ public:
     /// The solver as its concrete type, or null (tests that write a model's own state).
     template <class S> S* solverAs() { return dynamic_cast<S*>(m_solver.get()); }
     template <class S> const S* solverAs() const { return dynamic_cast<const S*>(m_solver.get()); }
+    /// The coarse levels 1..K−1 around the solver's grid (ewave, ripples.levels = K > 1), or null.
+    const EWaveLevels* levels() const { return m_levels.get(); }
     /// True once the solver steps on its GPU twin (interaction/gpu/attachGpu).
     bool onGpu() const { return m_solver->onGpu(); }
 
@@ -36,10 +40,14 @@ public:
     void centerOn(glm::vec2 worldCenter);
     /// Grid coordinates (column x, row z; cell centres at integers) of a world (x, z).
     glm::vec2 toGrid(glm::vec2 world) const { return m_grid.toGrid(world); }
-    /// The height at world (x, z), bilinear between cell centres; 0 outside the patch (m).
+    /// The height at world (x, z), bilinear between cell centres; 0 outside the patch (m). With
+    /// levels: the composite, each level's bilinear height cross-faded (EWaveLevels::composite).
     float heightAt(glm::vec2 world) const;
-    /// The vertical velocity at world (x, z), m/s (the solver's, see RippleSolver::velocityAt).
-    float velocityAt(glm::vec2 world, float dt) const { return m_solver->velocityAt(toGrid(world), dt); }
+    /// The vertical velocity at world (x, z), m/s (the solver's, see RippleSolver::velocityAt;
+    /// with levels the composite, as heightAt).
+    float velocityAt(glm::vec2 world, float dt) const;
+    /// The composite's weight of the solver's own grid (level 0) at world (x, z): 1 without levels.
+    float fineWeight(glm::vec2 world) const;
     /// World (x, z) of cell (0, 0)'s centre.
     glm::vec2 origin() const { return m_grid.origin(); }
 
@@ -55,6 +63,9 @@ public:
     std::span<const ObstructionCell> obstruction() const { return m_obstruction; }
     /// One step of dt seconds (the obstacles rasterised first, when there are or were some).
     void step(float dt);
+
+    /// The solver's state, then every coarse level's (the state hash).
+    void hashState(StateHasher& h) const;
 
     const RippleDef& def() const { return m_def; }
     /// Takes `def`'s solver keys (every model's: ripples.damping, .decay_time, .viscosity)
@@ -73,6 +84,7 @@ private:
     RippleDef m_def;
     ScrollingGrid m_grid;  // placement: origin cell, cell size, resolution
     std::unique_ptr<RippleSolver> m_solver;
+    std::unique_ptr<EWaveLevels> m_levels;        // levels 1..K−1, null when K = 1
     std::vector<ObstacleShape> m_obstacles;       // setObstacles', world m
     std::vector<ObstructionCell> m_obstruction;   // their cells at the last step
 };

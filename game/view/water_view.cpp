@@ -6,6 +6,7 @@
 #include "foam/foam_whitecaps.h"
 #include "gfx/gl.h"
 #include "interaction/gpu/attach_gpu.h"
+#include "interaction/ewave/ewave_levels.h"
 #include "interaction/ripple_patch.h"
 #include "ocean/gpu/ocean_fft_gpu.h"
 #include "ocean/gpu/ocean_textures.h"
@@ -28,7 +29,8 @@ void attachWaterGpu(ecs::World& world) {
         // on an H200 in the default scene).
         // The same switch for every model: its moveToGpu (kang2008 RippleFieldGpu, ewave EWaveGpu)
         // warns, and leaves it on the CPU, where its twin cannot run it.
-        const bool gpu = backend == Backend::Gpu || (backend == Backend::Auto && !gfx::isSoftwareRenderer() && patch->def().resolution >= 2048);
+        const bool gpu = backend == Backend::Gpu || (backend == Backend::Auto && !gfx::isSoftwareRenderer() && patch->def().resolution >= 2048 &&
+                                                   patch->def().levels == 1);  // levels: CPU only
         if (gpu) interaction::attachGpu(*patch);
         logInfo("ripples: %s, %s backend, %d² cells of %g m", enumName(patch->def().model), patch->solver().backendName(),
                 patch->def().resolution, double(patch->def().cell_size));
@@ -81,6 +83,11 @@ gfx::WaterView prepareWaterView(ecs::World& world, double time) {
         view.rippleCells = patch->def().resolution;
         view.rippleOrigin = patch->origin();
         view.rippleCellSize = patch->def().cell_size;
+        if (const interaction::EWaveLevels* levels = patch->levels()) {  // the composite (docs/ewave.md#levels)
+            for (int L = 1; L < levels->count(); ++L)
+                view.rippleLevels.push_back({levels->height(L).data(), levels->grid(L).origin(), levels->grid(L).cell});
+            view.rippleFadeCells = levels->sponge();
+        }
     }
     if (const foam::FoamMap* foam = foamMap(world)) {
         view.foam = foam->coverage().data();

@@ -182,7 +182,7 @@ uint64_t Sandbox::stateHash() {
         h.u64(school.size());
         for (const glm::vec3& p : school.position) h.f32s(&p.x, 3);
     }
-    if (auto* patch = m_world.resource<interaction::RipplePatch>()) patch->solver().hashState(h);
+    if (auto* patch = m_world.resource<interaction::RipplePatch>()) patch->hashState(h);
     auto& motions = m_world.pool<ecs::Motion>();
     for (size_t i = 0; i < motions.size(); ++i) h.f32s(&motions.components()[i].velocity.x, 3);
     hashSplashFoam(m_world, h);

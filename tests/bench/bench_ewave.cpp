@@ -10,6 +10,7 @@
 #include "interaction/ewave/gpu/ewave_gpu.h"
 #include "platform/platform.h"
 #include "interaction/ewave/ewave_field.h"
+#include "interaction/ripple_patch.h"
 #include "interaction/sphere_stamp.h"
 #include "core/fftw_wisdom.h"
 
@@ -189,3 +190,33 @@ void BM_EWaveStamp(benchmark::State& state) {
 BENCHMARK(BM_EWaveStamp)->Args({100000, 20})->Args({1000, 5})->Args({1000, 7})->Unit(benchmark::kMillisecond)->UseRealTime();
 
 } // namespace
+
+// Nested levels (docs/ewave.md#levels): a RipplePatch of N² with `levels` levels (0.25 m, 1 m,
+// 4 m), a 1 m sphere at 5 m/s stamped each frame, the patch following it; one iteration is 48
+// frames (every level's stride divides it: 12 steps of level 1, 3 of level 2), so the time per
+// iteration over 48 is a frame's mean cost. Args: N, levels. Compare levels 2 and 3 to 1.
+void BM_EWaveLevels(benchmark::State& state) {
+    RippleDef def;
+    def.model = rippleModel("ewave");
+    def.backend = ob::Backend::Cpu;
+    def.resolution = int(state.range(0));
+    def.cell_size = 0.25f;
+    def.levels = int(state.range(1));
+    RipplePatch patch(def);
+    BoundingSphere sphere;
+    sphere.radius = 1.0f;
+    sphere.direction = SphereDirection::Down;
+    SphereContact contact;
+    const float dt = 1.0f / 60.0f;
+    glm::vec2 ship(0.0f);
+    auto frame = [&] {
+        ship.x += 5.0f * dt;
+        patch.centerOn(ship);
+        patch.stampSphere(sphere, contact, glm::vec3(ship.x, 0.0f, ship.y), glm::vec3(5.0f, 0.0f, 0.0f), 1000.0f, 0.0f);
+        patch.step(dt);
+    };
+    for (int i = 0; i < 48; ++i) frame();  // coefficients, sponges and the first steps outside the timing
+    for (auto _ : state)
+        for (int i = 0; i < 48; ++i) frame();
+}
+BENCHMARK(BM_EWaveLevels)->ArgsProduct({{256, 512}, {1, 2, 3}})->Unit(benchmark::kMillisecond)->UseRealTime();

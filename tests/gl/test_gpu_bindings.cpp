@@ -31,7 +31,8 @@ const std::map<std::string, int> EXPECTED_UNITS = {
     {"u_displacement", DISPLACEMENT_UNIT}, {"u_slopes", SLOPES_UNIT}, {"u_ripples", RIPPLES_UNIT}, {"u_sky", SKY_UNIT},
     {"u_reflection", REFLECTION_UNIT}, {"u_refraction", REFRACTION_UNIT}, {"u_detail", DETAIL_UNIT},
     {"u_reflectionDepth", REFLECTION_DEPTH_UNIT}, {"u_foamMap", FOAM_UNIT}, {"u_rippleSlopes", RIPPLE_SLOPES_UNIT},
-    {"u_foamPattern", FOAM_PATTERN_UNIT}, {"u_source", POST_SOURCE_UNIT},
+    {"u_foamPattern", FOAM_PATTERN_UNIT}, {"u_source", POST_SOURCE_UNIT}, {"u_rippleLevels", RIPPLE_LEVELS_UNIT},
+    {"u_rippleLevelSlopes", RIPPLE_LEVEL_SLOPES_UNIT},
 };
 const std::map<std::string, int> EXPECTED_IMAGES = {{"u_displacement", OCEAN_DISPLACEMENT_IMAGE}, {"u_slopes", OCEAN_SLOPES_IMAGE}};
 const std::map<std::string, int> EXPECTED_LOCATIONS = {
@@ -61,7 +62,8 @@ const std::map<std::string, size_t> CPP_OFFSETS = {
     MEMBER(WaterUniforms, waterParams), MEMBER(WaterUniforms, gridParams), MEMBER(WaterUniforms, rippleParams),
     MEMBER(WaterUniforms, foamParams), MEMBER(WaterUniforms, cascadeFade), MEMBER(WaterUniforms, cascadeFadeEnd),
     MEMBER(WaterUniforms, farFade), MEMBER(WaterUniforms, cascadeSlopeVariance), MEMBER(WaterUniforms, glitterParams),
-    MEMBER(WaterUniforms, crest), ARRAY(WaterUniforms, gerstner), MEMBER(WaterUniforms, hullCount),
+    MEMBER(WaterUniforms, crest), ARRAY(WaterUniforms, rippleLevels), MEMBER(WaterUniforms, rippleFade),
+    ARRAY(WaterUniforms, gerstner), MEMBER(WaterUniforms, hullCount),
     ARRAY(WaterUniforms, hullFromWorld), ARRAY(WaterUniforms, hullPlan),
 };
 #undef MEMBER

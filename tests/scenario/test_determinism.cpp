@@ -87,7 +87,7 @@ TEST_CASE("the state hash is the same with 1, 2, 3 and 8 workers (ripple rows an
     // The bodies fall in within the 150 steps and ring the patch.
     WorkerCountGuard guard;
     setThreadMeasuring(false);
-    game::SceneDef scene = game::loadScene(game::defaultScenePath(), {"ripples.model=kang2008", "ripples.resolution=1024", "ripples.cell_size=0.05"});
+    game::SceneDef scene = game::loadScene(game::defaultScenePath(), {"ripples.model=kang2008", "ripples.levels=1", "ripples.resolution=1024", "ripples.cell_size=0.05"});
     std::vector<uint64_t> hashes;
     for (int workers : {1, 2, 3, 8}) {
         setWorkerCount(workers);

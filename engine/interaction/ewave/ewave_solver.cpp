@@ -5,7 +5,12 @@
 
 namespace ob::interaction {
 
-std::vector<RippleDefError> EWaveModel::validate(const RippleDef& /*def*/) { return {}; }
+std::vector<RippleDefError> EWaveModel::validate(const RippleDef& def) {
+    // The coarse levels (ewave_levels.h) step on the CPU; the GPU twin holds one grid.
+    if (def.levels > 1 && def.backend == Backend::Gpu)
+        return {{"levels", "levels > 1 runs on the CPU only: set ripples.backend = \"cpu\" (or \"auto\"), or levels = 1"}};
+    return {};
+}
 
 std::unique_ptr<RippleSolver> EWaveModel::make(const RippleDef& def) {
     return std::make_unique<EWaveSolver>(def.resolution, def.cell_size, def, EWaveMedium::of(def.environment, def.depth), def.boundary,
@@ -20,13 +25,20 @@ EWaveSolver::EWaveSolver(int n, float cellSize, const EWaveDef& def, const EWave
 }
 
 bool EWaveSolver::addSphere(const BoundingSphere& sphere, SphereContact& contact, const SphereMotion& motion) {
+    EWaveSource source;
+    if (!planSource(sphere, contact, motion, source)) return false;
+    m_sources.push_back(source);
+    return true;
+}
+
+bool EWaveSolver::planSource(const BoundingSphere& sphere, SphereContact& contact, const SphereMotion& motion,
+                             EWaveSource& out) const {
     RippleStamp stamp;
     const EWaveField& f = m_field;
     if (!planStamp(f.rows(), f.cols(), m_cellSize, sphere, contact, motion, [this](int x, int z) { return contactHeight(x, z); },
                    stamp))
         return false;
-    m_sources.push_back(ewaveSource(stamp, motion.gridX, motion.gridZ, m_cellSize, float(m_field.medium().gravity),
-                                    motion.verticalVelocity));
+    out = ewaveSource(stamp, motion.gridX, motion.gridZ, m_cellSize, float(m_field.medium().gravity), motion.verticalVelocity);
     return true;
 }
 

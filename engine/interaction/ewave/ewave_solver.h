@@ -43,7 +43,13 @@ public:
     int rows() const override { return m_field.rows(); }
     int cols() const override { return m_field.cols(); }
     bool addSphere(const BoundingSphere& sphere, SphereContact& contact, const SphereMotion& motion) override;
+    /// addSphere's decision and source, not queued: true and `out` set when the sphere stamps.
+    bool planSource(const BoundingSphere& sphere, SphereContact& contact, const SphereMotion& motion, EWaveSource& out) const;
     void addHeight(int x, int z, double dh) override;
+    /// Queues a source (grid coordinates) for the next step, as addSphere does (the coarse levels, ewave_levels.h).
+    void addSource(const EWaveSource& source) { m_sources.push_back(source); }
+    /// The sources queued for the next step, in order (the last one addSphere's newest).
+    std::span<const EWaveSource> queuedSources() const { return m_sources; }
     /// The queued sources over dt, then the exact per-mode step over dt.
     void step(float dt) override;
     /// Applied after the CPU step, or after the GPU step's read-back on the CPU mirror (which

@@ -8,6 +8,8 @@ namespace ob::interaction {
 std::vector<RippleDefError> Kang2008Model::validate(const RippleDef& def) {
     if (def.boundary == RippleBoundary::Periodic)  // eq. 1–2 has no periodic form (ripple_field.h)
         return {{"boundary", "\"periodic\" needs ripples.model = \"ewave\" (kang2008 has \"fixed\" or \"absorbing\")"}};
+    if (def.levels > 1)  // nested grids are ewave's (docs/ewave.md#levels)
+        return {{"levels", "levels > 1 needs ripples.model = \"ewave\" (kang2008 runs on one grid: levels = 1)"}};
     return {};
 }
 

@@ -1,0 +1,186 @@
+// Nested ewave levels: placement, sources, the strided steps and the Hermite read in time.
+#include "interaction/ewave/ewave_levels.h"
+
+#include "interaction/ripple_def.h"
+
+#include <algorithm>
+#include <cassert>
+#include <utility>
+
+namespace ob::interaction {
+
+float levelWeight(glm::vec2 g, int n, int sponge) {
+    const float band = float(std::max(sponge, 1));
+    auto axis = [&](float x) {
+        const float d = std::min(x, float(n - 1) - x);
+        const float s = std::clamp((d - band) / band, 0.0f, 1.0f);
+        return s * s * (3.0f - 2.0f * s);
+    };
+    return axis(g.x) * axis(g.y);
+}
+
+EWaveLevels::EWaveLevels(const RippleDef& def) : m_sponge(def.sponge_width) {
+    assert(def.levels >= 2);
+    const EWaveMedium medium = EWaveMedium::of(def.environment, def.depth);
+    const int n = def.resolution;
+    float cell = def.cell_size;
+    int stride = 1;
+    m_levels.resize(size_t(def.levels - 1));
+    for (int L = 1; L < def.levels; ++L) {
+        cell *= float(RATIO);
+        stride *= RATIO;
+        Level& lv = m_levels[size_t(L - 1)];
+        lv.grid = ScrollingGrid::centredOn(def.center, cell, n);
+        lv.solver = std::make_unique<EWaveSolver>(n, cell, def, medium, def.boundary, def.sponge_width);
+        lv.stride = stride;
+        // The still water counts as level L's state at frame L, so its first step is at frame
+        // L + 1 and no two levels step on the same frame while 4^L > L.
+        lv.b = L;
+        lv.a = L - stride;
+        for (auto* f : {&lv.h0, &lv.v0, &lv.h1, &lv.v1, &lv.shown}) f->assign(size_t(n) * size_t(n), 0.0f);
+    }
+    m_sponge = m_levels.front().solver->field().spongeWidth();  // as the field clamps it
+}
+
+EWaveLevels::~EWaveLevels() = default;
+
+void EWaveLevels::centerOn(glm::vec2 world) {
+    for (Level& lv : m_levels) {
+        const glm::ivec2 shift = lv.grid.centreOn(world);
+        if (shift == glm::ivec2(0)) continue;
+        lv.solver->scroll(shift);
+        for (auto* f : {&lv.h0, &lv.v0, &lv.h1, &lv.v1}) scrollCells(f->data(), lv.grid.n, lv.grid.n, shift);
+        lv.shownFrame = -1;
+    }
+}
+
+float EWaveLevels::weightAt(int L, glm::vec2 world) const {
+    if (L == count() - 1) return 1.0f;  // the coarsest: what it holds, 0 off its grid
+    return levelWeight(grid(L).toGrid(world), grid(L).n, m_sponge);
+}
+
+int EWaveLevels::finestAt(glm::vec2 world) const {
+    for (int L = 1; L < count() - 1; ++L)
+        if (weightAt(L, world) > 0.0f) return L;
+    return count() - 1;
+}
+
+void EWaveLevels::pushSource(glm::vec2 centre, float radius, float accel, int from) {
+    for (int L = std::max(from, 1); L < count(); ++L) m_levels[size_t(L - 1)].queued.push_back({centre, radius, accel * radius * radius});
+}
+
+bool EWaveLevels::stampSphere(const BoundingSphere& sphere, SphereContact& contact, SphereMotion motion, glm::vec2 centre) {
+    const int L = finestAt(centre);
+    const Level& lv = level(L);
+    const glm::vec2 g = lv.grid.toGrid(centre);
+    motion.gridX = g.x;
+    motion.gridZ = g.y;
+    EWaveSource s;
+    if (!lv.solver->planSource(sphere, contact, motion, s)) return false;
+    pushSource(centre, std::max(s.radiusCells, 1.0f) * lv.grid.cell, s.accel, L);
+    return true;
+}
+
+void EWaveLevels::step(float dt, std::span<const ObstacleShape> obstacles) {
+    ++m_frame;
+    m_dt = dt;
+    for (Level& lv : m_levels)
+        if (m_frame > lv.b) stepLevel(lv, dt, obstacles);
+}
+
+// One step of the level over stride·dt from frame b. Its queued sources, each a frame's push,
+// are applied over the whole step at 1/stride of their accel: the same impulse, at most one
+// step early or late (a 5 m/s ship moves 1.3 m in level 2's 16 frames, under its 3–4 m cell).
+void EWaveLevels::stepLevel(Level& lv, float dt, std::span<const ObstacleShape> obstacles) {
+    const float cell = lv.grid.cell;
+    for (const WorldSource& ws : lv.queued) {
+        const glm::vec2 g = lv.grid.toGrid(ws.centre);
+        const float r = std::max(ws.radius / cell, 1.0f);  // cells; ∫w dA = π(r·cell)²/3 keeps strength
+        lv.solver->addSource({g.x, g.y, r, ws.strength / (r * cell * r * cell) / float(lv.stride)});
+    }
+    lv.queued.clear();
+    if (!obstacles.empty() || !lv.obstruction.empty()) {
+        rasteriseObstacles(obstacles, lv.grid.n, lv.grid.n, cell, [&lv](glm::vec2 w) { return lv.grid.toGrid(w); },
+                           lv.obstruction);
+        lv.solver->setObstruction(lv.obstruction);
+    }
+    std::swap(lv.h0, lv.h1);
+    std::swap(lv.v0, lv.v1);
+    lv.solver->step(dt * float(lv.stride));
+    const std::span<const float> h = lv.solver->height();
+    std::copy(h.begin(), h.end(), lv.h1.begin());
+    const std::span<const double> v = lv.solver->field().velocityState();
+    std::transform(v.begin(), v.end(), lv.v1.begin(), [](double x) { return float(x); });
+    lv.a = lv.b;
+    lv.b += lv.stride;
+}
+
+namespace {
+
+// The cubic Hermite basis at p ∈ [0, 1] (h00, h10, h01, h11) and its derivative in p.
+struct Hermite {
+    float h00, h10, h01, h11;
+    static Hermite at(float p) {
+        const float p2 = p * p, p3 = p2 * p;
+        return {2 * p3 - 3 * p2 + 1, p3 - 2 * p2 + p, -2 * p3 + 3 * p2, p3 - p2};
+    }
+    static Hermite slope(float p) {
+        const float p2 = p * p;
+        return {6 * p2 - 6 * p, 3 * p2 - 4 * p + 1, -6 * p2 + 6 * p, 3 * p2 - 2 * p};
+    }
+};
+
+} // namespace
+
+// h(t) between the states at frames a and b (p = (frame − a)/stride, S = stride·dt seconds):
+// h00·h_a + h10·S·v_a + h01·h_b + h11·S·v_b, exact at both ends in h and v; for a wave of
+// ω·S = 0.8 rad (level 2's shortest) its error is under (ωS)⁴/384 ≈ 0.1% of the amplitude.
+// Made only when asked (the renderer, once a frame): the simulation reads pointwise.
+std::span<const float> EWaveLevels::height(int L) const {
+    const Level& lv = level(L);
+    if (lv.shownFrame != m_frame) {
+        const Hermite w = Hermite::at(phase(lv));
+        const float s = m_dt * float(lv.stride);
+        const float a0 = w.h00, a1 = w.h01, b0 = w.h10 * s, b1 = w.h11 * s;
+        for (size_t i = 0; i < lv.shown.size(); ++i) lv.shown[i] = a0 * lv.h0[i] + a1 * lv.h1[i] + b0 * lv.v0[i] + b1 * lv.v1[i];
+        lv.shownFrame = m_frame;
+    }
+    return lv.shown;
+}
+
+float EWaveLevels::heightAt(int L, glm::vec2 world) const {
+    const Level& lv = level(L);
+    const glm::vec2 g = lv.grid.toGrid(world);
+    const int n = lv.grid.n;
+    const Hermite w = Hermite::at(phase(lv));
+    const float s = m_dt * float(lv.stride);
+    return w.h00 * bilinear<float>(lv.h0, n, n, g) + w.h01 * bilinear<float>(lv.h1, n, n, g) +
+           s * (w.h10 * bilinear<float>(lv.v0, n, n, g) + w.h11 * bilinear<float>(lv.v1, n, n, g));
+}
+
+float EWaveLevels::velocityAt(int L, glm::vec2 world) const {
+    const Level& lv = level(L);
+    const float s = m_dt * float(lv.stride);
+    if (s <= 0.0f) return 0.0f;
+    const glm::vec2 g = lv.grid.toGrid(world);
+    const int n = lv.grid.n;
+    const Hermite w = Hermite::slope(phase(lv));
+    return (w.h00 * bilinear<float>(lv.h0, n, n, g) + w.h01 * bilinear<float>(lv.h1, n, n, g)) / s +
+           w.h10 * bilinear<float>(lv.v0, n, n, g) + w.h11 * bilinear<float>(lv.v1, n, n, g);
+}
+
+void EWaveLevels::hashState(StateHasher& h) const {
+    h.u64(uint64_t(m_frame));
+    for (const Level& lv : m_levels) {
+        lv.solver->hashState(h);
+        h.f32s(lv.h0.data(), lv.h0.size());  // the state before (the Hermite's other end)
+        h.f32s(lv.v0.data(), lv.v0.size());
+        for (const WorldSource& s : lv.queued) {
+            h.f32s(&s.centre.x, 2);
+            h.f32(s.radius);
+            h.f32(s.strength);
+        }
+    }
+}
+
+} // namespace ob::interaction

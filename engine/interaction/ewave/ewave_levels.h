@@ -1,0 +1,124 @@
+// Nested ewave levels (docs/ewave.md#levels): coarser grids around the patch's own, each an
+// exact per-mode EWaveSolver of the same N with cells 4^L times the patch's, stepping every
+// 4^L-th frame over 4^L frames' time and read through a cubic Hermite in time between its last
+// two states; and the composite, which takes the finest level that covers a point and
+// cross-fades to the next coarser one over a band inside its border (C¹: no seam).
+#pragma once
+#include "core/hash.h"
+#include "core/scrolling_grid.h"
+#include "interaction/ewave/ewave_solver.h"
+#include "interaction/obstruction.h"
+
+#include <cstdint>
+#include <glm/vec2.hpp>
+#include <memory>
+#include <span>
+#include <vector>
+
+namespace ob::interaction {
+
+/// The composite's weight of a level at its grid position g (cells, centres at integers) on an
+/// n-cell grid with an absorbing band of `sponge` cells: per axis, with d the distance to the
+/// nearer outer cell centre, 0 for d ≤ sponge (the band damps what the level holds there),
+/// 1 for d ≥ 2·sponge, and the smoothstep 3s² − 2s³ of s = (d − sponge)/sponge between; the
+/// product of both axes. C¹, |∇w| ≤ √2·1.5/sponge per cell (docs/ewave.md#levels).
+float levelWeight(glm::vec2 g, int n, int sponge);
+
+/// Levels 1..K−1 of a ripple patch whose level 0 is the patch's own solver (ripples.levels = K).
+/// Level L: n × n cells of cellSize·4^L metres, centred on the patch's centre within one of its
+/// cells (it scrolls in whole cells of its own); it steps when the patch's frame count passes
+/// its state's frame b, from b to b + 4^L over 4^L·dt (level L first at frame L + 1, so the
+/// levels' steps fall on different frames), and between steps reads as the Hermite cubic
+/// through (h, v) of its last two states.
+class EWaveLevels {
+public:
+    /// Each level's cells are this many times its finer neighbour's, its step as many frames.
+    static constexpr int RATIO = 4;
+
+    /// Levels 1..def.levels − 1 of a checked Def (ewave), centred on def.center.
+    explicit EWaveLevels(const RippleDef& def);
+    ~EWaveLevels();
+
+    /// The patch's levels, 1 + the coarse ones here.
+    int count() const { return int(m_levels.size()) + 1; }
+    /// Level L's placement (1 ≤ L < count()).
+    const ScrollingGrid& grid(int L) const { return level(L).grid; }
+    /// Level L's solver (its state at frame b, not interpolated).
+    const EWaveSolver& solver(int L) const { return *level(L).solver; }
+    /// Level L's height at the patch's last step, interpolated in time, rows·cols row-major, m
+    /// (the renderer's upload; made on the first call after a step, so not to be called from
+    /// several threads at once: the queries below read pointwise and may).
+    std::span<const float> height(int L) const;
+    /// The absorbing band of every level, cells (as the fields clamp it): the composite's fade band.
+    int sponge() const { return m_sponge; }
+    /// Frames between level L's steps (4^L).
+    int stride(int L) const { return level(L).stride; }
+
+    /// Moves every level so its centre is its cell nearest `world` (m), scrolling its data.
+    void centerOn(glm::vec2 world);
+    /// The finest level ≥ 1 whose composite weight at `world` (m) is > 0; count() − 1 at most.
+    int finestAt(glm::vec2 world) const;
+    /// Queues a source made on a finer level (centre world m, applied radius m, accel m/s² over
+    /// one frame) on every level ≥ `from`: on level L with radius max(radius, cell_L) and accel
+    /// scaled so that ∫accel·w dA, the source's long-wave content, is the same.
+    void pushSource(glm::vec2 centre, float radius, float accel, int from);
+    /// Table 2 for a sphere that level 0 does not cover: stamped on level finestAt(centre),
+    /// the source then pushed to the coarser ones. `motion`'s grid position is set here.
+    bool stampSphere(const BoundingSphere& sphere, SphereContact& contact, SphereMotion motion, glm::vec2 centre);
+    /// One patch frame of dt s: the levels whose turn it is step (sources, obstacles on their
+    /// grids, the exact step over stride·dt); the others only move on in their Hermite.
+    void step(float dt, std::span<const ObstacleShape> obstacles);
+
+    /// Level L's height at world (x, z): the Hermite of its two states' bilinear heights and
+    /// velocities (equal to bilinear on height(L)); 0 off the grid, m.
+    float heightAt(int L, glm::vec2 world) const;
+    /// Level L's vertical velocity at world (x, z): the Hermite's time derivative, m/s.
+    float velocityAt(int L, glm::vec2 world) const;
+    /// Level L's composite weight at world (x, z) (1 everywhere on the coarsest level).
+    float weightAt(int L, glm::vec2 world) const;
+    /// The composite value at `world` given level 0's value and weight there: each level takes
+    /// its weight of what the finer ones left, value(L, world) for L ≥ 1.
+    template <class Value> float composite(glm::vec2 world, float value0, float weight0, Value&& value) const {
+        float sum = weight0 * value0, rest = 1.0f - weight0;
+        for (int L = 1; L < count() && rest > 0.0f; ++L) {
+            const float w = weightAt(L, world);
+            if (w > 0.0f) sum += rest * w * value(L, world);
+            rest *= 1.0f - w;
+        }
+        return sum;
+    }
+    /// Every level takes the Def's live keys (decay_time, viscosity) from its next step on.
+    void retune(const RippleDef& def) {
+        for (Level& lv : m_levels) lv.solver->retune(def);
+    }
+    /// Every level's state, its frames and its queued sources (the state hash).
+    void hashState(StateHasher& h) const;
+
+private:
+    struct WorldSource {
+        glm::vec2 centre;  // m
+        float radius;      // applied radius, m
+        float strength;    // accel·radius², m³/s² (what each level keeps)
+    };
+    struct Level {
+        ScrollingGrid grid;
+        std::unique_ptr<EWaveSolver> solver;
+        int stride = 1;                         // frames per step
+        int64_t a = 0, b = 0;                   // frames of the two states kept (b = the solver's)
+        std::vector<float> h0, v0, h1, v1;      // (h, v) at frames a and b, m and m/s
+        mutable std::vector<float> shown;       // Hermite height at frame shownFrame, m (height())
+        mutable int64_t shownFrame = -1;
+        std::vector<WorldSource> queued;        // sources since its last step
+        std::vector<ObstructionCell> obstruction;  // its cells at its last step
+    };
+    const Level& level(int L) const { return m_levels[size_t(L - 1)]; }
+    void stepLevel(Level& lv, float dt, std::span<const ObstacleShape> obstacles);
+    float phase(const Level& lv) const { return float(m_frame - lv.a) / float(lv.stride); }
+
+    std::vector<Level> m_levels;  // levels 1..K−1
+    int m_sponge;                 // absorbing band, cells (every level)
+    int64_t m_frame = 0;          // patch frames stepped
+    float m_dt = 1.0f / 60.0f;    // the last frame's dt, s (the Hermite's step is stride·m_dt)
+};
+
+} // namespace ob::interaction
