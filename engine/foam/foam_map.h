@@ -85,6 +85,12 @@ public:
     /// addSources(in, dt), then step(dt).
     void update(const FoamInputs& in, float dt);
 
+    /// The wind's part of the foam's velocity for wind U10 (m/s) blowing toward `direction` over
+    /// a sea of surface Stokes drift `stokes` (m/s): drift wind_drift·U10·ŵ + stokes, streak cells
+    /// of speed streak_speed·U10 and spacing streak_spacing_m (foam_flow.h, WindFlow). update()
+    /// sets it from its inputs; step() moves with the last one set.
+    WindFlow windFlow(float windSpeed, glm::vec2 direction, glm::vec2 stokes) const;
+
     /// Source (a)'s law at the last update or addSources (rate 0: none yet, or no whitecaps).
     const WhitecapLaw& whitecaps() const { return m_whitecaps; }
 
