@@ -12,7 +12,8 @@
 //   sources    foam_sources.h: (a) whitecaps, (b) steep ripples, (c) drops, (d)–(f) a hull's wake,
 //              turbulent wake and bow wave
 //   flow       foam_flow.h: the velocity, still, uniform, per sample or from a grid of nodes fixed
-//              in the world, which update() refreshes from the water
+//              in the world, which update() refreshes from the water; plus the wind's drift and streak
+//              cells (WindFlow), which update() sets from the wind
 //   transport  foam_transport.h: the semi-Lagrangian step and exact decay
 // update() is the whole step in one sweep over the map: sources (a), (b), then the step, rows of
 // both formed as it goes.
