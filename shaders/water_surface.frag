@@ -140,7 +140,8 @@ void main() {
     // of capillary ripples on a glassy sea, so the sun never shrinks to a point).
     float unresolved = max(water.glitterParams.x - resolvedSlopes, MIN_GLITTER_SLOPE_VARIANCE);
     color += SUN_COLOR * sunTint(sun) * frame.shading.z * glitterRadiance(n, v, sun, unresolved, exact);
-    color += crestSubsurface(v_world.y, water.crest.x, water.crest.y, v, n, sun);  // the mean level is y = 0
+    // the mean level is y = 0; a pixel spans 2 / (projection[1][1] · viewport height) radians
+    color += crestSubsurface(v_world.y, water.crest.x, water.crest.y, v, n, sun, dist, 2.0 / (water.crest.z * frame.viewport.y));
 
     if (WATER_FOAM) color = shadeFoam(color, v_world.xz, n, sun, jacobian, length(ripple), detail);
 #ifdef WATER_FULL_QUALITY

@@ -80,7 +80,9 @@ void FoamFlow::setNodes(std::span<const glm::vec2> nodes) {
 }
 
 void FoamFlow::follow(const ScrollingGrid& grid) {
+    const bool scrolled = grid.originCell != m_grid.originCell;
     m_grid = grid;
+    if (scrolled && m_wind.streaks()) fillWindColumns();
     // Not scrollCells: the nodes the map scrolled onto take the nearest kept one's value (a
     // velocity, not 0), until they are set again.
     const glm::ivec2 nodeShift = nodeOrigin() - m_nodesOrigin;
@@ -201,6 +203,78 @@ void FoamFlow::expandNodeRow(int l, int component, float* out, float* scratch) c
     const int m = nodesPerSide(), s = stride();
     for (int k = 0; k < m; ++k) scratch[k] = m_nodes[size_t(l) * size_t(m) + size_t(k)][component];
     nodeSegmentsKernel(out, scratch, m_grid.n, s, nodeOffset().x, 1.0f / float(s));
+}
+
+// θ_m = k_m·(p·ĉ) = k_m·ĉ_x·x + k_m·ĉ_z·z, split in the column's part (tabulated) and the row's:
+// the phases in double, reduced mod 2π, from world sample indices (a map far from the origin
+// loses nothing).
+namespace {
+constexpr double TWO_PI_D = 2.0 * 3.141592653589793;
+// k_m of the cell rows, rad/m.
+double streakWaveNumber(const WindFlow& w, int m) { return TWO_PI_D / (double(w.streakSpacing) * (m == 0 ? 1.0 : STREAK_SPACING_RATIO)); }
+} // namespace
+
+void FoamFlow::setWind(const WindFlow& wind) {
+    if (wind == m_wind) return;
+    m_wind = wind;
+    fillWindColumns();
+}
+
+void FoamFlow::fillWindColumns() {
+    if (!m_wind.streaks()) return m_windCos.clear(), m_windSin.clear();
+    const size_t n = size_t(m_grid.n);
+    m_windCos.resize(STREAK_ROWS * n);
+    m_windSin.resize(STREAK_ROWS * n);
+    for (int m = 0; m < STREAK_ROWS; ++m) {
+        const double kx = streakWaveNumber(m_wind, m) * -double(m_wind.direction.y) * double(m_grid.cell);
+        for (size_t i = 0; i < n; ++i) {
+            const double a = std::fmod(kx * double(int64_t(m_grid.originCell.x) + int64_t(i)), TWO_PI_D);
+            m_windCos[size_t(m) * n + i] = float(std::cos(a));
+            m_windSin[size_t(m) * n + i] = float(std::sin(a));
+        }
+    }
+}
+
+float FoamFlow::windMax() const {
+    const glm::vec2 w = m_wind.direction, c(-w.y, w.x);
+    const float v = m_wind.streaks() ? float(STREAK_ROWS) * m_wind.streakSpeed : 0.0f;
+    return std::max(std::abs(m_wind.drift.x) + v * (std::abs(w.x) + std::abs(c.x)),
+                    std::abs(m_wind.drift.y) + v * (std::abs(w.y) + std::abs(c.y)));
+}
+
+// u_w = drift + Σ_m V·(cos θ_m·ŵ − sin θ_m·ĉ), θ_m = a_i + b_j: with cos θ = ca·cb − sa·sb and
+// sin θ = sa·cb + ca·sb, each row m adds A·ca_i + B·sa_i, A = V·(ŵ·cb − ĉ·sb), B = −V·(ŵ·sb + ĉ·cb).
+void FoamFlow::windRow(int j, int component, float* out) const {
+    const int n = m_grid.n;
+    const float d = m_wind.drift[component];
+    std::fill(out, out + n, d);
+    if (!m_wind.streaks()) return;
+    const glm::vec2 w = m_wind.direction, c(-w.y, w.x);
+    const float v = m_wind.streakSpeed;
+    for (int m = 0; m < STREAK_ROWS; ++m) {
+        const double b = std::fmod(streakWaveNumber(m_wind, m) * double(c.y) * double(m_grid.cell) * double(m_grid.originCell.y + j), TWO_PI_D);
+        const float cb = float(std::cos(b)), sb = float(std::sin(b));
+        const float A = v * (w[component] * cb - c[component] * sb), B = -v * (w[component] * sb + c[component] * cb);
+        const float* ca = m_windCos.data() + size_t(m) * size_t(n);
+        const float* sa = m_windSin.data() + size_t(m) * size_t(n);
+        for (int i = 0; i < n; ++i) out[i] += A * ca[i] + B * sa[i];
+    }
+}
+
+// ∇·u_w = Σ_m ∂/∂η (−V·sin k_m·η) = −Σ_m k_m·V·cos θ_m; cos θ = ca·cb − sa·sb.
+void FoamFlow::windGatherRow(int j, float dt, float* out) const {
+    const int n = m_grid.n;
+    std::fill(out, out + n, 1.0f);
+    if (!m_wind.streaks()) return;
+    for (int m = 0; m < STREAK_ROWS; ++m) {
+        const double k = streakWaveNumber(m_wind, m);
+        const double b = std::fmod(k * double(m_wind.direction.x) * double(m_grid.cell) * double(m_grid.originCell.y + j), TWO_PI_D);
+        const float g = float(k) * m_wind.streakSpeed * dt;
+        const float cb = g * float(std::cos(b)), sb = g * float(std::sin(b));
+        const float* ca = m_windCos.data() + size_t(m) * size_t(n);
+        const float* sa = m_windSin.data() + size_t(m) * size_t(n);
+        for (int i = 0; i < n; ++i) out[i] += ca[i] * cb - sa[i] * sb;
+    }
 }
 
 float FoamFlow::nodeRowWeight(int j, int& l) const {

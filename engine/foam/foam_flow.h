@@ -13,6 +13,7 @@
 #include <span>
 #include <vector>
 #include <glm/vec2.hpp>
+#include <glm/geometric.hpp>
 
 namespace ob::water {
 class CompositeWater;
@@ -24,6 +25,29 @@ namespace ob::foam {
 /// node's velocity is then a particle's up to 1 cm away, off by |∂u/∂x| times it at most
 /// (a Gerstner wave: k·a·ω/(1 − k·a), 1 mm/s for a = 1 m, λ = 64 m).
 constexpr float FLOW_REST_TOLERANCE = 0.01f;
+
+/// The streak cells come in STREAK_ROWS rows of spacings L and L·STREAK_SPACING_RATIO (φ², as the
+/// ocean's cascades: never in step), each of speed V, so their lines are not evenly spaced.
+constexpr int STREAK_ROWS = 2;
+constexpr double STREAK_SPACING_RATIO = 2.618033988749895;
+
+/// The wind's part of the foam's velocity (docs/splash_foam.md §2.2), added to the water's in
+/// every mode:
+///   u_w(p) = drift + Σ_m V·(cos θ_m·ŵ − sin θ_m·ĉ),   θ_m = 2π·(p·ĉ)/L_m,   ĉ = (−ŵ_z, ŵ_x) across the wind,
+/// L_0 = L, L_1 = φ²·L. drift is the surface's mean drift (wind drift and Stokes drift, m/s). Each
+/// other term is a row of streak (Langmuir) cells whose axes lie along the wind L_m apart: across
+/// the wind the surface converges toward the lines θ_m = 2π·j at up to V (dη/dt = −V·sin(2π·η/L_m),
+/// η = p·ĉ), at the rate γ_m = 2π·V/L_m there, and diverges between them; along the wind it runs
+/// V faster on the lines and V slower between. Their mean over the cells is 0: foam drifts at
+/// `drift` on average.
+struct WindFlow {
+    glm::vec2 drift{0.0f};            ///< m/s, world x and z
+    glm::vec2 direction{1.0f, 0.0f};  ///< ŵ, unit, the way the wind blows
+    float streakSpeed = 0.0f;         ///< V, m/s; 0: no streak cells
+    float streakSpacing = 0.0f;       ///< L, m; ≤ 0: no streak cells
+    bool streaks() const { return streakSpeed > 0.0f && streakSpacing > 0.0f; }
+    bool operator==(const WindFlow&) const = default;
+};
 
 /// The horizontal surface velocity (m/s, world x and z) over a foam map's samples.
 class FoamFlow {
@@ -77,6 +101,23 @@ public:
     /// A new flow_resolution (from the next step on); nodes that no longer fit are dropped (still).
     void setResolution(int flowResolution);
 
+    /// The wind's part (WindFlow), added to the velocity of every mode; none at first.
+    void setWind(const WindFlow& wind);
+    const WindFlow& wind() const { return m_wind; }
+    /// Whether the wind adds anything; whether what it adds varies over the map (streak cells).
+    bool windy() const { return m_wind.streaks() || m_wind.drift != glm::vec2(0.0f); }
+    /// The largest |x|, |z| component the wind adds anywhere, m/s.
+    float windMax() const;
+    /// Map row j's wind component (0: x, 1: z) at each of its n samples (out).
+    void windRow(int j, int component, float* out) const;
+    /// Map row j's gathering over a step dt by the streak cells, at each of its n samples (out):
+    /// 1 − dt·∇·u_w = 1 + dt·Σ_m γ_m·cos θ_m. Floating foam is not lost where the surface converges (it
+    /// sinks, and the foam piles up) nor made where it diverges: the transport multiplies the
+    /// advected coverage by it (the continuity equation ∂f/∂t + ∇·(u_w·f) = 0 for the wind's
+    /// part; the waves' orbital part stays advective, its convergence undone within a period).
+    /// All 1 without streak cells.
+    void windGatherRow(int j, float dt, float* out) const;
+
     // --- the per-sample velocity from the nodes (Mode::Nodes), row by row
     /// Map row j's component (0: x, 1: z): the node rows around it lerped along z (into scratch,
     /// nodesPerSide() floats), then along x between each pair of nodes (n floats into out).
@@ -111,6 +152,9 @@ private:
     int m_historyStride = 0;           // its stride(); 0: none yet
     double m_historyTime = 0.0;        // the water's time at the last refresh(), s
     uint64_t m_refreshes = 0;          // refresh() calls: pick the node rows to evaluate
+    WindFlow m_wind;                   // setWind
+    std::vector<float> m_windCos, m_windSin;  // cos, sin of the x part of θ_m at each map column, [m][i] (refilled on a scroll)
+    void fillWindColumns();
 };
 
 } // namespace ob::foam

@@ -61,9 +61,19 @@ void FoamMap::addSources(const FoamInputs& in, float dt) {
 
 void FoamMap::step(float dt) { m_transport.step(m_f, m_grid, m_flow, m_def.decay_s, dt); }
 
+WindFlow FoamMap::windFlow(float windSpeed, glm::vec2 direction, glm::vec2 stokes) const {
+    WindFlow w;
+    w.direction = glm::length(direction) > 0.0f ? glm::normalize(direction) : glm::vec2(1.0f, 0.0f);
+    w.drift = m_def.wind_drift * windSpeed * w.direction + stokes;
+    w.streakSpeed = m_def.streak_speed * windSpeed;
+    w.streakSpacing = m_def.streak_spacing_m;
+    return w;
+}
+
 void FoamMap::update(const FoamInputs& in, float dt) {
     // --- the velocity at the water's time
     if (in.water) m_flow.refresh(*in.water, m_def.flow_refresh_steps);
+    m_flow.setWind(windFlow(in.windSpeed, in.windDirection, in.stokesDrift));
     // --- sources and step: one sweep when the flow is from the nodes and within a sample a step
     const RowSources sources(m_def, m_grid, in, dt);
     m_whitecaps = sources.whitecaps();

@@ -12,7 +12,8 @@
 //   sources    foam_sources.h: (a) whitecaps, (b) steep ripples, (c) drops, (d)–(f) a hull's wake,
 //              turbulent wake and bow wave
 //   flow       foam_flow.h: the velocity, still, uniform, per sample or from a grid of nodes fixed
-//              in the world, which update() refreshes from the water
+//              in the world, which update() refreshes from the water; plus the wind's drift and streak
+//              cells (WindFlow), which update() sets from the wind
 //   transport  foam_transport.h: the semi-Lagrangian step and exact decay
 // update() is the whole step in one sweep over the map: sources (a), (b), then the step, rows of
 // both formed as it goes.
@@ -84,6 +85,12 @@ public:
     /// then sources (a), (b) and the step in one sweep where the flow allows it. The same bits as
     /// addSources(in, dt), then step(dt).
     void update(const FoamInputs& in, float dt);
+
+    /// The wind's part of the foam's velocity for wind U10 (m/s) blowing toward `direction` over
+    /// a sea of surface Stokes drift `stokes` (m/s): drift wind_drift·U10·ŵ + stokes, streak cells
+    /// of speed streak_speed·U10 and spacing streak_spacing_m (foam_flow.h, WindFlow). update()
+    /// sets it from its inputs; step() moves with the last one set.
+    WindFlow windFlow(float windSpeed, glm::vec2 direction, glm::vec2 stokes) const;
 
     /// Source (a)'s law at the last update or addSources (rate 0: none yet, or no whitecaps).
     const WhitecapLaw& whitecaps() const { return m_whitecaps; }

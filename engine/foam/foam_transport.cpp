@@ -73,14 +73,16 @@ OB_VECTOR_KERNEL int xPassKernel(float* __restrict dst, const float* __restrict 
     return over;
 }
 
-// Pass 2, one row along z from the rows above (j − 1), at and below (j + 1) it, times the decay a.
+// Pass 2, one row along z from the rows above (j − 1), at and below (j + 1) it, times the decay a
+// and the streak cells' gathering (foam_flow.h), at most 1.
 OB_VECTOR_KERNEL int zPassKernel(float* __restrict dst, const float* __restrict up, const float* __restrict mid,
-                                 const float* __restrict down, const float* __restrict uz, int n, float back, float a) {
+                                 const float* __restrict down, const float* __restrict uz, const float* __restrict gather,
+                                 int n, float back, float a) {
     int over = 0;
     for (int i = 0; i < n; ++i) {
         const float c = uz[i] * back;
         over |= int(c > 1.0f) | int(c < -1.0f);
-        dst[i] = floored(a * passCell(mid[i], up[i], down[i], c));
+        dst[i] = floored(std::min(1.0f, a * (gather[i] * passCell(mid[i], up[i], down[i], c))));
     }
     return over;
 }
@@ -88,19 +90,21 @@ OB_VECTOR_KERNEL int zPassKernel(float* __restrict dst, const float* __restrict 
 // The sweep's passes (every |c| ≤ 1), the velocity the lerp of two node rows expanded along x
 // (e0, e1) at weight t: pass 1 over the samples [lo, hi) of a row...
 OB_VECTOR_KERNEL void xSweepKernel(float* __restrict dst, const float* __restrict src, const float* __restrict e0,
-                                   const float* __restrict e1, float t, int lo, int hi, float back) {
+                                   const float* __restrict e1, const float* __restrict wind, float t, int lo, int hi,
+                                   float back) {
     for (int i = lo; i < hi; ++i) {
-        const float u = e0[i] * (1 - t) + e1[i] * t;
+        const float u = e0[i] * (1 - t) + e1[i] * t + wind[i];
         dst[i] = passCell(src[i], src[i - 1], src[i + 1], u * back);
     }
 }
-// ...and pass 2 over a row, times the decay a.
+// ...and pass 2 over a row, times the decay a (the velocity plus the wind's row).
 OB_VECTOR_KERNEL void zSweepKernel(float* __restrict dst, const float* __restrict up, const float* __restrict mid,
                                    const float* __restrict down, const float* __restrict e0, const float* __restrict e1,
-                                   float t, int n, float back, float a) {
+                                   const float* __restrict wind, const float* __restrict gather, float t, int n, float back,
+                                   float a) {
     for (int i = 0; i < n; ++i) {
-        const float u = e0[i] * (1 - t) + e1[i] * t;
-        dst[i] = floored(a * passCell(mid[i], up[i], down[i], u * back));
+        const float u = e0[i] * (1 - t) + e1[i] * t + wind[i];
+        dst[i] = floored(std::min(1.0f, a * (gather[i] * passCell(mid[i], up[i], down[i], u * back))));
     }
 }
 
@@ -127,13 +131,20 @@ void FoamTransport::step(std::vector<float>& f, const ScrollingGrid& grid, const
     const float a = decayFactor(decayS, dt);
     const int n = grid.n;
     m_next.resize(f.size());
-    switch (flow.mode()) {
+    FoamFlow::Mode mode = flow.mode();
+    glm::vec2 uniform = mode == FoamFlow::Mode::Uniform ? flow.uniform() : glm::vec2(0.0f);
+    if (mode == FoamFlow::Mode::Still || mode == FoamFlow::Mode::Uniform) {  // with the wind: uniform, or per sample
+        if (flow.wind().streaks()) mode = FoamFlow::Mode::Field;
+        else if (flow.windy()) uniform += flow.wind().drift, mode = FoamFlow::Mode::Uniform;
+        if (mode == FoamFlow::Mode::Uniform && uniform == glm::vec2(0.0f)) mode = FoamFlow::Mode::Still;
+    }
+    switch (mode) {
     case FoamFlow::Mode::Still:  // decay only
         parallelFor(0, n, ROW_CHUNK, [&](int lo, int hi) {
             scaleKernel(m_next.data() + size_t(lo) * size_t(n), f.data() + size_t(lo) * size_t(n), size_t(hi - lo) * size_t(n), a);
         });
         break;
-    case FoamFlow::Mode::Uniform: uniformStep(f, grid, flow.uniform(), a, dt); break;
+    case FoamFlow::Mode::Uniform: uniformStep(f, grid, uniform, a, dt); break;
     case FoamFlow::Mode::Nodes:
         if (sweepFits(grid, flow, dt)) return sweep(f, grid, flow, nullptr, decayS, dt);
         [[fallthrough]];
@@ -183,13 +194,23 @@ void FoamTransport::splitStep(const std::vector<float>& f, const ScrollingGrid& 
     const float* src = f.data();
     float* dst = m_next.data();
     const float back = dt / grid.cell;  // (m/s) → samples over dt
-    const bool nodes = flow.mode() == FoamFlow::Mode::Nodes;
-    // Row j's velocity component: the per-sample arrays' row, or formed from the nodes in rowBuf.
+    const FoamFlow::Mode mode = flow.mode();
+    const bool windy = flow.windy();
+    // Row j's velocity component: the per-sample arrays' row, or formed from the nodes or the
+    // uniform velocity in rowBuf; plus the wind's.
     const auto velocityRow = [&](int j, int component, std::vector<float>& rowBuf, std::vector<float>& scratch) -> const float* {
-        if (!nodes) return (component == 0 ? flow.fieldX() : flow.fieldZ()).data() + size_t(j) * size_t(n);
+        const float* field = mode == FoamFlow::Mode::Field ? (component == 0 ? flow.fieldX() : flow.fieldZ()).data() + size_t(j) * size_t(n)
+                                                            : nullptr;
+        if (field && !windy) return field;
         rowBuf.resize(size_t(n));
-        scratch.resize(size_t(flow.nodesPerSide()));
-        flow.nodeRow(j, component, rowBuf.data(), scratch.data());
+        scratch.resize(size_t(std::max(n, flow.nodesPerSide())));
+        if (field) std::copy(field, field + n, rowBuf.begin());
+        else if (mode == FoamFlow::Mode::Nodes) flow.nodeRow(j, component, rowBuf.data(), scratch.data());
+        else std::fill(rowBuf.begin(), rowBuf.end(), mode == FoamFlow::Mode::Uniform ? flow.uniform()[component] : 0.0f);
+        if (windy) {
+            flow.windRow(j, component, scratch.data());
+            for (int i = 0; i < n; ++i) rowBuf[size_t(i)] += scratch[size_t(i)];
+        }
         return rowBuf.data();
     };
     m_split.resize(f.size());
@@ -209,20 +230,22 @@ void FoamTransport::splitStep(const std::vector<float>& f, const ScrollingGrid& 
     });
     m_zeros.resize(size_t(n), 0.0f);
     parallelFor(0, n, ROW_CHUNK, [&](int rowLo, int rowHi) {
-        std::vector<float> rowBuf, scratch;
+        std::vector<float> rowBuf, scratch, gather;
         for (int j = rowLo; j < rowHi; ++j) {
             const size_t row = size_t(j) * size_t(n);
             const float* up = j > 0 ? split + row - size_t(n) : m_zeros.data();
             const float* down = j + 1 < n ? split + row + size_t(n) : m_zeros.data();
             const float* u = velocityRow(j, 1, rowBuf, scratch);
+            gather.resize(size_t(n));
+            flow.windGatherRow(j, dt, gather.data());
             float* d = dst + row;
-            if (zPassKernel(d, up, split + row, down, u, n, back, a) == 0) continue;
+            if (zPassKernel(d, up, split + row, down, u, gather.data(), n, back, a) == 0) continue;
             for (int i = 0; i < n; ++i) {
                 const float g = std::clamp(float(j) - u[i] * back, -1.0f, float(n));
                 const float g0 = std::floor(g);
                 const int z0 = int(g0);
                 const float t = g - g0;
-                d[i] = floored(a * ((1 - t) * cellOr0(split, n, i, z0) + t * cellOr0(split, n, i, z0 + 1)));
+                d[i] = floored(std::min(1.0f, a * (gather[size_t(i)] * ((1 - t) * cellOr0(split, n, i, z0) + t * cellOr0(split, n, i, z0 + 1)))));
             }
         }
     });
@@ -232,7 +255,7 @@ void FoamTransport::splitStep(const std::vector<float>& f, const ScrollingGrid& 
 // sample and a neighbour); a sample's velocity is a convex combination of nodes', so the nodes'
 // bound holds for it (the margin covers the rounding of the combination).
 bool FoamTransport::sweepFits(const ScrollingGrid& grid, const FoamFlow& flow, float dt) const {
-    return flow.mode() == FoamFlow::Mode::Nodes && flow.nodesMax() * (dt / grid.cell) <= 0.999f;
+    return flow.mode() == FoamFlow::Mode::Nodes && (flow.nodesMax() + flow.windMax()) * (dt / grid.cell) <= 0.999f;
 }
 
 // The node rows along x, [l][component][sample].
@@ -277,7 +300,8 @@ void FoamTransport::sweep(std::vector<float>& f, const ScrollingGrid& grid, cons
         std::memcpy(&m_halo[size_t(c) * 2 * row], &f[size_t(chunkStart(c) - 1) * row], 2 * row * sizeof(float));
 
     parallelFor(0, chunks, 1, [&](int cLo, int cHi) {
-        std::vector<float> ring(3 * row), sourced(row);
+        std::vector<float> ring(3 * row), sourced(row), windX(row, 0.0f), windZ(row, 0.0f), gather(row, 1.0f);
+        const bool windy = flow.windy();
         std::optional<RowSources::Rows> rows;
         if (s) rows.emplace(*s);
         for (int c = cLo; c < cHi; ++c) {
@@ -295,9 +319,10 @@ void FoamTransport::sweep(std::vector<float>& f, const ScrollingGrid& grid, cons
                 if (rows && rows->add(r, in, sourced.data())) in = sourced.data();
                 const float *e0, *e1;
                 const float t = nodeRows(r, 0, e0, e1);
-                xSweepKernel(out, in, e0, e1, t, 1, n - 1, back);
+                if (windy) flow.windRow(r, 0, windX.data());
+                xSweepKernel(out, in, e0, e1, windX.data(), t, 1, n - 1, back);
                 for (int i : {0, n - 1}) {  // a neighbour is outside: 0
-                    const float u = e0[i] * (1 - t) + e1[i] * t;
+                    const float u = e0[i] * (1 - t) + e1[i] * t + windX[size_t(i)];
                     out[i] = passCell(in[i], i > 0 ? in[i - 1] : 0.0f, i + 1 < n ? in[i + 1] : 0.0f, u * back);
                 }
             };
@@ -308,7 +333,9 @@ void FoamTransport::sweep(std::vector<float>& f, const ScrollingGrid& grid, cons
                 xRow(j + 1, down);
                 const float *e0, *e1;
                 const float t = nodeRows(j, 1, e0, e1);
-                zSweepKernel(f.data() + size_t(j) * row, up, mid, down, e0, e1, t, n, back, a);
+                if (windy) flow.windRow(j, 1, windZ.data());
+                if (flow.wind().streaks()) flow.windGatherRow(j, dt, gather.data());
+                zSweepKernel(f.data() + size_t(j) * row, up, mid, down, e0, e1, windZ.data(), gather.data(), t, n, back, a);
                 std::swap(up, mid), std::swap(mid, down);
             }
         }

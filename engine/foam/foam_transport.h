@@ -8,6 +8,9 @@
 //             with u_x, then along z with u_z; for a uniform u the same bilinear step). Where the
 //             velocity is from the nodes and moves no sample over a cell a step, one sweep over
 //             the rows in place, which can add the sources (a), (b) to each row before it moves it.
+//             The flow's wind (FoamFlow::setWind: drift and streak cells) is added to its velocity
+//             in every mode, and the streak cells' gathering multiplies the z pass
+//             (FoamFlow::windGatherRow: continuity for the wind's part), clamped to 1.
 // Rows are split over the worker pool (the sweep's from 256² only where this machine measured it
 // faster: core/thread_choice.h); each sample's value depends only on the previous map, so the
 // bits do not depend on the worker count.

@@ -119,7 +119,7 @@ void WaterPass::uploadUniforms(FrameContext& frame, const CameraView& camera, co
     for (int c = 0; c < 4; ++c) u.cascadeSlopeVariance[c] = layers ? water.cascadeSlopeVariance[size_t(c)] : 0.0f;
     u.glitterParams = glm::vec4(water.seaSlopeVariance, 0.0f, 0.0f, 0.0f);
     u.farFade = glm::vec4(def.far_fade ? 1.0f : 0.0f, water.whitecapJacobian, water.whitecapSigma, water.windAngle);
-    u.crest = glm::vec4(CREST_SHARE * m_crestBound, def.subsurface, 0.0f, 0.0f);
+    u.crest = glm::vec4(CREST_SHARE * m_crestBound, def.subsurface, camera.projection[1][1], 0.0f);
     for (int c = 0; c < 4 && layers && def.far_fade; ++c) {
         u.cascadeFadeEnd[c] = def.tile_fade * water.cascadeSize[size_t(c)];
         u.cascadeFade[c] = TILE_FADE_START * u.cascadeFadeEnd[c];

@@ -214,6 +214,27 @@ double cascadeSlopeVariance(const OceanDef& def, int cascade) {
     return sum;
 }
 
+std::array<double, 2> stokesDrift(const OceanDef& def) {
+    const SpectrumParams params = spectrumParams(def);
+    const int half = def.resolution / 2;
+    double ux = 0.0, uz = 0.0;
+    for (int c = 0; c < def.cascades; ++c) {
+        const WaveBand band = cascadeBand(def, c);
+        const double dk = TWO_PI / cascadePatchSize(def, c);
+        for (int m = -half + 1; m < half; ++m)
+            for (int n = -half + 1; n < half; ++n) {
+                const double kx = dk * n, kz = dk * m, k2 = kx * kx + kz * kz;
+                if (m < 0 || (m == 0 && n <= 0)) continue;  // K and −K together: an even spectrum sums to 0 exactly
+                if (k2 < band.kMin * band.kMin || k2 >= band.kMax * band.kMax) continue;
+                const double k = std::sqrt(k2), omega = std::sqrt(params.gravity * k);
+                // ω·k·a²/|K| of the wave toward −K less that of the wave toward +K, times −K
+                const double drift = 4.0 * omega * (modeVariance(kx, kz, dk, params) - modeVariance(-kx, -kz, dk, params));
+                ux -= drift * kx, uz -= drift * kz;
+            }
+    }
+    return {ux, uz};
+}
+
 double cascadePatchSize(const OceanDef& def, int cascade) {
     const double phi2 = std::numbers::phi * std::numbers::phi;
     return double(def.patch_size) / std::pow(phi2, cascade);

@@ -4,6 +4,7 @@
 #include "core/random.h"
 #include "ocean/ocean_def.h"
 
+#include <array>
 #include <complex>
 #include <cstdint>
 #include <vector>
@@ -113,6 +114,14 @@ WaveBand cascadeBand(const OceanDef& def, int cascade);
 /// Σ k²·(Ph(K) + Ph(−K)) over the modes of its band, as ⟨h²⟩ = Σ (Ph(K) + Ph(−K)). The
 /// renderer's sun glitter adds what the cascades do not resolve (Cox & Munk 1954).
 double cascadeSlopeVariance(const OceanDef& def, int cascade);
+
+/// The surface Stokes drift of the cascades' waves, m/s, (x, z): the mean forward drift of the
+/// surface particles that a real wave train carries (the model's particles close their orbits,
+/// so the foam map adds it, docs/splash_foam.md §2). Deep water, one wave of amplitude a, wave
+/// number k and ω = sqrt(g·k) drifts ω·k·a² toward its travel; mode K is a wave of
+/// a² = 4·Ph(K) travelling toward −K, so U_s = Σ_K 4·ω·k·Ph(K)·(−K̂) over every cascade's band.
+/// A spectrum even in K (Phillips' (K̂·ŵ)², waves both ways) drifts 0.
+std::array<double, 2> stokesDrift(const OceanDef& def);
 
 /// The mean square slope of a wind sea, waves of every length: Cox & Munk (1954)'s fit to
 /// their photographs of sun glitter, 0.003 + 5.12e-3·U10 (U10 in m/s, clean surface).

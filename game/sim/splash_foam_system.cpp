@@ -6,11 +6,13 @@
 #include "foam/foam_map.h"
 #include "interaction/ripple_patch.h"
 #include "ocean/ocean_fft_cpu.h"
+#include "ocean/spectrum.h"
 #include "splash/splash_particles.h"
 #include "water/composite_water.h"
 #include "sim/stamp_sources.h"
 #include "sim/water_systems.h"
 
+#include <array>
 #include <map>
 #include <memory>
 #include <numbers>
@@ -43,6 +45,9 @@ struct SplashFoamState {
     std::map<uint32_t, SternTrack> sterns;  // ordered: the foam adds in the same order every run
     float bowSpeed = 3.0f;  ///< [splash] bow_speed: the bow wave breaks above it
     std::vector<glm::vec2> crests;  ///< the breaking crests of this step (scratch of sprayFromCrests)
+    /// The sea's surface Stokes drift (ocean::stokesDrift), summed again when a spectrum key changes.
+    glm::vec2 stokes{0.0f};
+    std::array<float, 11> stokesSea{};
 };
 
 // A stern's track keeps a point every this many metres (or two foam cells, if larger) for
@@ -153,7 +158,16 @@ void layWakeTrails(SplashFoamState& state, foam::FoamMap& foam, uint64_t step, f
 // Foam: whitecaps (first cascade's Jacobian), steep ripples, then transport with the
 // surface's horizontal velocity (the particles' orbital motion, Gerstner and cascades, on the
 // map's coarse velocity grid) and decay, in one sweep.
-void stepFoam(foam::FoamMap& foam, const OceanState& ocean, const interaction::RipplePatch* patch, float dt) {
+void stepFoam(SplashFoamState& state, foam::FoamMap& foam, const OceanState& ocean, const interaction::RipplePatch* patch, float dt) {
+    const ocean::OceanDef& d = ocean.def;
+    const std::array<float, 11> sea{d.wind_speed, d.wind_direction.x, d.wind_direction.y, d.amplitude, d.small_wave_cutoff,
+                                    d.fetch, d.peak_enhancement, float(d.spectrum), d.gravity, d.patch_size,
+                                    float(d.resolution * 8 + d.cascades)};
+    if (sea != state.stokesSea) {
+        const std::array<double, 2> u = ocean::stokesDrift(d);
+        state.stokes = glm::vec2(float(u[0]), float(u[1]));
+        state.stokesSea = sea;
+    }
     const ocean::OceanFftCpu& fft = *ocean.cpu;
     const int n = fft.resolution();
     foam::FoamInputs in;
@@ -161,6 +175,8 @@ void stepFoam(foam::FoamMap& foam, const OceanState& ocean, const interaction::R
     in.jacobianN = n;
     in.jacobianTile = float(fft.patchSize(0));
     in.windSpeed = ocean.def.wind_speed;
+    in.windDirection = ocean.def.wind_direction;
+    in.stokesDrift = state.stokes;
     in.gravity = ocean.def.gravity;
     in.ripples = patch;
     in.water = ocean.water.get();
@@ -223,7 +239,7 @@ void splashFoamSystem(ecs::World& world, const ecs::Tick& tick) {
         if (patch) splash::stampLandings(*patch, drops->landings(), drops->def().ripple_energy);
         if (foam) foam->addLandings(drops->landings());
     }
-    if (foam) stepFoam(*foam, *ocean, patch, dt);
+    if (foam) stepFoam(*state, *foam, *ocean, patch, dt);
     if (foam && state->particles) sprayFromCrests(*state->particles, *foam, *ocean, state->crests, dt);
 }
 

@@ -6,6 +6,7 @@
 #include "core/log.h"
 #include "core/npy.h"
 #include "foam/foam_map.h"
+#include "foam/foam_streaks.h"
 #include "gfx/gl.h"
 #include "platform/platform.h"
 #include "sim/splash_foam_system.h"
@@ -40,6 +41,13 @@ int dumpFoam(const SceneDef& scene, int frames, const std::string& out) {
             "whitecap fraction (samples over 0.5) %.4f",
             out.c_str(), n, n, frames, double(foam->grid().cell), double(foam->grid().origin().x), double(foam->grid().origin().y),
             foam->mean(), double(over) / double(size_t(n) * size_t(n)));
+    // How the foam lies (docs/splash_foam.md §2.2): its autocorrelation length along and across the wind.
+    const glm::vec2 wind = glm::normalize(scene.ocean.wind_direction);
+    const float maxLag = 0.5f * float(n) * foam->grid().cell;
+    const float along = foam::autocorrelationLength(foam->coverage(), n, foam->grid().cell, wind, maxLag);
+    const float across = foam::autocorrelationLength(foam->coverage(), n, foam->grid().cell, glm::vec2(-wind.y, wind.x), maxLag);
+    logInfo("foam: autocorrelation falls to 1/e at %.2f m along the wind, %.2f m across it (ratio %.2f)", double(along),
+            double(across), across > 0.0f ? double(along / across) : 0.0);
     return EXIT_OK;
 }
 

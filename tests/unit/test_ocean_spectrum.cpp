@@ -286,3 +286,34 @@ TEST_CASE("Cascades together sample one spectrum: their variances add up to A·�
     }
     CHECK(variance == Approx(def.amplitude * PI * p.largestWave * p.largestWave).epsilon(0.03));
 }
+
+TEST_CASE("Stokes drift: Phillips' waves both ways drift 0; JONSWAP's the deep-water integral (2/g)·∫ω³S(ω)dω·8/(3π) down-wind",
+          "[ocean][spectrum][wind]") {
+    // A wave of amplitude a drifts its surface by ω·k·a² (deep water, Stokes 1847), a² = 2·S(ω)dω
+    // per band: U_s = ∫2·ω·k·S(ω)dω = (2/g)·∫ω³S(ω)dω, times ⟨cos θ⟩ = ∫(2/π)·cos³θ dθ = 8/(3π)
+    // of the cos² spreading, toward ŵ. The modes end at |kx|, |kz| < π·N/L (ω ≈ 4·ωp).
+    OceanDef def;
+    def.wind_direction = {1.0f, 0.6f};
+    const std::array<double, 2> phillips = stokesDrift(def);
+    CHECK(phillips[0] == 0.0);
+    CHECK(phillips[1] == 0.0);
+    def.spectrum = SpectrumKind::Jonswap;
+    def.patch_size = 2000.0f;
+    def.resolution = 1024;
+    def.cascades = 1;
+    const double g = def.gravity, kMax = PI * def.resolution / def.patch_size, w1 = std::sqrt(g * kMax), w0 = 0.2;
+    double integral = 0;
+    const int steps = 20000;
+    const double h = (w1 - w0) / steps;
+    for (int i = 0; i <= steps; ++i) {
+        const double w = w0 + i * h, weight = (i == 0 || i == steps) ? 1 : (i % 2 ? 4 : 2);
+        integral += weight * w * w * w * jonswapRef(w, def);
+    }
+    const double expected = 2.0 / g * integral * h / 3 * 8.0 / (3.0 * PI);
+    const std::array<double, 2> u = stokesDrift(def);
+    const double wl = std::hypot(1.0, 0.6);
+    const double along = (u[0] * 1.0 + u[1] * 0.6) / wl, across = (-u[0] * 0.6 + u[1] * 1.0) / wl;
+    INFO("Stokes drift along the wind " << along << " m/s (integral " << expected << "), across " << across);
+    CHECK(along == Approx(expected).epsilon(0.05));
+    CHECK(std::abs(across) < 0.01 * along);
+}
