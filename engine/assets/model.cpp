@@ -29,7 +29,7 @@ constexpr size_t MAX_FILE_BYTES = size_t(1) << 30;     // tinygltf takes 32-bit 
 constexpr size_t MAX_ELEMENTS = size_t(1) << 22;       // per accessor: far beyond any model here
 constexpr size_t MAX_VERTICES = size_t(1) << 26;       // in the flattened model
 
-std::string num(size_t v) { return std::to_string(v); }
+std::string numText(size_t v) { return std::to_string(v); }
 
 size_t componentBytes(int componentType) {
     switch (componentType) {
@@ -99,17 +99,17 @@ const unsigned char* viewElements(const tinygltf::Model& m, int viewIndex, size_
         throw Corrupt(viewName + ": buffer " + std::to_string(view.buffer) + " does not exist");
     const std::vector<unsigned char>& data = m.buffers[size_t(view.buffer)].data;
     if (view.byteOffset > data.size() || view.byteLength > data.size() - view.byteOffset)
-        throw Corrupt(viewName + ": bytes [" + num(view.byteOffset) + ", +" + num(view.byteLength) +
-                      ") lie outside its buffer of " + num(data.size()) + " bytes");
+        throw Corrupt(viewName + ": bytes [" + numText(view.byteOffset) + ", +" + numText(view.byteLength) +
+                      ") lie outside its buffer of " + numText(data.size()) + " bytes");
     stride = packed || view.byteStride == 0 ? elementBytes : view.byteStride;
     if (stride < elementBytes)
-        throw Corrupt(viewName + ": byteStride " + num(stride) + " is smaller than one element (" +
-                      num(elementBytes) + " bytes)");
+        throw Corrupt(viewName + ": byteStride " + numText(stride) + " is smaller than one element (" +
+                      numText(elementBytes) + " bytes)");
     if (count == 0) return nullptr;
     const size_t length = view.byteLength;
     if (offset > length || elementBytes > length - offset || count - 1 > (length - offset - elementBytes) / stride)
-        throw Corrupt(what + ": " + num(count) + " elements of " + num(elementBytes) + " bytes at offset " +
-                      num(offset) + " do not fit in " + viewName + " (" + num(length) + " bytes)");
+        throw Corrupt(what + ": " + numText(count) + " elements of " + numText(elementBytes) + " bytes at offset " +
+                      numText(offset) + " do not fit in " + viewName + " (" + numText(length) + " bytes)");
     return data.data() + view.byteOffset + offset;
 }
 
@@ -133,7 +133,7 @@ Values readAccessor(const tinygltf::Model& m, int index, bool allowUint32, const
     if (bytes == 0) throw Corrupt(name + ": unknown componentType " + std::to_string(a.componentType));
     if (!allowUint32 && a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
         throw Corrupt(name + ": componentType must be FLOAT or a (normalized) byte/short");
-    if (a.count > MAX_ELEMENTS) throw Corrupt(name + ": count " + num(a.count) + " is too large");
+    if (a.count > MAX_ELEMENTS) throw Corrupt(name + ": count " + numText(a.count) + " is too large");
     out.count = a.count;
     const size_t w = size_t(out.width);
     size_t stride = 0;
@@ -163,7 +163,7 @@ Values readAccessor(const tinygltf::Model& m, int index, bool allowUint32, const
         for (size_t k = 0; k < n; ++k) {
             const double target = component(ip + k * indexBytes, indexType, false);
             if (target >= double(a.count))
-                throw Corrupt(name + ": sparse index " + num(size_t(target)) + " >= count " + num(a.count));
+                throw Corrupt(name + ": sparse index " + numText(size_t(target)) + " >= count " + numText(a.count));
             for (size_t c = 0; c < w; ++c)
                 out.v[size_t(target) * w + c] = component(vp + (k * w + c) * bytes, a.componentType, a.normalized);
         }
@@ -198,8 +198,8 @@ std::vector<uint32_t> readIndices(const tinygltf::Model& m, int index, const std
 
 void checkNumbers(const std::vector<double>& v, size_t sizeA, size_t sizeB, const std::string& what) {
     if (!v.empty() && v.size() != sizeA && v.size() != sizeB)
-        throw Corrupt(what + ": expected " + num(sizeA) + (sizeB != sizeA ? " or " + num(sizeB) : "") + " numbers, got " +
-                      num(v.size()));
+        throw Corrupt(what + ": expected " + numText(sizeA) + (sizeB != sizeA ? " or " + numText(sizeB) : "") + " numbers, got " +
+                      numText(v.size()));
     for (double x : v)
         if (!std::isfinite(x)) throw Corrupt(what + ": holds a value that is not a finite number");
 }
@@ -247,7 +247,7 @@ void appendPrimitive(const tinygltf::Model& m, const tinygltf::Primitive& prim, 
     if (attribute("NORMAL") >= 0) {
         normals = readVec3(m, attribute("NORMAL"), name + " NORMAL");
         if (normals.size() != n)
-            throw Corrupt(name + ": NORMAL has " + num(normals.size()) + " elements, POSITION " + num(n));
+            throw Corrupt(name + ": NORMAL has " + numText(normals.size()) + " elements, POSITION " + numText(n));
     }
 
     glm::vec3 factor(1.0f);
@@ -262,7 +262,7 @@ void appendPrimitive(const tinygltf::Model& m, const tinygltf::Primitive& prim, 
     if (attribute("COLOR_0") >= 0) {
         Values c = readAccessor(m, attribute("COLOR_0"), false, name + " COLOR_0");
         if (c.width != 3 && c.width != 4) throw Corrupt(name + " COLOR_0: type must be VEC3 or VEC4");
-        if (c.count != n) throw Corrupt(name + ": COLOR_0 has " + num(c.count) + " elements, POSITION " + num(n));
+        if (c.count != n) throw Corrupt(name + ": COLOR_0 has " + numText(c.count) + " elements, POSITION " + numText(n));
         const size_t w = size_t(c.width);
         for (size_t i = 0; i < n; ++i) colors[i] *= glm::vec3(c.v[i * w], c.v[i * w + 1], c.v[i * w + 2]);
     }
@@ -272,14 +272,14 @@ void appendPrimitive(const tinygltf::Model& m, const tinygltf::Primitive& prim, 
         indices = readIndices(m, prim.indices, name + " indices");
         for (size_t k = 0; k < indices.size(); ++k)
             if (indices[k] >= n)
-                throw Corrupt(name + ": index " + std::to_string(indices[k]) + " (element " + num(k) +
-                              ") is out of range: the primitive has " + num(n) + " vertices");
+                throw Corrupt(name + ": index " + std::to_string(indices[k]) + " (element " + numText(k) +
+                              ") is out of range: the primitive has " + numText(n) + " vertices");
     } else {
         indices.resize(n);
         for (size_t i = 0; i < n; ++i) indices[i] = uint32_t(i);
     }
     if (indices.size() % 3 != 0)
-        throw Corrupt(name + ": " + num(indices.size()) + " vertices in TRIANGLES mode, not a multiple of 3");
+        throw Corrupt(name + ": " + numText(indices.size()) + " vertices in TRIANGLES mode, not a multiple of 3");
 
     // A mirroring transform turns counter-clockwise faces clockwise: swap to keep them front.
     const glm::mat3 linear(world);
@@ -292,7 +292,7 @@ void appendPrimitive(const tinygltf::Model& m, const tinygltf::Primitive& prim, 
             throw Corrupt(name + ": a transformed position is not finite");
 
     const size_t added = normals.empty() ? indices.size() : n;
-    if (out.positions.size() + added > MAX_VERTICES) throw Corrupt("more than " + num(MAX_VERTICES) + " vertices");
+    if (out.positions.size() + added > MAX_VERTICES) throw Corrupt("more than " + numText(MAX_VERTICES) + " vertices");
     const uint32_t base = uint32_t(out.positions.size());
     if (normals.empty()) {
         // No normals: flat shading, one vertex per corner (spec §3.7.2.1).
@@ -358,14 +358,14 @@ ModelData flatten(const tinygltf::Model& m) {
                     ++skipped;
                     continue;
                 }
-                appendPrimitive(m, prim, world, "mesh " + std::to_string(node.mesh) + " primitive " + num(p), out);
+                appendPrimitive(m, prim, world, "mesh " + std::to_string(node.mesh) + " primitive " + numText(p), out);
             }
         }
         for (auto c = node.children.rbegin(); c != node.children.rend(); ++c) stack.push_back({*c, world});
     }
     if (out.indices.empty())
         throw Corrupt("no triangles in the scene" +
-                      (skipped ? " (" + num(skipped) + " primitives of other modes than TRIANGLES skipped)" : std::string()));
+                      (skipped ? " (" + numText(skipped) + " primitives of other modes than TRIANGLES skipped)" : std::string()));
     out.boundsMin = out.boundsMax = out.positions.front();
     for (const glm::vec3& p : out.positions) {
         out.boundsMin = glm::min(out.boundsMin, p);

@@ -27,7 +27,7 @@ namespace {
 const auto PROCESS_START = std::filesystem::file_time_type::clock::now();
 
 // What sits at a path, in words, when it is not a regular file.
-std::string kindOf(mode_t mode) {
+std::string fileKindOf(mode_t mode) {
     if (S_ISDIR(mode)) return "a folder";
     if (S_ISLNK(mode)) return "a symbolic link";
     if (S_ISFIFO(mode)) return "a named pipe (FIFO)";
@@ -156,7 +156,7 @@ void checkWritable(const std::string& path, const char* what) {
                              "', which oceanbox neither follows nor replaces (give the path of a regular file: choose another path)");
         }
         if (!S_ISREG(st.st_mode))
-            throw InputError(head + "it is " + kindOf(st.st_mode) +
+            throw InputError(head + "it is " + fileKindOf(st.st_mode) +
                              ", not a regular file; oceanbox replaces regular files only (choose another path)");
     } else if (errno != ENOENT) {
         const int err = errno;

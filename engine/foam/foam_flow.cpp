@@ -13,7 +13,7 @@ namespace ob::foam {
 namespace {
 
 // ⌊a / b⌋ for b > 0.
-inline int floorDiv(int a, int b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
+inline int floorDivide(int a, int b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
 
 // A row of n samples linear between node values v[k] and v[k + 1], the row's sample 0 at offset
 // q0 (< s) past node 0: sample i at offset p = q0 + i from it, in segment p / s at weight (p mod s)/s.
@@ -57,7 +57,7 @@ std::span<float> FoamFlow::velocityZ() {
 
 glm::ivec2 FoamFlow::nodeOrigin() const {
     const int s = stride();
-    return glm::ivec2(floorDiv(m_grid.originCell.x, s), floorDiv(m_grid.originCell.y, s));
+    return glm::ivec2(floorDivide(m_grid.originCell.x, s), floorDivide(m_grid.originCell.y, s));
 }
 
 std::vector<glm::vec2> FoamFlow::nodePositions() const {

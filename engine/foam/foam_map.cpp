@@ -10,7 +10,7 @@ namespace ob::foam {
 namespace {
 
 // Coverage of a row-major n×n map at sample (i, j), 0 outside.
-inline float cellOr0(const float* f, int n, int i, int j) {
+inline float mapCellOr0(const float* f, int n, int i, int j) {
     return (i < 0 || j < 0 || i >= n || j >= n) ? 0.0f : f[size_t(j) * size_t(n) + size_t(i)];
 }
 
@@ -43,8 +43,8 @@ float FoamMap::sample(float x, float z) const {
     if (i < -1 || j < -1 || i >= n || j >= n) return 0.0f;
     const float tx = g.x - fx, tz = g.y - fz;
     const float* f = m_f.data();
-    return (cellOr0(f, n, i, j) * (1 - tx) + cellOr0(f, n, i + 1, j) * tx) * (1 - tz) +
-           (cellOr0(f, n, i, j + 1) * (1 - tx) + cellOr0(f, n, i + 1, j + 1) * tx) * tz;
+    return (mapCellOr0(f, n, i, j) * (1 - tx) + mapCellOr0(f, n, i + 1, j) * tx) * (1 - tz) +
+           (mapCellOr0(f, n, i, j + 1) * (1 - tx) + mapCellOr0(f, n, i + 1, j + 1) * tx) * tz;
 }
 
 double FoamMap::mean() const {

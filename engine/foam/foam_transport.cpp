@@ -108,7 +108,7 @@ OB_VECTOR_KERNEL void zSweepKernel(float* __restrict dst, const float* __restric
     }
 }
 
-OB_VECTOR_KERNEL void scaleKernel(float* __restrict dst, const float* __restrict src, size_t count, float a) {
+OB_VECTOR_KERNEL void scaleFoamKernel(float* __restrict dst, const float* __restrict src, size_t count, float a) {
     for (size_t i = 0; i < count; ++i) dst[i] = floored(a * src[i]);
 }
 
@@ -141,7 +141,7 @@ void FoamTransport::step(std::vector<float>& f, const ScrollingGrid& grid, const
     switch (mode) {
     case FoamFlow::Mode::Still:  // decay only
         parallelFor(0, n, ROW_CHUNK, [&](int lo, int hi) {
-            scaleKernel(m_next.data() + size_t(lo) * size_t(n), f.data() + size_t(lo) * size_t(n), size_t(hi - lo) * size_t(n), a);
+            scaleFoamKernel(m_next.data() + size_t(lo) * size_t(n), f.data() + size_t(lo) * size_t(n), size_t(hi - lo) * size_t(n), a);
         });
         break;
     case FoamFlow::Mode::Uniform: uniformStep(f, grid, uniform, a, dt); break;

@@ -19,7 +19,7 @@ Antialias antialiasMode(Antialias key, bool softwareRenderer) {
 }
 
 namespace {
-glm::ivec2 scaled(glm::ivec2 size, float scale) { return glm::max(glm::ivec2(glm::vec2(size) * scale + 0.5f), glm::ivec2(1)); }
+glm::ivec2 scaledSize(glm::ivec2 size, float scale) { return glm::max(glm::ivec2(glm::vec2(size) * scale + 0.5f), glm::ivec2(1)); }
 } // namespace
 
 Renderer::Renderer(const RenderDef& def) : m_frame(def) {}
@@ -51,7 +51,7 @@ void Renderer::beginFrame(const CameraView& camera, double time, glm::ivec2 size
         if (!std::exchange(warned, true)) logWarn("render.antialias: this GL driver has no 4× multisampled float targets; using fxaa");
         state.antialias = Antialias::Fxaa;
     }
-    state.internal = def.resolution_scale < 1.0f ? scaled(size, def.resolution_scale) : size;
+    state.internal = def.resolution_scale < 1.0f ? scaledSize(size, def.resolution_scale) : size;
     m_surfaces.resize(m_frame, state.internal);
     m_post.resize(m_frame, state.internal);
     m_frame.views.update(def, state, camera, time, m_surfaces.reflection().size, m_surfaces.refraction().size, SkyPass::mipCount());

@@ -19,8 +19,8 @@ namespace ob::ocean {
 
 namespace {
 
-constexpr double PI = std::numbers::pi;
-constexpr double TWO_PI = 2.0 * std::numbers::pi;
+constexpr double PI_D = std::numbers::pi;
+constexpr double TAU = 2.0 * std::numbers::pi;
 // SIMD width the kernels are written for: inner loops have this compile-time length so
 // GCC's -O2 ("very cheap") vectoriser takes them (8 floats = one AVX2 register).
 constexpr int LANES = 8;
@@ -31,10 +31,10 @@ constexpr int LANES = 8;
 // θ is reduced to r ∈ [−π, π] with a two-part 2π (Cody–Waite: turns·C1 is exact for
 // |turns| < 2^16), then the half angle u = r/2 goes through the Taylor polynomials of
 // spectrum.cpp (first omitted terms < 6e-8) and the double-angle formulas.
-constexpr float INV_TWO_PI_F = float(1.0 / TWO_PI);
+constexpr float INV_TWO_PI_F = float(1.0 / TAU);
 constexpr float ROUND_MAGIC_F = 12582912.0f;            // 1.5·2^23: (x + M) − M rounds |x| < 2^22
 constexpr float TWO_PI_HI = 6.28125f;                   // 201/32, 8 significant bits
-constexpr float TWO_PI_LO = float(TWO_PI - 6.28125);    // 1.9353072e-3
+constexpr float TWO_PI_LO = float(TAU - 6.28125);    // 1.9353072e-3
 
 [[gnu::always_inline]] inline void sinCos(float theta, float& s, float& c) {
     const float turns = (theta * INV_TWO_PI_F + ROUND_MAGIC_F) - ROUND_MAGIC_F;
@@ -177,7 +177,7 @@ struct TravelSpectrum {
     explicit TravelSpectrum(const OceanDef& ocean) : p(spectrumParams(ocean)), windAngle(std::atan2(p.windZ, p.windX)) {}
 
     double density(double k, double rel) const {
-        if (std::abs(rel) >= 0.5 * PI) return 0.0;
+        if (std::abs(rel) >= 0.5 * PI_D) return 0.0;
         const double angle = windAngle + rel;
         const double kx = k * std::cos(angle), kz = k * std::sin(angle);
         return 2.0 * (modeVariance(kx, kz, 1.0, p) + modeVariance(-kx, -kz, 1.0, p));
@@ -193,12 +193,12 @@ constexpr double TAIL_FRACTION = 0.005;
 // Variance of the cells (θ_j, [lnk0, lnk1]) of the travel spectrum, midpoint rule in ln k
 // (∫ F k dk = ∫ F k² d ln k) and θ.
 void cellVariance(const TravelSpectrum& s, double lnk0, double lnk1, double* out /*ANGLES*/) {
-    const double dln = (lnk1 - lnk0) / RADII, dth = PI / ANGLES;
+    const double dln = (lnk1 - lnk0) / RADII, dth = PI_D / ANGLES;
     for (int j = 0; j < ANGLES; ++j) out[j] = 0.0;
     for (int r = 0; r < RADII; ++r) {
         const double k = std::exp(lnk0 + (r + 0.5) * dln);
         for (int j = 0; j < ANGLES; ++j)
-            out[j] += s.density(k, -0.5 * PI + (j + 0.5) * dth) * k * k * dln * dth;
+            out[j] += s.density(k, -0.5 * PI_D + (j + 0.5) * dth) * k * k * dln * dth;
     }
 }
 
@@ -253,7 +253,7 @@ std::vector<std::string> validate(const GerstnerDef& def, const OceanDef* ocean,
         const GerstnerBand band = generationBand(def, *ocean);
         if (!(band.kMin < band.kMax)) {
             errors.push_back(format("gerstner.max_wavelength: %g m must be longer than the shortest generated wave (%g m)",
-                                    TWO_PI / band.kMin, TWO_PI / band.kMax));
+                                    TAU / band.kMin, TAU / band.kMax));
         } else {
             const std::vector<GerstnerWave> generated = generateWaves(def, *ocean);
             for (size_t i = 0; i < generated.size(); ++i) {
@@ -261,7 +261,7 @@ std::vector<std::string> validate(const GerstnerDef& def, const OceanDef* ocean,
                 const double ka = k * generated[i].amplitude;
                 if (!(ka < 1.0))
                     errors.push_back(format("gerstner.count: generated wave %zu (wavelength %.4g m): k·a = %.3g ≥ 1: the surface "
-                                            "would self-intersect (lower gerstner.amplitude_scale)", i, TWO_PI / k, ka));
+                                            "would self-intersect (lower gerstner.amplitude_scale)", i, TAU / k, ka));
             }
             all.insert(all.end(), generated.begin(), generated.end());
         }
@@ -281,10 +281,10 @@ std::vector<std::string> validate(const GerstnerDef& def, const OceanDef* ocean,
 GerstnerBand generationBand(const GerstnerDef& def, const OceanDef& ocean) {
     GerstnerBand band;
     const double minWavelength = def.min_wavelength > 0.0f ? double(def.min_wavelength)
-                                                           : std::sqrt(PI) * double(ocean.patch_size);
-    band.kMax = TWO_PI / minWavelength;
+                                                           : std::sqrt(PI_D) * double(ocean.patch_size);
+    band.kMax = TAU / minWavelength;
     if (def.max_wavelength > 0.0f) {
-        band.kMin = TWO_PI / double(def.max_wavelength);
+        band.kMin = TAU / double(def.max_wavelength);
         return band;
     }
     // Auto: the radial variance profile from kMax down to kMax·TAIL_SPAN (log grid); kMin is
@@ -292,13 +292,13 @@ GerstnerBand generationBand(const GerstnerDef& def, const OceanDef& ocean) {
     // (an octave at least, so the waves differ in length).
     const TravelSpectrum s(ocean);
     const double lnHi = std::log(band.kMax), lnLo = std::log(band.kMax * TAIL_SPAN);
-    const double dln = (lnHi - lnLo) / TAIL_SAMPLES, dth = PI / ANGLES;
+    const double dln = (lnHi - lnLo) / TAIL_SAMPLES, dth = PI_D / ANGLES;
     std::vector<double> profile(TAIL_SAMPLES);  // variance of log cell i (i = 0 lowest k)
     double total = 0.0;
     for (int i = 0; i < TAIL_SAMPLES; ++i) {
         const double k = std::exp(lnLo + (i + 0.5) * dln);
         double v = 0.0;
-        for (int j = 0; j < ANGLES; ++j) v += s.density(k, -0.5 * PI + (j + 0.5) * dth);
+        for (int j = 0; j < ANGLES; ++j) v += s.density(k, -0.5 * PI_D + (j + 0.5) * dth);
         profile[size_t(i)] = v * dth * k * k * dln;
         total += profile[size_t(i)];
     }
@@ -319,7 +319,7 @@ std::vector<GerstnerWave> generateWaves(const GerstnerDef& def, const OceanDef& 
     GaussianRng rng(mix64(def.seed ^ 0x6A09E667F3BCC909ull));  // stream apart from the FFT's noise
     const double lnLo = std::log(band.kMin);
     const double width = (std::log(band.kMax) - lnLo) / def.count;
-    const double dth = PI / ANGLES;
+    const double dth = PI_D / ANGLES;
     double cells[ANGLES];
     for (int m = 0; m < def.count; ++m) {
         // --- variance of bin m, per angular cell
@@ -336,14 +336,14 @@ std::vector<GerstnerWave> generateWaves(const GerstnerDef& def, const OceanDef& 
             int j = 0;
             while (j < ANGLES - 1 && cumulative + cells[j] < target) cumulative += cells[j++];
             const double frac = cells[j] > 0.0 ? std::clamp((target - cumulative) / cells[j], 0.0, 1.0) : 0.5;
-            rel = -0.5 * PI + (j + frac) * dth;
+            rel = -0.5 * PI_D + (j + frac) * dth;
         }
         const double angle = s.windAngle + rel;
         GerstnerWave w;
         w.kx = float(k * std::cos(angle));
         w.kz = float(k * std::sin(angle));
         w.amplitude = float(def.amplitude_scale * std::sqrt(2.0 * variance));
-        w.phase = float(TWO_PI * uniform(rng));
+        w.phase = float(TAU * uniform(rng));
         waves.push_back(w);
     }
     return waves;
@@ -395,7 +395,7 @@ GerstnerField::GerstnerField(std::span<const GerstnerWave> waves, float gravity)
 void GerstnerField::setTime(double t) {
     m_time = t;
     for (int m = 0; m < m_count; ++m)
-        m_psi[size_t(m)] = float(std::remainder(m_omegaD[size_t(m)] * t + m_phaseD[size_t(m)], TWO_PI));
+        m_psi[size_t(m)] = float(std::remainder(m_omegaD[size_t(m)] * t + m_phaseD[size_t(m)], TAU));
 }
 
 GerstnerSums GerstnerField::sums(float alpha, float beta) const {

@@ -34,7 +34,7 @@ namespace {
 // 3.3.10: N = 64 takes 0.03 ms on one thread, 0.08 ms on two).
 constexpr int PARALLEL_MIN_N = 128;
 constexpr unsigned MAX_THREADS = 4;
-constexpr int BLOCK = 16;  // see spectrum.cpp: whole blocks vectorise at -O2
+constexpr int FFT_BLOCK = 16;  // see spectrum.cpp: whole blocks vectorise at -O2
 
 // The one N×N in-place backward plan, from the shared wisdom (see fftw_wisdom.h): different
 // FFTW plans of the same transform round differently (measured: FFTW_ESTIMATE, _MEASURE and
@@ -62,8 +62,8 @@ OB_VECTOR_KERNEL void unpackRange(
     const float* __restrict p3, float* __restrict h, float* __restrict dx, float* __restrict dz,
     float* __restrict sx, float* __restrict sz, float* __restrict jac, float lambda, int count) {
     int base = 0;
-    for (; base + BLOCK <= count; base += BLOCK)
-        for (int q = 0; q < BLOCK; ++q)
+    for (; base + FFT_BLOCK <= count; base += FFT_BLOCK)
+        for (int q = 0; q < FFT_BLOCK; ++q)
             unpackPoint(p0, p1, p2, p3, h, dx, dz, sx, sz, jac, lambda, base + q);
     for (int i = base; i < count; ++i)
         unpackPoint(p0, p1, p2, p3, h, dx, dz, sx, sz, jac, lambda, i);

@@ -25,7 +25,7 @@ constexpr double INV_TWO_PI = 1.0 / TWO_PI;
 constexpr double ROUND_MAGIC = 6755399441055744.0;
 // Inner loops run on blocks of a compile-time length so that GCC's -O2 ("very cheap")
 // vectoriser takes them; N ≥ 16 rows are whole blocks, smaller ones take the scalar tail.
-constexpr int BLOCK = 16;
+constexpr int SPECTRUM_BLOCK = 16;
 
 [[maybe_unused]] bool isPowerOfTwo(int n) { return n > 0 && (n & (n - 1)) == 0; }
 
@@ -47,8 +47,8 @@ OB_VECTOR_KERNEL
 void phaseRow(const double* __restrict omega, float* __restrict sinOut, float* __restrict cosOut,
               double t, int count) {
     int base = 0;
-    for (; base + BLOCK <= count; base += BLOCK)
-        for (int q = 0; q < BLOCK; ++q) phaseSinCos(omega[base + q], t, sinOut[base + q], cosOut[base + q]);
+    for (; base + SPECTRUM_BLOCK <= count; base += SPECTRUM_BLOCK)
+        for (int q = 0; q < SPECTRUM_BLOCK; ++q) phaseSinCos(omega[base + q], t, sinOut[base + q], cosOut[base + q]);
     for (int i = base; i < count; ++i) phaseSinCos(omega[i], t, sinOut[i], cosOut[i]);
 }
 
@@ -90,8 +90,8 @@ void synthRow(const float* __restrict sinWt, const float* __restrict cosWt,
               const float* __restrict cosIm, const float* __restrict sinIm, float* __restrict o0,
               float* __restrict o1, float* __restrict o2, float* __restrict o3, float kz, int count) {
     int base = 0;
-    for (; base + BLOCK <= count; base += BLOCK)
-        for (int q = 0; q < BLOCK; ++q)
+    for (; base + SPECTRUM_BLOCK <= count; base += SPECTRUM_BLOCK)
+        for (int q = 0; q < SPECTRUM_BLOCK; ++q)
             synthMode(sinWt, cosWt, kx, invK, cosRe, sinRe, cosIm, sinIm, o0, o1, o2, o3, kz, base + q);
     for (int i = base; i < count; ++i)
         synthMode(sinWt, cosWt, kx, invK, cosRe, sinRe, cosIm, sinIm, o0, o1, o2, o3, kz, i);

@@ -32,7 +32,7 @@ namespace ob::game {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-using Ms = std::chrono::duration<double, std::milli>;
+using Millis = std::chrono::duration<double, std::milli>;
 constexpr double STEP_SECONDS = 1.0 / 60.0;  // each update advances one 60 Hz step
 
 struct OceanPoint {
@@ -63,7 +63,7 @@ OceanPoint cpuOcean(const ocean::OceanDef& def, int warmup, int frames) {
         t += STEP_SECONDS;
         const auto t0 = Clock::now();
         fft.update(t);
-        const double ms = Ms(Clock::now() - t0).count();
+        const double ms = Millis(Clock::now() - t0).count();
         if (f < warmup) continue;
         sim.push_back(ms);
         transforms.push_back(fft.lastStageMs().transforms);
@@ -82,7 +82,7 @@ OceanPoint gpuOcean(const ocean::OceanDef& def, int warmup, int frames) {
         const auto t0 = Clock::now();
         gpu.update(t, textures);
         glFinish();
-        if (f >= warmup) sim.push_back(Ms(Clock::now() - t0).count());
+        if (f >= warmup) sim.push_back(Millis(Clock::now() - t0).count());
     }
     gpu.setProfiling(true);
     for (int f = 0; f < frames; ++f) {
@@ -126,7 +126,7 @@ double fftwAloneMs(const ocean::OceanDef& def, int warmup, int frames) {
         for (int w = 1; w < threads; ++w) helpers.emplace_back(work, w);
         work(0);
         for (auto& h : helpers) h.join();
-        if (f >= warmup) samples.push_back(Ms(t1 - t0).count());
+        if (f >= warmup) samples.push_back(Millis(t1 - t0).count());
     }
     fftwf_destroy_plan(plan);
     for (auto* b : buffers) fftwf_free(b);

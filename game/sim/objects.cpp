@@ -39,13 +39,13 @@ static std::vector<Probe> probesFor(const ObjectDef& o) {
 namespace {
 
 // The keys a describe() visits, in order.
-struct KeyLister {
+struct DefKeyLister {
     std::vector<std::string> keys;
     template <class T, class... Rest> void field(const char* key, T&, Rest&&...) { keys.push_back(key); }
 };
 
-template <class Def> std::vector<std::string> keysOf() {
-    KeyLister lister;
+template <class Def> std::vector<std::string> defKeysOf() {
+    DefKeyLister lister;
     Def def;
     describe(lister, def);
     return lister.keys;
@@ -54,8 +54,8 @@ template <class Def> std::vector<std::string> keysOf() {
 } // namespace
 
 std::vector<std::pair<std::string, std::string>> keysNotReadBy(ObjectType type) {
-    const std::vector<std::string> typeKeys[] = {keysOf<SphereBodyDef>(), keysOf<BoxBodyDef>(), keysOf<ShipDef>(),
-                                                 keysOf<CannonDef>(), keysOf<FishSchoolDef>()};
+    const std::vector<std::string> typeKeys[] = {defKeysOf<SphereBodyDef>(), defKeysOf<BoxBodyDef>(), defKeysOf<ShipDef>(),
+                                                 defKeysOf<CannonDef>(), defKeysOf<FishSchoolDef>()};
     static_assert(std::size(typeKeys) == enumNames<ObjectType>.size(), "one settings struct per object type");
     const std::vector<std::string>& own = typeKeys[size_t(type)];
     std::string reads;

@@ -19,7 +19,7 @@ constexpr int MAX_GRID = 4096;  // [4096, 4096, 6] float32 = 384 MiB
 constexpr size_t GERSTNER_CHANNELS = 6;
 constexpr size_t SURFACE_CHANNELS = 5;
 
-std::string shapeText(const std::vector<size_t>& shape) {
+std::string surfaceShapeText(const std::vector<size_t>& shape) {
     std::string s = "[";
     for (size_t i = 0; i < shape.size(); ++i) s += (i ? ", " : "") + std::to_string(shape[i]);
     return s + "]";
@@ -72,7 +72,7 @@ int dumpSurface(const ob::water::WaterQuery& water, const std::string& pointsNpy
     const NpyArray points = readNpy(pointsNpy);
     if (points.shape.size() != 2 || points.shape[1] != 2)
         throw InputError(pointsNpy + ": expected float32 points of shape [K, 2] (world x, z), got shape " +
-                         shapeText(points.shape));
+                         surfaceShapeText(points.shape));
     const size_t k = points.shape[0];
     std::vector<glm::vec2> xz(k);
     for (size_t i = 0; i < k; ++i) {

@@ -84,7 +84,7 @@ Scan scan(std::span<const float> v) {
 }
 
 // First index holding a non-finite value (scan() said there is one).
-size_t firstNonFinite(std::span<const float> v) {
+size_t firstNonFiniteIndex(std::span<const float> v) {
     for (size_t i = 0; i < v.size(); ++i)
         if (!std::isfinite(v[i])) return i;
     return v.size();
@@ -165,7 +165,7 @@ static void checkRipples(Sandbox& sandbox, const SoakBounds& bounds, SoakReport&
         for (const auto& [name, level] : patch->solver().levels()) {
             Scan s = scan(level);
             if (!s.finite) {
-                size_t i = firstNonFinite(level);
+                size_t i = firstNonFiniteIndex(level);
                 fail(sandbox, std::string("ripple field ") + name + " cell (row " + std::to_string(i / size_t(patch->cols())) +
                                   ", column " + std::to_string(i % size_t(patch->cols())) + ") = " + fmt(level[i]) +
                                   ": not a finite number");
@@ -190,7 +190,7 @@ static void checkOceanMaps(Sandbox& sandbox, const SoakBounds& bounds, SoakRepor
                 std::span<const float> map(fft.channel(c, ocean::OceanChannel(ch)), count);
                 Scan s = scan(map);
                 if (!s.finite) {
-                    size_t i = firstNonFinite(map);
+                    size_t i = firstNonFiniteIndex(map);
                     fail(sandbox, "ocean cascade " + std::to_string(c) + " channel " + std::to_string(ch) + " point (" +
                                       std::to_string(i % size_t(fft.resolution())) + ", " +
                                       std::to_string(i / size_t(fft.resolution())) + ") = " + fmt(map[i]) +

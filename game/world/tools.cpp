@@ -31,7 +31,7 @@ constexpr float THROW_SMOOTHING_S = 0.08f;   // the throw's velocity: the cursor
 constexpr float MAX_THROW_M_S = 60.0f;
 constexpr float MAX_GRAB_ACCEL = 60.0f;      // m/s² the grab's spring gives at most (about 6 g)
 constexpr float MIN_ELEVATION_DEG = -10.0f;  // a cannon's barrel goes no lower (CannonDef)
-constexpr glm::vec3 MARKER_COLOR{1.0f, 0.85f, 0.2f};
+constexpr glm::vec3 TOOL_MARKER_COLOR{1.0f, 0.85f, 0.2f};
 constexpr glm::vec3 RING_COLOR{0.3f, 0.9f, 1.0f};
 
 const water::WaterQuery* waterOf(ecs::World& world) {
@@ -328,7 +328,7 @@ void appendToolDraws(ecs::World& world, std::vector<gfx::ObjectDraw>& draws, glm
         // A marker a few pixels wide at any distance: 0.6 % of its distance.
         const glm::vec3 p = *tools->waterPoint;
         const float r = std::max(0.04f, 0.006f * glm::length(p - eye));
-        draws.push_back({gfx::MeshKind::Sphere, glm::scale(glm::translate(glm::mat4(1.0f), p), glm::vec3(r, 0.35f * r, r)), MARKER_COLOR, ""});
+        draws.push_back({gfx::MeshKind::Sphere, glm::scale(glm::translate(glm::mat4(1.0f), p), glm::vec3(r, 0.35f * r, r)), TOOL_MARKER_COLOR, ""});
         if (tools->def.tool == Tool::Stir) {
             const float ring = tools->def.stir_radius;
             draws.push_back({gfx::MeshKind::Ring, glm::scale(glm::translate(glm::mat4(1.0f), p), glm::vec3(ring)), RING_COLOR, ""});

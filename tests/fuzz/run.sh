@@ -11,7 +11,7 @@ root=$(cd "$(dirname "$0")/../.." && pwd)
 build=${2:-$root/build-fuzz}
 jobs=${OCEANBOX_FUZZ_BUILD_JOBS:-2}
 
-cmake -S "$root" -B "$build" -DOCEANBOX_FUZZ=ON -DOCEANBOX_TESTS=OFF \
+cmake -S "$root" -B "$build" -DOCEANBOX_FUZZ=ON -DOCEANBOX_TESTS=OFF -DOCEANBOX_UNITY=ON \
   -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -DNDEBUG" -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -DNDEBUG" > /dev/null
 cmake --build "$build" -j"$jobs" --target fuzz_scene fuzz_gltf fuzz_keypath fuzz_npy

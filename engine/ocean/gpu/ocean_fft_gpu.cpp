@@ -55,7 +55,7 @@ static_assert(sizeof(Complex) == 8, "std430 vec2");
 
 int signedIndex(int r, int n) { return r < n / 2 ? r : r - n; }
 
-GLintptr bytes(size_t count, size_t size) { return GLintptr(count * size); }
+GLintptr bufferBytes(size_t count, size_t size) { return GLintptr(count * size); }
 
 } // namespace
 
@@ -73,16 +73,16 @@ OceanFftGpu::OceanFftGpu(const OceanDef& def) {
     m_unpack = gfx::loadProgram("ocean unpack maps", {"ocean_unpack.comp"});
 
     // --- buffers: per-mode constants (filled by setSpectrum), FFT work space, twiddles
-    m_modes = gfx::createBuffer("ocean modes (h~0 coefficients)", bytes(cascades * n * n, sizeof(ModeCoefficients)));
-    m_quarter = gfx::createBuffer("ocean quarter grid (omega, 1/k)", bytes(cascades * quarter * quarter, sizeof(QuarterMode)));
-    m_waveNumbers = gfx::createBuffer("ocean wave numbers", bytes(cascades * n, sizeof(float)));
-    m_spectra = gfx::createBuffer("ocean packed spectra (FFT in place)", bytes(cascades * 4 * n * n, sizeof(Complex)));
+    m_modes = gfx::createBuffer("ocean modes (h~0 coefficients)", bufferBytes(cascades * n * n, sizeof(ModeCoefficients)));
+    m_quarter = gfx::createBuffer("ocean quarter grid (omega, 1/k)", bufferBytes(cascades * quarter * quarter, sizeof(QuarterMode)));
+    m_waveNumbers = gfx::createBuffer("ocean wave numbers", bufferBytes(cascades * n, sizeof(float)));
+    m_spectra = gfx::createBuffer("ocean packed spectra (FFT in place)", bufferBytes(cascades * 4 * n * n, sizeof(Complex)));
     std::vector<Complex> twiddles(n / 2);
     for (size_t k = 0; k < twiddles.size(); ++k) {
         const double angle = 2.0 * std::numbers::pi * double(k) / double(n);
         twiddles[k] = {float(std::cos(angle)), float(std::sin(angle))};
     }
-    m_twiddles = gfx::createBuffer("ocean FFT twiddles", bytes(twiddles.size(), sizeof(Complex)), twiddles.data());
+    m_twiddles = gfx::createBuffer("ocean FFT twiddles", bufferBytes(twiddles.size(), sizeof(Complex)), twiddles.data());
 
     for (int c = 0; c < def.cascades; ++c) setSpectrum(c, CascadeSpectrum(def, c));
 
@@ -129,12 +129,12 @@ void OceanFftGpu::setSpectrum(int cascade, const CascadeSpectrum& s) {
     for (int r = 0; r < n; ++r) waveNumbers[size_t(r)] = float(s.waveNumber(signedIndex(r, n)));
 
     const size_t c = size_t(cascade);
-    glNamedBufferSubData(m_modes.id(), bytes(c * modes.size(), sizeof(ModeCoefficients)),
-                         bytes(modes.size(), sizeof(ModeCoefficients)), modes.data());
-    glNamedBufferSubData(m_quarter.id(), bytes(c * quarterModes.size(), sizeof(QuarterMode)),
-                         bytes(quarterModes.size(), sizeof(QuarterMode)), quarterModes.data());
-    glNamedBufferSubData(m_waveNumbers.id(), bytes(c * waveNumbers.size(), sizeof(float)),
-                         bytes(waveNumbers.size(), sizeof(float)), waveNumbers.data());
+    glNamedBufferSubData(m_modes.id(), bufferBytes(c * modes.size(), sizeof(ModeCoefficients)),
+                         bufferBytes(modes.size(), sizeof(ModeCoefficients)), modes.data());
+    glNamedBufferSubData(m_quarter.id(), bufferBytes(c * quarterModes.size(), sizeof(QuarterMode)),
+                         bufferBytes(quarterModes.size(), sizeof(QuarterMode)), quarterModes.data());
+    glNamedBufferSubData(m_waveNumbers.id(), bufferBytes(c * waveNumbers.size(), sizeof(float)),
+                         bufferBytes(waveNumbers.size(), sizeof(float)), waveNumbers.data());
 }
 
 void OceanFftGpu::update(double t, OceanTextures& out) {
