@@ -27,15 +27,20 @@ float shipHalfBeam(float w, float y) {
     return y <= keel ? 0.0 : deck * sqrt(max(1.0 - s * s, 0.0));
 }
 
-// The hull whose clip volume holds world point p (over its keel, within its outline), −1 none.
+// Whether world point p lies inside hull i (over its keel, within its outline).
+bool insideHull(int i, vec3 p) {
+    vec3 q = (water.hullFromWorld[i] * vec4(p, 1.0)).xyz;
+    if (q.y <= -1.0 || abs(q.z) >= 1.0 || abs(q.x) >= 1.0) return false;
+    if (water.hullPlan[i].x < 0.5) return true;  // the box
+    return abs(q.x) < (1.0 - HULL_CLIP_MARGIN) * shipHalfBeam(q.z, min(q.y, 1.0));
+}
+
+// The first hull (nearest the eye first) that holds world point p, −1 none.
 int hullHolding(vec3 p) {
     int count = int(water.hullCount.x);
     for (int i = 0; i < MAX_HULL_CLIPS; ++i) {
         if (i >= count) break;
-        vec3 q = (water.hullFromWorld[i] * vec4(p, 1.0)).xyz;
-        if (q.y <= -1.0 || abs(q.z) >= 1.0 || abs(q.x) >= 1.0) continue;
-        if (water.hullPlan[i].x < 0.5) return i;  // the box
-        if (abs(q.x) < (1.0 - HULL_CLIP_MARGIN) * shipHalfBeam(q.z, min(q.y, 1.0))) return i;
+        if (insideHull(i, p)) return i;
     }
     return -1;
 }
@@ -52,13 +57,10 @@ layout(binding = SCENE_DEPTH_UNIT) uniform sampler2D u_sceneDepth;
 // the depth's rounding and the deck's edge pixels.
 const float HULL_SCENE_MARGIN = 0.05;
 
-// Whether the opaque point at window depth z behind this pixel belongs to hull i: within its
-// box's footprint, over its keel, at any height (its deck, cabin, mast); nothing (z = 1) is not.
-bool hullBehind(int i, float z) {
-    if (z >= 1.0) return false;
-    vec2 ndc = gl_FragCoord.xy / frame.viewport.xy * 2.0 - 1.0;
-    vec4 world = frame.inverseViewProjection * vec4(ndc, 2.0 * z - 1.0, 1.0);
-    vec3 q = (water.hullFromWorld[i] * vec4(world.xyz / world.w, 1.0)).xyz;
+// Whether opaque world point s belongs to hull i: within its box's footprint, over its keel, at
+// any height (its deck, cabin, mast).
+bool hullOwns(int i, vec3 s) {
+    vec3 q = (water.hullFromWorld[i] * vec4(s, 1.0)).xyz;
     return q.y > -1.0 - HULL_SCENE_MARGIN && max(abs(q.x), abs(q.z)) < 1.0 + HULL_SCENE_MARGIN;
 }
 
@@ -67,16 +69,26 @@ bool hullBehind(int i, float z) {
 // open boat). Where the view ray leaves the hull under the sea (the eye over a deck, looking
 // out under the far side) nothing lies behind the surface but the sky: the water stays.
 bool hullClipped(vec3 p) {
-    int i = hullHolding(p);
-    if (i < 0) return false;
-    ivec2 pixel = ivec2(gl_FragCoord.xy);
-#if WATER_HULL_DEPTH_SAMPLES > 1
-    for (int s = 0; s < WATER_HULL_DEPTH_SAMPLES; ++s)
-        if (!hullBehind(i, texelFetch(u_sceneDepth, pixel, s).r)) return false;
-    return true;
-#else
-    return hullBehind(i, texelFetch(u_sceneDepth, pixel, 0).r);
-#endif
+    int first = hullHolding(p);
+    if (first < 0) return false;
+    // The opaque points behind the pixel, a world point a sample; nothing behind one: keep.
+    vec3 behind[WATER_HULL_DEPTH_SAMPLES];
+    vec2 ndc = gl_FragCoord.xy / frame.viewport.xy * 2.0 - 1.0;
+    for (int s = 0; s < WATER_HULL_DEPTH_SAMPLES; ++s) {
+        float z = texelFetch(u_sceneDepth, ivec2(gl_FragCoord.xy), s).r;  // single-sampled: s is the level, 0
+        if (z >= 1.0) return false;
+        vec4 world = frame.inverseViewProjection * vec4(ndc, 2.0 * z - 1.0, 1.0);
+        behind[s] = world.xyz / world.w;
+    }
+    int count = int(water.hullCount.x);
+    for (int i = first; i < MAX_HULL_CLIPS; ++i) {  // overlapping hulls (a boat on a deck): any that holds both
+        if (i >= count) break;
+        if (i > first && !insideHull(i, p)) continue;
+        bool owned = true;
+        for (int s = 0; s < WATER_HULL_DEPTH_SAMPLES; ++s) owned = owned && hullOwns(i, behind[s]);
+        if (owned) return true;
+    }
+    return false;
 }
 
 #endif
