@@ -34,6 +34,7 @@ SHARED_CONST RIPPLE_SLOPES_UNIT = 9;     // water: ripple slopes
 SHARED_CONST FOAM_PATTERN_UNIT = 10;     // water: the baked foam pattern
 SHARED_CONST RIPPLE_LEVELS_UNIT = 11;    // water: the coarse ewave levels' heights, 2D array
 SHARED_CONST RIPPLE_LEVEL_SLOPES_UNIT = 12;  // water: their slopes, 2D array
+SHARED_CONST SCENE_DEPTH_UNIT = 13;      // water (hull clip): the opaque scene's depth before the water pass
 SHARED_CONST POST_SOURCE_UNIT = 0;       // post (FXAA, upscale): the frame read
 
 // --- uniform locations, per program

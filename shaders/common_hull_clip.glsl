@@ -3,7 +3,9 @@
 // boat "water-tight" masks of other engines do). Each hull is its box's unit cube (x across, y
 // up from the keel at −1 to the deck at +1, z to the bow), with an outline on the deck plane
 // that narrows with depth as the hull's section does; everything above the keel inside that
-// outline is the hull's, up to any height (a wave's crest over the deck). docs/frame.md#hulls.
+// outline is the hull's, up to any height (a wave's crest over the deck). A water fragment there
+// is dropped only where the opaque scene behind it is that hull's, so a dropped fragment never
+// opens onto the sky. docs/frame.md#hulls.
 #ifndef COMMON_HULL_CLIP_GLSL
 #define COMMON_HULL_CLIP_GLSL
 #include "common_bindings.glsl"
@@ -25,15 +27,66 @@ float shipHalfBeam(float w, float y) {
     return y <= keel ? 0.0 : deck * sqrt(max(1.0 - s * s, 0.0));
 }
 
-// Whether world point p lies inside a hull (over its keel, within its outline).
-bool insideHull(vec3 p) {
+// Whether world point p lies inside hull i (over its keel, within its outline).
+bool insideHull(int i, vec3 p) {
+    vec3 q = (water.hullFromWorld[i] * vec4(p, 1.0)).xyz;
+    if (q.y <= -1.0 || abs(q.z) >= 1.0 || abs(q.x) >= 1.0) return false;
+    if (water.hullPlan[i].x < 0.5) return true;  // the box
+    return abs(q.x) < (1.0 - HULL_CLIP_MARGIN) * shipHalfBeam(q.z, min(q.y, 1.0));
+}
+
+// The first hull (nearest the eye first) that holds world point p, −1 none.
+int hullHolding(vec3 p) {
     int count = int(water.hullCount.x);
     for (int i = 0; i < MAX_HULL_CLIPS; ++i) {
         if (i >= count) break;
-        vec3 q = (water.hullFromWorld[i] * vec4(p, 1.0)).xyz;
-        if (q.y <= -1.0 || abs(q.z) >= 1.0 || abs(q.x) >= 1.0) continue;
-        if (water.hullPlan[i].x < 0.5) return true;  // the box
-        if (abs(q.x) < (1.0 - HULL_CLIP_MARGIN) * shipHalfBeam(q.z, min(q.y, 1.0))) return true;
+        if (insideHull(i, p)) return i;
+    }
+    return -1;
+}
+
+// The opaque scene's window depth before the water pass (WaterPass::copySceneDepth), with the
+// frame's samples: a discarded water fragment shows what that depth holds.
+#if WATER_HULL_DEPTH_SAMPLES > 1
+layout(binding = SCENE_DEPTH_UNIT) uniform sampler2DMS u_sceneDepth;
+#else
+layout(binding = SCENE_DEPTH_UNIT) uniform sampler2D u_sceneDepth;
+#endif
+
+// How far past its box (a share of each half-extent) an opaque point still counts as the hull's:
+// the depth's rounding and the deck's edge pixels.
+const float HULL_SCENE_MARGIN = 0.05;
+
+// Whether opaque world point s belongs to hull i: within its box's footprint, over its keel, at
+// any height (its deck, cabin, mast).
+bool hullOwns(int i, vec3 s) {
+    vec3 q = (water.hullFromWorld[i] * vec4(s, 1.0)).xyz;
+    return q.y > -1.0 - HULL_SCENE_MARGIN && max(abs(q.x), abs(q.z)) < 1.0 + HULL_SCENE_MARGIN;
+}
+
+// Whether the water fragment at world point p is clipped: it lies inside a hull and, behind it
+// at every sample of the pixel, the depth buffer holds that hull (its deck, the inside of an
+// open boat). Where the view ray leaves the hull under the sea (the eye over a deck, looking
+// out under the far side) nothing lies behind the surface but the sky: the water stays.
+bool hullClipped(vec3 p) {
+    int first = hullHolding(p);
+    if (first < 0) return false;
+    // The opaque points behind the pixel, a world point a sample; nothing behind one: keep.
+    vec3 behind[WATER_HULL_DEPTH_SAMPLES];
+    vec2 ndc = gl_FragCoord.xy / frame.viewport.xy * 2.0 - 1.0;
+    for (int s = 0; s < WATER_HULL_DEPTH_SAMPLES; ++s) {
+        float z = texelFetch(u_sceneDepth, ivec2(gl_FragCoord.xy), s).r;  // single-sampled: s is the level, 0
+        if (z >= 1.0) return false;
+        vec4 world = frame.inverseViewProjection * vec4(ndc, 2.0 * z - 1.0, 1.0);
+        behind[s] = world.xyz / world.w;
+    }
+    int count = int(water.hullCount.x);
+    for (int i = first; i < MAX_HULL_CLIPS; ++i) {  // overlapping hulls (a boat on a deck): any that holds both
+        if (i >= count) break;
+        if (i > first && !insideHull(i, p)) continue;
+        bool owned = true;
+        for (int s = 0; s < WATER_HULL_DEPTH_SAMPLES; ++s) owned = owned && hullOwns(i, behind[s]);
+        if (owned) return true;
     }
     return false;
 }

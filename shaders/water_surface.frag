@@ -9,7 +9,8 @@
 // holds coverage.
 // Each FFT cascade's slopes fade out with distance ([render] far_fade) as its displacement does.
 // Light through thin crests: common_subsurface.glsl. From below: common_underwater*.glsl.
-// Not inside a floating hull (WATER_HULL_CLIP): common_hull_clip.glsl.
+// Not inside a floating hull where the hull lies behind (WATER_HULL_CLIP, WATER_HULL_DEPTH_SAMPLES):
+// common_hull_clip.glsl.
 // Compiled per gfx::WaterVariant: the cascade count and the switches (WATER_REFLECTIONS,
 // WATER_REFRACTIONS, WATER_FOAM, WATER_FOAM_MAP, WATER_RIPPLES), the eye's side
 // (WATER_UNDERWATER; WATER_WATERLINE: the surface crosses the near plane, each pixel takes its
@@ -62,7 +63,7 @@ float eyeDepth(float windowZ) {
 
 void main() {
     // Inside a hull there is no sea to draw, from above or below: what the hull holds shows.
-    if (WATER_HULL_CLIP && insideHull(v_world)) discard;
+    if (WATER_HULL_CLIP && hullClipped(v_world)) discard;
     float t = frame.cameraPositionTime.w;
     vec2 ripple = rippleSlope(v_world.xz);
     vec2 slope = v_gerstnerSlope + ripple;

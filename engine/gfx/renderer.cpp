@@ -74,14 +74,15 @@ void Renderer::render(const CameraView& camera, const WaterView& water, const st
     m_splash.upload(m_frame, drops, camera);
     if (def.reflections && !state.underwater) m_surfaces.reflectionPass(m_frame, m_objects, m_splash, objects);
     if (def.refractions && !state.underwater) m_surfaces.refractionPass(m_frame, m_objects, objects);
-    glBindFramebuffer(GL_FRAMEBUFFER, m_post.frameFramebuffer(m_frame));
+    const GLuint frameFramebuffer = m_post.frameFramebuffer(m_frame);
+    glBindFramebuffer(GL_FRAMEBUFFER, frameFramebuffer);
     glViewport(0, 0, state.internal.x, state.internal.y);
     glClearColor(0, 0, 0, 1);
     glClearDepth(1.0);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     m_frame.views.bind(MAIN_VIEW);
     m_objects.opaquePass(m_frame, objects);
-    m_water.waterPass(m_frame, m_sky, m_surfaces);
+    m_water.waterPass(m_frame, m_sky, m_surfaces, frameFramebuffer);
     m_sky.skyPass(m_frame);              // it shades only the pixels nothing else covered
     m_splash.splashPass(m_frame);        // after the sky: the sprites write no depth
     if (!m_post.direct(m_frame)) m_post.postPass(m_frame, size);

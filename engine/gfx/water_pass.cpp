@@ -54,7 +54,8 @@ std::string WaterVariant::defines() const {
            flag("WATER_FOAM_MAP", foamMap) + flag("WATER_UNDERWATER", underwater) + flag("WATER_WATERLINE", waterline) +
            flag("WATER_EXACT_FRESNEL", exactFresnel) +
            flag("WATER_REFLECTIONS", reflections) + flag("WATER_REFRACTIONS", refractions) + flag("WATER_FOAM", foam) +
-           flag("WATER_HULL_CLIP", hullClip) + (fullQuality ? "#define WATER_FULL_QUALITY\n" : "");
+           flag("WATER_HULL_CLIP", hullClip) + "#define WATER_HULL_DEPTH_SAMPLES " + std::to_string(hullDepthSamples) + "\n" +
+           (fullQuality ? "#define WATER_FULL_QUALITY\n" : "");
 }
 
 WaterPass::WaterPass() : m_uniforms(createBuffer("water uniforms", sizeof(WaterUniforms))) {}
@@ -140,7 +141,8 @@ void WaterPass::uploadUniforms(FrameContext& frame, const CameraView& camera, co
                  .refractions = def.refractions,
                  .foam = def.foam,
                  .fullQuality = def.water_full_quality,
-                 .hullClip = hulls > 0};
+                 .hullClip = hulls > 0,
+                 .hullDepthSamples = hulls > 0 && frame.state.antialias == Antialias::Msaa4 ? MSAA_SAMPLES : 1};
     glNamedBufferSubData(m_uniforms.id(), 0, sizeof u, &u);
     glBindBufferBase(GL_UNIFORM_BUFFER, WATER_BLOCK, m_uniforms.id());
 }
@@ -159,9 +161,47 @@ void WaterPass::prepare(FrameContext& frame, const CameraView& camera, const Wat
     uploadUniforms(frame, camera, water);
 }
 
-void WaterPass::waterPass(FrameContext& frame, const SkyPass& sky, const SurfacePasses& surfaces) {
+// The hull clip drops a water fragment only where the opaque scene behind it is the hull's
+// (common_hull_clip.glsl), so the water reads the depth the objects left, copied out of the
+// frame's own depth buffer (which the water pass tests and writes): straight from the read
+// framebuffer when single-sampled (any depth format converts), by a blit of the samples in msaa4.
+void WaterPass::copySceneDepth(const FrameContext& frame, GLuint frameFramebuffer) {
+    const glm::ivec2 size = frame.state.internal;
+    const int samples = m_variant.hullDepthSamples;
+    if (m_sceneDepthSize != size || m_sceneDepthSamples != samples) {
+        GLuint id;
+        glCreateTextures(samples > 1 ? GL_TEXTURE_2D_MULTISAMPLE : GL_TEXTURE_2D, 1, &id);
+        glObjectLabel(GL_TEXTURE, id, -1, "hull clip: scene depth");
+        if (samples > 1) {
+            glTextureStorage2DMultisample(id, samples, GL_DEPTH_COMPONENT32F, size.x, size.y, GL_TRUE);
+        } else {
+            glTextureStorage2D(id, 1, GL_DEPTH_COMPONENT32F, size.x, size.y);
+            glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+            glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        }
+        m_sceneDepth = Texture(id);
+        GLuint fbo;
+        glCreateFramebuffers(1, &fbo);
+        glObjectLabel(GL_FRAMEBUFFER, fbo, -1, "hull clip: scene depth");
+        glNamedFramebufferTexture(fbo, GL_DEPTH_ATTACHMENT, id, 0);
+        glNamedFramebufferDrawBuffer(fbo, GL_NONE);
+        glNamedFramebufferReadBuffer(fbo, GL_NONE);
+        m_sceneDepthFramebuffer = Framebuffer(fbo);
+        m_sceneDepthSize = size;
+        m_sceneDepthSamples = samples;
+    }
+    if (samples > 1)
+        glBlitNamedFramebuffer(frameFramebuffer, m_sceneDepthFramebuffer.id(), 0, 0, size.x, size.y, 0, 0, size.x, size.y,
+                               GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+    else
+        glCopyTextureSubImage2D(m_sceneDepth.id(), 0, 0, 0, 0, 0, size.x, size.y);  // the bound read framebuffer's depth
+    glBindTextureUnit(SCENE_DEPTH_UNIT, m_sceneDepth.id());
+}
+
+void WaterPass::waterPass(FrameContext& frame, const SkyPass& sky, const SurfacePasses& surfaces, GLuint frameFramebuffer) {
     if (!m_grid.visible) return;
     const PassScope scope(frame, WATER_PASS);
+    if (m_variant.hullClip) copySceneDepth(frame, frameFramebuffer);
     glBindTextureUnit(SKY_UNIT, sky.cube().id());
     glBindTextureUnit(REFLECTION_UNIT, surfaces.reflection().color.id());
     glBindTextureUnit(REFRACTION_UNIT, surfaces.refraction().color.id());
@@ -182,7 +222,7 @@ void WaterPass::waterPass(FrameContext& frame, const SkyPass& sky, const Surface
     glBindVertexArray(m_gridVao.id());
     glDrawElements(GL_TRIANGLES, m_gridIndexCount, GL_UNSIGNED_INT, nullptr);
     // The targets are drawn into again next frame: never leave them bound for sampling.
-    for (GLuint unit : {REFLECTION_UNIT, REFRACTION_UNIT, REFLECTION_DEPTH_UNIT}) glBindTextureUnit(unit, 0);
+    for (GLuint unit : {REFLECTION_UNIT, REFRACTION_UNIT, REFLECTION_DEPTH_UNIT, SCENE_DEPTH_UNIT}) glBindTextureUnit(unit, 0);
     for (GLuint unit : {SLOPES_UNIT, DETAIL_UNIT, FOAM_PATTERN_UNIT}) glBindSampler(unit, 0);
 }
 

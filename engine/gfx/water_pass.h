@@ -71,6 +71,7 @@ struct WaterVariant {
     bool reflections = true, refractions = true, foam = true;  ///< [render] switches
     bool fullQuality = false;  ///< [render] water_full_quality: every term per pixel, the reference
     bool hullClip = false;     ///< hulls are clipped out of the water ([render] hull_clip and at least one hull)
+    int hullDepthSamples = 1;  ///< samples a pixel of the frame's depth the clip reads (4 in msaa4)
     /// The lines put after the shaders' #version line.
     std::string defines() const;
 };
@@ -81,8 +82,9 @@ public:
     /// Before the object passes, which clip against (and mirror about) the surface: the grid for
     /// the camera, the water uniforms, the layers' textures bound; sets frame.state.waterVisible.
     void prepare(FrameContext& frame, const CameraView& camera, const WaterView& water);
-    /// in: water layers, reflection and refraction targets, sky; out: framebuffer.
-    void waterPass(FrameContext& frame, const SkyPass& sky, const SurfacePasses& surfaces);
+    /// in: water layers, reflection and refraction targets, sky, and the frame's framebuffer
+    /// `frameFramebuffer` (0: the default one), bound, holding the opaque scene; out: the water in it.
+    void waterPass(FrameContext& frame, const SkyPass& sky, const SurfacePasses& surfaces, GLuint frameFramebuffer);
     const WaterDetail& detail() const { return m_detail; }
     void listPrograms(ProgramList& out) const;
 
@@ -90,6 +92,7 @@ private:
     void buildGrid(int resolution);
     int uploadHullClips(const WaterView& water, const CameraView& camera, WaterUniforms& u);
     void uploadUniforms(FrameContext& frame, const CameraView& camera, const WaterView& water);
+    void copySceneDepth(const FrameContext& frame, GLuint frameFramebuffer);
 
     WaterDetail m_detail;
     WaterLayers m_layers;
@@ -102,6 +105,12 @@ private:
     WaterVariant m_variant;       // this frame's
     float m_crestBound = 0.0f;    // this frame's tallest crest above the mean level (m)
     std::map<std::string, Program> m_programs;  // by WaterVariant::defines(), compiled on first use
+    // The hull clip's copy of the opaque scene's depth, made before the water is drawn
+    // (DEPTH_COMPONENT32F, the frame's size and samples), and the framebuffer that holds it.
+    Texture m_sceneDepth;
+    Framebuffer m_sceneDepthFramebuffer;
+    glm::ivec2 m_sceneDepthSize{0};
+    int m_sceneDepthSamples = 0;
 };
 
 } // namespace ob::gfx

@@ -44,7 +44,7 @@ struct RenderDef {
     bool far_fade = true;                           ///< far field without regular patterns: FFT cascades fade out by tile_fade tiles, Gerstner waves where the grid is too sparse to sample them
     float tile_fade = 6.0f;                         ///< FFT cascade c is gone past this many of its tiles from the eye (fading from a third of it), [1, 1000]
     bool water_full_quality = false;                ///< every water term per pixel (the reference the shipped shading is tested against); slower on a software rasteriser
-    bool hull_clip = false;                         ///< no water drawn inside a floating hull (its clip volume, shaders/common_hull_clip.glsl); off: it opens holes (docs/frame.md#hulls)
+    bool hull_clip = true;                          ///< no water drawn inside a floating hull where the hull lies behind it (its clip volume, shaders/common_hull_clip.glsl, docs/frame.md#hulls)
     bool dither = true;                             ///< ±1 LSB triangular noise on every colour written in 8 bits (shaders/common_dither.glsl): no banding in smooth gradients; off: plain rounding
     float subsurface = 1.0f;                        ///< light through thin crests: the turquoise of a backlit crest (shaders/common_subsurface.glsl), × its strength, [0, 4]; 0 = off
 };

@@ -38,9 +38,10 @@ struct ObjectDraw {
     bool hull = false;              ///< a floating hull (the water is clipped out of it): drawn in the main view even when wholly under the surface
 };
 
-/// A floating hull's clip volume: the water surface is not drawn inside it (shaders/
-/// common_hull_clip.glsl), so no sea shows in a hull where the waves rise above its deck or in
-/// an open boat. Its outline on the hull's deck plane tapers with depth as the hull's section.
+/// A floating hull's clip volume: the water surface is not drawn inside it where the hull's own
+/// surface lies behind (shaders/common_hull_clip.glsl), so no sea shows in a hull where the waves
+/// rise above its deck or in an open boat. Its outline on the hull's deck plane tapers with depth
+/// as the hull's section.
 struct HullClip {
     enum class Plan : uint8_t {
         Box,   ///< the whole box (the built-in box mesh)

@@ -32,7 +32,7 @@ const std::map<std::string, int> EXPECTED_UNITS = {
     {"u_reflection", REFLECTION_UNIT}, {"u_refraction", REFRACTION_UNIT}, {"u_detail", DETAIL_UNIT},
     {"u_reflectionDepth", REFLECTION_DEPTH_UNIT}, {"u_foamMap", FOAM_UNIT}, {"u_rippleSlopes", RIPPLE_SLOPES_UNIT},
     {"u_foamPattern", FOAM_PATTERN_UNIT}, {"u_source", POST_SOURCE_UNIT}, {"u_rippleLevels", RIPPLE_LEVELS_UNIT},
-    {"u_rippleLevelSlopes", RIPPLE_LEVEL_SLOPES_UNIT},
+    {"u_rippleLevelSlopes", RIPPLE_LEVEL_SLOPES_UNIT}, {"u_sceneDepth", SCENE_DEPTH_UNIT},
 };
 const std::map<std::string, int> EXPECTED_IMAGES = {{"u_displacement", OCEAN_DISPLACEMENT_IMAGE}, {"u_slopes", OCEAN_SLOPES_IMAGE}};
 const std::map<std::string, int> EXPECTED_LOCATIONS = {
@@ -147,8 +147,9 @@ void checkProgram(const std::string& label, GLuint program, std::set<std::string
 }
 
 // A frame that builds every program: FFT layers, ripples and a foam map, an object across the
-// surface (both object programs), splash drops (both sprite programs), FXAA below scale 1; with
-// the eye at `eyeHeight` (m; below the surface: the water's underwater variant).
+// surface (both object programs) whose hull the water is clipped out of, splash drops (both
+// sprite programs), FXAA below scale 1; with the eye at `eyeHeight` (m; below the surface: the
+// water's underwater variant).
 void renderEverything(gfx::Renderer& renderer, const ocean::OceanTextures& textures, float eyeHeight) {
     static std::vector<float> ripples(16 * 16, 0.01f), foam(8 * 8, 0.5f);
     gfx::WaterView water;
@@ -171,6 +172,7 @@ void renderEverything(gfx::Renderer& renderer, const ocean::OceanTextures& textu
     ship.model = glm::scale(glm::mat4(1.0f), glm::vec3(8.0f));
     gfx::ObjectDraw ball;  // small, across the surface: the tangent plane cut
     ball.model = glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(3.0f, 0.0f, 0.0f)), glm::vec3(0.5f));
+    water.hulls.push_back({glm::inverse(ship.model), gfx::HullClip::Plan::Box});
     const std::vector<gfx::SplashDrop> drops = {glm::vec4(0.0f, 1.0f, 0.0f, 0.05f)};
     renderer.render(camera, water, {ship, ball}, 0.0, {160, 90}, drops);
 }
