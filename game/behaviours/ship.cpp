@@ -73,8 +73,8 @@ ecs::Entity spawnShip(ecs::World& world, const ObjectDef& o) {
     interaction::BoundingSphere sphere = boundingSphereFor(o, paperShipSphere(), rippleCellSize(world));
 
     // The hull: the renderer clips the water out of it (gfx::HullClip), and with
-    // ripples.hulls_obstruct (ewave) its waterplane holds the ripples' water at its hollow,
-    // pushing what its mask moves just outside it (docs/ewave.md#hulls). The hollow is the
+    // ripples.hulls_obstruct (ewave) its waterplane holds the ripples' water at its hollow and
+    // no source presses inside it (docs/ewave.md#hulls). The hollow is the
     // pressure head of its keel spheres, what they press on a free surface (hullHollow).
     world.add<Obstacle>(e, {Obstacle::Shape::Hull, o.ship.hull * 0.5f, hullHollow(sphere)});
     interaction::SphereSet set;

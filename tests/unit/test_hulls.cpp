@@ -96,7 +96,7 @@ TEST_CASE("hulls: a hull moving over a periodic field keeps the mean level to 1e
     const int n = 128;
     const float dt = 1.0f / 60.0f;
     // ewave's hull holds its water at a hollow 3 cm deep (deeper than the bump is high), and what
-    // that moves is pushed out too; kang2008 takes no hulls in a scene, its levels are checked bare.
+    // that moves is put back too; kang2008 takes no hulls in a scene, its levels are checked bare.
     auto hullAt = [&](int s, float hollow = 0.0f) {
         ObstacleShape h = hull({2.0f + 3.0f * dt * float(s), 6.4f}, {1.5f, 0.4f});
         h.hollow = hollow;
@@ -235,7 +235,7 @@ namespace {
 // along x at `speed` m/s over a 128 m × 64 m ewave field of 0.25 m cells (absorbing border,
 // no extra damping), 12 s at 30 Hz from x = 24 m, at full push from the start as a scene's ship.
 // `hull`: its waterplane obstructs as EWaveSolver::step runs it (no source inside it, its water
-// held at hullHollow, pushed out); otherwise the spheres press a free surface. Returns the
+// held at hullHollow); otherwise the spheres press a free surface. Returns the
 // largest |h| over the run, anywhere (what the soak bounds) and outside the hull.
 struct ShipRun {
     double largest = 0.0;  // m, anywhere
@@ -292,7 +292,7 @@ ShipRun shipRun(bool hull, double speed) {
 // The bound: the hull's waves are the linear response to its hollow, a pressure head of H on
 // the keel line; the same keel spheres pressing a free surface (the pressure head H itself)
 // reach 1.65·H at 6 m/s (measured, the reference). So the hull may reach at most 2·H, and at
-// most 1.5 times the spheres' own largest. Measured: 0.364 m (its hollow; 0.22 m outside it)
+// most 1.5 times the spheres' own largest. Measured: 0.364 m (its hollow; 0.245 m outside it)
 // against 0.60 m for the spheres alone. The pumping hull (the spheres pressing inside a mask
 // held at 0, its water pushed out beside it) reached 3.7 m here in 12 s (6.2 m in the soak).
 TEST_CASE("hulls: a ship's hull holds its water at its hollow and does not pump: its waves stay as high as without it", "[obstacles][hulls]") {
