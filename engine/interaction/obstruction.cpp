@@ -18,25 +18,12 @@ float ObstacleShape::distance(glm::vec2 p) const {
     return (k0 - 1.0f) * k0 / k1;
 }
 
-glm::vec2 ObstacleShape::pushedOut(glm::vec2 p, float offset) const {
-    const glm::vec2 second(-axis.y, axis.x);
+float ObstacleShape::hollowLevel(glm::vec2 p) const {
+    if (!displaces || hollow <= 0.0f) return 0.0f;
     const glm::vec2 d = p - centre;
-    glm::vec2 q(glm::dot(d, axis), glm::dot(d, second));  // the shape's frame
-    // The shape's own norm of q (1 on the outline): Euclidean over the semi-axes for an
-    // ellipse, the larger ratio for a rectangle. At the centre itself, out along the first axis.
-    const glm::vec2 r = q / half;
-    float k = kind == Kind::Ellipse ? glm::length(r) : std::max(std::abs(r.x), std::abs(r.y));
-    if (k < 1e-6f) {
-        q = {half.x, 0.0f};
-        k = 1.0f;
-    }
-    const glm::vec2 b = q / k;  // on the outline
-    glm::vec2 n;                // its outward normal
-    if (kind == Kind::Ellipse) n = b / (half * half);
-    else n = std::abs(b.x) / half.x >= std::abs(b.y) / half.y ? glm::vec2(b.x, 0.0f) : glm::vec2(0.0f, b.y);
-    n = glm::normalize(n);
-    const glm::vec2 out = b + n * offset;
-    return centre + out.x * axis + out.y * second;
+    const glm::vec2 r = glm::vec2(glm::dot(d, axis), glm::dot(d, glm::vec2(-axis.y, axis.x))) / half;
+    const float k = kind == Kind::Ellipse ? glm::dot(r, r) : std::pow(std::max(std::abs(r.x), std::abs(r.y)), 2.0f);
+    return -hollow * std::max(0.0f, 1.0f - k);
 }
 
 } // namespace ob::interaction

@@ -67,7 +67,7 @@ struct RippleDef : RippleModels::Defs {
     int sponge_width = 32;                   ///< absorbing band width, cells, [1, 512]; 32 reflects ≤ 5% of a ring's amplitude
     RippleFollow follow = RippleFollow::Fixed;  ///< "fixed" at `center`, "camera" or "target"
     glm::vec2 center{0.0f, 0.0f};            ///< patch centre when fixed, world [x, z] m
-    bool hulls_obstruct = false;             ///< ships' hulls obstruct the layer (ewave; docs/ewave.md#hulls: off until their own sources are reconciled with the mask)
+    bool hulls_obstruct = true;              ///< ships' hulls obstruct the layer, holding its water at their hollow (ewave; kang2008 ignores it; docs/ewave.md#hulls)
     RippleReferenceDef reference;            ///< [ripples.reference]: object B of eq. 6
     environment::EnvironmentDef environment; ///< g, ρ, σ of the waves: the scene's [environment], set when it is built (not a key)
 };
@@ -86,7 +86,8 @@ template <class V> void describe(V& v, RippleDef& d) {
     v.field("sponge_width", d.sponge_width, range(1, 512), "absorbing band width (cells)");
     v.field("follow", d.follow, "patch stays at center, follows the camera, or the point it looks at");
     v.field("center", d.center, any(), "patch centre when fixed, world [x, z] m");
-    v.field("hulls_obstruct", d.hulls_obstruct, "ships' hulls obstruct the ripples, pushing the water aside (ewave; experimental)");
+    v.field("hulls_obstruct", d.hulls_obstruct,
+            "ships' hulls obstruct the ripples, holding the water inside them at their hollow and pushing it aside (ewave; kang2008 ignores it)");
     v.section("reference", d.reference);
 }
 

@@ -42,11 +42,12 @@ public:
     virtual void step(float dt) = 0;
     /// The cells bodies occupy on the surface (interaction/obstruction.h: fixed bodies, hulls),
     /// for the steps from the next on until set again: after each step every level of the state
-    /// is scaled there by the cell's keep factor and what that removed is spread evenly over
-    /// the grid (the mean level kept). Empty (the default): no obstruction, the step as before.
+    /// is scaled there by the cell's keep factor towards its level (0, or a hull's hollow) and
+    /// what that moved is spread evenly over the grid (the mean level kept). Empty (the default): no obstruction, the step as before.
     virtual void setObstruction(std::span<const ObstructionCell> cells) = 0;
-    /// Whether floating hulls (displacing footprints) obstruct this model; false: the patch
-    /// hands it fixed bodies only (kang2008: the paper's ship is its six spheres).
+    /// Whether floating hulls (displacing footprints: their water held at their hollow, no
+    /// source inside) obstruct this model; false: the patch hands it fixed bodies only
+    /// (kang2008: the paper's ship is its six spheres).
     virtual bool obstructsHulls() const { return true; }
     /// Moves the data by `shift` cells, new (i, j) = old (i + shift.x, j + shift.y), cells
     /// from outside 0 (scrollCells), so the waves stay put in the world while the grid moves.

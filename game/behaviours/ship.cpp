@@ -50,6 +50,10 @@ interaction::BoundingSphere paperShipSphere() {
 
 } // namespace
 
+float hullHollow(const interaction::BoundingSphere& keel) {
+    return keel.heightRatio * keel.radius * std::max(0.0f, 1.0f + keel.accelerationFactor);
+}
+
 ecs::Entity spawnShip(ecs::World& world, const ObjectDef& o) {
     auto& physicsWorld = *world.resource<physics::PhysicsWorld>();
     const float volume = o.ship.hull.x * o.ship.hull.y * o.ship.hull.z;
@@ -63,15 +67,16 @@ ecs::Entity spawnShip(ecs::World& world, const ObjectDef& o) {
     Renderable look{gfx::MeshKind::Box, o.model.empty() ? o.ship.hull * 0.5f : o.ship.hull / ShipDef{}.hull, o.color, o.model};
     ecs::Entity e = spawnBody(world, ObjectType::Ship, o.name, id, latticeProbes(o.ship.hull, PROBES), volume, mass, start, look);
     world.get<Body>(e).horizontalDrag = 0.0f;  // the hull model below resists horizontal motion
-    // The hull: the renderer clips the water out of it (gfx::HullClip), and with
-    // ripples.hulls_obstruct its waterplane obstructs the ripples, pushing what its mask removes
-    // just outside it (docs/ewave.md#hulls).
-    world.add<Obstacle>(e, {Obstacle::Shape::Hull, o.ship.hull * 0.5f});
-
     // Six spheres on the keel line at the still-water line (draft = hull depth · density ratio),
     // so they always cross the surface ([Kang2008]: "always in contact").
     const float draft = o.ship.hull.y * std::min(o.ship.density / physicsDef(world).water_density, 1.0f);
     interaction::BoundingSphere sphere = boundingSphereFor(o, paperShipSphere(), rippleCellSize(world));
+
+    // The hull: the renderer clips the water out of it (gfx::HullClip), and with
+    // ripples.hulls_obstruct (ewave) its waterplane holds the ripples' water at its hollow and
+    // no source presses inside it (docs/ewave.md#hulls). The hollow is the
+    // pressure head of its keel spheres, what they press on a free surface (hullHollow).
+    world.add<Obstacle>(e, {Obstacle::Shape::Hull, o.ship.hull * 0.5f, hullHollow(sphere)});
     interaction::SphereSet set;
     set.hull = true;
     for (int k = 0; k < SHIP_SPHERES; ++k) {

@@ -22,6 +22,11 @@ struct Ship {
     float rudder = 0.0f;               ///< [−1, 1], + turns to starboard (right)
 };
 
+/// The depth of a hull's hollow in the ewave ripple layer, m: the pressure head p/(ρg) of its
+/// keel sphere `keel` as an ewave source (interaction::ewaveSource: g·SHR·(1 + AF) over a patch
+/// of radius R, whose pressure head is that times R/g), SHR·R·(1 + AF). What its keel spheres
+/// press on a free surface; with ripples.hulls_obstruct the hull holds its water there instead.
+float hullHollow(const interaction::BoundingSphere& keel);
 /// Creates a ship from its [[objects]] entry (type "ship").
 ecs::Entity spawnShip(ecs::World& world, const ObjectDef& def);
 /// Script phase: the player's keys or the waypoint pilot set throttle and rudder; the hull

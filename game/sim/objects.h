@@ -217,6 +217,7 @@ struct Obstacle {
     };
     Shape shape = Shape::Box;
     glm::vec3 half{0.5f};  ///< m, in the body's frame
+    float hollow = 0.0f;   ///< Hull: depth of its hollow in the ripple layer, m, >= 0 (the pressure head of its keel spheres)
 };
 
 /// How an object looks: mesh, scale (unit mesh → object), colour.

@@ -68,7 +68,11 @@ std::optional<interaction::ObstacleShape> hullWaterplane(const glm::vec3& half, 
 std::optional<interaction::ObstacleShape> waterlineFootprint(const Obstacle& obstacle, const glm::vec3& position,
                                                              const glm::quat& rotation) {
     using interaction::ObstacleShape;
-    if (obstacle.shape == Obstacle::Shape::Hull) return hullWaterplane(obstacle.half, position, rotation, 0.0f);
+    if (obstacle.shape == Obstacle::Shape::Hull) {
+        std::optional<interaction::ObstacleShape> s = hullWaterplane(obstacle.half, position, rotation, 0.0f);
+        if (s) s->hollow = obstacle.hollow;
+        return s;
+    }
     if (obstacle.shape == Obstacle::Shape::Sphere) {
         const float r = obstacle.half.x, y = position.y;
         if (std::abs(y) >= r) return std::nullopt;
@@ -103,6 +107,7 @@ std::vector<interaction::ObstacleShape> obstacleFootprints(ecs::World& world, co
             sea.ripples = false;  // the ripple layer is what the footprint obstructs, not where the hull sits
             const float waterY = water ? water->sample(t->position.x, t->position.z, sea).height : 0.0f;
             s = hullWaterplane(o.half, t->position, t->rotation, waterY);
+            if (s) s->hollow = o.hollow;
         } else {
             s = waterlineFootprint(o, t->position, t->rotation);
         }

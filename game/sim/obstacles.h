@@ -19,7 +19,7 @@ namespace ob::game {
 /// Where a body of `obstacle` at `position`, `rotation` cuts the plane y = 0 (world m), or
 /// nothing when it does not reach it. A box's footprint takes the body's turn about +y only (its
 /// local x axis projected on the plane; a box tipped far over keeps its upright footprint, a
-/// fair account of a wall or a pillar); a hull's is hullWaterplane at y = 0.
+/// fair account of a wall or a pillar); a hull's is hullWaterplane at y = 0, with its hollow.
 std::optional<interaction::ObstacleShape> waterlineFootprint(const Obstacle& obstacle, const glm::vec3& position,
                                                              const glm::quat& rotation);
 
@@ -34,7 +34,8 @@ std::optional<interaction::ObstacleShape> hullWaterplane(const glm::vec3& half, 
 
 /// Every Obstacle entity's waterline footprint, in entity order. Fixed bodies cut the mean
 /// plane y = 0; hulls cut the sea under their centre (`water` without its ripples: a ship on a
-/// swell's crest still sits in the water; null: y = 0).
+/// swell's crest still sits in the water; null: y = 0) and hold the ripples at their hollow
+/// (Obstacle::hollow).
 std::vector<interaction::ObstacleShape> obstacleFootprints(ecs::World& world, const water::WaterQuery* water);
 
 /// Every hull's clip volume for the renderer (gfx::HullClip: no water drawn inside it): its

@@ -130,6 +130,11 @@ public:
     /// a forcing, rounded once to 2^-24 of itself, not the state that must keep its energy.
     void addSources(std::span<const EWaveSource> sources, float dt);
 
+    /// Scales what the sources added since v was last read or stepped at cell `index`
+    /// (z·cols + x) by `factor` in [0, 1]: where a floating hull holds the water, no pressure
+    /// acts on it (EWaveSolver, docs/ewave.md#hulls).
+    void scaleQueuedSources(size_t index, float factor) { m_sourceSum[index] *= factor; }
+
     /// Moves the patch by (dx, dz) whole cells: the value at (x+dx, z+dz) moves to (x, z) in h
     /// and v, cells with no source become 0, so waves stay put in the world.
     void scroll(int dx, int dz);

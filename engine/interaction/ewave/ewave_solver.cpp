@@ -3,6 +3,8 @@
 
 #include "interaction/ripple_def.h"
 
+#include <algorithm>
+
 namespace ob::interaction {
 
 std::vector<RippleDefError> EWaveModel::validate(const RippleDef& def) {
@@ -35,34 +37,16 @@ bool EWaveSolver::planSource(const BoundingSphere& sphere, SphereContact& contac
                              EWaveSource& out) const {
     RippleStamp stamp;
     const EWaveField& f = m_field;
-    if (!planStamp(f.rows(), f.cols(), m_cellSize, sphere, contact, motion, [this](int x, int z) { return contactHeight(x, z); },
+    if (!planStamp(f.rows(), f.cols(), m_cellSize, sphere, contact, motion, [&f](int x, int z) { return f.heightAt(x, z); },
                    stamp))
         return false;
     out = ewaveSource(stamp, motion.gridX, motion.gridZ, m_cellSize, float(m_field.medium().gravity), motion.verticalVelocity);
     return true;
 }
 
-// A hull's own spheres lie inside its mask, where the projection holds the water at 0: measured
-// there, their stamp would never see the hollow it presses. They measure it where the hull puts
-// that water, just outside. (Alone this does not stop a hull pumping: docs/ewave.md#hulls, "Open".)
-float EWaveSolver::contactHeight(int x, int z) const {
-    const size_t i = size_t(z) * size_t(m_field.cols()) + size_t(x);
-    if (m_displacedFrom.empty() || m_displacedFrom[i] < 0) return m_field.heightAt(x, z);
-    const ObstructionCell& c = m_obstruction[size_t(m_displacedFrom[i])];
-    const auto h = m_field.heightState();
-    const double fx = c.fx, fz = c.fz;
-    return float((1.0 - fx) * (1.0 - fz) * h[c.to] + fx * (1.0 - fz) * h[c.to + 1] + (1.0 - fx) * fz * h[c.to + c.cols] +
-                 fx * fz * h[c.to + c.cols + 1]);
-}
-
 void EWaveSolver::setObstruction(std::span<const ObstructionCell> cells) {
     m_obstruction.assign(cells.begin(), cells.end());
-    m_displacedFrom.clear();
-    for (size_t k = 0; k < m_obstruction.size(); ++k) {
-        if (m_obstruction[k].to == ObstructionCell::SPREAD_EVENLY) continue;
-        if (m_displacedFrom.empty()) m_displacedFrom.assign(size_t(m_field.rows()) * size_t(m_field.cols()), -1);
-        m_displacedFrom[m_obstruction[k].index] = int32_t(k);
-    }
+    m_hulls = std::any_of(cells.begin(), cells.end(), [](const ObstructionCell& c) { return c.displaces; });
 }
 
 void EWaveSolver::addHeight(int x, int z, double dh) {
@@ -74,6 +58,10 @@ void EWaveSolver::step(float dt) {
     if (!m_sources.empty()) m_changed = true;
     m_field.addSources(m_sources, dt);
     m_sources.clear();
+    // Inside a floating hull's waterplane the water is the hull's, held at its hollow after the
+    // step: no pressure acts on it (its own keel spheres' push is the hollow itself; pressed there
+    // too, the projection would take that push out every step and the hull would pump).
+    if (m_hulls) maskHullSources(m_field, m_obstruction);
     if (m_offload) m_offload->step(dt, m_changed);
     else m_field.step(dt);
     m_changed = false;
@@ -81,22 +69,27 @@ void EWaveSolver::step(float dt) {
 }
 
 // The iWave projection after the exact step (operator splitting: free evolution over dt, then
-// h = v = 0 inside the bodies), each level's sum kept (docs/ewave.md#obstacles). On the GPU it
-// runs on the read-back mirror, and the next step uploads the result.
+// h = its level, 0 or a hull's hollow, and v = 0 inside the bodies), each level's sum kept
+// (docs/ewave.md#obstacles). On the GPU it runs on the read-back mirror, and the next step
+// uploads the result.
 void EWaveSolver::obstruct() {
     obstructField(m_field, m_obstruction);
     m_changed = onGpu();
 }
 
 void obstructField(EWaveField& field, std::span<const ObstructionCell> cells) {
-    obstructKeepingMean(field.editHeight(), cells);
+    obstructKeepingMean(field.editHeight(), cells, true);
     obstructKeepingMean(field.editVelocity(), cells);
     field.syncHeight();
 }
 
+void maskHullSources(EWaveField& field, std::span<const ObstructionCell> cells) {
+    for (const ObstructionCell& c : cells)
+        if (c.displaces) field.scaleQueuedSources(c.index, c.keep);
+}
+
 void EWaveSolver::scroll(glm::ivec2 shift) {
     m_field.scroll(shift.x, shift.y);
-    m_displacedFrom.clear();  // the old grid's cells; the next setObstruction maps the new ones
     for (EWaveSource& s : m_sources) {  // queued in the old grid's coordinates
         s.gx -= float(shift.x);
         s.gz -= float(shift.y);

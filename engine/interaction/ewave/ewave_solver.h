@@ -50,10 +50,11 @@ public:
     void addSource(const EWaveSource& source) { m_sources.push_back(source); }
     /// The sources queued for the next step, in order (the last one addSphere's newest).
     std::span<const EWaveSource> queuedSources() const { return m_sources; }
-    /// The queued sources over dt, then the exact per-mode step over dt.
+    /// The queued sources over dt (none inside a floating hull's waterplane: the hull holds that
+    /// water at its hollow, docs/ewave.md#hulls), then the exact per-mode step over dt.
     void step(float dt) override;
     /// Applied after the CPU step, or after the GPU step's read-back on the CPU mirror (which
-    /// the next step then uploads).
+    /// the next step then uploads). A hull's cells hold h at its hollow (ObstructionCell::level).
     void setObstruction(std::span<const ObstructionCell> cells) override;
     void scroll(glm::ivec2 shift) override;
     void clear() override;
@@ -69,9 +70,6 @@ public:
 
 private:
     void obstruct();
-    // The water level a sphere's stamp measures its contact against at cell (x, z): the field's,
-    // or inside a displacing hull the level where that cell's water is pushed out to.
-    float contactHeight(int x, int z) const;
 
     EWaveField m_field;
     float m_cellSize;                    // m
@@ -79,12 +77,18 @@ private:
     std::unique_ptr<Offload> m_offload;
     bool m_changed = false;              // the CPU state was written since the last step (the offload uploads it)
     std::vector<ObstructionCell> m_obstruction;  // setObstruction's cells, applied after each step
-    std::vector<int32_t> m_displacedFrom;        // per cell: its m_obstruction entry if a hull displaces it, else −1 (empty: none)
+    bool m_hulls = false;                        // some of them are a displacing hull's
 };
 
-/// The iWave projection on an ewave field (docs/ewave.md#obstacles): h and v scaled by the
-/// cells' keep factors, each level's sum kept (obstructKeepingMean), the float copy rebuilt.
+/// The iWave projection on an ewave field (docs/ewave.md#obstacles): h drawn towards each cell's
+/// level (0, or a hull's hollow) and v towards 0 by the cells' keep factors, each level's sum
+/// kept (obstructKeepingMean), the float copy rebuilt.
 /// EWaveSolver runs it after each step; tests run it on fields of any shape.
 void obstructField(EWaveField& field, std::span<const ObstructionCell> cells);
+
+/// The sources queued on `field` since its last step, scaled in each displacing hull's cell by
+/// its keep factor: no pressure acts on the water a hull holds (EWaveSolver::step runs it
+/// before each step; docs/ewave.md#hulls).
+void maskHullSources(EWaveField& field, std::span<const ObstructionCell> cells);
 
 } // namespace ob::interaction
