@@ -355,3 +355,26 @@ TEST_CASE("ewave levels: a drop's far ring on the composite matches a single fin
     REQUIRE(peak > 1e-5);
     CHECK(diff <= bound);
 }
+
+// A sphere beyond level 0 is planned on the finest level that covers it, but pushes every
+// coarser level as level 0 would: the same ∫a·w dA, the sphere's own (radius max(r, Δ₀)), not
+// that of a footprint widened to the planning level's cell. A 1 m sphere at rest on three levels
+// of 32² (0.25, 1, 4 m) at the centre (planned on level 0) and 40 m out (on level 2, level 1
+// reaching 16 m): level 2's response under each, both 10 of its cells from its centre's sub-cell
+// offset apart, is the same (before: 16 times, (4 m / 1 m)², under the far one).
+TEST_CASE("ewave levels: a sphere planned on a coarse level pushes it as level 0 would", "[ewave][levels]") {
+    auto response = [](glm::vec2 at) {
+        RipplePatch patch(levelsDef(32, 0.25f, 3, 4));
+        BoundingSphere sphere = shipSphere(1.0f);
+        SphereContact contact;
+        for (int s = 0; s < 20; ++s) {
+            stampShip(patch, sphere, contact, at, 0.0f);
+            patch.step(1.0f / 60.0f);
+        }
+        return double(patch.levels()->heightAt(2, at));
+    };
+    const double centre = response({0.0f, 0.0f}), far = response({40.0f, 0.0f});
+    INFO("level 2 under the sphere: " << centre << " m at the centre, " << far << " m 40 m out");
+    REQUIRE(std::abs(centre) > 0.0);
+    CHECK(far == Approx(centre).epsilon(1e-4));
+}

@@ -73,3 +73,29 @@ TEST_CASE("ewave levels: the default scene's trader keeps its wake 300 m behind 
         WARN(behind[k] << " m behind: rms " << levels.rms[k] << " m with levels = 3, " << one.rms[k] << " m with one grid");
     CHECK(levels.rms[3] >= 0.1 * levels.rms[0]);
 }
+
+// wake.toml's ship at 5 m/s (the scene's own is 4 m/s; its patch stays put at [0, −10], so the
+// ship runs off level 0 after 9 s, off level 1's full weight after 40 s and on over level 2's
+// 4 m cells) for `seconds`: the composite's rms in 6 m discs on its track 300 m (and 20 m)
+// behind it, and the noise floor, the same 300 m back but 150 m to the side, outside the
+// Kelvin wedge (tan 19.47°·300 m = 106 m), where only the start's rings reach.
+TEST_CASE("ewave levels: wake.toml's ship at 5 m/s keeps its wake 300 m behind it", "[ewave][levels][wake][long]") {
+    game::SceneDef scene = game::loadScene(std::string(OCEANBOX_SOURCE_DIR) + "/config/scenes/wake.toml", {"ocean.resolution=32"});
+    REQUIRE(!scene.objects.empty());
+    scene.objects[0].ship.speed = 5.0f;
+    game::Sandbox sandbox(scene);
+    auto& ships = sandbox.world().pool<game::Ship>();
+    REQUIRE(ships.size() == 1);
+    const ecs::Entity ship = ships.entities()[0];
+    const float seconds = 80.0f;
+    for (int s = 0; s < int(seconds * 60.0f); ++s) sandbox.step();
+    const glm::vec3 p = sandbox.world().get<ecs::Transform>(ship).position;
+    const auto* patch = sandbox.world().resource<interaction::RipplePatch>();
+    const glm::vec2 at(p.x, p.z);
+    const double near = rmsAround(*patch, at + glm::vec2(0.0f, -20.0f), 6.0f);
+    const double far = rmsAround(*patch, at + glm::vec2(0.0f, -300.0f), 6.0f);
+    const double floor = std::max(rmsAround(*patch, at + glm::vec2(150.0f, -300.0f), 6.0f),
+                                  rmsAround(*patch, at + glm::vec2(-150.0f, -300.0f), 6.0f));
+    WARN("ship at z = " << p.z << " m: rms 20 m behind " << near << " m, 300 m behind " << far << " m, beside it (floor) " << floor << " m");
+    CHECK(far >= 3.0 * floor);
+}

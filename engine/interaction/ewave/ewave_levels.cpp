@@ -20,7 +20,7 @@ float levelWeight(glm::vec2 g, int n, int sponge) {
     return axis(g.x) * axis(g.y);
 }
 
-EWaveLevels::EWaveLevels(const RippleDef& def) : m_sponge(def.sponge_width) {
+EWaveLevels::EWaveLevels(const RippleDef& def) : m_sponge(def.sponge_width), m_cell0(def.cell_size) {
     assert(def.levels >= 2);
     const EWaveMedium medium = EWaveMedium::of(def.environment, def.depth);
     const int n = def.resolution;
@@ -130,7 +130,12 @@ bool EWaveLevels::stampSphere(const BoundingSphere& sphere, SphereContact& conta
     motion.gridZ = g.y;
     EWaveSource s;
     if (!lv.solver->planSource(sphere, contact, motion, s)) return false;
-    pushSource(centre, std::max(s.radiusCells, 1.0f) * lv.grid.cell, s.accel, L);
+    // The source as level 0 would make it, radius max(r, Δ₀): planned here its radius is
+    // max(r, Δ_L), and with the same accel a sphere smaller than this level's cell would push
+    // (Δ_L/max(r, Δ₀))² times too hard (16 times for a 1 m sphere on 4 m cells). pushSource
+    // then widens it to this level's cell keeping ∫a·w dA. (The stagnation term of accel is
+    // this level's, v²/(2·max(r, Δ_L)): smaller, for a body moving up or down only.)
+    pushSource(centre, std::max(s.radiusCells * lv.grid.cell, m_cell0), s.accel, L);
     return true;
 }
 

@@ -129,6 +129,7 @@ private:
 
     std::vector<Level> m_levels;  // levels 1..K−1
     int m_sponge;                 // absorbing band, cells (every level)
+    float m_cell0;                // level 0's cell, m
     int64_t m_frame = 0;          // patch frames stepped
     float m_dt = 1.0f / 60.0f;    // the last frame's dt, s (the Hermite's step is stride·m_dt)
 };
