@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cassert>
+#include <cmath>
 #include <glm/geometric.hpp>
 
 namespace ob::interaction {
@@ -73,6 +74,16 @@ float RipplePatch::velocityAt(glm::vec2 world, float dt) const {
 void RipplePatch::hashState(StateHasher& h) const {
     m_solver->hashState(h);
     if (m_levels) m_levels->hashState(h);
+}
+
+bool RipplePatch::addCrater(glm::vec2 world, double volume) {
+    const glm::vec2 g = toGrid(world);
+    const long ix = std::lround(g.x), iz = std::lround(g.y);
+    const bool fine = ix >= 1 && iz >= 1 && ix <= cols() - 2 && iz <= rows() - 2;  // the outer ring stays 0
+    const double cell = m_def.cell_size;
+    if (fine) m_solver->addHeight(int(ix), int(iz), volume / (cell * cell));
+    const bool coarse = m_levels && m_levels->addCrater(world, volume, 1);
+    return fine || coarse;
 }
 
 bool RipplePatch::stampSphere(const BoundingSphere& sphere, SphereContact& contact, const glm::vec3& centre,

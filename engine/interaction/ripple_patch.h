@@ -55,6 +55,11 @@ public:
     /// m/s; mass kg; surfaceY the water height there, m. True: it stamped.
     bool stampSphere(const BoundingSphere& sphere, SphereContact& contact, const glm::vec3& centre,
                      const glm::vec3& velocity, float mass, float surfaceY);
+    /// A splash drop's crater of `volume` m³ (< 0: a hollow) at world (x, z): on the solver's
+    /// grid as addHeight of volume / Δ² at the nearest cell (not the outer ring), and with levels
+    /// on every coarse level that holds the point (EWaveLevels::addCrater, the same volume).
+    /// True: some level took it.
+    bool addCrater(glm::vec2 world, double volume);
     /// The footprints of the bodies that cut the surface this step (world m; fixed bodies,
     /// hulls), replacing the last ones: step() rasterises them on the grid where it then
     /// stands and hands the cells to the solver (RippleSolver::setObstruction).

@@ -296,21 +296,16 @@ void SplashParticles::hash(StateHasher& h) const {
 }
 
 double stampLandings(interaction::RipplePatch& patch, std::span<const Landing> landings, float energyFraction) {
-    // The drop's crater goes into the height of whichever solver runs (kang2008: Vh(t); ewave: h).
-    const int rows = patch.rows(), cols = patch.cols();
+    // The drop's crater goes into the height of whichever solver runs (kang2008: Vh(t); ewave: h),
+    // and with ewave levels into every coarse level that holds it (the same volume).
     const double cell = patch.def().cell_size, area = cell * cell;
     const environment::EnvironmentDef& env = patch.def().environment;
-    interaction::RippleSolver& solver = patch.solver();
     double total = 0.0;
     for (const Landing& l : landings) {
-        const glm::vec2 g = patch.toGrid(glm::vec2(l.position.x, l.position.z));
-        const long ix = std::lround(g.x), iz = std::lround(g.y);
-        if (ix < 1 || iz < 1 || ix > cols - 2 || iz > rows - 2) continue;  // the outer ring stays 0
         const double s2 = double(glm::dot(l.velocity, l.velocity));
         const double energy = double(energyFraction) * 0.5 * double(l.mass) * s2;  // J
         const double depth = std::sqrt(2.0 * energy / (double(env.water_density) * env.gravity * area));  // m
-        solver.addHeight(int(ix), int(iz), -depth);
-        total += energy;
+        if (patch.addCrater(glm::vec2(l.position.x, l.position.z), -depth * area)) total += energy;
     }
     return total;
 }

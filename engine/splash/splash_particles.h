@@ -193,7 +193,8 @@ private:
 
 /// Stamps landings into the ripple layer (the ripple stamp law above, ε = energyFraction, g and ρ
 /// the patch Def's environment): each
-/// lowers Vh(t) of the interior cell nearest it; landings outside the patch are skipped.
+/// lowers Vh(t) of the interior cell nearest it (RipplePatch::addCrater: with ewave levels the same
+/// volume on every coarse level that holds it); landings outside every level are skipped.
 /// Returns the energy the law put in, Σ ε·½·m_d·s², J. A GPU patch takes them at its next step.
 double stampLandings(interaction::RipplePatch& patch, std::span<const Landing> landings, float energyFraction);
 

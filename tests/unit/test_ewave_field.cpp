@@ -191,7 +191,7 @@ TEST_CASE("ewave: a drop's ring train has the Cauchy–Poisson wavenumber k = g�
 
 TEST_CASE("ewave: scrolling moves h and v by whole cells, and the absorbing band keeps waves from wrapping", "[ewave]") {
     SECTION("scroll") {
-        EWaveField f(16, 16, 0.5f);
+        EWaveField f(16, 16, 0.5f, RippleBoundary::Fixed);  // new cells at 0, the volume recounted
         f.editHeight()[5 * 16 + 7] = 1.0;
         f.editVelocity()[5 * 16 + 7] = 2.0;
         f.scroll(2, -1);  // the value at (x+2, z−1) moves to (x, z)
@@ -199,6 +199,20 @@ TEST_CASE("ewave: scrolling moves h and v by whole cells, and the absorbing band
         CHECK(f.height()[6 * 16 + 5] == 1.0f);
         CHECK(f.velocityAt(5, 6) == 2.0f);
         CHECK(f.heightAt(7, 5) == 0.0f);
+    }
+    SECTION("scroll keeps the volume (periodic, absorbing)") {
+        // The bump moves; the 31 new cells come in at the mean level 1/256 (the far field the
+        // sponge relaxes to) and the volume they add is taken back evenly: the bump stands 1
+        // above the old cells, the new ones 1/256, and Σh stays 1 (docs/ewave.md#levels).
+        EWaveField f(16, 16, 0.5f, RippleBoundary::Periodic);
+        f.editHeight()[5 * 16 + 7] = 1.0;
+        f.scroll(2, -1);
+        CHECK(f.heightAt(5, 6) - f.heightAt(7, 5) == Approx(1.0f));
+        double sum = 0.0;
+        for (double h : f.heightState()) sum += h;
+        CHECK(sum == Approx(1.0).epsilon(1e-15));
+        CHECK(f.volume() == 1.0);
+        CHECK(f.heightAt(15, 3) - f.heightAt(7, 5) == Approx(1.0f / 256.0f));  // a new cell and an old one
     }
     SECTION("absorbing") {
         // A bump left alone: periodic keeps its energy, absorbing loses nearly all of it once

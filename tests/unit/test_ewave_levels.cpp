@@ -3,6 +3,7 @@
 // slope cross the level boundaries within the bound of the cross-fade; the keys' checks.
 #include "interaction/ewave/ewave_levels.h"
 #include "interaction/ripple_patch.h"
+#include "splash/splash_particles.h"
 
 #include <catch2/catch.hpp>
 
@@ -229,4 +230,151 @@ TEST_CASE("ewave levels: levels > 1 is refused for kang2008 and on the GPU backe
     REQUIRE(validate(def).size() == 1);
     CHECK(validate(def)[0].key == "levels");
     CHECK(validate(def)[0].message.find("ewave") != std::string::npos);
+}
+
+
+namespace {
+
+double sumOf(std::span<const double> f) {
+    double s = 0.0;
+    for (double x : f) s += x;
+    return s;
+}
+double sumOf(std::span<const float> f) {
+    double s = 0.0;
+    for (float x : f) s += double(x);
+    return s;
+}
+double maxAbs(std::span<const float> f) {
+    double m = 0.0;
+    for (float x : f) m = std::max(m, double(std::abs(x)));
+    return m;
+}
+
+} // namespace
+
+// Water is moved, never made, on every level: a pressure's uniform part is dropped, a splash
+// crater's volume is taken back as the k = 0 mode, and a scroll brings its new cells in at the
+// mean level and puts back what the strips that left held about it. So each level's mean of h
+// (its state, in double) stays what it was to rounding, 1e-12 of its largest |h|, and the
+// Hermite between its two states (the shown height, float) keeps it to float rounding. Three
+// periodic levels of 32² follow a sphere moving at 3 m/s on a curve (the patch scrolls every
+// few frames, the coarse levels now and then), with a drop landing every 10th frame. Before,
+// the scrolls filled with 0 and recounted (level 0's mean fell by 1e-2 of its largest |h| in
+// 400 frames) and a crater's volume stayed on level 0 alone.
+TEST_CASE("ewave levels: each level keeps its mean level under moving sources, craters and scrolling", "[ewave][levels][volume]") {
+    const int n = 32;
+    RippleDef def = levelsDef(n, 0.25f, 3, 4);
+    def.boundary = RippleBoundary::Periodic;
+    RipplePatch patch(def);
+    const EWaveLevels& levels = *patch.levels();
+    const EWaveField& fine = patch.solverAs<EWaveSolver>()->field();
+    BoundingSphere sphere = shipSphere(0.5f);
+    SphereContact contact;
+    const float dt = 1.0f / 60.0f;
+    double worst = 0.0, worstShown = 0.0;
+    for (int s = 0; s < 400; ++s) {
+        const float t = float(s) * dt;
+        const glm::vec2 ship(3.0f * t - 6.0f, 2.0f * std::sin(0.5f * t));
+        patch.centerOn(ship);
+        stampShip(patch, sphere, contact, ship, 3.0f);
+        if (s % 10 == 5) {
+            ob::splash::Landing drop;
+            drop.position = {ship.x + 1.3f, 0.0f, ship.y - 0.7f};
+            drop.velocity = {0.0f, -5.0f, 0.0f};
+            drop.mass = 0.01f;
+            REQUIRE(ob::splash::stampLandings(patch, std::span(&drop, 1), 0.5f) > 0.0);
+        }
+        patch.step(dt);
+        const double cells = double(n) * n;
+        worst = std::max(worst, std::abs(sumOf(fine.heightState())) / cells / maxAbs(fine.height()));
+        for (int L = 1; L < levels.count(); ++L) {
+            const double scale = std::max(maxAbs(levels.solver(L).height()), 1e-12);
+            worst = std::max(worst, std::abs(sumOf(levels.solver(L).field().heightState())) / cells / scale);
+            worstShown = std::max(worstShown, std::abs(sumOf(levels.height(L))) / cells / scale);
+        }
+    }
+    INFO("largest |mean h| / max |h| over the levels: state " << worst << ", shown " << worstShown);
+    CHECK(worst <= 1e-12);
+    CHECK(worstShown <= 1e-6);  // float: a few 2^-24 of the largest |h|
+}
+
+// A drop's far-field ring on the composite is the one a single fine grid makes: a periodic
+// 64 m square of 0.25 m cells (256²) against a 16 m level 0 of the same cells inside a level 1
+// of 1 m cells over the same 64 m (so the two hold the same modes up to level 1's Nyquist).
+// After t = 6 s the ring 14-22 m out lies on level 1 alone (level 0's weight is 0 there),
+// which saw the crater only through addCrater. Stationary phase: at (r, t) the waves have
+// k = g·t²/(4r²) ≤ 0.45 rad/m here; level 1 differs from the fine grid by its bilinear splat
+// of the crater and its bilinear read, each at most (k·Δ₁)²/8 of a wave of k, and its Hermite
+// in time, (ω·S)⁴/384 (S = 4·dt), and the crater reaches it at its next step, here one frame
+// late (level 1's still water counts as frame 1), a phase of at most ω·dt: so
+// |composite − fine| ≤ ((k·Δ₁)²/4 + ω·dt + (ω·S)⁴/384)·max|h| (measured 0.075·max|h|, bound 0.12).
+// Both are read through the same 2 m box filter (a 9 × 9 mean): linear, of gain ≤ 1, so level
+// 1's error stays within that bound, while the fine grid's own ripple from its spectrum's sharp
+// cut at its Nyquist (0.5 m crests, which level 1 cannot hold) drops to a few percent.
+// Without the crater on level 1 the composite is 0 there (the difference is max|h|).
+TEST_CASE("ewave levels: a drop's far ring on the composite matches a single fine grid", "[ewave][levels][splash]") {
+    const float dt = 1.0f / 30.0f, cell = 0.25f, coarse = 1.0f;
+    RippleDef refDef = levelsDef(256, cell, 1, 4);
+    refDef.boundary = RippleBoundary::Periodic;
+    RippleDef lvDef = levelsDef(64, cell, 2, 4);
+    lvDef.boundary = RippleBoundary::Periodic;
+    RipplePatch ref(refDef), lv(lvDef);
+    ob::splash::Landing drop;
+    drop.position = {0.125f, 0.0f, 0.125f};  // a fine cell's centre on both fine grids
+    drop.velocity = {0.0f, -6.0f, 0.0f};
+    drop.mass = 0.05f;
+    const double e = ob::splash::stampLandings(ref, std::span(&drop, 1), 0.5f);
+    CHECK(ob::splash::stampLandings(lv, std::span(&drop, 1), 0.5f) == e);
+    const int steps = 180;  // 6 s
+    for (int s = 0; s < steps; ++s) {
+        ref.step(dt);
+        lv.step(dt);
+    }
+    const double t = steps * dt, g = 9.81, r0 = 14.0, r1 = 22.0;
+    auto box = [](const RipplePatch& patch, glm::vec2 p) {
+        double sum = 0.0;
+        for (int i = -4; i <= 4; ++i)
+            for (int j = -4; j <= 4; ++j) sum += patch.heightAt(p + 0.25f * glm::vec2(float(i), float(j)));
+        return sum / 81.0;
+    };
+    double peak = 0.0, diff = 0.0;
+    for (int a = 0; a < 8; ++a) {
+        const double phi = 2.0 * std::numbers::pi * (a + 0.3) / 8.0;
+        for (double r = r0; r <= r1; r += 0.25) {
+            const glm::vec2 p(float(r * std::cos(phi)), float(r * std::sin(phi)));
+            REQUIRE(lv.fineWeight(p + glm::vec2(-1.0f)) == 0.0f);
+            const double h = box(ref, p), hl = box(lv, p);
+            peak = std::max(peak, std::abs(h));
+            diff = std::max(diff, std::abs(hl - h));
+        }
+    }
+    const double k = g * t * t / (4.0 * r0 * r0), omega = std::sqrt(g * k), omegaS = omega * 4.0 * dt;
+    const double bound = ((k * coarse) * (k * coarse) / 4.0 + omega * dt + std::pow(omegaS, 4) / 384.0) * peak;
+    INFO("far ring: peak " << peak << " m, |composite − fine| " << diff << " m, bound " << bound << " (k ≤ " << k << " rad/m)");
+    REQUIRE(peak > 1e-5);
+    CHECK(diff <= bound);
+}
+
+// A sphere beyond level 0 is planned on the finest level that covers it, but pushes every
+// coarser level as level 0 would: the same ∫a·w dA, the sphere's own (radius max(r, Δ₀)), not
+// that of a footprint widened to the planning level's cell. A 1 m sphere at rest on three levels
+// of 32² (0.25, 1, 4 m) at the centre (planned on level 0) and 40 m out (on level 2, level 1
+// reaching 16 m): level 2's response under each, both 10 of its cells from its centre's sub-cell
+// offset apart, is the same (before: 16 times, (4 m / 1 m)², under the far one).
+TEST_CASE("ewave levels: a sphere planned on a coarse level pushes it as level 0 would", "[ewave][levels]") {
+    auto response = [](glm::vec2 at) {
+        RipplePatch patch(levelsDef(32, 0.25f, 3, 4));
+        BoundingSphere sphere = shipSphere(1.0f);
+        SphereContact contact;
+        for (int s = 0; s < 20; ++s) {
+            stampShip(patch, sphere, contact, at, 0.0f);
+            patch.step(1.0f / 60.0f);
+        }
+        return double(patch.levels()->heightAt(2, at));
+    };
+    const double centre = response({0.0f, 0.0f}), far = response({40.0f, 0.0f});
+    INFO("level 2 under the sphere: " << centre << " m at the centre, " << far << " m 40 m out");
+    REQUIRE(std::abs(centre) > 0.0);
+    CHECK(far == Approx(centre).epsilon(1e-4));
 }

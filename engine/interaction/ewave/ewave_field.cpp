@@ -353,6 +353,11 @@ void EWaveField::finishRows(int t, int z0, int z1) {
     }
 }
 
+void EWaveField::addLevel(double dh) {
+    shiftKernel(m_h, m_float[0], dh, m_cells);
+    m_volume += dh * double(m_cells);
+}
+
 void EWaveField::syncHeight() {
     applySources();
     toFloatKernel(m_float[0], m_h, m_cells);
@@ -434,11 +439,24 @@ void EWaveField::addSources(std::span<const EWaveSource> sources, float dt) {
     });
 }
 
+// Fixed: the new cells at 0 and the volume recounted (its ring drains anyway). Periodic and
+// Absorbing keep the volume, the k = 0 mode, exactly: the new cells come in at the mean level
+// (the far field the sponge relaxes to), v = 0, and the water the strips that left held above
+// or below that level is put back as a uniform shift (as conserveVolume puts back what the
+// sponge moved). Filling with 0 and recounting lowered a patch that follows a ship by the
+// raised far field it scrolled out, a different amount on each level (docs/ewave.md#levels).
 void EWaveField::scroll(int dx, int dz) {
     if (dx == 0 && dz == 0) return;
     applySources();
-    for (double* level : {m_h, m_v}) scrollCells(level, m_rows, m_cols, glm::ivec2(dx, dz), 0.0);
+    if (m_stale) syncHeight();  // the volume of an edit
+    const bool keep = m_boundary != RippleBoundary::Fixed;
+    const double volume = m_volume;
+    scrollCells(m_h, m_rows, m_cols, glm::ivec2(dx, dz), keep ? volume / double(m_cells) : 0.0);
+    scrollCells(m_v, m_rows, m_cols, glm::ivec2(dx, dz), 0.0);
     syncHeight();
+    if (!keep) return;
+    m_volume = volume;
+    conserveVolume();
 }
 
 EWaveSource ewaveSource(const RippleStamp& stamp, float gx, float gz, float cellSize, float gravity, float verticalVelocity) {

@@ -69,8 +69,8 @@ struct EWaveMedium {
 /// part is no force on incompressible water, the volume a body displaces rises around it); the
 /// sponge relaxes h towards the mean level, not 0; and what the float transforms' rounding and
 /// the sponge still move is put back, exactly in double, as a uniform shift of h (pass 4). The
-/// volume is set by the writes: addHeight adds to it, edits and scrolls recount it, clear zeroes
-/// it. Fixed holds its ring at h = 0, a drain by design: it does not keep the volume.
+/// volume is set by the writes: addHeight adds to it, edits recount it, scrolls keep it, clear
+/// zeroes it. Fixed holds its ring at h = 0, a drain by design: it does not keep the volume.
 ///
 /// Damping, in physical units and independent of the step size: d = exp(−Δt/τ − 2·ν·k²·Δt),
 /// τ the e-folding time of every wave's amplitude (s; 0 = none) and ν the medium's viscosity
@@ -136,7 +136,9 @@ public:
     void scaleQueuedSources(size_t index, float factor) { m_sourceSum[index] *= factor; }
 
     /// Moves the patch by (dx, dz) whole cells: the value at (x+dx, z+dz) moves to (x, z) in h
-    /// and v, cells with no source become 0, so waves stay put in the world.
+    /// and v, so waves stay put in the world. Cells with no source: v = 0 and h the mean level,
+    /// and (Periodic, Absorbing) the volume is kept, what the strips that left held about the
+    /// mean level put back as a uniform shift; Fixed: h = 0, the volume recounted.
     void scroll(int dx, int dz);
     /// h = v = 0 everywhere.
     void clear();
@@ -178,6 +180,8 @@ public:
         m_volume += dh;
         m_float[0][index] = float(m_h[index]);
     }
+    /// h += dh in every cell (the k = 0 mode alone), its float copy with it, and the volume.
+    void addLevel(double dh);
     /// h as floats, row-major, m: the float copy of the state.
     std::span<const float> height() const { return {m_float[0], m_cells}; }
     /// Rebuilds the float copies from the state (after editHeight/editVelocity) and recounts the volume.

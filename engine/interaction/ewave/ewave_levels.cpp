@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cassert>
+#include <cmath>
 #include <utility>
 
 namespace ob::interaction {
@@ -19,7 +20,7 @@ float levelWeight(glm::vec2 g, int n, int sponge) {
     return axis(g.x) * axis(g.y);
 }
 
-EWaveLevels::EWaveLevels(const RippleDef& def) : m_sponge(def.sponge_width) {
+EWaveLevels::EWaveLevels(const RippleDef& def) : m_sponge(def.sponge_width), m_cell0(def.cell_size) {
     assert(def.levels >= 2);
     const EWaveMedium medium = EWaveMedium::of(def.environment, def.depth);
     const int n = def.resolution;
@@ -44,12 +45,52 @@ EWaveLevels::EWaveLevels(const RippleDef& def) : m_sponge(def.sponge_width) {
 
 EWaveLevels::~EWaveLevels() = default;
 
+namespace {
+
+// scrollCells with the new cells at f's mean and the sum (in double) put back as a uniform
+// shift: EWaveField::scroll on a float copy.
+void scrollKeepingSum(std::vector<float>& f, int n, glm::ivec2 shift) {
+    auto sum = [&f] {
+        double s = 0.0;
+        for (float x : f) s += double(x);
+        return s;
+    };
+    const double before = sum(), cells = double(f.size());
+    scrollCells(f.data(), n, n, shift, float(before / cells));
+    const float back = float((before - sum()) / cells);
+    for (float& x : f) x += back;
+}
+
+} // namespace
+
+// The solver's state as the Hermite's end at b: h's float copy, and v less its mean. v's mean is
+// no motion (the step drops it: the volume is kept), but the sponge and a scroll leave some
+// there; in the Hermite's S·v terms it would move the level's mean between two states.
+void EWaveLevels::keepState(Level& lv) {
+    const std::span<const float> h = lv.solver->height();
+    std::copy(h.begin(), h.end(), lv.h1.begin());
+    const std::span<const double> v = lv.solver->field().velocityState();
+    double mean = 0.0;
+    for (double x : v) mean += x;
+    mean /= double(v.size());
+    std::transform(v.begin(), v.end(), lv.v1.begin(), [mean](double x) { return float(x - mean); });
+}
+
 void EWaveLevels::centerOn(glm::vec2 world) {
     for (Level& lv : m_levels) {
         const glm::ivec2 shift = lv.grid.centreOn(world);
         if (shift == glm::ivec2(0)) continue;
+        // The state at b keeps its volume (EWaveField::scroll); its copies follow it, and the
+        // state at a is scrolled the same way: new cells at its mean level (v at 0), what left
+        // put back uniformly, so the Hermite between them keeps the level's mean too.
         lv.solver->scroll(shift);
-        for (auto* f : {&lv.h0, &lv.v0, &lv.h1, &lv.v1}) scrollCells(f->data(), lv.grid.n, lv.grid.n, shift);
+        keepState(lv);
+        scrollKeepingSum(lv.h0, lv.grid.n, shift);
+        scrollCells(lv.v0.data(), lv.grid.n, lv.grid.n, shift);
+        double v0 = 0.0;  // its mean back to 0, as keepState's
+        for (float x : lv.v0) v0 += double(x);
+        const float back = float(v0 / double(lv.v0.size()));
+        for (float& x : lv.v0) x -= back;
         lv.shownFrame = -1;
     }
 }
@@ -69,6 +110,18 @@ void EWaveLevels::pushSource(glm::vec2 centre, float radius, float accel, int fr
     for (int L = std::max(from, 1); L < count(); ++L) m_levels[size_t(L - 1)].queued.push_back({centre, radius, accel * radius * radius});
 }
 
+bool EWaveLevels::addCrater(glm::vec2 world, double volume, int from) {
+    bool held = false;
+    for (int L = std::max(from, 1); L < count(); ++L) {
+        Level& lv = m_levels[size_t(L - 1)];
+        const glm::vec2 g = lv.grid.toGrid(world);
+        if (!(g.x >= 0.0f && g.y >= 0.0f && g.x <= float(lv.grid.n - 1) && g.y <= float(lv.grid.n - 1))) continue;
+        lv.craters.push_back({world, volume});
+        held = true;
+    }
+    return held;
+}
+
 bool EWaveLevels::stampSphere(const BoundingSphere& sphere, SphereContact& contact, SphereMotion motion, glm::vec2 centre) {
     const int L = finestAt(centre);
     const Level& lv = level(L);
@@ -77,7 +130,12 @@ bool EWaveLevels::stampSphere(const BoundingSphere& sphere, SphereContact& conta
     motion.gridZ = g.y;
     EWaveSource s;
     if (!lv.solver->planSource(sphere, contact, motion, s)) return false;
-    pushSource(centre, std::max(s.radiusCells, 1.0f) * lv.grid.cell, s.accel, L);
+    // The source as level 0 would make it, radius max(r, Δ₀): planned here its radius is
+    // max(r, Δ_L), and with the same accel a sphere smaller than this level's cell would push
+    // (Δ_L/max(r, Δ₀))² times too hard (16 times for a 1 m sphere on 4 m cells). pushSource
+    // then widens it to this level's cell keeping ∫a·w dA. (The stagnation term of accel is
+    // this level's, v²/(2·max(r, Δ_L)): smaller, for a body moving up or down only.)
+    pushSource(centre, std::max(s.radiusCells * lv.grid.cell, m_cell0), s.accel, L);
     return true;
 }
 
@@ -99,6 +157,28 @@ void EWaveLevels::stepLevel(Level& lv, float dt, std::span<const ObstacleShape> 
         lv.solver->addSource({g.x, g.y, r, ws.strength / (r * cell * r * cell) / float(lv.stride)});
     }
     lv.queued.clear();
+    // Craters: into the state at b and its copy (they appear at frame b + 1, at most one step
+    // late, as level 0's would at its next step), their volume taken back by the solver's step.
+    const int n = lv.grid.n;
+    double craterVolume = 0.0;
+    for (const WorldCrater& c : lv.craters) {
+        const glm::vec2 g = lv.grid.toGrid(c.centre);
+        if (!(g.x >= 0.0f && g.y >= 0.0f && g.x <= float(n - 1) && g.y <= float(n - 1))) continue;  // scrolled off since
+        const int x0 = std::min(int(std::floor(g.x)), n - 2), z0 = std::min(int(std::floor(g.y)), n - 2);
+        const double fx = double(g.x) - x0, fz = double(g.y) - z0, depth = c.volume / (double(cell) * double(cell));
+        const double w[4] = {(1 - fx) * (1 - fz), fx * (1 - fz), (1 - fx) * fz, fx * fz};
+        for (int k = 0; k < 4; ++k) {
+            const int x = x0 + (k & 1), z = z0 + (k >> 1);
+            lv.solver->addHeight(x, z, depth * w[k]);
+            lv.h1[size_t(z) * size_t(n) + size_t(x)] += float(depth * w[k]);
+        }
+        craterVolume += depth;
+    }
+    lv.craters.clear();
+    if (craterVolume != 0.0 && lv.solver->field().boundary() != RippleBoundary::Fixed) {
+        const float back = float(-craterVolume / (double(n) * double(n)));
+        for (float& x : lv.h1) x += back;  // as the solver's step will (the Hermite's start keeps the mean)
+    }
     if (!obstacles.empty() || !lv.obstruction.empty()) {
         rasteriseObstacles(obstacles, lv.grid.n, lv.grid.n, cell, [&lv](glm::vec2 w) { return lv.grid.toGrid(w); },
                            lv.obstruction);
@@ -107,10 +187,7 @@ void EWaveLevels::stepLevel(Level& lv, float dt, std::span<const ObstacleShape> 
     std::swap(lv.h0, lv.h1);
     std::swap(lv.v0, lv.v1);
     lv.solver->step(dt * float(lv.stride));
-    const std::span<const float> h = lv.solver->height();
-    std::copy(h.begin(), h.end(), lv.h1.begin());
-    const std::span<const double> v = lv.solver->field().velocityState();
-    std::transform(v.begin(), v.end(), lv.v1.begin(), [](double x) { return float(x); });
+    keepState(lv);
     lv.a = lv.b;
     lv.b += lv.stride;
 }
@@ -179,6 +256,10 @@ void EWaveLevels::hashState(StateHasher& h) const {
             h.f32s(&s.centre.x, 2);
             h.f32(s.radius);
             h.f32(s.strength);
+        }
+        for (const WorldCrater& c : lv.craters) {
+            h.f32s(&c.centre.x, 2);
+            h.bytes(&c.volume, sizeof c.volume);
         }
     }
 }

@@ -62,6 +62,12 @@ public:
     /// one frame) on every level ≥ `from`: on level L with radius max(radius, cell_L) and accel
     /// scaled so that ∫accel·w dA, the source's long-wave content, is the same.
     void pushSource(glm::vec2 centre, float radius, float accel, int from);
+    /// A splash drop's crater of `volume` m³ (< 0: a hollow) at world (x, z), on every level ≥
+    /// `from` whose grid holds it: at the level's next step, spread bilinearly over the four
+    /// cells round it (its centre kept) as EWaveSolver::addHeight (the volume taken back as the
+    /// k = 0 mode), so every level gets the same long-wave content, volume·e^{−ik·x}. False:
+    /// no level holds it.
+    bool addCrater(glm::vec2 world, double volume, int from);
     /// Table 2 for a sphere that level 0 does not cover: stamped on level finestAt(centre),
     /// the source then pushed to the coarser ones. `motion`'s grid position is set here.
     bool stampSphere(const BoundingSphere& sphere, SphereContact& contact, SphereMotion motion, glm::vec2 centre);
@@ -100,6 +106,10 @@ private:
         float radius;      // applied radius, m
         float strength;    // accel·radius², m³/s² (what each level keeps)
     };
+    struct WorldCrater {
+        glm::vec2 centre;  // m
+        double volume;     // m³
+    };
     struct Level {
         ScrollingGrid grid;
         std::unique_ptr<EWaveSolver> solver;
@@ -109,14 +119,17 @@ private:
         mutable std::vector<float> shown;       // Hermite height at frame shownFrame, m (height())
         mutable int64_t shownFrame = -1;
         std::vector<WorldSource> queued;        // sources since its last step
+        std::vector<WorldCrater> craters;       // craters since its last step
         std::vector<ObstructionCell> obstruction;  // its cells at its last step
     };
     const Level& level(int L) const { return m_levels[size_t(L - 1)]; }
     void stepLevel(Level& lv, float dt, std::span<const ObstacleShape> obstacles);
+    static void keepState(Level& lv);
     float phase(const Level& lv) const { return float(m_frame - lv.a) / float(lv.stride); }
 
     std::vector<Level> m_levels;  // levels 1..K−1
     int m_sponge;                 // absorbing band, cells (every level)
+    float m_cell0;                // level 0's cell, m
     int64_t m_frame = 0;          // patch frames stepped
     float m_dt = 1.0f / 60.0f;    // the last frame's dt, s (the Hermite's step is stride·m_dt)
 };

@@ -51,10 +51,16 @@ void EWaveSolver::setObstruction(std::span<const ObstructionCell> cells) {
 
 void EWaveSolver::addHeight(int x, int z, double dh) {
     m_field.addHeight(size_t(z) * size_t(m_field.cols()) + size_t(x), dh);
+    if (m_field.boundary() != RippleBoundary::Fixed) m_craterVolume += dh;
     m_changed = true;
 }
 
 void EWaveSolver::step(float dt) {
+    if (m_craterVolume != 0.0) {  // the craters' water, moved not made: back as the k = 0 mode (on the CPU field, then uploaded)
+        m_field.addLevel(-m_craterVolume / (double(m_field.rows()) * double(m_field.cols())));
+        m_craterVolume = 0.0;
+        m_changed = true;
+    }
     if (!m_sources.empty()) m_changed = true;
     m_field.addSources(m_sources, dt);
     m_sources.clear();
@@ -99,6 +105,7 @@ void EWaveSolver::scroll(glm::ivec2 shift) {
 
 void EWaveSolver::clear() {
     m_field.clear();
+    m_craterVolume = 0.0;
     m_sources.clear();
     m_changed = true;
 }
@@ -111,6 +118,7 @@ void EWaveSolver::hashState(StateHasher& h) const {
     // The whole state of the dispersive model: h and v, in double.
     h.bytes(m_field.heightState().data(), m_field.heightState().size_bytes());
     h.bytes(m_field.velocityState().data(), m_field.velocityState().size_bytes());
+    if (m_craterVolume != 0.0) h.bytes(&m_craterVolume, sizeof m_craterVolume);  // between a crater and the step
 }
 
 // The GPU twin takes the damping from the field at its next step (the medium, depth included, is set once).

@@ -45,6 +45,9 @@ public:
     bool addSphere(const BoundingSphere& sphere, SphereContact& contact, const SphereMotion& motion) override;
     /// addSphere's decision and source, not queued: true and `out` set when the sphere stamps.
     bool planSource(const BoundingSphere& sphere, SphereContact& contact, const SphereMotion& motion, EWaveSource& out) const;
+    /// h += dh at cell (x, z) now; with a Periodic or Absorbing border the next step first takes
+    /// that volume back as a uniform shift, so a crater moves water and makes none: the mean
+    /// level, the k = 0 mode, is kept (its waves, every k > 0, are the crater's).
     void addHeight(int x, int z, double dh) override;
     /// Queues a source (grid coordinates) for the next step, as addSphere does (the coarse levels, ewave_levels.h).
     void addSource(const EWaveSource& source) { m_sources.push_back(source); }
@@ -75,6 +78,7 @@ private:
     float m_cellSize;                    // m
     std::vector<EWaveSource> m_sources;  // this step's stamps, grid coordinates, applied over the step's dt
     std::unique_ptr<Offload> m_offload;
+    double m_craterVolume = 0.0;         // Σ dh of addHeight since the last step, m (times the cell area), taken back by it
     bool m_changed = false;              // the CPU state was written since the last step (the offload uploads it)
     std::vector<ObstructionCell> m_obstruction;  // setObstruction's cells, applied after each step
     bool m_hulls = false;                        // some of them are a displacing hull's
