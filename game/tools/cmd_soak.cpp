@@ -239,6 +239,7 @@ static void checkBodies(Sandbox& sandbox, const SoakBounds& bounds, SoakReport& 
             fail(sandbox, "the water surface under body " + std::to_string(i) + " (" + objectTypeName(world, bodies.entities()[i]) + ") is at " + fmt(surface) +
                               " m, beyond the layers' bound " + fmt(bounds.surface) + " m");
         report.maxSurface = std::max(report.maxSurface, std::fabs(surface));
+        if (body.probes.empty()) continue;                                // fixed (a wall, a pillar): it does not float
         if (bodyDensity(world, i) >= physics->water_density) continue;  // meant to sink (a cannonball)
         const float depth = p.y - surface;
         const float limit = BODY_EXTENTS * bodyExtent(body) + bounds.seaHs;

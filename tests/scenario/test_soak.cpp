@@ -61,6 +61,15 @@ TEST_CASE("soak invariants hold for a fresh scene and name the cell, the bound o
     }
 }
 
+TEST_CASE("soak invariants: a fixed body (the harbour's walls, post and pillar) is not a floating body that sank", "[soak]") {
+    // Fixed bodies carry no probes and no mass: they stand in the water, they do not float.
+    game::SceneDef scene = game::loadScene(std::string(OCEANBOX_SOURCE_DIR) + "/config/scenes/harbour.toml",
+                                           {"ripples.resolution=64", "ocean.resolution=32"});
+    game::Sandbox sandbox(scene);
+    for (int i = 0; i < 3; ++i) sandbox.step();
+    CHECK(invariantError(sandbox).empty());
+}
+
 TEST_CASE("oceanbox soak runs a scene headless, checks every step and reports rates, maxima and memory", "[soak][cli]") {
     const std::string json = test::tempPath("soak.json");
     auto r = test::runOceanbox("soak config/scenes/default.toml --seconds 5 --stats " + json);
