@@ -287,7 +287,7 @@ TEST_CASE("Cascades together sample one spectrum: their variances add up to A·�
     CHECK(variance == Approx(def.amplitude * PI * p.largestWave * p.largestWave).epsilon(0.03));
 }
 
-TEST_CASE("Stokes drift: Phillips' waves both ways drift 0; JONSWAP's the deep-water integral (2/g)·∫ω³S(ω)dω·8/(3π) down-wind",
+TEST_CASE("Stokes drift: Phillips' waves both ways drift 0, JONSWAP's is the deep-water integral (2/g)·∫ω³S(ω)dω·8/(3π) down-wind",
           "[ocean][spectrum][wind]") {
     // A wave of amplitude a drifts its surface by ω·k·a² (deep water, Stokes 1847), a² = 2·S(ω)dω
     // per band: U_s = ∫2·ω·k·S(ω)dω = (2/g)·∫ω³S(ω)dω, times ⟨cos θ⟩ = ∫(2/π)·cos³θ dθ = 8/(3π)
