@@ -1,4 +1,4 @@
-// Every scene opened as `play` opens it where there is no display (headless, 300 frames):
+// Every scene opened as `play` opens it where there is no display (headless, 150 frames):
 // no GL error, and the picture is water where water should be — the first frame's lower
 // half is the sea's colour, not the sky's (a hole in the projected grid shows the sky).
 #include "support/test_image.h"
@@ -34,7 +34,7 @@ void checkLowerHalfIsWater(const test::Image& img, const std::string& what) {
 
 } // namespace
 
-TEST_CASE("every scene opened as play opens it headless: 300 frames without a GL error, water below the horizon",
+TEST_CASE("every scene opened as play opens it headless: 150 frames without a GL error, water below the horizon",
           "[scenes][play][long]") {
     setenv("OCEANBOX_GL_DEBUG", "1", 1);  // GL errors fail the run (exit 1)
     for (const auto& entry : std::filesystem::directory_iterator(std::string(OCEANBOX_SOURCE_DIR) + "/config/scenes")) {
@@ -48,9 +48,9 @@ TEST_CASE("every scene opened as play opens it headless: 300 frames without a GL
         // Without the sun's glitter and the foam here: the check looks for sky through a hole in
         // the sea, and both whiten water itself (the glitter's Cox–Munk path toward a low sun;
         // the foam on fish_swarm's piled-up walls of water, a tenth of the lower half by frame 300).
-        r = test::runOceanbox("play " + scene + " --headless --size 96x54 --frames 300 --set ocean.resolution=64 --set render.glitter=0 --set render.foam=false --screenshot " + last);
+        r = test::runOceanbox("play " + scene + " --headless --size 96x54 --frames 150 --set ocean.resolution=64 --set render.glitter=0 --set render.foam=false --screenshot " + last);
         REQUIRE(r.exitCode == 0);
-        checkLowerHalfIsWater(test::loadPng(last), scene + ", frame 300");
+        checkLowerHalfIsWater(test::loadPng(last), scene + ", frame 150");
     }
 }
 
