@@ -9,32 +9,14 @@
 #include "interaction/ewave/ewave_levels.h"
 #include "interaction/ripple_patch.h"
 #include "platform/platform.h"
+#include "support/shader_probe.h"
 #include "support/test_support.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdlib>
-#include <filesystem>
 
 using namespace ob;
-namespace fs = std::filesystem;
-
-namespace {
-
-// Runs tests/gl/shaders/<probe> with the engine's shader includes beside it.
-gfx::Program loadLevelsProbe(const char* probe) {
-    fs::path dir = test::tempPath("probe_shaders_levels");
-    fs::create_directories(dir);
-    for (const auto& entry : fs::directory_iterator(fs::path(OCEANBOX_SOURCE_DIR) / "shaders"))
-        fs::copy_file(entry.path(), dir / entry.path().filename(), fs::copy_options::overwrite_existing);
-    fs::copy_file(fs::path(OCEANBOX_SOURCE_DIR) / "tests/gl/shaders" / probe, dir / probe, fs::copy_options::overwrite_existing);
-    setenv("OCEANBOX_SHADER_DIR", dir.c_str(), 1);
-    gfx::Program program = gfx::loadProgram(probe, {probe});
-    unsetenv("OCEANBOX_SHADER_DIR");
-    return program;
-}
-
-} // namespace
 
 // Three levels of 32² (0.25 m, 1 m, 4 m) hold a sphere's wake and splash craters, the patch
 // and so the levels off-centre after scrolling; the shader's composite is read at points along
@@ -98,7 +80,7 @@ TEST_CASE("the water shader's ripple composite equals RipplePatch::heightAt acro
     };
     for (int i = 0; i < 2000; ++i) points.push_back(centre + glm::vec2(uniform() - 0.5f, uniform() - 0.5f) * 140.0f);
 
-    gfx::Program program = loadLevelsProbe("ripple_levels_probe.comp");
+    gfx::Program program = test::loadShaderProbe("ripple_levels_probe.comp", "probe_shaders_levels");
     gfx::Buffer input = gfx::createBuffer("probe points", GLsizeiptr(points.size() * sizeof(glm::vec2)), points.data());
     gfx::Buffer result = gfx::createBuffer("probe heights", GLsizeiptr(points.size() * sizeof(float)));
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, input.id());

@@ -7,6 +7,7 @@
 #include "platform/platform.h"
 #include "world/sandbox.h"
 #include "support/test_image.h"
+#include "support/shader_probe.h"
 #include "support/test_support.h"
 
 #include <catch2/catch.hpp>
@@ -31,19 +32,6 @@ double fresnelReference(double theta) {
     double rs = std::sin(theta - t) / std::sin(theta + t);
     double rp = std::tan(theta - t) / std::tan(theta + t);
     return 0.5 * (rs * rs + rp * rp);
-}
-
-// Runs tests/gl/shaders/<probe> with the engine's shader includes beside it.
-gfx::Program loadProbe(const char* probe) {
-    fs::path dir = test::tempPath("probe_shaders");
-    fs::create_directories(dir);
-    for (const auto& entry : fs::directory_iterator(fs::path(OCEANBOX_SOURCE_DIR) / "shaders"))
-        fs::copy_file(entry.path(), dir / entry.path().filename(), fs::copy_options::overwrite_existing);
-    fs::copy_file(fs::path(OCEANBOX_SOURCE_DIR) / "tests/gl/shaders" / probe, dir / probe, fs::copy_options::overwrite_existing);
-    setenv("OCEANBOX_SHADER_DIR", dir.c_str(), 1);
-    gfx::Program program = gfx::loadProgram(probe, {probe});
-    unsetenv("OCEANBOX_SHADER_DIR");
-    return program;
 }
 
 // RGBA float texels of a 2D texture, rows bottom-up.
@@ -124,7 +112,7 @@ Image renderShipScene(glm::ivec2 size, const std::vector<std::string>& overrides
 TEST_CASE("the water shader's Fresnel matches the Fresnel equations (n = 1.33)", "[gl][render]") {
     gfx::requestDebugOutput(true);
     auto platform = platform::createHeadlessPlatform({16, 16});
-    gfx::Program program = loadProbe("fresnel_probe.comp");
+    gfx::Program program = test::loadShaderProbe("fresnel_probe.comp");
     const int count = 91;
     gfx::Buffer result = gfx::createBuffer("fresnel probe", count * sizeof(glm::vec2));
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, result.id());
