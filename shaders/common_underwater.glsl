@@ -1,9 +1,13 @@
 // The view from under water (docs/frame.md, "Under water"): per-channel extinction by
 // Jerlov's oceanic water type I ([Jerlov1976] Kd at 650/550/450 nm), the water's own in-scattered
 // light and the per-pixel waterline test at the near plane; the surface seen from below is in
-// common_underwater_surface.glsl. Needs common_frame.glsl.
+// common_underwater_surface.glsl. Also the exposure under water, the light shafts and the
+// caustics on bodies (docs/frame.md, "Under water"). Needs common_frame.glsl.
 #ifndef COMMON_UNDERWATER_GLSL
 #define COMMON_UNDERWATER_GLSL
+
+#include "common_sky.glsl"
+#include "common_fresnel.glsl"
 
 // Diffuse attenuation coefficient Kd (1/m) of Jerlov's oceanic type I water for the red, green
 // and blue channels, read at 650, 550 and 450 nm ([Jerlov1976] Table XXVI). Used as the view
@@ -37,6 +41,87 @@ vec3 underwaterExtinction(vec3 color, float dist, vec3 dir) {
 bool pixelUnderwater(vec2 fragCoord) {
     vec2 ndc = 2.0 * fragCoord / frame.viewport.xy - 1.0;
     return dot(frame.waterline.xyz, vec3(ndc, 1.0)) < 0.0;
+}
+
+// Exposure under water: radiance entering the water through the surface grows by n² (the same
+// flux in a solid angle narrowed by n²), so Snell's window is n² brighter than the sky it shows;
+// the eye (or a camera's metering) adapts to that brightest thing in view. The frame under water
+// is exposed 1/n² of the frame above: the window's sky comes out near where the sky itself does
+// above water, on the filmic curve's slope instead of its shoulder, and keeps its gradient.
+const bool UNDERWATER_HUE_KEPT = true;
+const float UNDERWATER_EXPOSURE = 1.0 / (WATER_IOR * WATER_IOR);
+
+// finalColor (common_frame.glsl) for a pixel under the water: the under-water exposure, and the
+// filmic curve applied to the colour's largest channel with the others scaled alike (the hue
+// kept), so a bright window rolls off toward its own colour instead of each channel clipping
+// on its own into a flat cyan.
+vec4 finalColorUnderwater(vec3 radiance, vec2 pixel) {
+    if (linearTarget()) return vec4(radiance, 1.0);
+    vec3 x = radiance * frame.waterColorExposure.w * UNDERWATER_EXPOSURE;
+    float peak = max(max(x.r, x.g), max(x.b, 1e-6));
+    return encodeDisplay(UNDERWATER_HUE_KEPT ? x * (toneCurve(vec3(peak)).r / peak) : toneCurve(x), pixel);
+}
+
+// Light shafts and caustics: sunlight focused by the waves into bright sheets that run down
+// along the refracted sun's direction. The focusing pattern is an analytic stand-in (three
+// drifting plane waves, sharpened), not the sea's own waves; a point's light is the pattern
+// where the sun's ray to it crossed the mean level, its contrast blurred away with depth (the
+// sun's 0.5° disk and the forward scattering widen each sheet). Along a view ray the shafts
+// are the single scattering of that light (Henyey–Greenstein phase), summed over a few
+// jittered samples. frame.shading.w is render.light_shafts (0 switches both off).
+const float SHAFT_SCATTER = 0.02;       // b, 1/m: scattering coefficient of clear ocean water (Jerlov I: 0.02–0.04)
+const float SHAFT_PHASE_G = 0.75;       // Henyey–Greenstein asymmetry (sea water scatters forward)
+const float SHAFT_RANGE_M = 40.0;       // the view ray's length that is summed (blue fades to 47 % over it)
+const int SHAFT_SAMPLES = 12;            // samples along the ray, denser near the eye (s² spacing)
+const float SHAFT_BLUR_DEPTH_M = 12.0;  // depth over which the pattern's contrast falls to 1/e
+const float SHAFT_SUN = 1.4;            // the sunlight's strength, as the objects' (object_mesh.frag)
+
+// Direction toward the sun seen from under a flat surface (Snell: sin θw = sin θair / n); the
+// sun at or below the horizon refracts at the critical angle.
+vec3 refractedSunUp(vec3 sun) {
+    vec3 s = normalize(vec3(sun.x, max(sun.y, 1e-3), sun.z));
+    return -refract(-s, vec3(0.0, 1.0, 0.0), 1.0 / WATER_IOR);
+}
+
+// The focusing pattern at a point `depth` metres under the mean level whose sun ray crossed it
+// at `q` (m): mean 1, from 0 to 3.4 at the surface, toward 1 with depth.
+float shaftFocus(vec2 q, float depth) {
+    float t = frame.cameraPositionTime.w;
+    float g = sin(dot(q, vec2(1.9, 0.6)) + 0.9 * t) + sin(dot(q, vec2(-0.7, 1.6)) - 1.1 * t) +
+              sin(dot(q, vec2(-1.2, -1.3)) + 0.7 * t);
+    float u = 0.5 + g / 6.0;                   // 0..1
+    float focused = u * u * 3.43;              // E[u²] = 0.29 for three independent phases
+    return 1.0 + exp(-depth / SHAFT_BLUR_DEPTH_M) * (focused - 1.0);
+}
+
+// The sunlight's caustic factor at the world point `p` under water (1 with the switch off).
+float underwaterCaustics(vec3 p) {
+    vec3 up = refractedSunUp(frame.sunDirectionFresnel.xyz);
+    float depth = max(-p.y, 0.0);
+    return mix(1.0, shaftFocus(p.xz + up.xz / up.y * depth, depth), min(frame.shading.w, 1.0));
+}
+
+// The shafts' radiance added along `dist` metres of a view ray in `dir` from the eye (linear):
+// ∫ b·p(θ)·E(x)·T(t) dt, E the sunlight at x (dimmed per channel over its slanted path down,
+// times the pattern), T the view path's transmittance, θ between the ray and the refracted sun.
+vec3 underwaterShafts(vec3 dir, float dist, vec2 pixel) {
+    if (frame.shading.w <= 0.0) return vec3(0.0);
+    vec3 sun = frame.sunDirectionFresnel.xyz;
+    vec3 up = refractedSunUp(sun);
+    float g = SHAFT_PHASE_G, cosT = dot(dir, up);
+    float phase = (1.0 - g * g) / (4.0 * 3.14159265 * pow(1.0 + g * g - 2.0 * g * cosT, 1.5));
+    float len = min(dist, SHAFT_RANGE_M);
+    float jitter = float(pcg3d(uvec3(uvec2(pixel), 7u)).x) * (1.0 / 4294967296.0);
+    vec3 eye = frame.cameraPositionTime.xyz, sum = vec3(0.0);
+    for (int i = 0; i < SHAFT_SAMPLES; ++i) {
+        float s = (float(i) + jitter) / float(SHAFT_SAMPLES);
+        float t = s * s * len;                 // dt = 2·s·len·ds
+        vec3 x = eye + dir * t;
+        float depth = max(-x.y, 0.0);
+        sum += 2.0 * s * shaftFocus(x.xz + up.xz / up.y * depth, depth) * underwaterTransmittance(depth / up.y + t);
+    }
+    vec3 light = vec3(1.0, 0.92, 0.8) * sunTint(sun) * SHAFT_SUN;
+    return light * (frame.shading.w * SHAFT_SCATTER * phase * len / float(SHAFT_SAMPLES)) * sum;
 }
 
 #endif

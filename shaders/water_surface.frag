@@ -98,7 +98,8 @@ void main() {
     // waterline): Snell's window and total internal reflection, faded over the path to the eye.
     if (WATER_UNDERWATER || (WATER_WATERLINE && pixelUnderwater(gl_FragCoord.xy))) {
         vec3 below = surfaceFromBelow(-v, n, sun, exact, SUN_COLOR * sunTint(sun) * frame.shading.z, SUN_FROM_BELOW_SHININESS);
-        o_color = finalColor(underwaterExtinction(below, dist, -v), gl_FragCoord.xy);
+        vec3 seen = underwaterExtinction(below, dist, -v) + underwaterShafts(-v, dist, gl_FragCoord.xy);
+        o_color = finalColorUnderwater(seen, gl_FragCoord.xy);
         return;
     }
     vec3 sky = skyRadiance(normalize(r), sun);
