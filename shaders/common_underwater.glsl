@@ -48,18 +48,20 @@ bool pixelUnderwater(vec2 fragCoord) {
 // the eye (or a camera's metering) adapts to that brightest thing in view. The frame under water
 // is exposed 1/n² of the frame above: the window's sky comes out near where the sky itself does
 // above water, on the filmic curve's slope instead of its shoulder, and keeps its gradient.
-const bool UNDERWATER_HUE_KEPT = true;
 const float UNDERWATER_EXPOSURE = 1.0 / (WATER_IOR * WATER_IOR);
+const float UNDERWATER_HUE_KEPT_FROM = 0.25;
 
 // finalColor (common_frame.glsl) for a pixel under the water: the under-water exposure, and the
 // filmic curve applied to the colour's largest channel with the others scaled alike (the hue
 // kept), so a bright window rolls off toward its own colour instead of each channel clipping
-// on its own into a flat cyan.
+// on its own into a flat cyan. Dim colours (the deep, bodies) keep the per-channel curve as above
+// water; the hue-kept one takes over from this exposed peak up to 1.
 vec4 finalColorUnderwater(vec3 radiance, vec2 pixel) {
     if (linearTarget()) return vec4(radiance, 1.0);
     vec3 x = radiance * frame.waterColorExposure.w * UNDERWATER_EXPOSURE;
     float peak = max(max(x.r, x.g), max(x.b, 1e-6));
-    return encodeDisplay(UNDERWATER_HUE_KEPT ? x * (toneCurve(vec3(peak)).r / peak) : toneCurve(x), pixel);
+    vec3 kept = x * (toneCurve(vec3(peak)).r / peak);
+    return encodeDisplay(mix(toneCurve(x), kept, smoothstep(UNDERWATER_HUE_KEPT_FROM, 1.0, peak)), pixel);
 }
 
 // Light shafts and caustics: sunlight focused by the waves into bright sheets that run down
