@@ -66,17 +66,20 @@ vec4 finalColorUnderwater(vec3 radiance, vec2 pixel) {
 
 // Light shafts and caustics: sunlight focused by the waves into bright sheets that run down
 // along the refracted sun's direction. The focusing pattern is an analytic stand-in (three
-// drifting plane waves, sharpened), not the sea's own waves; a point's light is the pattern
-// where the sun's ray to it crossed the mean level, its contrast blurred away with depth (the
-// sun's 0.5° disk and the forward scattering widen each sheet). Along a view ray the shafts
-// are the single scattering of that light (Henyey–Greenstein phase), summed over a few
-// jittered samples. frame.shading.w is render.light_shafts (0 switches both off).
+// drifting plane waves), not the sea's own waves; a point's light is the pattern where the sun's
+// ray to it crossed the mean level, its contrast blurred away with depth (the sun's 0.5° disk and
+// the forward scattering widen each sheet). Along a view ray the shafts are the single scattering
+// of that light (Henyey–Greenstein phase). Every factor along the ray is exp(linear in t) or a
+// sine of a phase linear in t, so the integral is closed-form: no samples, no noise.
+// frame.shading.w is render.light_shafts (0 switches both off).
 const float SHAFT_SCATTER = 0.02;       // b, 1/m: scattering coefficient of clear ocean water (Jerlov I: 0.02–0.04)
 const float SHAFT_PHASE_G = 0.75;       // Henyey–Greenstein asymmetry (sea water scatters forward)
 const float SHAFT_RANGE_M = 40.0;       // the view ray's length that is summed (blue fades to 47 % over it)
-const int SHAFT_SAMPLES = 12;            // samples along the ray, denser near the eye (s² spacing)
 const float SHAFT_BLUR_DEPTH_M = 12.0;  // depth over which the pattern's contrast falls to 1/e
+const float SHAFT_CONTRAST = 0.9;       // the sheets' light is 1 ± this at the surface
 const float SHAFT_SUN = 1.4;            // the sunlight's strength, as the objects' (object_mesh.frag)
+// The pattern's plane waves: wave vector (rad/m) and drift (rad/s); 2.5–3.3 m apart.
+const vec3 SHAFT_WAVES[3] = vec3[3](vec3(1.9, 0.6, 0.9), vec3(-0.7, 1.6, -1.1), vec3(-1.7, -1.8, 0.7));
 
 // Direction toward the sun seen from under a flat surface (Snell: sin θw = sin θair / n); the
 // sun at or below the horizon refracts at the critical angle.
@@ -85,45 +88,54 @@ vec3 refractedSunUp(vec3 sun) {
     return -refract(-s, vec3(0.0, 1.0, 0.0), 1.0 / WATER_IOR);
 }
 
-// The focusing pattern at a point `depth` metres under the mean level whose sun ray crossed it
-// at `q` (m): mean 1, from 0 to 3.4 at the surface, toward 1 with depth.
-float shaftFocus(vec2 q, float depth) {
-    float t = frame.cameraPositionTime.w;
-    float g = sin(dot(q, vec2(1.9, 0.6)) + 0.9 * t) + sin(dot(q, vec2(-0.7, 1.6)) - 1.1 * t) +
-              sin(dot(q, vec2(-1.2, -1.3)) + 0.7 * t);
-    float u = 0.5 + g / 6.0;                   // 0..1
-    float focused = u * u * 3.43;              // E[u²] = 0.29 for three independent phases
-    return 1.0 + exp(-depth / SHAFT_BLUR_DEPTH_M) * (focused - 1.0);
-}
-
-// The sunlight's caustic factor at the world point `p` under water (1 with the switch off).
+// The sunlight's caustic factor at the world point `p` under water: the pattern's three waves at
+// the point where the sun's ray to it crossed the mean level, their sum sharpened (u², mean 1,
+// 0 to 3.4), toward 1 with depth; 1 with the switch off.
 float underwaterCaustics(vec3 p) {
     vec3 up = refractedSunUp(frame.sunDirectionFresnel.xyz);
-    float depth = max(-p.y, 0.0);
-    return mix(1.0, shaftFocus(p.xz + up.xz / up.y * depth, depth), min(frame.shading.w, 1.0));
+    float depth = max(-p.y, 0.0), time = frame.cameraPositionTime.w;
+    vec2 q = p.xz + up.xz / up.y * depth;
+    float g = 0.0;
+    for (int i = 0; i < 3; ++i) g += sin(dot(q, SHAFT_WAVES[i].xy) + SHAFT_WAVES[i].z * time);
+    float u = 0.5 + g / 6.0;
+    float focus = 1.0 + exp(-depth / SHAFT_BLUR_DEPTH_M) * (3.43 * u * u - 1.0);  // E[u²] = 0.29
+    return mix(1.0, focus, min(frame.shading.w, 1.0));
+}
+
+// ∫0^L exp(−s·t) dt per channel, safe where s is near 0 (s may be negative: a ray up the shaft).
+vec3 shaftExpIntegral(vec3 s, float len) {
+    vec3 x = s * len;
+    return mix((1.0 - exp(-x)) / (s + 1e-8), len * (1.0 - 0.5 * x), lessThan(abs(x), vec3(1e-3)));
 }
 
 // The shafts' radiance added along `dist` metres of a view ray in `dir` from the eye (linear):
 // ∫ b·p(θ)·E(x)·T(t) dt, E the sunlight at x (dimmed per channel over its slanted path down,
-// times the pattern), T the view path's transmittance, θ between the ray and the refracted sun.
-vec3 underwaterShafts(vec3 dir, float dist, vec2 pixel) {
+// times 1 + contrast·exp(−depth/blur)·mean of the three sines), T the view path's transmittance,
+// θ between the ray and the refracted sun. Along x = eye + dir·t the depth, the light's path and
+// each sine's phase are linear in t: ∫ exp(−s t) sin(α + β t) dt = Im[e^{iα}(1 − e^{(−s+iβ)L})/(s − iβ)].
+vec3 underwaterShafts(vec3 dir, float dist) {
     if (frame.shading.w <= 0.0) return vec3(0.0);
-    vec3 sun = frame.sunDirectionFresnel.xyz;
+    vec3 sun = frame.sunDirectionFresnel.xyz, eye = frame.cameraPositionTime.xyz;
     vec3 up = refractedSunUp(sun);
     float g = SHAFT_PHASE_G, cosT = dot(dir, up);
     float phase = (1.0 - g * g) / (4.0 * 3.14159265 * pow(1.0 + g * g - 2.0 * g * cosT, 1.5));
     float len = min(dist, SHAFT_RANGE_M);
-    float jitter = float(pcg3d(uvec3(uvec2(pixel), 7u)).x) * (1.0 / 4294967296.0);
-    vec3 eye = frame.cameraPositionTime.xyz, sum = vec3(0.0);
-    for (int i = 0; i < SHAFT_SAMPLES; ++i) {
-        float s = (float(i) + jitter) / float(SHAFT_SAMPLES);
-        float t = s * s * len;                 // dt = 2·s·len·ds
-        vec3 x = eye + dir * t;
-        float depth = max(-x.y, 0.0);
-        sum += 2.0 * s * shaftFocus(x.xz + up.xz / up.y * depth, depth) * underwaterTransmittance(depth / up.y + t);
+    // depth(t) = d0 + d1·t; the sun's crossing point q(t) = q0 + q1·t.
+    float d0 = -eye.y, d1 = -dir.y;
+    vec2 slant = up.xz / up.y;
+    vec2 q0 = eye.xz + slant * d0, q1 = dir.xz + slant * d1;
+    vec3 s = UNDERWATER_KD * (1.0 + d1 / up.y);  // the light's path down and the view path
+    vec3 mean = exp(-UNDERWATER_KD * (d0 / up.y)) * shaftExpIntegral(s, len);
+    vec3 sb = s + d1 / SHAFT_BLUR_DEPTH_M, fade = exp(-sb * len), waves = vec3(0.0);
+    for (int i = 0; i < 3; ++i) {
+        float a = dot(q0, SHAFT_WAVES[i].xy) + SHAFT_WAVES[i].z * frame.cameraPositionTime.w;
+        float b = dot(q1, SHAFT_WAVES[i].xy);
+        vec3 re = cos(a) - fade * cos(a + b * len), im = sin(a) - fade * sin(a + b * len);
+        waves += (re * b + im * sb) / (sb * sb + b * b + 1e-8);
     }
+    waves *= exp(-UNDERWATER_KD * (d0 / up.y) - d0 / SHAFT_BLUR_DEPTH_M) * (SHAFT_CONTRAST / 3.0);
     vec3 light = vec3(1.0, 0.92, 0.8) * sunTint(sun) * SHAFT_SUN;
-    return light * (frame.shading.w * SHAFT_SCATTER * phase * len / float(SHAFT_SAMPLES)) * sum;
+    return light * (frame.shading.w * SHAFT_SCATTER * phase) * max(mean + waves, 0.0);
 }
 
 #endif

@@ -98,7 +98,7 @@ void main() {
     // waterline): Snell's window and total internal reflection, faded over the path to the eye.
     if (WATER_UNDERWATER || (WATER_WATERLINE && pixelUnderwater(gl_FragCoord.xy))) {
         vec3 below = surfaceFromBelow(-v, n, sun, exact, SUN_COLOR * sunTint(sun) * frame.shading.z, unresolved);
-        vec3 seen = underwaterExtinction(below, dist, -v) + underwaterShafts(-v, dist, gl_FragCoord.xy);
+        vec3 seen = underwaterExtinction(below, dist, -v) + underwaterShafts(-v, dist);
         o_color = finalColorUnderwater(seen, gl_FragCoord.xy);
         return;
     }
