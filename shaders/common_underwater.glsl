@@ -88,17 +88,20 @@ vec3 refractedSunUp(vec3 sun) {
     return -refract(-s, vec3(0.0, 1.0, 0.0), 1.0 / WATER_IOR);
 }
 
-// The sunlight's caustic factor at the world point `p` under water: the pattern's three waves at
-// the point where the sun's ray to it crossed the mean level, their sum sharpened (u², mean 1,
-// 0 to 3.4), toward 1 with depth; 1 with the switch off.
+// The sunlight's caustic factor at the world point `p` under water: the pattern's three waves,
+// CAUSTIC_SCALE times finer than the shafts' sheets (those are the caustics blurred by the sun's
+// disk and the scattering over tens of metres), at the point where the sun's ray to `p`
+// crossed the mean level, their sum sharpened (7.7·u⁴, u = ½ + sum / 6: mean 1 for three
+// independent phases, 0 to 7.7) and toward 1 with depth; 1 with the switch off.
+const float CAUSTIC_SCALE = 2.5;
 float underwaterCaustics(vec3 p) {
     vec3 up = refractedSunUp(frame.sunDirectionFresnel.xyz);
     float depth = max(-p.y, 0.0), time = frame.cameraPositionTime.w;
-    vec2 q = p.xz + up.xz / up.y * depth;
+    vec2 q = (p.xz + up.xz / up.y * depth) * CAUSTIC_SCALE;
     float g = 0.0;
     for (int i = 0; i < 3; ++i) g += sin(dot(q, SHAFT_WAVES[i].xy) + SHAFT_WAVES[i].z * time);
-    float u = 0.5 + g / 6.0;
-    float focus = 1.0 + exp(-depth / SHAFT_BLUR_DEPTH_M) * (3.43 * u * u - 1.0);  // E[u²] = 0.29
+    float u = 0.5 + g / 6.0, u2 = u * u;
+    float focus = 1.0 + exp(-depth / SHAFT_BLUR_DEPTH_M) * (7.7 * u2 * u2 - 1.0);  // E[u⁴] = 0.13
     return mix(1.0, focus, min(frame.shading.w, 1.0));
 }
 
