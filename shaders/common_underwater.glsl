@@ -65,21 +65,25 @@ vec4 finalColorUnderwater(vec3 radiance, vec2 pixel) {
 }
 
 // Light shafts and caustics: sunlight focused by the waves into bright sheets that run down
-// along the refracted sun's direction. The focusing pattern is an analytic stand-in (three
+// along the refracted sun's direction. The focusing pattern is an analytic stand-in (five
 // drifting plane waves), not the sea's own waves; a point's light is the pattern where the sun's
 // ray to it crossed the mean level, its contrast blurred away with depth (the sun's 0.5° disk and
 // the forward scattering widen each sheet). Along a view ray the shafts are the single scattering
 // of that light (Henyey–Greenstein phase). Every factor along the ray is exp(linear in t) or a
 // sine of a phase linear in t, so the integral is closed-form: no samples, no noise.
 // frame.shading.w is render.light_shafts (0 switches both off).
-const float SHAFT_SCATTER = 0.02;       // b, 1/m: scattering coefficient of clear ocean water (Jerlov I: 0.02–0.04)
+const float SHAFT_SCATTER = 0.03;       // b, 1/m: scattering coefficient of clear ocean water (Jerlov I: 0.02–0.04)
 const float SHAFT_PHASE_G = 0.75;       // Henyey–Greenstein asymmetry (sea water scatters forward)
 const float SHAFT_RANGE_M = 40.0;       // the view ray's length that is summed (blue fades to 47 % over it)
 const float SHAFT_BLUR_DEPTH_M = 12.0;  // depth over which the pattern's contrast falls to 1/e
-const float SHAFT_CONTRAST = 0.9;       // the sheets' light is 1 ± this at the surface
+const float SHAFT_WAVE_AMPLITUDE = 0.3;  // each wave's share of the sheets' light at the surface (1 ± 0.3 per wave)
 const float SHAFT_SUN = 1.4;            // the sunlight's strength, as the objects' (object_mesh.frag)
-// The pattern's plane waves: wave vector (rad/m) and drift (rad/s); 2.5–3.3 m apart.
-const vec3 SHAFT_WAVES[3] = vec3[3](vec3(1.9, 0.6, 0.9), vec3(-0.7, 1.6, -1.1), vec3(-1.7, -1.8, 0.7));
+// The pattern's plane waves: wave vector (rad/m) and drift (rad/s); 2.4–3.3 m apart, their
+// directions spread round the circle (each wave's sheets, seen edge-on, make the rays that
+// leave the refracted sun along one great circle).
+const int SHAFT_WAVE_COUNT = 5;
+const vec3 SHAFT_WAVES[SHAFT_WAVE_COUNT] = vec3[SHAFT_WAVE_COUNT](vec3(1.9, 0.6, 0.9), vec3(-0.7, 1.6, -1.1), vec3(-1.7, -1.8, 0.7),
+                                                                  vec3(0.4, -2.5, -0.8), vec3(2.2, -1.1, 1.2));
 
 // Direction toward the sun seen from under a flat surface (Snell: sin θw = sin θair / n); the
 // sun at or below the horizon refracts at the critical angle.
@@ -88,7 +92,7 @@ vec3 refractedSunUp(vec3 sun) {
     return -refract(-s, vec3(0.0, 1.0, 0.0), 1.0 / WATER_IOR);
 }
 
-// The sunlight's caustic factor at the world point `p` under water: the pattern's three waves,
+// The sunlight's caustic factor at the world point `p` under water: the pattern's first three waves,
 // CAUSTIC_SCALE times finer than the shafts' sheets (those are the caustics blurred by the sun's
 // disk and the scattering over tens of metres), at the point where the sun's ray to `p`
 // crossed the mean level, their sum sharpened (7.7·u⁴, u = ½ + sum / 6: mean 1 for three
@@ -113,7 +117,8 @@ vec3 shaftExpIntegral(vec3 s, float len) {
 
 // The shafts' radiance added along `dist` metres of a view ray in `dir` from the eye (linear):
 // ∫ b·p(θ)·E(x)·T(t) dt, E the sunlight at x (dimmed per channel over its slanted path down,
-// times 1 + contrast·exp(−depth/blur)·mean of the three sines), T the view path's transmittance,
+// times 1 + 0.3·exp(−depth/blur)·sum of the five sines; its integral is kept ≥ 0), T the view
+// path's transmittance,
 // θ between the ray and the refracted sun. Along x = eye + dir·t the depth, the light's path and
 // each sine's phase are linear in t: ∫ exp(−s t) sin(α + β t) dt = Im[e^{iα}(1 − e^{(−s+iβ)L})/(s − iβ)].
 vec3 underwaterShafts(vec3 dir, float dist) {
@@ -130,13 +135,13 @@ vec3 underwaterShafts(vec3 dir, float dist) {
     vec3 s = UNDERWATER_KD * (1.0 + d1 / up.y);  // the light's path down and the view path
     vec3 mean = exp(-UNDERWATER_KD * (d0 / up.y)) * shaftExpIntegral(s, len);
     vec3 sb = s + d1 / SHAFT_BLUR_DEPTH_M, fade = exp(-sb * len), waves = vec3(0.0);
-    for (int i = 0; i < 3; ++i) {
+    for (int i = 0; i < SHAFT_WAVE_COUNT; ++i) {
         float a = dot(q0, SHAFT_WAVES[i].xy) + SHAFT_WAVES[i].z * frame.cameraPositionTime.w;
         float b = dot(q1, SHAFT_WAVES[i].xy);
         vec3 re = cos(a) - fade * cos(a + b * len), im = sin(a) - fade * sin(a + b * len);
         waves += (re * b + im * sb) / (sb * sb + b * b + 1e-8);
     }
-    waves *= exp(-UNDERWATER_KD * (d0 / up.y) - d0 / SHAFT_BLUR_DEPTH_M) * (SHAFT_CONTRAST / 3.0);
+    waves *= exp(-UNDERWATER_KD * (d0 / up.y) - d0 / SHAFT_BLUR_DEPTH_M) * SHAFT_WAVE_AMPLITUDE;
     vec3 light = vec3(1.0, 0.92, 0.8) * sunTint(sun) * SHAFT_SUN;
     return light * (frame.shading.w * SHAFT_SCATTER * phase) * max(mean + waves, 0.0);
 }
