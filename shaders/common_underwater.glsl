@@ -115,15 +115,17 @@ vec3 shaftExpIntegral(vec3 s, float len) {
     return mix((1.0 - exp(-x)) / (s + 1e-8), len * (1.0 - 0.5 * x), lessThan(abs(x), vec3(1e-3)));
 }
 
-// The shafts' radiance added along `dist` metres of a view ray in `dir` from the eye (linear):
+// The shafts' radiance added along `dist` metres of a ray in `dir` from `origin` (linear):
 // ∫ b·p(θ)·E(x)·T(t) dt, E the sunlight at x (dimmed per channel over its slanted path down,
 // times 1 + 0.3·exp(−depth/blur)·sum of the five sines; its integral is kept ≥ 0), T the view
 // path's transmittance,
-// θ between the ray and the refracted sun. Along x = eye + dir·t the depth, the light's path and
-// each sine's phase are linear in t: ∫ exp(−s t) sin(α + β t) dt = Im[e^{iα}(1 − e^{(−s+iβ)L})/(s − iβ)].
-vec3 underwaterShafts(vec3 dir, float dist) {
+// θ between the ray and the refracted sun. Along x = origin + dir·t the depth, the light's path
+// and each sine's phase are linear in t: ∫ exp(−s t) sin(α + β t) dt = Im[e^{iα}(1 − e^{(−s+iβ)L})/(s − iβ)].
+// `sheets` false keeps the mean light only (the waves' terms compile out): for the rays the
+// surface mirrors, cheaper, and blurred there anyway by the surface's slopes.
+vec3 underwaterShafts(vec3 origin, vec3 dir, float dist, const bool sheets) {
     if (frame.shading.w <= 0.0) return vec3(0.0);
-    vec3 sun = frame.sunDirectionFresnel.xyz, eye = frame.cameraPositionTime.xyz;
+    vec3 sun = frame.sunDirectionFresnel.xyz, eye = origin;
     vec3 up = refractedSunUp(sun);
     float g = SHAFT_PHASE_G, cosT = dot(dir, up);
     float phase = (1.0 - g * g) / (4.0 * 3.14159265 * pow(1.0 + g * g - 2.0 * g * cosT, 1.5));
@@ -135,7 +137,7 @@ vec3 underwaterShafts(vec3 dir, float dist) {
     vec3 s = UNDERWATER_KD * (1.0 + d1 / up.y);  // the light's path down and the view path
     vec3 mean = exp(-UNDERWATER_KD * (d0 / up.y)) * shaftExpIntegral(s, len);
     vec3 sb = s + d1 / SHAFT_BLUR_DEPTH_M, fade = exp(-sb * len), waves = vec3(0.0);
-    for (int i = 0; i < SHAFT_WAVE_COUNT; ++i) {
+    for (int i = 0; i < (sheets ? SHAFT_WAVE_COUNT : 0); ++i) {
         float a = dot(q0, SHAFT_WAVES[i].xy) + SHAFT_WAVES[i].z * frame.cameraPositionTime.w;
         float b = dot(q1, SHAFT_WAVES[i].xy);
         vec3 re = cos(a) - fade * cos(a + b * len), im = sin(a) - fade * sin(a + b * len);

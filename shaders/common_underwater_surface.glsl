@@ -31,11 +31,13 @@ float sunThroughSurface(vec3 n, vec3 o, vec3 sun, float sigma2, bool exact) {
 // the refracted sky inside Snell's window, weighted by the transmittance (1 − Fresnel; radiance
 // grows by n² entering the denser medium, which the exposure under water takes back:
 // common_underwater.glsl), the sun through the surface's unresolved slopes (`sigma2`, their
-// variance; `sunLight` its irradiance), the water's own light mirrored by the Fresnel
-// reflectance and, past the critical angle asin(1/n) = 48.8°, totally reflected.
-vec3 surfaceFromBelow(vec3 view, vec3 n, vec3 sun, bool exact, vec3 sunLight, float sigma2) {
+// variance; `sunLight` its irradiance), the water's own light and its shafts' mean light along
+// the mirrored ray from the surface point `at`, mirrored by the Fresnel reflectance and, past
+// the critical angle asin(1/n) = 48.8°, totally reflected.
+vec3 surfaceFromBelow(vec3 view, vec3 at, vec3 n, vec3 sun, bool exact, vec3 sunLight, float sigma2) {
     vec3 mirrored = reflect(view, -n);
-    vec3 inside = underwaterInscatter(vec3(mirrored.x, min(mirrored.y, 0.0), mirrored.z));  // it reads the height only
+    mirrored.y = min(mirrored.y, 0.0);  // a ray the waves send back up stays in the water
+    vec3 inside = underwaterInscatter(mirrored) + underwaterShafts(at, normalize(mirrored), SHAFT_RANGE_M, false);
     vec3 glare = sunLight * sunThroughSurface(n, -view, sun, sigma2, exact);
     vec3 refracted = refract(view, -n, WATER_IOR);
     if (dot(refracted, refracted) == 0.0) return inside + glare;  // total internal reflection

@@ -29,7 +29,7 @@ void main() {
         // The light reaching the object's depth under the mean level (y = 0), then the path to the
         // eye and the shafts along it.
         color *= underwaterTransmittance(-v_world.y);
-        color = underwaterExtinction(color, dist, -v) + underwaterShafts(-v, dist);
+        color = underwaterExtinction(color, dist, -v) + underwaterShafts(frame.cameraPositionTime.xyz, -v, dist, true);
         o_color = finalColorUnderwater(color, gl_FragCoord.xy);
     } else {
         vec3 haze = skyRadiance(normalize(vec3(-v.x, 0.0, -v.z)), sun);

@@ -14,7 +14,7 @@ void main() {
     vec3 dir = viewRay(v_ndc);
     vec3 sun = frame.sunDirectionFresnel.xyz;
     if (pixelUnderwater(gl_FragCoord.xy)) {
-        o_color = finalColorUnderwater(underwaterInscatter(dir) + underwaterShafts(dir, SHAFT_RANGE_M), gl_FragCoord.xy);
+        o_color = finalColorUnderwater(underwaterInscatter(dir) + underwaterShafts(frame.cameraPositionTime.xyz, dir, SHAFT_RANGE_M, true), gl_FragCoord.xy);
         return;
     }
     o_color = finalColor(textureLod(u_sky, dir, 0.0).rgb + sunDisk(dir, sun), gl_FragCoord.xy);

@@ -97,8 +97,8 @@ void main() {
     // than the formula. Seen from below (the eye under water, or this pixel under the
     // waterline): Snell's window and total internal reflection, faded over the path to the eye.
     if (WATER_UNDERWATER || (WATER_WATERLINE && pixelUnderwater(gl_FragCoord.xy))) {
-        vec3 below = surfaceFromBelow(-v, n, sun, exact, SUN_COLOR * sunTint(sun) * frame.shading.z, unresolved);
-        vec3 seen = underwaterExtinction(below, dist, -v) + underwaterShafts(-v, dist);
+        vec3 below = surfaceFromBelow(-v, v_world, n, sun, exact, SUN_COLOR * sunTint(sun) * frame.shading.z, unresolved);
+        vec3 seen = underwaterExtinction(below, dist, -v) + underwaterShafts(eye, -v, dist, true);
         o_color = finalColorUnderwater(seen, gl_FragCoord.xy);
         return;
     }

@@ -151,8 +151,8 @@ struct WindowStats {
     int n = 0;
 };
 
-// Over the pixels within `maxDeg` of the zenith.
-WindowStats windowStats(const WindowView& v, double maxDeg) {
+// Over the pixels from `minDeg` to `maxDeg` off the zenith.
+WindowStats windowStats(const WindowView& v, double minDeg, double maxDeg) {
     WindowStats s;
     double sum = 0.0, sum2 = 0.0, rough = 0.0;
     const auto lumaAt = [&](int x, int y) {
@@ -161,7 +161,7 @@ WindowStats windowStats(const WindowView& v, double maxDeg) {
     };
     for (int y = 0; y < v.img.h - 2; ++y)
         for (int x = 0; x < v.img.w - 2; ++x) {
-            if (v.zenithDeg(x, y) > maxDeg) continue;
+            if (v.zenithDeg(x, y) < minDeg || v.zenithDeg(x, y) > maxDeg) continue;
             const unsigned char* p = &v.img.rgb[size_t((y * v.img.w + x) * 3)];
             if (std::max({p[0], p[1], p[2]}) == 255) s.clipped += 1.0;
             const double l = lumaAt(x, y);
@@ -180,7 +180,7 @@ WindowStats windowStats(const WindowView& v, double maxDeg) {
 TEST_CASE("Snell's window from below: not clipped, the waves' shape inside it, the sun where Snell puts it", "[gl][render][underwater]") {
     gfx::requestDebugOutput(true);
     const WindowView flat = windowFrom({}), waves = windowFrom(twoSwells());
-    const WindowStats f = windowStats(flat, 45.0), w = windowStats(waves, 45.0);
+    const WindowStats f = windowStats(flat, 0.0, 45.0), w = windowStats(waves, 0.0, 45.0);
     INFO("flat: clipped " << f.clipped << ", luma std " << f.lumaStd << ", roughness " << f.roughness);
     INFO("waves: clipped " << w.clipped << ", luma std " << w.lumaStd << ", roughness " << w.roughness);
     CHECK(f.clipped < 0.02);
@@ -188,6 +188,12 @@ TEST_CASE("Snell's window from below: not clipped, the waves' shape inside it, t
     // The waves' shape: the window's sky, the sun's glare and the rim bent by the slopes.
     CHECK(w.lumaStd > 1.5 * f.lumaStd);
     CHECK(w.roughness > 1.5 * f.roughness);
+    // Past the critical angle (55°–60°) the swells show too: the window's edge bent into the
+    // ring and the mirrored deep, brighter where a slope turns the mirrored ray toward the
+    // horizontal; a flat sea's ring is uniform.
+    const WindowStats fr = windowStats(flat, 55.0, 60.0), wr = windowStats(waves, 55.0, 60.0);
+    INFO("reflected ring: luma std flat " << fr.lumaStd << ", waves " << wr.lumaStd);
+    CHECK(wr.lumaStd > 2.0 * fr.lumaStd + 1.0);
 
     // The sun's spot: the centroid of the flat window's brightest pixels (luma within 5 levels of
     // the top) lies at the refracted sun, sin θw = sin θair / n, toward +z (down the screen).
