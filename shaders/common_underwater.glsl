@@ -117,23 +117,22 @@ vec3 shaftExpIntegral(vec3 s, float len) {
 
 // The shafts' radiance added along `dist` metres of a ray in `dir` from `origin` (linear):
 // ∫ b·p(θ)·E(x)·T(t) dt, E the sunlight at x (dimmed per channel over its slanted path down,
-// times 1 + 0.3·exp(−depth/blur)·sum of the five sines; its integral is kept ≥ 0), T the view
-// path's transmittance,
-// θ between the ray and the refracted sun. Along x = origin + dir·t the depth, the light's path
-// and each sine's phase are linear in t: ∫ exp(−s t) sin(α + β t) dt = Im[e^{iα}(1 − e^{(−s+iβ)L})/(s − iβ)].
+// times 1 + 0.3·exp(−depth/blur)·sum of the five sines; its integral is kept ≥ 0), T the ray's
+// transmittance, θ between the ray and the refracted sun. Along x = origin + dir·t the depth, the
+// light's path and each sine's phase are linear in t: ∫ exp(−s t) sin(α + β t) dt = Im[e^{iα}(1 − e^{(−s+iβ)L})/(s − iβ)].
 // `sheets` false keeps the mean light only (the waves' terms compile out): for the rays the
 // surface mirrors, cheaper, and blurred there anyway by the surface's slopes.
 vec3 underwaterShafts(vec3 origin, vec3 dir, float dist, const bool sheets) {
     if (frame.shading.w <= 0.0) return vec3(0.0);
-    vec3 sun = frame.sunDirectionFresnel.xyz, eye = origin;
+    vec3 sun = frame.sunDirectionFresnel.xyz;
     vec3 up = refractedSunUp(sun);
     float g = SHAFT_PHASE_G, cosT = dot(dir, up);
     float phase = (1.0 - g * g) / (4.0 * 3.14159265 * pow(1.0 + g * g - 2.0 * g * cosT, 1.5));
     float len = min(dist, SHAFT_RANGE_M);
     // depth(t) = d0 + d1·t; the sun's crossing point q(t) = q0 + q1·t.
-    float d0 = -eye.y, d1 = -dir.y;
+    float d0 = -origin.y, d1 = -dir.y;
     vec2 slant = up.xz / up.y;
-    vec2 q0 = eye.xz + slant * d0, q1 = dir.xz + slant * d1;
+    vec2 q0 = origin.xz + slant * d0, q1 = dir.xz + slant * d1;
     vec3 s = UNDERWATER_KD * (1.0 + d1 / up.y);  // the light's path down and the view path
     vec3 mean = exp(-UNDERWATER_KD * (d0 / up.y)) * shaftExpIntegral(s, len);
     vec3 sb = s + d1 / SHAFT_BLUR_DEPTH_M, fade = exp(-sb * len), waves = vec3(0.0);

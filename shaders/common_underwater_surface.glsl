@@ -37,7 +37,7 @@ float sunThroughSurface(vec3 n, vec3 o, vec3 sun, float sigma2, bool exact) {
 vec3 surfaceFromBelow(vec3 view, vec3 at, vec3 n, vec3 sun, bool exact, vec3 sunLight, float sigma2) {
     vec3 mirrored = reflect(view, -n);
     mirrored.y = min(mirrored.y, 0.0);  // a ray the waves send back up stays in the water
-    vec3 inside = underwaterInscatter(mirrored) + underwaterShafts(at, normalize(mirrored), SHAFT_RANGE_M, false);
+    vec3 inside = underwaterInscatter(mirrored) + underwaterShafts(at, normalize(mirrored - vec3(0.0, 1e-4, 0.0)), SHAFT_RANGE_M, false);
     vec3 glare = sunLight * sunThroughSurface(n, -view, sun, sigma2, exact);
     vec3 refracted = refract(view, -n, WATER_IOR);
     if (dot(refracted, refracted) == 0.0) return inside + glare;  // total internal reflection
