@@ -1,7 +1,9 @@
 // The view from under water and light through thin crests ([Jerlov1976], [Crest], [Atlas2019];
 // docs/frame.md): Snell's window's angular radius asin(1/n) from a flat sea seen straight up,
-// Beer–Lambert extinction per channel at Jerlov type I's Kd, the waterline across a half-dipped
-// camera where the near plane meets the water, and the backlit crests' turquoise toward the sun.
+// the window unclipped with the waves' shape in it and the sun at Snell's angle, the exposure
+// that takes back the n² gain, light shafts toward the refracted sun, Beer–Lambert extinction
+// per channel at Jerlov type I's Kd, the waterline across a half-dipped camera where the near
+// plane meets the water, and the backlit crests' turquoise toward the sun.
 #include "gfx/gl.h"
 #include "gfx/gpu_bindings.h"
 #include "gfx/renderer.h"
