@@ -80,7 +80,7 @@ UNIFORM_BLOCK(FrameUniforms, FRAME_BLOCK) {
     vec4 viewport;             // xy target size (px), z output: 0 display colour, 1 linear radiance + coverage (reflection), 2 display colour + luma in alpha (FXAA), 3 linear radiance + 1 / eye depth in alpha (refraction); w 1 = eye under water
     vec4 surfaceClip;          // x side s (±1; 0 keeps all), y overlap m (m), z 1 = mirror: objects keep s·(y − surface) + m >= 0, mirrored about the surface
     vec4 depthParams;          // near, far (m), water clarity (m), sky cube mip count
-    vec4 shading;              // DU/DV strength, normal distortion, the sun's irradiance for the glitter, 0
+    vec4 shading;              // DU/DV strength, normal distortion, the sun's irradiance for the glitter, light shafts under water
     vec4 switches;             // reflections, refractions, foam (1 on, 0 off), dither of the 8-bit outputs (LSB; 0 off)
     vec4 waterline;            // xyz: height (m) of a pixel's point on the near plane above the water's tangent plane at the eye = x·ndc.x + y·ndc.y + z (< 0: the pixel is under water); w the eye's depth under the surface (m, ≥ 0)
 } BLOCK_INSTANCE(frame);

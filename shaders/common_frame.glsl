@@ -22,10 +22,19 @@ vec3 waterBodyColor() {
 // The encoded colour goes into an 8-bit target (the framebuffer or the internal frame), so it
 // is dithered here, once (common_dither.glsl); `pixel` is gl_FragCoord.xy. The post pass's
 // copies and blends of it keep that noise and are not dithered again (docs/frame.md).
-vec4 finalColor(vec3 radiance, vec2 pixel) {
-    if (frame.viewport.z > 0.5 && (frame.viewport.z < 1.5 || frame.viewport.z > 2.5)) return vec4(radiance, 1.0);
-    vec3 x = radiance * frame.waterColorExposure.w;
-    x = clamp((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
-    vec3 display = dither8(pow(x, vec3(1.0 / 2.2)), pixel, frame.switches.w);
+// True where the target keeps linear radiance (the reflection and refraction targets).
+bool linearTarget() { return frame.viewport.z > 0.5 && (frame.viewport.z < 1.5 || frame.viewport.z > 2.5); }
+
+// The filmic curve alone: exposed linear radiance to display-linear 0..1.
+vec3 toneCurve(vec3 x) { return clamp((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0); }
+
+// A tone-mapped colour (display-linear 0..1) encoded and dithered for the 8-bit target.
+vec4 encodeDisplay(vec3 toned, vec2 pixel) {
+    vec3 display = dither8(pow(toned, vec3(1.0 / 2.2)), pixel, frame.switches.w);
     return vec4(display, frame.viewport.z > 1.5 ? dot(display, vec3(0.299, 0.587, 0.114)) : 1.0);
+}
+
+vec4 finalColor(vec3 radiance, vec2 pixel) {
+    if (linearTarget()) return vec4(radiance, 1.0);
+    return encodeDisplay(toneCurve(radiance * frame.waterColorExposure.w), pixel);
 }

@@ -1,4 +1,6 @@
 // Fresnel reflectance of water (n = 1.33) for unpolarised light: Schlick or exact.
+#ifndef COMMON_FRESNEL_GLSL
+#define COMMON_FRESNEL_GLSL
 const float WATER_IOR = 1.33;
 
 float fresnelSchlick(float cosTheta) {
@@ -20,3 +22,5 @@ float fresnelExact(float cosTheta) {
 float fresnel(float cosTheta, bool exact) {
     return exact ? fresnelExact(cosTheta) : fresnelSchlick(cosTheta);
 }
+
+#endif

@@ -2,6 +2,8 @@
 // sun disk; twilight (sun below ~15°) reddens the sun and burns the horizon toward it orange,
 // night (sun below about −10°) leaves a dark blue dome. Radiance in arbitrary linear units
 // (1 ≈ bright horizon). With the sun above sin e = 0.25 the sky is the day sky unchanged.
+#ifndef COMMON_SKY_GLSL
+#define COMMON_SKY_GLSL
 
 // Colour and strength of the sunlight reaching the sea, relative to a high sun: the longer
 // path through air near the horizon scatters blue away (reddening), none below it.
@@ -41,3 +43,5 @@ vec3 sunDisk(vec3 dir, vec3 sunDir) {
     float cosAngle = dot(dir, sunDir);
     return vec3(60.0, 52.0, 40.0) * sunTint(sunDir) * smoothstep(0.99996, 0.99998, cosAngle);
 }
+
+#endif

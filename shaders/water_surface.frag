@@ -45,9 +45,6 @@ const float DETAIL_TILE = 24.0;            // m per repeat of the detail map
 const vec2 DETAIL_DRIFT = vec2(0.031, 0.017);  // detail map scroll (repeats per s)
 const vec3 SUN_COLOR = vec3(1.0, 0.9, 0.7);
 const float MIN_GLITTER_SLOPE_VARIANCE = 0.001;
-// The sun seen through the window from below: a Phong lobe about the refracted ray (an
-// approximation; the slopes' statistics shape only the glitter seen from above).
-const float SUN_FROM_BELOW_SHININESS = 600.0;
 // A tilted surface shifts an image by an angle, so the shift grows with the distance of the
 // reflected or refracted object behind the surface: none where it touches it (a hull at the
 // waterline), the full offset from this many metres behind. Without the ramp the offset tears
@@ -92,13 +89,17 @@ void main() {
     vec3 body = waterBodyColor();
     vec3 r = reflect(-v, n);
     r.y = abs(r.y);
+    // The slopes no layer draws: the sea's whole variance less the cascades' (at least that
+    // of capillary ripples on a glassy sea, so the sun never shrinks to a point).
+    float unresolved = max(water.glitterParams.x - resolvedSlopes, MIN_GLITTER_SLOPE_VARIANCE);
 
     // The sky is the analytic one the cube is baked from: on llvmpipe a cube lookup costs more
     // than the formula. Seen from below (the eye under water, or this pixel under the
     // waterline): Snell's window and total internal reflection, faded over the path to the eye.
     if (WATER_UNDERWATER || (WATER_WATERLINE && pixelUnderwater(gl_FragCoord.xy))) {
-        vec3 below = surfaceFromBelow(-v, n, sun, exact, SUN_COLOR * sunTint(sun) * frame.shading.z, SUN_FROM_BELOW_SHININESS);
-        o_color = finalColor(underwaterExtinction(below, dist, -v), gl_FragCoord.xy);
+        vec3 below = surfaceFromBelow(-v, v_world, n, sun, exact, SUN_COLOR * sunTint(sun) * frame.shading.z, unresolved);
+        vec3 seen = underwaterExtinction(below, dist, -v) + underwaterShafts(eye, -v, dist, true);
+        o_color = finalColorUnderwater(seen, gl_FragCoord.xy);
         return;
     }
     vec3 sky = skyRadiance(normalize(r), sun);
@@ -137,9 +138,6 @@ void main() {
 
     float F = fresnel(cosV, exact);
     vec3 color = mix(refraction, reflection, F);
-    // The slopes no layer draws: the sea's whole variance less the cascades' (at least that
-    // of capillary ripples on a glassy sea, so the sun never shrinks to a point).
-    float unresolved = max(water.glitterParams.x - resolvedSlopes, MIN_GLITTER_SLOPE_VARIANCE);
     color += SUN_COLOR * sunTint(sun) * frame.shading.z * glitterRadiance(n, v, sun, unresolved, exact);
     // the mean level is y = 0; a pixel spans 2 / (projection[1][1] · viewport height) radians
     color += crestSubsurface(v_world.y, water.crest.x, water.crest.y, v, n, sun, dist, 2.0 / (water.crest.z * frame.viewport.y));

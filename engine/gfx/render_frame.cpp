@@ -44,7 +44,7 @@ void FrameViews::update(const RenderDef& def, const FrameState& frame, const Cam
     u.sunDirectionFresnel = glm::vec4(sunDirection(def), def.fresnel == Fresnel::Exact ? 1.0f : 0.0f);
     u.waterColorExposure = glm::vec4(def.water_color, def.exposure);
     u.depthParams = glm::vec4(camera.nearM, camera.farM, def.water_clarity, float(skyMips));
-    u.shading = glm::vec4(def.dudv_strength, def.normal_distortion, def.glitter, 0.0f);
+    u.shading = glm::vec4(def.dudv_strength, def.normal_distortion, def.glitter, def.light_shafts);
     u.switches = glm::vec4(def.reflections ? 1.0f : 0.0f, def.refractions ? 1.0f : 0.0f, def.foam ? 1.0f : 0.0f,
                            def.dither ? 1.0f : 0.0f);
     u.waterline = frame.nearPlaneHeight;

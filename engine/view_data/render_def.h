@@ -47,6 +47,7 @@ struct RenderDef {
     bool hull_clip = true;                          ///< no water drawn inside a floating hull where the hull lies behind it (its clip volume, shaders/common_hull_clip.glsl, docs/frame.md#hulls)
     bool dither = true;                             ///< ±1 LSB triangular noise on every colour written in 8 bits (shaders/common_dither.glsl): no banding in smooth gradients; off: plain rounding
     float subsurface = 1.0f;                        ///< light through thin crests: the turquoise of a backlit crest (shaders/common_subsurface.glsl), × its strength, [0, 4]; 0 = off
+    float light_shafts = 1.0f;                      ///< under water: sunlight shafts in the water and caustics on bodies (shaders/common_underwater.glsl), × their strength, [0, 4]; 0 = off
 };
 
 template <class V> void describe(V& v, RenderDef& d) {
@@ -80,6 +81,7 @@ template <class V> void describe(V& v, RenderDef& d) {
     v.field("hull_clip", d.hull_clip, "no water drawn inside a floating hull (the sea over its deck, in an open boat)", LIVE);
     v.field("dither", d.dither, "±1 LSB noise on the 8-bit colour outputs (no banding in gradients); off: plain rounding", LIVE);
     v.field("subsurface", d.subsurface, range(0, 4), "light through thin crests: turquoise of a backlit crest, × this; 0 = off", LIVE);
+    v.field("light_shafts", d.light_shafts, range(0, 4), "under water: sunlight shafts and caustics on bodies, × this; 0 = off", LIVE);
 }
 
 } // namespace ob::gfx

@@ -1,7 +1,9 @@
 // The view from under water and light through thin crests ([Jerlov1976], [Crest], [Atlas2019];
 // docs/frame.md): Snell's window's angular radius asin(1/n) from a flat sea seen straight up,
-// Beer–Lambert extinction per channel at Jerlov type I's Kd, the waterline across a half-dipped
-// camera where the near plane meets the water, and the backlit crests' turquoise toward the sun.
+// the window unclipped with the waves' shape in it and the sun at Snell's angle, the exposure
+// that takes back the n² gain, light shafts toward the refracted sun, Beer–Lambert extinction
+// per channel at Jerlov type I's Kd, the waterline across a half-dipped camera where the near
+// plane meets the water, and the backlit crests' turquoise toward the sun.
 #include "gfx/gl.h"
 #include "gfx/gpu_bindings.h"
 #include "gfx/renderer.h"
@@ -107,6 +109,151 @@ TEST_CASE("from under a flat sea, looking straight up: Snell's window spans asin
         INFO("edge on side " << direction << " at " << edge << "°");
         CHECK(edge == Approx(glm::degrees(std::asin(1.0 / 1.333))).margin(2.5));
     }
+}
+
+namespace {
+
+// Looking straight up from 5 m under the sea (120° field of view, `side` px square, screen up
+// toward −z) with the sun 40° high toward +z: the picture, and per pixel its angle from the zenith.
+struct WindowView {
+    static constexpr int side = 200;
+    static constexpr double fovDeg = 120.0;
+    Image img;
+    double zenithDeg(double x, double y) const {
+        const double t = std::tan(glm::radians(fovDeg / 2.0)) / (side / 2.0);
+        return glm::degrees(std::atan(t * std::hypot(x + 0.5 - side / 2.0, y + 0.5 - side / 2.0)));
+    }
+};
+
+const double SUN_ELEVATION_DEG = 40.0;
+
+WindowView windowFrom(const gfx::WaterView& water, float shafts = 0.0f) {
+    gfx::RenderDef def = plainDef();
+    const double e = glm::radians(SUN_ELEVATION_DEG);
+    def.sun_direction = glm::vec3(0.0f, float(std::sin(e)), float(std::cos(e)));
+    def.light_shafts = shafts;
+    WindowView v;
+    v.img = renderFrame(def, cameraAt({0.0f, -5.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, {0.0f, 0.0f, -1.0f}, float(WindowView::fovDeg), 1.0f), water,
+                        {WindowView::side, WindowView::side});
+    return v;
+}
+
+// Two crossing swells, 12 m and 7 m long, slopes ka = 0.16 and 0.13.
+gfx::WaterView twoSwells() {
+    gfx::WaterView water;
+    const float k1 = 2.0f * float(M_PI) / 12.0f, k2 = 2.0f * float(M_PI) / 7.0f;
+    water.gerstner = {glm::vec4(k1 * 0.8f, k1 * 0.6f, 0.3f, 0.0f), glm::vec4(-k2 * 0.5f, k2 * 0.866f, 0.15f, 1.0f)};
+    return water;
+}
+
+struct WindowStats {
+    double clipped = 0.0;   // share of pixels with a channel at 255
+    double lumaStd = 0.0;   // standard deviation of the luma (0..255)
+    double roughness = 0.0; // mean |luma difference| between pixels 2 apart (0..255)
+    int n = 0;
+};
+
+// Over the pixels from `minDeg` to `maxDeg` off the zenith.
+WindowStats windowStats(const WindowView& v, double minDeg, double maxDeg) {
+    WindowStats s;
+    double sum = 0.0, sum2 = 0.0, rough = 0.0;
+    const auto lumaAt = [&](int x, int y) {
+        const unsigned char* p = &v.img.rgb[size_t((y * v.img.w + x) * 3)];
+        return 0.299 * p[0] + 0.587 * p[1] + 0.114 * p[2];
+    };
+    for (int y = 0; y < v.img.h - 2; ++y)
+        for (int x = 0; x < v.img.w - 2; ++x) {
+            if (v.zenithDeg(x, y) < minDeg || v.zenithDeg(x, y) > maxDeg) continue;
+            const unsigned char* p = &v.img.rgb[size_t((y * v.img.w + x) * 3)];
+            if (std::max({p[0], p[1], p[2]}) == 255) s.clipped += 1.0;
+            const double l = lumaAt(x, y);
+            sum += l, sum2 += l * l;
+            rough += 0.5 * (std::abs(l - lumaAt(x + 2, y)) + std::abs(l - lumaAt(x, y + 2)));
+            ++s.n;
+        }
+    s.clipped /= s.n;
+    s.lumaStd = std::sqrt(std::max(sum2 / s.n - (sum / s.n) * (sum / s.n), 0.0));
+    s.roughness = rough / s.n;
+    return s;
+}
+
+} // namespace
+
+TEST_CASE("Snell's window from below: not clipped, the waves' shape inside it, the sun where Snell puts it", "[gl][render][underwater]") {
+    gfx::requestDebugOutput(true);
+    const WindowView flat = windowFrom({}), waves = windowFrom(twoSwells());
+    const WindowStats f = windowStats(flat, 0.0, 45.0), w = windowStats(waves, 0.0, 45.0);
+    INFO("flat: clipped " << f.clipped << ", luma std " << f.lumaStd << ", roughness " << f.roughness);
+    INFO("waves: clipped " << w.clipped << ", luma std " << w.lumaStd << ", roughness " << w.roughness);
+    CHECK(f.clipped < 0.02);
+    CHECK(w.clipped < 0.02);
+    // The waves' shape: the window's sky, the sun's glare and the rim bent by the slopes.
+    CHECK(w.lumaStd > 1.5 * f.lumaStd);
+    CHECK(w.roughness > 1.5 * f.roughness);
+    // Past the critical angle (55°–60°) the swells show too: the window's edge bent into the
+    // ring and the mirrored deep, brighter where a slope turns the mirrored ray toward the
+    // horizontal; a flat sea's ring is uniform.
+    const WindowStats fr = windowStats(flat, 55.0, 60.0), wr = windowStats(waves, 55.0, 60.0);
+    INFO("reflected ring: luma std flat " << fr.lumaStd << ", waves " << wr.lumaStd);
+    CHECK(wr.lumaStd > 2.0 * fr.lumaStd + 1.0);
+
+    // The sun's spot: the centroid of the flat window's brightest pixels (luma within 5 levels of
+    // the top) lies at the refracted sun, sin θw = sin θair / n, toward +z (down the screen).
+    double top = 0.0;
+    for (int y = 0; y < flat.img.h; ++y)
+        for (int x = 0; x < flat.img.w; ++x) top = std::max(top, double(luma(flat.img.mean(x, y, x + 1, y + 1))) * 255.0);
+    double cx = 0.0, cy = 0.0, count = 0.0;
+    for (int y = 0; y < flat.img.h; ++y)
+        for (int x = 0; x < flat.img.w; ++x)
+            if (double(luma(flat.img.mean(x, y, x + 1, y + 1))) * 255.0 > top - 5.0) cx += x, cy += y, count += 1.0;
+    cx /= count, cy /= count;
+    const double expected = glm::degrees(std::asin(std::cos(glm::radians(SUN_ELEVATION_DEG)) / 1.333));
+    INFO("sun spot at (" << cx << ", " << cy << "), " << flat.zenithDeg(cx, cy) << "° from the zenith; Snell " << expected << "°");
+    CHECK(flat.zenithDeg(cx, cy) == Approx(expected).margin(3.0));
+    CHECK(std::abs(cx + 0.5 - WindowView::side / 2.0) < 3.0);
+    CHECK(cy > WindowView::side / 2.0);
+}
+
+TEST_CASE("just under a flat sea the window's zenith is the sky's zenith seen above water (exposure 1/n^2)", "[gl][render][underwater]") {
+    gfx::requestDebugOutput(true);
+    // Radiance entering water grows by n² (the same flux in a solid angle n² narrower) times the
+    // transmittance 1 − F(0) = 0.98, and 0.3 m of water keeps exp(−0.019·0.3) of the blue: the
+    // exposure under water (1/n²) leaves 0.97 of the sky's blue, 2 levels of 255 at most on the
+    // sky's zenith (n² more would be 13 levels brighter).
+    const glm::ivec2 size(64, 64);
+    gfx::RenderDef def = plainDef();
+    const double e = glm::radians(SUN_ELEVATION_DEG);
+    def.sun_direction = glm::vec3(0.0f, float(std::sin(e)), float(std::cos(e)));
+    def.light_shafts = 0.0f;
+    const auto zenith = [&](float y) {
+        const Image img = renderFrame(def, cameraAt({0.0f, y, 0.0f}, {0.0f, 1.0f, 0.0f}, {0.0f, 0.0f, -1.0f}, 20.0f, 1.0f), {}, size);
+        return img.mean(size.x / 2 - 4, size.y / 2 - 4, size.x / 2 + 4, size.y / 2 + 4) * 255.0f;
+    };
+    const glm::vec3 sky = zenith(0.3f), window = zenith(-0.3f);
+    INFO("blue of the sky's zenith " << sky.z << ", of the window's " << window.z);
+    CHECK(window.z <= sky.z + 1.0f);
+    CHECK(window.z > sky.z - 4.0f);
+}
+
+TEST_CASE("light shafts brighten the water looking toward the refracted sun, far less looking away", "[gl][render][underwater]") {
+    gfx::requestDebugOutput(true);
+    const glm::ivec2 size(96, 64);
+    // The sun 40° high toward +z; from 8 m down, pitched 30° up toward it and away from it.
+    const double e = glm::radians(SUN_ELEVATION_DEG);
+    const glm::vec3 sun(0.0f, float(std::sin(e)), float(std::cos(e)));
+    const auto frame = [&](float z, float shafts) {
+        gfx::RenderDef def = plainDef();
+        def.sun_direction = sun;
+        def.light_shafts = shafts;
+        const glm::vec3 forward = glm::normalize(glm::vec3(0.0f, 0.577f, z));
+        return renderFrame(def, cameraAt({0.0f, -8.0f, 0.0f}, forward, {0.0f, 1.0f, 0.0f}, 50.0f, 1.5f), {}, size);
+    };
+    // What the shafts add over the lower half of the frame (the water under the surface).
+    const auto added = [&](float z) { return luma(frame(z, 1.0f).mean(0, size.y / 2, size.x, size.y) - frame(z, 0.0f).mean(0, size.y / 2, size.x, size.y)); };
+    const float toward = added(1.0f), away = added(-1.0f);
+    INFO("added luma toward the sun " << toward << ", away " << away);
+    CHECK(toward > 0.02f);  // 5 levels of 255
+    CHECK(toward > 3.0f * std::max(away, 0.002f));
 }
 
 TEST_CASE("under water an image fades per channel as exp(−Kd·d) toward the water's own light (Jerlov type I)", "[gl][render][underwater]") {
