@@ -10,18 +10,17 @@
 #include "gfx/shader.h"
 #include "platform/platform.h"
 #include "support/test_image.h"
+#include "support/shader_probe.h"
 #include "support/test_support.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdlib>
-#include <filesystem>
 #include <glm/gtc/matrix_transform.hpp>
 
 using namespace ob;
 using test::Image;
 using test::loadPng;
-namespace fs = std::filesystem;
 
 namespace {
 
@@ -62,18 +61,6 @@ gfx::RenderDef plainDef() {
 
 float luma(glm::vec3 c) { return 0.299f * c.x + 0.587f * c.y + 0.114f * c.z; }
 
-// Runs tests/gl/shaders/<probe> with the engine's shader includes beside it.
-gfx::Program loadProbe(const char* probe) {
-    fs::path dir = test::tempPath("underwater_probe_shaders");
-    fs::create_directories(dir);
-    for (const auto& entry : fs::directory_iterator(fs::path(OCEANBOX_SOURCE_DIR) / "shaders"))
-        fs::copy_file(entry.path(), dir / entry.path().filename(), fs::copy_options::overwrite_existing);
-    fs::copy_file(fs::path(OCEANBOX_SOURCE_DIR) / "tests/gl/shaders" / probe, dir / probe, fs::copy_options::overwrite_existing);
-    setenv("OCEANBOX_SHADER_DIR", dir.c_str(), 1);
-    gfx::Program program = gfx::loadProgram(probe, {probe});
-    unsetenv("OCEANBOX_SHADER_DIR");
-    return program;
-}
 
 } // namespace
 
@@ -259,7 +246,7 @@ TEST_CASE("light shafts brighten the water looking toward the refracted sun, far
 TEST_CASE("under water an image fades per channel as exp(−Kd·d) toward the water's own light (Jerlov type I)", "[gl][render][underwater]") {
     gfx::requestDebugOutput(true);
     auto platform = platform::createHeadlessPlatform({16, 16});
-    gfx::Program program = loadProbe("underwater_probe.comp");
+    gfx::Program program = test::loadShaderProbe("underwater_probe.comp", "underwater_probe_shaders");
     // The frame's water colour, a high sun and an eye at the surface, as the renderer sets them.
     gfx::glsl::FrameUniforms frame{};
     frame.sunDirectionFresnel = glm::vec4(0.0f, 1.0f, 0.0f, 0.0f);
