@@ -93,8 +93,8 @@ AngularEnergy measure(const test::Image& img, const game::CameraDef& cam, glm::v
 TEST_CASE("wake.toml's picture: the high-passed luminance behind the ship lies within the 19.47° Kelvin wedge, 300 m back", "[wake][render][long]") {
     const std::string scene = "config/scenes/wake.toml";
     const std::string png = test::tempPath("wake_picture.png"), stats = test::tempPath("wake_picture.json");
-    // The scene's whole run (its end_time, 100 s: the ship runs about 490 m from rest), drawing
-    // only every 64th step: the picture is the last frame's, the same as at one step a frame.
+    // The scene's whole run (its end_time, 100 s: the ship runs about 490 m from rest), drawn
+    // only every 64th step (the simulation does not depend on it): the picture is the last frame.
     const test::ProcessResult r =
         test::runOceanbox("run " + scene + " --headless --steps-per-frame 64 --size 480x270 --screenshot " + png + " --stats " + stats);
     REQUIRE(r.exitCode == 0);
@@ -127,8 +127,9 @@ TEST_CASE("wake.toml's picture: the high-passed luminance behind the ship lies w
     // The wedge stands out: the arms' band (15°–22°) is well above the water outside it.
     CHECK(a.density(15, 22) >= 3.0 * background);
 
-    // 150–300 m behind, on level 2's 4 m cells: the arms' band against the same angular width
-    // just outside the wedge, at the same distances (the same sky in the water behind them).
+    // 150–300 m behind, beyond the finest grid (its weight ends 112 m behind the ship), on the
+    // 2 m grid alone: the arms' band against the same angular width just outside the wedge, at
+    // the same distances (the same sky in the water there).
     const AngularEnergy far = measure(img, def.camera, ship, heading, 150.0f, 300.0f);
     std::ostringstream farTable;
     for (int b = 0; b < BINS; b += 3) farTable << b << "°: " << far.density(b, b + 3) * 1e6 << " (" << far.pixels[size_t(b)] << " px)\n";
