@@ -12,8 +12,8 @@ $R $S/cannon.toml --frames 75 --steps-per-frame 4 --screenshot $OUT/cannon.png
 $R $S/fish.toml --frames 60 --steps-per-frame 4 --screenshot $OUT/fish.png
 # The player's ship at full throttle (W held 2 s), seen from its port side at 5 s.
 $R $S/default.toml --frames 60 --steps-per-frame 5 --input docs/look/full_throttle.toml --screenshot $OUT/trail.png
-# The Kelvin wake from 14 m up, the sun low beyond it, at 12 s.
-$R $S/wake.toml --frames 720 --screenshot $OUT/wake.png
+# The Kelvin wake from a headland 70 m up, the sun low ahead of the ship, at the scene's end (100 s).
+$R $S/wake.toml --steps-per-frame 8 --screenshot $OUT/wake_300m.png
 # From 6 m under the surface, looking up toward the ship.
 $R $S/default.toml --frames 3 $FIXED --set "camera.position=[2.0,-6.0,-26.0]" --set "camera.target=[0.0,0.0,-15.0]" --screenshot $OUT/under.png
 # A calm sea (1 m/s) under a smooth sky, from 3 m up: the gradients where 8 bits band.

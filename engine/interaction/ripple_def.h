@@ -37,8 +37,9 @@ enum class RippleFollow : uint8_t {
     Fixed,   ///< at the Def's centre
     Camera,  ///< scrolls in whole cells under the camera
     Target,  ///< under the point the camera looks at (a followed ship)
+    Ship,    ///< under the ship the camera's `follow` names ("" = the player's ship, else the first), wherever the camera is
 };
-constexpr std::array<const char*, 3> names(RippleFollow) { return {"fixed", "camera", "target"}; }
+constexpr std::array<const char*, 4> names(RippleFollow) { return {"fixed", "camera", "target", "ship"}; }
 
 /// Eq. 6 reference object B, section [ripples.reference].
 struct RippleReferenceDef {
@@ -65,7 +66,7 @@ struct RippleDef : RippleModels::Defs {
     float cell_size = 0.25f;                 ///< Δ, metres per cell, [0.01, 100]
     RippleBoundary boundary = RippleBoundary::Absorbing;  ///< "fixed", "absorbing" or "periodic" (ewave only, for tests)
     int sponge_width = 32;                   ///< absorbing band width, cells, [1, 512]; 32 reflects ≤ 5% of a ring's amplitude
-    RippleFollow follow = RippleFollow::Fixed;  ///< "fixed" at `center`, "camera" or "target"
+    RippleFollow follow = RippleFollow::Fixed;  ///< "fixed" at `center`, "camera", "target" or "ship"
     glm::vec2 center{0.0f, 0.0f};            ///< patch centre when fixed, world [x, z] m
     bool hulls_obstruct = true;              ///< ships' hulls obstruct the layer, holding its water at their hollow (ewave; kang2008 ignores it; docs/ewave.md#hulls)
     RippleReferenceDef reference;            ///< [ripples.reference]: object B of eq. 6
@@ -84,7 +85,7 @@ template <class V> void describe(V& v, RippleDef& d) {
     RippleModels::forEach([&]<class Model>() { describe(v, static_cast<typename Model::Def&>(d)); });
     v.field("boundary", d.boundary, "border: fixed (reflects), absorbing (sponge) or periodic (ewave only)");
     v.field("sponge_width", d.sponge_width, range(1, 512), "absorbing band width (cells)");
-    v.field("follow", d.follow, "patch stays at center, follows the camera, or the point it looks at");
+    v.field("follow", d.follow, "patch stays at center, follows the camera, the point it looks at, or the ship the camera's follow names");
     v.field("center", d.center, any(), "patch centre when fixed, world [x, z] m");
     v.field("hulls_obstruct", d.hulls_obstruct,
             "ships' hulls obstruct the ripples, holding the water inside them at their hollow and pushing it aside (ewave; kang2008 ignores it)");

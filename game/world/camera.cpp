@@ -241,8 +241,16 @@ void patchFollowSystem(ecs::World& world, const ecs::Tick&) {
     auto* patch = world.resource<interaction::RipplePatch>();
     auto& rigs = world.pool<CameraRig>();
     if (!patch || patch->def().follow == interaction::RippleFollow::Fixed || rigs.size() == 0) return;
-    const glm::vec3 at = patch->def().follow == interaction::RippleFollow::Target ? rigs.components()[0].focus
-                                                                                  : world.get<ecs::Transform>(rigs.entities()[0]).position;
+    const CameraRig& rig = rigs.components()[0];
+    glm::vec3 at = world.get<ecs::Transform>(rigs.entities()[0]).position;
+    if (patch->def().follow == interaction::RippleFollow::Target) at = rig.focus;
+    if (patch->def().follow == interaction::RippleFollow::Ship) {
+        // Under the ship whatever the camera does: every source of its wake lands on every level.
+        const ecs::Entity ship = followedObject(world, rig.def.follow);
+        const ecs::Transform* t = ship == ecs::Entity::None ? nullptr : world.find<ecs::Transform>(ship);
+        if (!t) return;
+        at = t->position;
+    }
     patch->centerOn(glm::vec2(at.x, at.z));
 }
 

@@ -1,7 +1,10 @@
 // The camera the player steers: right drag orbits at a constant radius, the wheel zooms by
 // its stated factor, the fly camera stops above the crests unless the player holds Q against
-// the surface (then it dives), and a follow camera never goes below the water, on a rough sea.
+// the surface (then it dives), and a follow camera never goes below the water, on a rough sea;
+// a ripple patch that follows the ship stays under it wherever the camera is.
 #include "world/camera.h"
+#include "behaviours/ship.h"
+#include "interaction/ripple_patch.h"
 #include "world/controls.h"
 #include "ecs/components.h"
 #include "world/sandbox.h"
@@ -10,6 +13,8 @@
 
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <string>
+#include <utility>
 
 using namespace ob;
 using platform::InputEvent;
@@ -114,4 +119,25 @@ TEST_CASE("camera: under water a right drag tilts the orbit camera up toward the
         if (depth < 0.0f) CHECK(pitch == Approx(89.0f).margin(0.1f));
         else CHECK(pitch == Approx(10.0f).margin(0.1f));
     }
+}
+
+TEST_CASE("camera: a ripple patch with follow = \"ship\" stays under the ship while the camera stays put", "[camera][ripples]") {
+    const std::string text = "[camera]\nmode = \"fixed\"\nposition = [200, 50, 0]\ntarget = [0, 0, 0]\n"
+                             "[ripples]\nmodel = \"ewave\"\nresolution = 64\ncell_size = 0.5\n"
+                             "[[objects]]\ntype = \"ship\"\nname = \"boat\"\nposition = [10, 0.1, -20]\nspeed = 4.0\n"
+                             "waypoints = [[10, 400]]\n";
+    // The patch's centre (world m) after `steps` steps, and the ship's position then.
+    auto run = [&](const std::string& follow, int steps) {
+        game::Sandbox sandbox(game::parseScene(text, "follow_ship.toml", {"ripples.follow=" + follow}));
+        for (int s = 0; s < steps; ++s) sandbox.step();
+        const auto* patch = sandbox.world().resource<interaction::RipplePatch>();
+        const glm::vec3 ship = sandbox.world().get<ecs::Transform>(sandbox.world().pool<game::Ship>().entities()[0]).position;
+        const glm::vec2 centre = patch->origin() + glm::vec2(0.5f * (64 - 1) * 0.5f);
+        return std::make_pair(centre, glm::vec2(ship.x, ship.z));
+    };
+    const auto [centre, ship] = run("ship", 600);
+    REQUIRE(ship.y > 0.0f);  // it has run 20 m and more
+    CHECK(glm::length(centre - ship) <= 0.75f);  // within a cell and a half (the patch scrolls in whole cells)
+    const auto [fixedCentre, fixedShip] = run("fixed", 600);
+    CHECK(glm::length(fixedCentre - fixedShip) > 10.0f);  // the check can fail: a fixed patch stays at [0, 0]
 }
