@@ -82,7 +82,7 @@ void FoamFlow::setNodes(std::span<const glm::vec2> nodes) {
 void FoamFlow::follow(const ScrollingGrid& grid) {
     const bool scrolled = grid.originCell != m_grid.originCell;
     m_grid = grid;
-    if (scrolled && m_wind.streaks()) fillWindColumns();
+    if (scrolled && !m_modes.empty()) fillWindColumns();
     // Not scrollCells: the nodes the map scrolled onto take the nearest kept one's value (a
     // velocity, not 0), until they are set again.
     const glm::ivec2 nodeShift = nodeOrigin() - m_nodesOrigin;
@@ -205,75 +205,107 @@ void FoamFlow::expandNodeRow(int l, int component, float* out, float* scratch) c
     nodeSegmentsKernel(out, scratch, m_grid.n, s, nodeOffset().x, 1.0f / float(s));
 }
 
-// θ_m = k_m·(p·ĉ) = k_m·ĉ_x·x + k_m·ĉ_z·z, split in the column's part (tabulated) and the row's:
-// the phases in double, reduced mod 2π, from world sample indices (a map far from the origin
-// loses nothing).
+// θ_m = K_m·p + (ω_m − K_m·drift)·t + β_m, split in the column's part K_x·x (tabulated) and the
+// row's: the phases in double, reduced mod 2π, from world sample indices (a map far from the
+// origin loses nothing).
 namespace {
 constexpr double TWO_PI_D = 2.0 * 3.141592653589793;
-// k_m of the cell rows, rad/m.
-double streakWaveNumber(const WindFlow& w, int m) { return TWO_PI_D / (double(w.streakSpacing) * (m == 0 ? 1.0 : STREAK_SPACING_RATIO)); }
+// splitmix64 of a fixed seed and a draw's index → [0, 1).
+double streakDraw(uint64_t index) {
+    uint64_t z = 0x5EED0F0A3ull + index * 0x9E3779B97F4A7C15ull;
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return double((z ^ (z >> 31)) >> 11) * 0x1.0p-53;
+}
 } // namespace
+
+std::vector<StreakMode> foamStreakModes(const WindFlow& wind) {
+    std::vector<StreakMode> modes;
+    if (!wind.streaks()) return modes;
+    const glm::dvec2 w = glm::normalize(glm::dvec2(wind.direction)), c(-w.y, w.x);
+    for (int m = 0; m < STREAK_MODES; ++m) {
+        const uint64_t d = uint64_t(m) * 4;
+        const double spacing = double(wind.streakSpacing) * std::pow(STREAK_SPACING_RANGE, (m + streakDraw(d)) / STREAK_MODES);
+        const double slant = STREAK_SLANT * (2.0 * streakDraw(d + 1) - 1.0), k = TWO_PI_D / spacing;
+        StreakMode mode;
+        mode.k = k * (std::cos(slant) * c + std::sin(slant) * w);
+        mode.speed = double(wind.streakSpeed) * std::sqrt(2.0 / STREAK_MODES * spacing / double(wind.streakSpacing));
+        // Lines moving across at ±spacing per lifetime, so the pattern renews over it.
+        mode.omega = TWO_PI_D / STREAK_LIFE_S * (2.0 * streakDraw(d + 2) - 1.0);
+        mode.phase = TWO_PI_D * streakDraw(d + 3);
+        modes.push_back(mode);
+    }
+    return modes;
+}
 
 void FoamFlow::setWind(const WindFlow& wind) {
     if (wind == m_wind) return;
     m_wind = wind;
+    m_modes = foamStreakModes(wind);
     fillWindColumns();
 }
 
 void FoamFlow::fillWindColumns() {
-    if (!m_wind.streaks()) return m_windCos.clear(), m_windSin.clear();
-    const size_t n = size_t(m_grid.n);
-    m_windCos.resize(STREAK_ROWS * n);
-    m_windSin.resize(STREAK_ROWS * n);
-    for (int m = 0; m < STREAK_ROWS; ++m) {
-        const double kx = streakWaveNumber(m_wind, m) * -double(m_wind.direction.y) * double(m_grid.cell);
+    if (m_modes.empty()) return m_windCos.clear(), m_windSin.clear();
+    const size_t n = size_t(m_grid.n), count = m_modes.size();
+    m_windCos.resize(count * n);
+    m_windSin.resize(count * n);
+    for (size_t m = 0; m < count; ++m) {
+        const double kx = m_modes[m].k.x * double(m_grid.cell);
         for (size_t i = 0; i < n; ++i) {
             const double a = std::fmod(kx * double(int64_t(m_grid.originCell.x) + int64_t(i)), TWO_PI_D);
-            m_windCos[size_t(m) * n + i] = float(std::cos(a));
-            m_windSin[size_t(m) * n + i] = float(std::sin(a));
+            m_windCos[m * n + i] = float(std::cos(a));
+            m_windSin[m * n + i] = float(std::sin(a));
         }
     }
 }
 
-float FoamFlow::windMax() const {
-    const glm::vec2 w = m_wind.direction, c(-w.y, w.x);
-    const float v = m_wind.streaks() ? float(STREAK_ROWS) * m_wind.streakSpeed : 0.0f;
-    return std::max(std::abs(m_wind.drift.x) + v * (std::abs(w.x) + std::abs(c.x)),
-                    std::abs(m_wind.drift.y) + v * (std::abs(w.y) + std::abs(c.y)));
+double FoamFlow::rowPhase(const StreakMode& mode, int j) const {
+    const double z = std::fmod(mode.k.y * double(m_grid.cell) * double(int64_t(m_grid.originCell.y) + j), TWO_PI_D);
+    const double t = std::fmod((mode.omega - glm::dot(mode.k, glm::dvec2(m_wind.drift))) * m_windTime, TWO_PI_D);
+    return z + t + mode.phase;
 }
 
-// u_w = drift + Σ_m V·(cos θ_m·ŵ − sin θ_m·ĉ), θ_m = a_i + b_j: with cos θ = ca·cb − sa·sb and
-// sin θ = sa·cb + ca·sb, each row m adds A·ca_i + B·sa_i, A = V·(ŵ·cb − ĉ·sb), B = −V·(ŵ·sb + ĉ·cb).
+float FoamFlow::windMax() const {
+    const glm::vec2 w = m_wind.direction, c(-w.y, w.x);
+    double v = 0.0;
+    for (const StreakMode& mode : m_modes) v += mode.speed;
+    return std::max(std::abs(m_wind.drift.x) + float(v) * (std::abs(w.x) + std::abs(c.x)),
+                    std::abs(m_wind.drift.y) + float(v) * (std::abs(w.y) + std::abs(c.y)));
+}
+
+// u_w = drift + Σ_m V_m·(cos θ_m·ŵ − sin θ_m·ĉ), θ_m = a_i + b_j: with cos θ = ca·cb − sa·sb and
+// sin θ = sa·cb + ca·sb, each roll adds A·ca_i + B·sa_i, A = V·(ŵ·cb − ĉ·sb), B = −V·(ŵ·sb + ĉ·cb).
 void FoamFlow::windRow(int j, int component, float* out) const {
     const int n = m_grid.n;
     const float d = m_wind.drift[component];
     std::fill(out, out + n, d);
-    if (!m_wind.streaks()) return;
     const glm::vec2 w = m_wind.direction, c(-w.y, w.x);
-    const float v = m_wind.streakSpeed;
-    for (int m = 0; m < STREAK_ROWS; ++m) {
-        const double b = std::fmod(streakWaveNumber(m_wind, m) * double(c.y) * double(m_grid.cell) * double(m_grid.originCell.y + j), TWO_PI_D);
-        const float cb = float(std::cos(b)), sb = float(std::sin(b));
+    for (size_t m = 0; m < m_modes.size(); ++m) {
+        const double b = rowPhase(m_modes[m], j);
+        const float v = float(m_modes[m].speed), cb = float(std::cos(b)), sb = float(std::sin(b));
         const float A = v * (w[component] * cb - c[component] * sb), B = -v * (w[component] * sb + c[component] * cb);
-        const float* ca = m_windCos.data() + size_t(m) * size_t(n);
-        const float* sa = m_windSin.data() + size_t(m) * size_t(n);
+        const float* ca = m_windCos.data() + m * size_t(n);
+        const float* sa = m_windSin.data() + m * size_t(n);
         for (int i = 0; i < n; ++i) out[i] += A * ca[i] + B * sa[i];
     }
 }
 
-// ∇·u_w = Σ_m ∂/∂η (−V·sin k_m·η) = −Σ_m k_m·V·cos θ_m; cos θ = ca·cb − sa·sb.
+// ∇·u_w = −Σ_m V_m·((K_m·ĉ)·cos θ_m + (K_m·ŵ)·sin θ_m); with P = dt·V·K·ĉ, Q = dt·V·K·ŵ,
+// −dt·∇·u_w adds ca·(P·cb + Q·sb) + sa·(Q·cb − P·sb) a roll.
 void FoamFlow::windGatherRow(int j, float dt, float* out) const {
     const int n = m_grid.n;
     std::fill(out, out + n, 1.0f);
-    if (!m_wind.streaks()) return;
-    for (int m = 0; m < STREAK_ROWS; ++m) {
-        const double k = streakWaveNumber(m_wind, m);
-        const double b = std::fmod(k * double(m_wind.direction.x) * double(m_grid.cell) * double(m_grid.originCell.y + j), TWO_PI_D);
-        const float g = float(k) * m_wind.streakSpeed * dt;
-        const float cb = g * float(std::cos(b)), sb = g * float(std::sin(b));
-        const float* ca = m_windCos.data() + size_t(m) * size_t(n);
-        const float* sa = m_windSin.data() + size_t(m) * size_t(n);
-        for (int i = 0; i < n; ++i) out[i] += ca[i] * cb - sa[i] * sb;
+    const glm::dvec2 w(m_wind.direction), c(-w.y, w.x);
+    for (size_t m = 0; m < m_modes.size(); ++m) {
+        const StreakMode& mode = m_modes[m];
+        const double b = rowPhase(mode, j), g = double(dt) * mode.speed;
+        const double P = g * glm::dot(mode.k, c), Q = g * glm::dot(mode.k, w);
+        const float cb = float(std::cos(b)), sb = float(std::sin(b));
+        const float X = float(P) * cb + float(Q) * sb, Y = float(Q) * cb - float(P) * sb;
+        const float* ca = m_windCos.data() + m * size_t(n);
+        const float* sa = m_windSin.data() + m * size_t(n);
+        for (int i = 0; i < n; ++i) out[i] += ca[i] * X + sa[i] * Y;
     }
 }
 
