@@ -212,7 +212,7 @@ namespace {
 constexpr double TWO_PI_D = 2.0 * 3.141592653589793;
 // splitmix64 of a fixed seed and a draw's index → [0, 1).
 double streakDraw(uint64_t index) {
-    uint64_t z = 0x5EED0F0A3ull + index * 0x9E3779B97F4A7C15ull;
+    uint64_t z = STREAK_SEED + index * 0x9E3779B97F4A7C15ull;
     z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
     z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
     return double((z ^ (z >> 31)) >> 11) * 0x1.0p-53;
@@ -225,7 +225,8 @@ std::vector<StreakMode> foamStreakModes(const WindFlow& wind) {
     const glm::dvec2 w = glm::normalize(glm::dvec2(wind.direction)), c(-w.y, w.x);
     for (int m = 0; m < STREAK_MODES; ++m) {
         const uint64_t d = uint64_t(m) * 4;
-        const double spacing = double(wind.streakSpacing) * std::pow(STREAK_SPACING_RANGE, (m + streakDraw(d)) / STREAK_MODES);
+        const double u = (m + streakDraw(d)) / STREAK_MODES;
+        const double spacing = double(wind.streakSpacing) / (1.0 - (1.0 - 1.0 / STREAK_SPACING_RANGE) * u);
         const double slant = STREAK_SLANT * (2.0 * streakDraw(d + 1) - 1.0), k = TWO_PI_D / spacing;
         StreakMode mode;
         mode.k = k * (std::cos(slant) * c + std::sin(slant) * w);
