@@ -291,7 +291,7 @@ TEST_CASE("the streak cells' lines are not a grating: no secondary peak across t
     // convergence of a grating of two rolls (the spacings L and φ²·L = 3 m and 7.85 m, the
     // reference below) correlates with itself again wherever both fit a whole number of times
     // (24 m: 0.99); a field whose spacings spread over a band has no such peak: its
-    // autocorrelation decays like the Fourier transform of the band (a band of 3–15 m: under
+    // autocorrelation decays like the Fourier transform of the band (a band of 3–12 m: under
     // 0.3 beyond its first zero, bar the sampling of a finite map). Along the wind the lines run
     // on: 1/e there at least 3× as far as across. In time the lines move across the wind at
     // their own speeds (up to a spacing in STREAK_LIFE_S = 120 s): 10 s on the field still
