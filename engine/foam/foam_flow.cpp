@@ -205,9 +205,9 @@ void FoamFlow::expandNodeRow(int l, int component, float* out, float* scratch) c
     nodeSegmentsKernel(out, scratch, m_grid.n, s, nodeOffset().x, 1.0f / float(s));
 }
 
-// θ_m = K_m·p + (ω_m − K_m·drift)·t + β_m, split in the column's part K_x·x (tabulated) and the
-// row's: the phases in double, reduced mod 2π, from world sample indices (a map far from the
-// origin loses nothing).
+// θ_m = K_m·p + (ω_m − K_m·drift)·t + β_m, split in the column's part K_x·x, the row's K_z·z
+// (both tabulated when the map scrolls) and the time's (each step): the phases in double, reduced
+// mod 2π, from world sample indices (a map far from the origin loses nothing).
 namespace {
 constexpr double TWO_PI_D = 2.0 * 3.141592653589793;
 // splitmix64 of a fixed seed and a draw's index → [0, 1).
@@ -217,6 +217,30 @@ double streakDraw(uint64_t index) {
     z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
     return double((z ^ (z >> 31)) >> 11) * 0x1.0p-53;
 }
+// out[i] = init + Σ_m (a[m]·ca[m][i] + b[m]·sa[m][i]) over `modes` rolls, the tables [m][n]: in
+// blocks of columns whose sums stay in registers over all the rolls (one store a sample).
+constexpr int STREAK_BLOCK = 32;
+OB_VECTOR_KERNEL void streakSumKernel(float* __restrict out, const float* __restrict ca, const float* __restrict sa,
+                                      const float* __restrict a, const float* __restrict b, int modes, int n, float init) {
+    int i0 = 0;
+    for (; i0 + STREAK_BLOCK <= n; i0 += STREAK_BLOCK) {
+        float acc[STREAK_BLOCK];
+        for (int k = 0; k < STREAK_BLOCK; ++k) acc[k] = init;
+        for (int m = 0; m < modes; ++m) {
+            const float am = a[m], bm = b[m];
+            const float* c = ca + size_t(m) * size_t(n) + i0;
+            const float* s = sa + size_t(m) * size_t(n) + i0;
+            for (int k = 0; k < STREAK_BLOCK; ++k) acc[k] += am * c[k] + bm * s[k];
+        }
+        for (int k = 0; k < STREAK_BLOCK; ++k) out[i0 + k] = acc[k];
+    }
+    for (int i = i0; i < n; ++i) {
+        float acc = init;
+        for (int m = 0; m < modes; ++m) acc += a[m] * ca[size_t(m) * size_t(n) + i] + b[m] * sa[size_t(m) * size_t(n) + i];
+        out[i] = acc;
+    }
+}
+
 } // namespace
 
 std::vector<StreakMode> foamStreakModes(const WindFlow& wind) {
@@ -244,27 +268,40 @@ void FoamFlow::setWind(const WindFlow& wind) {
     m_wind = wind;
     m_modes = foamStreakModes(wind);
     fillWindColumns();
+    fillWindTime();
+}
+
+void FoamFlow::setWindTime(double t) {
+    m_windTime = t;
+    fillWindTime();
+}
+
+void FoamFlow::fillWindTime() {
+    m_timeCos.resize(m_modes.size());
+    m_timeSin.resize(m_modes.size());
+    for (size_t m = 0; m < m_modes.size(); ++m) {
+        const StreakMode& mode = m_modes[m];
+        const double a = std::fmod((mode.omega - glm::dot(mode.k, glm::dvec2(m_wind.drift))) * m_windTime, TWO_PI_D) + mode.phase;
+        m_timeCos[m] = float(std::cos(a));
+        m_timeSin[m] = float(std::sin(a));
+    }
 }
 
 void FoamFlow::fillWindColumns() {
-    if (m_modes.empty()) return m_windCos.clear(), m_windSin.clear();
     const size_t n = size_t(m_grid.n), count = m_modes.size();
-    m_windCos.resize(count * n);
-    m_windSin.resize(count * n);
+    m_windCos.resize(count * n), m_windSin.resize(count * n);
+    m_rowCos.resize(count * n), m_rowSin.resize(count * n);
     for (size_t m = 0; m < count; ++m) {
-        const double kx = m_modes[m].k.x * double(m_grid.cell);
+        const double kx = m_modes[m].k.x * double(m_grid.cell), kz = m_modes[m].k.y * double(m_grid.cell);
         for (size_t i = 0; i < n; ++i) {
             const double a = std::fmod(kx * double(int64_t(m_grid.originCell.x) + int64_t(i)), TWO_PI_D);
             m_windCos[m * n + i] = float(std::cos(a));
             m_windSin[m * n + i] = float(std::sin(a));
+            const double b = std::fmod(kz * double(int64_t(m_grid.originCell.y) + int64_t(i)), TWO_PI_D);
+            m_rowCos[m * n + i] = float(std::cos(b));
+            m_rowSin[m * n + i] = float(std::sin(b));
         }
     }
-}
-
-double FoamFlow::rowPhase(const StreakMode& mode, int j) const {
-    const double z = std::fmod(mode.k.y * double(m_grid.cell) * double(int64_t(m_grid.originCell.y) + j), TWO_PI_D);
-    const double t = std::fmod((mode.omega - glm::dot(mode.k, glm::dvec2(m_wind.drift))) * m_windTime, TWO_PI_D);
-    return z + t + mode.phase;
 }
 
 float FoamFlow::windMax() const {
@@ -278,36 +315,36 @@ float FoamFlow::windMax() const {
 // u_w = drift + Σ_m V_m·(cos θ_m·ŵ − sin θ_m·ĉ), θ_m = a_i + b_j: with cos θ = ca·cb − sa·sb and
 // sin θ = sa·cb + ca·sb, each roll adds A·ca_i + B·sa_i, A = V·(ŵ·cb − ĉ·sb), B = −V·(ŵ·sb + ĉ·cb).
 void FoamFlow::windRow(int j, int component, float* out) const {
-    const int n = m_grid.n;
+    const int n = m_grid.n, count = int(m_modes.size());
     const float d = m_wind.drift[component];
-    std::fill(out, out + n, d);
+    if (count == 0) return std::fill(out, out + n, d);
     const glm::vec2 w = m_wind.direction, c(-w.y, w.x);
-    for (size_t m = 0; m < m_modes.size(); ++m) {
-        const double b = rowPhase(m_modes[m], j);
-        const float v = float(m_modes[m].speed), cb = float(std::cos(b)), sb = float(std::sin(b));
-        const float A = v * (w[component] * cb - c[component] * sb), B = -v * (w[component] * sb + c[component] * cb);
-        const float* ca = m_windCos.data() + m * size_t(n);
-        const float* sa = m_windSin.data() + m * size_t(n);
-        for (int i = 0; i < n; ++i) out[i] += A * ca[i] + B * sa[i];
+    float A[STREAK_MODES], B[STREAK_MODES];
+    for (int m = 0; m < count; ++m) {
+        float cb, sb;
+        rowPhase(size_t(m), j, cb, sb);
+        const float v = float(m_modes[size_t(m)].speed);
+        A[m] = v * (w[component] * cb - c[component] * sb), B[m] = -v * (w[component] * sb + c[component] * cb);
     }
+    streakSumKernel(out, m_windCos.data(), m_windSin.data(), A, B, count, n, d);
 }
 
 // ∇·u_w = −Σ_m V_m·((K_m·ĉ)·cos θ_m + (K_m·ŵ)·sin θ_m); with P = dt·V·K·ĉ, Q = dt·V·K·ŵ,
 // −dt·∇·u_w adds ca·(P·cb + Q·sb) + sa·(Q·cb − P·sb) a roll.
 void FoamFlow::windGatherRow(int j, float dt, float* out) const {
-    const int n = m_grid.n;
-    std::fill(out, out + n, 1.0f);
+    const int n = m_grid.n, count = int(m_modes.size());
+    if (count == 0) return std::fill(out, out + n, 1.0f);
     const glm::dvec2 w(m_wind.direction), c(-w.y, w.x);
-    for (size_t m = 0; m < m_modes.size(); ++m) {
-        const StreakMode& mode = m_modes[m];
-        const double b = rowPhase(mode, j), g = double(dt) * mode.speed;
+    float X[STREAK_MODES], Y[STREAK_MODES];
+    for (int m = 0; m < count; ++m) {
+        const StreakMode& mode = m_modes[size_t(m)];
+        const double g = double(dt) * mode.speed;
         const double P = g * glm::dot(mode.k, c), Q = g * glm::dot(mode.k, w);
-        const float cb = float(std::cos(b)), sb = float(std::sin(b));
-        const float X = float(P) * cb + float(Q) * sb, Y = float(Q) * cb - float(P) * sb;
-        const float* ca = m_windCos.data() + m * size_t(n);
-        const float* sa = m_windSin.data() + m * size_t(n);
-        for (int i = 0; i < n; ++i) out[i] += ca[i] * X + sa[i] * Y;
+        float cb, sb;
+        rowPhase(size_t(m), j, cb, sb);
+        X[m] = float(P) * cb + float(Q) * sb, Y[m] = float(Q) * cb - float(P) * sb;
     }
+    streakSumKernel(out, m_windCos.data(), m_windSin.data(), X, Y, count, n, 1.0f);
 }
 
 float FoamFlow::nodeRowWeight(int j, int& l) const {

@@ -126,7 +126,7 @@ public:
     /// The wind's part (WindFlow), added to the velocity of every mode; none at first.
     void setWind(const WindFlow& wind);
     /// The time t of the streak cells' phases (s; they drift and renew with it); 0 at first.
-    void setWindTime(double t) { m_windTime = t; }
+    void setWindTime(double t);
     /// The rolls of the streak cells (empty without them).
     std::span<const StreakMode> streakModes() const { return m_modes; }
     const WindFlow& wind() const { return m_wind; }
@@ -182,7 +182,15 @@ private:
     double m_windTime = 0.0;           // setWindTime
     std::vector<StreakMode> m_modes;   // the streak cells' rolls (setWind)
     std::vector<float> m_windCos, m_windSin;  // cos, sin of the x part of θ_m at each map column, [m][i] (refilled on a scroll)
-    double rowPhase(const StreakMode& mode, int j) const;  // θ_m's part from the row and the time, mod 2π
+    std::vector<float> m_rowCos, m_rowSin;    // cos, sin of the z part of θ_m at each map row, [m][j] (refilled on a scroll)
+    std::vector<float> m_timeCos, m_timeSin;  // cos, sin of θ_m's part from the time, [m] (setWindTime)
+    void fillWindTime();
+    // cos, sin of θ_m's part from row j and the time.
+    void rowPhase(size_t m, int j, float& c, float& s) const {
+        const size_t k = m * size_t(m_grid.n) + size_t(j);
+        c = m_rowCos[k] * m_timeCos[m] - m_rowSin[k] * m_timeSin[m];
+        s = m_rowSin[k] * m_timeCos[m] + m_rowCos[k] * m_timeSin[m];
+    }
     void fillWindColumns();
 };
 
