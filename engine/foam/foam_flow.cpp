@@ -80,9 +80,11 @@ void FoamFlow::setNodes(std::span<const glm::vec2> nodes) {
 }
 
 void FoamFlow::follow(const ScrollingGrid& grid) {
-    const bool scrolled = grid.originCell != m_grid.originCell;
+    const glm::ivec2 scroll = grid.originCell - m_grid.originCell;
+    const bool resized = grid.n != m_grid.n || grid.cell != m_grid.cell;
     m_grid = grid;
-    if (scrolled && !m_modes.empty()) fillWindColumns();
+    if (!m_modes.empty() && resized) fillWindColumns();
+    else if (!m_modes.empty() && scroll != glm::ivec2(0)) scrollWindTables(scroll);
     // Not scrollCells: the nodes the map scrolled onto take the nearest kept one's value (a
     // velocity, not 0), until they are set again.
     const glm::ivec2 nodeShift = nodeOrigin() - m_nodesOrigin;
@@ -291,16 +293,46 @@ void FoamFlow::fillWindColumns() {
     const size_t n = size_t(m_grid.n), count = m_modes.size();
     m_windCos.resize(count * n), m_windSin.resize(count * n);
     m_rowCos.resize(count * n), m_rowSin.resize(count * n);
-    for (size_t m = 0; m < count; ++m) {
-        const double kx = m_modes[m].k.x * double(m_grid.cell), kz = m_modes[m].k.y * double(m_grid.cell);
-        for (size_t i = 0; i < n; ++i) {
-            const double a = std::fmod(kx * double(int64_t(m_grid.originCell.x) + int64_t(i)), TWO_PI_D);
-            m_windCos[m * n + i] = float(std::cos(a));
-            m_windSin[m * n + i] = float(std::sin(a));
-            const double b = std::fmod(kz * double(int64_t(m_grid.originCell.y) + int64_t(i)), TWO_PI_D);
-            m_rowCos[m * n + i] = float(std::cos(b));
-            m_rowSin[m * n + i] = float(std::sin(b));
+    fillWindTable(0, 0, m_grid.n);
+    fillWindTable(1, 0, m_grid.n);
+}
+
+// Entries [lo, hi) of the column (axis 0: cos, sin of K_x·x) or row (axis 1: K_z·z) tables.
+void FoamFlow::fillWindTable(int axis, int lo, int hi) {
+    const size_t n = size_t(m_grid.n);
+    float* c = axis == 0 ? m_windCos.data() : m_rowCos.data();
+    float* s = axis == 0 ? m_windSin.data() : m_rowSin.data();
+    const int64_t origin = axis == 0 ? m_grid.originCell.x : m_grid.originCell.y;
+    for (size_t m = 0; m < m_modes.size(); ++m) {
+        const double k = m_modes[m].k[axis] * double(m_grid.cell);
+        for (int i = lo; i < hi; ++i) {
+            const double a = std::fmod(k * double(origin + i), TWO_PI_D);
+            c[m * n + size_t(i)] = float(std::cos(a));
+            s[m * n + size_t(i)] = float(std::sin(a));
         }
+    }
+}
+
+// The map moved by `shift` samples: the tables' entries it keeps move with it (the same bits as
+// filling them anew), only the ones it scrolled onto are computed.
+void FoamFlow::scrollWindTables(glm::ivec2 shift) {
+    const int n = m_grid.n;
+    for (int axis = 0; axis < 2; ++axis) {
+        const int d = shift[axis];
+        if (d == 0) continue;
+        if (std::abs(d) >= n) {
+            fillWindTable(axis, 0, n);
+            continue;
+        }
+        std::vector<float>* const tables[2] = {axis == 0 ? &m_windCos : &m_rowCos, axis == 0 ? &m_windSin : &m_rowSin};
+        for (std::vector<float>* t : tables)
+            for (size_t m = 0; m < m_modes.size(); ++m) {
+                float* row = t->data() + m * size_t(n);
+                if (d > 0) std::copy(row + d, row + n, row);  // new i = old i + d
+                else std::copy_backward(row, row + n + d, row + n);
+            }
+        if (d > 0) fillWindTable(axis, n - d, n);
+        else fillWindTable(axis, 0, -d);
     }
 }
 

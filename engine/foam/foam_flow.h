@@ -34,11 +34,11 @@ constexpr float FLOW_REST_TOLERANCE = 0.01f;
 /// where rolls of different slant beat); each roll's lines move across the wind at its own speed,
 /// so the pattern renews over STREAK_LIFE_S (the windrows' lifetime of minutes), and all of it
 /// drifts with the surface (WindFlow::drift).
-constexpr int STREAK_MODES = 16;
+constexpr int STREAK_MODES = 12;
 constexpr double STREAK_SPACING_RANGE = 4.0;
 /// The draws' seed: of the first 60 seeds, the one whose rolls' autocorrelation across the wind
 /// (Σ (V_m·|K_m|)²·cos(K_m·ĉ·r), normalised) has the lowest secondary peak (0.24; median 0.37).
-constexpr uint64_t STREAK_SEED = 34;
+constexpr uint64_t STREAK_SEED = 322;
 constexpr double STREAK_SLANT = 0.06;
 constexpr double STREAK_LIFE_S = 120.0;
 
@@ -191,7 +191,9 @@ private:
         c = m_rowCos[k] * m_timeCos[m] - m_rowSin[k] * m_timeSin[m];
         s = m_rowSin[k] * m_timeCos[m] + m_rowCos[k] * m_timeSin[m];
     }
-    void fillWindColumns();
+    void fillWindColumns();                      // every entry of the tables below
+    void fillWindTable(int axis, int lo, int hi);  // entries [lo, hi) of the column (0) or row (1) tables
+    void scrollWindTables(glm::ivec2 shift);       // after the map moved by shift samples
 };
 
 } // namespace ob::foam
