@@ -25,7 +25,7 @@ struct FoamDef {
     float wake_diffusivity = 0.3f;  ///< K: the turbulent wake's half-width grows as b(age)² = R² + 2·K·age, m²/s, [0, 100]
     float bow_weight = 0.6f;        ///< coverage a breaking bow wave leaves along its two arms, times min(1, U/U_bow − 1), [0, 100]
     float wind_drift = 0.03f;       ///< the surface's wind drift down-wind, a fraction of [ocean] wind_speed (the spectrum's Stokes drift is added to it), [0, 0.2]
-    float streak_speed = 0.008f;    ///< V/U10: the wind's streak (Langmuir) cells, 16 rolls of mean square speed that of two of V = this × wind_speed, converge the surface toward wandering lines along the wind (and speed it down-wind there), [0, 0.1]; 0 = none
+    float streak_speed = 0.008f;    ///< V/U10: the wind's streak (Langmuir) cells, 12 rolls of mean square speed that of two of V = this × wind_speed, converge the surface toward wandering lines along the wind (and speed it down-wind there), [0, 0.1]; 0 = none
     float streak_spacing_m = 3.0f;  ///< L: the finest streak rolls' spacing, m (the others' spread to 4·L; foam_flow.h), [0.1, 1000]
 };
 
