@@ -29,8 +29,7 @@ constexpr float FLOW_REST_TOLERANCE = 0.01f;
 /// The streak cells: STREAK_MODES (12) rolls of random spacing, slant and drift (foamStreakModes), so
 /// that their lines wander, merge and part rather than lie as a grating. Wavenumbers spread evenly
 /// over [k/R, k], k = 2π/L, R = STREAK_SPACING_RANGE (one per stratum, jittered: spacings L to
-/// R·L); axes slanted off the
-/// wind by up to ±STREAK_SLANT rad (so each line meanders along the wind over tens of metres,
+/// R·L); axes slanted off the wind by up to ±STREAK_SLANT rad (so each line meanders along the wind over tens of metres,
 /// where rolls of different slant beat); each roll's lines move across the wind at its own speed,
 /// so the pattern renews over STREAK_LIFE_S (the windrows' lifetime of minutes), and all of it
 /// drifts with the surface (WindFlow::drift).
@@ -69,9 +68,10 @@ struct WindFlow {
     bool operator==(const WindFlow&) const = default;
 };
 
-/// The horizontal surface velocity (m/s, world x and z) over a foam map's samples.
 /// The STREAK_MODES rolls for a wind (fixed pseudo-random draws: the same every run).
 std::vector<StreakMode> foamStreakModes(const WindFlow& wind);
+
+/// The horizontal surface velocity (m/s, world x and z) over a foam map's samples.
 
 class FoamFlow {
 public:
