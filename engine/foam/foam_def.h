@@ -25,8 +25,8 @@ struct FoamDef {
     float wake_diffusivity = 0.3f;  ///< K: the turbulent wake's half-width grows as b(age)² = R² + 2·K·age, m²/s, [0, 100]
     float bow_weight = 0.6f;        ///< coverage a breaking bow wave leaves along its two arms, times min(1, U/U_bow − 1), [0, 100]
     float wind_drift = 0.03f;       ///< the surface's wind drift down-wind, a fraction of [ocean] wind_speed (the spectrum's Stokes drift is added to it), [0, 0.2]
-    float streak_speed = 0.008f;    ///< V/U10: the wind's streak (Langmuir) cells converge the surface toward lines along the wind at up to V = this × wind_speed (and speed it down-wind there by as much), [0, 0.1]; 0 = none
-    float streak_spacing_m = 3.0f;  ///< L: the streak cells' lines along the wind lie this far apart, m, [0.1, 1000]
+    float streak_speed = 0.008f;    ///< V/U10: the wind's streak (Langmuir) cells, 12 rolls of mean square speed that of two of V = this × wind_speed, converge the surface toward wandering lines along the wind (and speed it down-wind there), [0, 0.1]; 0 = none
+    float streak_spacing_m = 3.0f;  ///< L: the finest streak rolls' spacing, m (the others' spread to 4·L; foam_flow.h), [0.1, 1000]
 };
 
 template <class V> void describe(V& v, FoamDef& d) {
@@ -49,7 +49,7 @@ template <class V> void describe(V& v, FoamDef& d) {
     v.field("bow_weight", d.bow_weight, range(0, 100), "foam a breaking bow wave leaves along its arms");
     v.field("wind_drift", d.wind_drift, range(0, 0.2), "surface wind drift down-wind, fraction of the wind speed (plus the spectrum's Stokes drift)");
     v.field("streak_speed", d.streak_speed, range(0, 0.1), "speed of the wind's streak cells converging foam into lines along the wind, fraction of the wind speed; 0 = none");
-    v.field("streak_spacing_m", d.streak_spacing_m, range(0.1, 1000), "spacing of the streak cells' lines along the wind (m)");
+    v.field("streak_spacing_m", d.streak_spacing_m, range(0.1, 1000), "spacing of the finest streak cells' lines along the wind (m); the others' spread to 4 times it");
 }
 
 } // namespace ob::foam

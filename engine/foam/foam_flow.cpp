@@ -80,9 +80,11 @@ void FoamFlow::setNodes(std::span<const glm::vec2> nodes) {
 }
 
 void FoamFlow::follow(const ScrollingGrid& grid) {
-    const bool scrolled = grid.originCell != m_grid.originCell;
+    const glm::ivec2 scroll = grid.originCell - m_grid.originCell;
+    const bool resized = grid.n != m_grid.n || grid.cell != m_grid.cell;
     m_grid = grid;
-    if (scrolled && m_wind.streaks()) fillWindColumns();
+    if (!m_modes.empty() && resized) fillWindColumns();
+    else if (!m_modes.empty() && scroll != glm::ivec2(0)) scrollWindTables(scroll);
     // Not scrollCells: the nodes the map scrolled onto take the nearest kept one's value (a
     // velocity, not 0), until they are set again.
     const glm::ivec2 nodeShift = nodeOrigin() - m_nodesOrigin;
@@ -205,76 +207,176 @@ void FoamFlow::expandNodeRow(int l, int component, float* out, float* scratch) c
     nodeSegmentsKernel(out, scratch, m_grid.n, s, nodeOffset().x, 1.0f / float(s));
 }
 
-// θ_m = k_m·(p·ĉ) = k_m·ĉ_x·x + k_m·ĉ_z·z, split in the column's part (tabulated) and the row's:
-// the phases in double, reduced mod 2π, from world sample indices (a map far from the origin
-// loses nothing).
+// θ_m = K_m·p + (ω_m − K_m·drift)·t + β_m, split in the column's part K_x·x, the row's K_z·z
+// (both tabulated when the map scrolls) and the time's (each step): the phases in double, reduced
+// mod 2π, from world sample indices (a map far from the origin loses nothing).
 namespace {
 constexpr double TWO_PI_D = 2.0 * 3.141592653589793;
-// k_m of the cell rows, rad/m.
-double streakWaveNumber(const WindFlow& w, int m) { return TWO_PI_D / (double(w.streakSpacing) * (m == 0 ? 1.0 : STREAK_SPACING_RATIO)); }
+// splitmix64 of a fixed seed and a draw's index → [0, 1).
+double streakDraw(uint64_t index) {
+    uint64_t z = STREAK_SEED + index * 0x9E3779B97F4A7C15ull;
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return double((z ^ (z >> 31)) >> 11) * 0x1.0p-53;
+}
+// out[i] = init + Σ_m (a[m]·ca[m][i] + b[m]·sa[m][i]) over `modes` rolls, the tables [m][n]: in
+// blocks of columns whose sums stay in registers over all the rolls (one store a sample).
+constexpr int STREAK_BLOCK = 32;
+OB_VECTOR_KERNEL void streakSumKernel(float* __restrict out, const float* __restrict ca, const float* __restrict sa,
+                                      const float* __restrict a, const float* __restrict b, int modes, int n, float init) {
+    int i0 = 0;
+    for (; i0 + STREAK_BLOCK <= n; i0 += STREAK_BLOCK) {
+        float acc[STREAK_BLOCK];
+        for (int k = 0; k < STREAK_BLOCK; ++k) acc[k] = init;
+        for (int m = 0; m < modes; ++m) {
+            const float am = a[m], bm = b[m];
+            const float* c = ca + size_t(m) * size_t(n) + i0;
+            const float* s = sa + size_t(m) * size_t(n) + i0;
+            for (int k = 0; k < STREAK_BLOCK; ++k) acc[k] += am * c[k] + bm * s[k];
+        }
+        for (int k = 0; k < STREAK_BLOCK; ++k) out[i0 + k] = acc[k];
+    }
+    for (int i = i0; i < n; ++i) {
+        float acc = init;
+        for (int m = 0; m < modes; ++m) acc += a[m] * ca[size_t(m) * size_t(n) + i] + b[m] * sa[size_t(m) * size_t(n) + i];
+        out[i] = acc;
+    }
+}
+
 } // namespace
+
+std::vector<StreakMode> foamStreakModes(const WindFlow& wind) {
+    std::vector<StreakMode> modes;
+    if (!wind.streaks()) return modes;
+    const glm::dvec2 w = glm::normalize(glm::dvec2(wind.direction)), c(-w.y, w.x);
+    for (int m = 0; m < STREAK_MODES; ++m) {
+        const uint64_t d = uint64_t(m) * 4;
+        const double u = (m + streakDraw(d)) / STREAK_MODES;
+        const double spacing = double(wind.streakSpacing) / (1.0 - (1.0 - 1.0 / STREAK_SPACING_RANGE) * u);
+        const double slant = STREAK_SLANT * (2.0 * streakDraw(d + 1) - 1.0), k = TWO_PI_D / spacing;
+        StreakMode mode;
+        mode.k = k * (std::cos(slant) * c + std::sin(slant) * w);
+        mode.speed = double(wind.streakSpeed) * std::sqrt(2.0 / STREAK_MODES * spacing / double(wind.streakSpacing));
+        // Lines moving across at ±spacing per lifetime, so the pattern renews over it.
+        mode.omega = TWO_PI_D / STREAK_LIFE_S * (2.0 * streakDraw(d + 2) - 1.0);
+        mode.phase = TWO_PI_D * streakDraw(d + 3);
+        modes.push_back(mode);
+    }
+    return modes;
+}
 
 void FoamFlow::setWind(const WindFlow& wind) {
     if (wind == m_wind) return;
     m_wind = wind;
+    m_modes = foamStreakModes(wind);
     fillWindColumns();
+    fillWindTime();
+}
+
+void FoamFlow::setWindTime(double t) {
+    m_windTime = t;
+    fillWindTime();
+}
+
+void FoamFlow::fillWindTime() {
+    m_timeCos.resize(m_modes.size());
+    m_timeSin.resize(m_modes.size());
+    for (size_t m = 0; m < m_modes.size(); ++m) {
+        const StreakMode& mode = m_modes[m];
+        const double a = std::fmod((mode.omega - glm::dot(mode.k, glm::dvec2(m_wind.drift))) * m_windTime, TWO_PI_D) + mode.phase;
+        m_timeCos[m] = float(std::cos(a));
+        m_timeSin[m] = float(std::sin(a));
+    }
 }
 
 void FoamFlow::fillWindColumns() {
-    if (!m_wind.streaks()) return m_windCos.clear(), m_windSin.clear();
+    const size_t n = size_t(m_grid.n), count = m_modes.size();
+    m_windCos.resize(count * n), m_windSin.resize(count * n);
+    m_rowCos.resize(count * n), m_rowSin.resize(count * n);
+    fillWindTable(0, 0, m_grid.n);
+    fillWindTable(1, 0, m_grid.n);
+}
+
+// Entries [lo, hi) of the column (axis 0: cos, sin of K_x·x) or row (axis 1: K_z·z) tables.
+void FoamFlow::fillWindTable(int axis, int lo, int hi) {
     const size_t n = size_t(m_grid.n);
-    m_windCos.resize(STREAK_ROWS * n);
-    m_windSin.resize(STREAK_ROWS * n);
-    for (int m = 0; m < STREAK_ROWS; ++m) {
-        const double kx = streakWaveNumber(m_wind, m) * -double(m_wind.direction.y) * double(m_grid.cell);
-        for (size_t i = 0; i < n; ++i) {
-            const double a = std::fmod(kx * double(int64_t(m_grid.originCell.x) + int64_t(i)), TWO_PI_D);
-            m_windCos[size_t(m) * n + i] = float(std::cos(a));
-            m_windSin[size_t(m) * n + i] = float(std::sin(a));
+    float* c = axis == 0 ? m_windCos.data() : m_rowCos.data();
+    float* s = axis == 0 ? m_windSin.data() : m_rowSin.data();
+    const int64_t origin = axis == 0 ? m_grid.originCell.x : m_grid.originCell.y;
+    for (size_t m = 0; m < m_modes.size(); ++m) {
+        const double k = m_modes[m].k[axis] * double(m_grid.cell);
+        for (int i = lo; i < hi; ++i) {
+            const double a = std::fmod(k * double(origin + i), TWO_PI_D);
+            c[m * n + size_t(i)] = float(std::cos(a));
+            s[m * n + size_t(i)] = float(std::sin(a));
         }
+    }
+}
+
+// The map moved by `shift` samples: the tables' entries it keeps move with it (the same bits as
+// filling them anew), only the ones it scrolled onto are computed.
+void FoamFlow::scrollWindTables(glm::ivec2 shift) {
+    const int n = m_grid.n;
+    for (int axis = 0; axis < 2; ++axis) {
+        const int d = shift[axis];
+        if (d == 0) continue;
+        if (std::abs(d) >= n) {
+            fillWindTable(axis, 0, n);
+            continue;
+        }
+        std::vector<float>* const tables[2] = {axis == 0 ? &m_windCos : &m_rowCos, axis == 0 ? &m_windSin : &m_rowSin};
+        for (std::vector<float>* t : tables)
+            for (size_t m = 0; m < m_modes.size(); ++m) {
+                float* row = t->data() + m * size_t(n);
+                if (d > 0) std::copy(row + d, row + n, row);  // new i = old i + d
+                else std::copy_backward(row, row + n + d, row + n);
+            }
+        if (d > 0) fillWindTable(axis, n - d, n);
+        else fillWindTable(axis, 0, -d);
     }
 }
 
 float FoamFlow::windMax() const {
     const glm::vec2 w = m_wind.direction, c(-w.y, w.x);
-    const float v = m_wind.streaks() ? float(STREAK_ROWS) * m_wind.streakSpeed : 0.0f;
-    return std::max(std::abs(m_wind.drift.x) + v * (std::abs(w.x) + std::abs(c.x)),
-                    std::abs(m_wind.drift.y) + v * (std::abs(w.y) + std::abs(c.y)));
+    double v = 0.0;
+    for (const StreakMode& mode : m_modes) v += mode.speed;
+    return std::max(std::abs(m_wind.drift.x) + float(v) * (std::abs(w.x) + std::abs(c.x)),
+                    std::abs(m_wind.drift.y) + float(v) * (std::abs(w.y) + std::abs(c.y)));
 }
 
-// u_w = drift + Σ_m V·(cos θ_m·ŵ − sin θ_m·ĉ), θ_m = a_i + b_j: with cos θ = ca·cb − sa·sb and
-// sin θ = sa·cb + ca·sb, each row m adds A·ca_i + B·sa_i, A = V·(ŵ·cb − ĉ·sb), B = −V·(ŵ·sb + ĉ·cb).
+// u_w = drift + Σ_m V_m·(cos θ_m·ŵ − sin θ_m·ĉ), θ_m = a_i + b_j: with cos θ = ca·cb − sa·sb and
+// sin θ = sa·cb + ca·sb, each roll adds A·ca_i + B·sa_i, A = V·(ŵ·cb − ĉ·sb), B = −V·(ŵ·sb + ĉ·cb).
 void FoamFlow::windRow(int j, int component, float* out) const {
-    const int n = m_grid.n;
+    const int n = m_grid.n, count = int(m_modes.size());
     const float d = m_wind.drift[component];
-    std::fill(out, out + n, d);
-    if (!m_wind.streaks()) return;
+    if (count == 0) return std::fill(out, out + n, d);
     const glm::vec2 w = m_wind.direction, c(-w.y, w.x);
-    const float v = m_wind.streakSpeed;
-    for (int m = 0; m < STREAK_ROWS; ++m) {
-        const double b = std::fmod(streakWaveNumber(m_wind, m) * double(c.y) * double(m_grid.cell) * double(m_grid.originCell.y + j), TWO_PI_D);
-        const float cb = float(std::cos(b)), sb = float(std::sin(b));
-        const float A = v * (w[component] * cb - c[component] * sb), B = -v * (w[component] * sb + c[component] * cb);
-        const float* ca = m_windCos.data() + size_t(m) * size_t(n);
-        const float* sa = m_windSin.data() + size_t(m) * size_t(n);
-        for (int i = 0; i < n; ++i) out[i] += A * ca[i] + B * sa[i];
+    float A[STREAK_MODES], B[STREAK_MODES];
+    for (int m = 0; m < count; ++m) {
+        float cb, sb;
+        rowPhase(size_t(m), j, cb, sb);
+        const float v = float(m_modes[size_t(m)].speed);
+        A[m] = v * (w[component] * cb - c[component] * sb), B[m] = -v * (w[component] * sb + c[component] * cb);
     }
+    streakSumKernel(out, m_windCos.data(), m_windSin.data(), A, B, count, n, d);
 }
 
-// ∇·u_w = Σ_m ∂/∂η (−V·sin k_m·η) = −Σ_m k_m·V·cos θ_m; cos θ = ca·cb − sa·sb.
+// ∇·u_w = −Σ_m V_m·((K_m·ĉ)·cos θ_m + (K_m·ŵ)·sin θ_m); with P = dt·V·K·ĉ, Q = dt·V·K·ŵ,
+// −dt·∇·u_w adds ca·(P·cb + Q·sb) + sa·(Q·cb − P·sb) a roll.
 void FoamFlow::windGatherRow(int j, float dt, float* out) const {
-    const int n = m_grid.n;
-    std::fill(out, out + n, 1.0f);
-    if (!m_wind.streaks()) return;
-    for (int m = 0; m < STREAK_ROWS; ++m) {
-        const double k = streakWaveNumber(m_wind, m);
-        const double b = std::fmod(k * double(m_wind.direction.x) * double(m_grid.cell) * double(m_grid.originCell.y + j), TWO_PI_D);
-        const float g = float(k) * m_wind.streakSpeed * dt;
-        const float cb = g * float(std::cos(b)), sb = g * float(std::sin(b));
-        const float* ca = m_windCos.data() + size_t(m) * size_t(n);
-        const float* sa = m_windSin.data() + size_t(m) * size_t(n);
-        for (int i = 0; i < n; ++i) out[i] += ca[i] * cb - sa[i] * sb;
+    const int n = m_grid.n, count = int(m_modes.size());
+    if (count == 0) return std::fill(out, out + n, 1.0f);
+    const glm::dvec2 w(m_wind.direction), c(-w.y, w.x);
+    float X[STREAK_MODES], Y[STREAK_MODES];
+    for (int m = 0; m < count; ++m) {
+        const StreakMode& mode = m_modes[size_t(m)];
+        const double g = double(dt) * mode.speed;
+        const double P = g * glm::dot(mode.k, c), Q = g * glm::dot(mode.k, w);
+        float cb, sb;
+        rowPhase(size_t(m), j, cb, sb);
+        X[m] = float(P) * cb + float(Q) * sb, Y[m] = float(Q) * cb - float(P) * sb;
     }
+    streakSumKernel(out, m_windCos.data(), m_windSin.data(), X, Y, count, n, 1.0f);
 }
 
 float FoamFlow::nodeRowWeight(int j, int& l) const {

@@ -74,6 +74,8 @@ void FoamMap::update(const FoamInputs& in, float dt) {
     // --- the velocity at the water's time
     if (in.water) m_flow.refresh(*in.water, m_def.flow_refresh_steps);
     m_flow.setWind(windFlow(in.windSpeed, in.windDirection, in.stokesDrift));
+    m_flow.setWindTime(m_time);
+    m_time += double(dt);
     // --- sources and step: one sweep when the flow is from the nodes and within a sample a step
     const RowSources sources(m_def, m_grid, in, dt);
     m_whitecaps = sources.whitecaps();

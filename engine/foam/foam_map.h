@@ -109,6 +109,7 @@ private:
     std::vector<float> m_f;   // coverage, grid.n² row-major
     FoamFlow m_flow;
     FoamTransport m_transport;
+    double m_time = 0.0;  // s of update() steps so far: the streak cells' phases (FoamFlow::setWindTime)
     WhitecapLaw m_whitecaps;
 };
 

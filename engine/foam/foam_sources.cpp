@@ -42,12 +42,13 @@ OB_VECTOR_KERNEL void addExcessKernel(float* __restrict f, const float* __restri
 }
 
 // One foam row of the whitecap source from the two tile rows around it, each already read at
-// every column (u0, u1): J = u0·(1 − t) + u1·t, out = min(1, in + max(0, j0 − J)·rate).
+// every column (u0, u1): J = u0·(1 − t) + u1·t, out = min(1, in + max(0, j0 − J)·rate·(1 − in)):
+// the breaking covers the share still open, so coverage nears 1 smoothly (no plateau).
 inline float whitecapCell(float in, float u0, float u1, float t, float j0, float rate) {
     const float j = u0 * (1 - t) + u1 * t;
     float excess = j0 - j;
     excess = excess > 0.0f ? excess : 0.0f;
-    const float v = in + excess * rate;
+    const float v = in + excess * rate * (1.0f - in);
     return v < 1.0f ? v : 1.0f;
 }
 OB_VECTOR_KERNEL void whitecapRowKernel(float* __restrict out, const float* __restrict in, const float* __restrict u0,

@@ -34,15 +34,27 @@ double lagCovariance(std::span<const float> f, int n, double mean, glm::dvec2 la
     return count > 0 ? sum / double(count) : 0.0;
 }
 
-} // namespace
-
-float autocorrelationLength(std::span<const float> f, int n, float cell, glm::vec2 direction, float maxLag) {
+// The map's mean and variance.
+glm::dvec2 streakMeanVariance(std::span<const float> f) {
     double mean = 0.0;
     for (float v : f) mean += v;
     mean /= double(f.size());
     double variance = 0.0;
     for (float v : f) variance += (double(v) - mean) * (double(v) - mean);
-    variance /= double(f.size());
+    return {mean, variance / double(f.size())};
+}
+
+} // namespace
+
+float autocorrelation(std::span<const float> f, int n, float cell, glm::vec2 direction, float lag) {
+    const glm::dvec2 mv = streakMeanVariance(f);
+    if (mv.y <= 0.0) return 0.0f;
+    return float(lagCovariance(f, n, mv.x, glm::normalize(glm::dvec2(direction)) * double(lag / cell)) / mv.y);
+}
+
+float autocorrelationLength(std::span<const float> f, int n, float cell, glm::vec2 direction, float maxLag) {
+    const glm::dvec2 mv = streakMeanVariance(f);
+    const double mean = mv.x, variance = mv.y;
     if (variance <= 0.0) return 0.0f;
     const glm::dvec2 d = glm::normalize(glm::dvec2(direction));
     const double target = std::exp(-1.0);

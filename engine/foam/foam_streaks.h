@@ -15,4 +15,7 @@ namespace ob::foam {
 /// that far, 0 for a map that does not vary.
 float autocorrelationLength(std::span<const float> f, int n, float cell, glm::vec2 direction, float maxLag);
 
+/// C(r) above at one lag r (m) along `direction` (0 for a map that does not vary).
+float autocorrelation(std::span<const float> f, int n, float cell, glm::vec2 direction, float lag);
+
 } // namespace ob::foam

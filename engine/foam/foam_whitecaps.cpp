@@ -14,15 +14,35 @@ double normalTail(double a) { return 0.5 * std::erfc(a / std::numbers::sqrt2); }
 double normalDensity(double a) { return std::exp(-0.5 * a * a) / std::sqrt(2.0 * std::numbers::pi); }
 double riceRate(double a, double omega) { return omega / (2.0 * std::numbers::pi) * std::exp(-0.5 * a * a); }
 
-// The gain fills an average episode this many times over: its samples saturate at 1 but for a
-// thin rim (the source grows with the depth below J_b, 0 at the rim).
-constexpr double EPISODE_FILL = 8.0;
+// The gain fills an average episode this many times over, f → 1 − e^(−fill) (the source covers the
+// share still open, 1 − f): a typical episode's core reaches 0.86, a deeper one nearer 1, and the
+// coverage falls to 0 with the depth below J_b toward the rim (8 saturated every breaking
+// sample at 1 a cell or two inside the rim: flat white patches with a step for an edge).
+constexpr double EPISODE_FILL = 2.0;
 // The share of t½ a fresh patch's samples stay over ½ on the map: its linear resampling spreads
 // each patch by a variance α(1 − α)·Δ² a step and axis while the orbital velocity swings to and
 // fro, so a patch a few cells across loses its peak before its decay would (measured on the
 // default sea from 8 to 20 m/s: the samples over ½ were 0.45–0.6 of the unspread model while the
 // mean coverage, which the resampling keeps, matched it; docs/splash_foam.md §2.1).
 constexpr double PATCH_SPREAD = 0.5;
+
+// How long, in decay times, an episode's foam stays over ½ on average: an episode of x times the
+// mean's depth × duration leaves c = 1 − e^(−fill·x) and stays over ½ for τ·ln(2c) after (none
+// for c ≤ ½); x taken as exponential of mean 1 (a Gaussian process's excursions over a high
+// level: most are short and shallow, a few long and deep), averaged over 4096 of its quantiles.
+// (fill 8: 0.58; the fill's 1 − e^(−fill) → 1 alone: ln 2 = 0.69.)
+double whitecapOverHalf() {
+    static const double mean = [] {
+        constexpr int COUNT = 4096;
+        double sum = 0.0;
+        for (int q = 0; q < COUNT; ++q) {
+            const double x = -std::log((q + 0.5) / COUNT);
+            sum += std::max(0.0, std::log(2.0 * (1.0 - std::exp(-EPISODE_FILL * x))));
+        }
+        return sum / COUNT;
+    }();
+    return mean;
+}
 
 } // namespace
 
@@ -54,7 +74,8 @@ JacobianStats jacobianStats(std::span<const float> j, int n, float tile) {
 }
 
 double whitecapCoverage(double a, double omega, double decayS) {
-    return 1.0 - std::exp(-(normalTail(a) + riceRate(a, omega) * decayS * std::numbers::ln2 * PATCH_SPREAD));
+    const double overHalf = decayS * whitecapOverHalf();
+    return 1.0 - std::exp(-(normalTail(a) + riceRate(a, omega) * overHalf * PATCH_SPREAD));
 }
 
 double instantWhitecapJacobian(const JacobianStats& stats, double windSpeed) {

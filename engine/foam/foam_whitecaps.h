@@ -4,8 +4,9 @@
 // The sea breaks where its surface folds: the Jacobian J of X → X + λ·D drops (Tessendorf 2001,
 // Dupuy & Bruneton 2012). J − 1 is, to first order, a Gaussian field (λ·(∂Dx/∂x + ∂Dz/∂z), a
 // linear filter of the heights) of standard deviation σ; a sample breaks while J < J_b = J̄ − a·σ.
-// Foam source (a) fills a breaking sample to 1; it then decays as e^(−t/τ), so it stays over ½ for
-// t½ = τ·ln 2 after its last breaking. For a Gaussian process at one point (Rice 1944) the share
+// Foam source (a) covers a breaking sample's open share, f ← f + S·Δt·(1 − f); an episode of x
+// times the mean's depth × duration leaves c = 1 − e^(−2x), which then decays as e^(−t/τ) and
+// stays over ½ for τ·ln(2c) after its last breaking; x exponential of mean 1, t½ = 0.35·τ on average. For a Gaussian process at one point (Rice 1944) the share
 // of time spent breaking is P = Φ(−a) and the breaking episodes start at a rate
 // ν = (ω̄/2π)·e^(−a²/2), ω̄ = σ_J̇/σ the process's mean angular frequency. Episodes being rare and
 // independent (Poisson), the share of the sea with coverage over ½ is
@@ -14,7 +15,8 @@
 // ω̄ is read from the field itself: deep water ω² = g·k, so ω̄² = g·k̄ with k̄ the J-weighted mean
 // wavenumber, which we take as σ_∇J/σ (the rms wavenumber; exact for one wavenumber).
 // The gain fills an average episode twice over: rate = 2 / (mean depth below J_b × mean duration),
-// with depth σ·(φ(a)/Φ(−a) − a) and duration P/ν (so its foam saturates, the edges stay soft).
+// with depth σ·(φ(a)/Φ(−a) − a) and duration P/ν, so its foam follows the depth of breaking: soft
+// edges, no flat plateau at 1.
 #pragma once
 #include <span>
 

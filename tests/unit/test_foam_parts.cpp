@@ -99,7 +99,7 @@ TEST_CASE("the flow's nodes give a linear velocity field exactly at every sample
     CHECK(worst < 1e-5);
 }
 
-TEST_CASE("the whitecap source adds whitecap_weight·max(0, J_0 − J)·dt, J bilinear in the tile, clamped at 1", "[foam]") {
+TEST_CASE("the whitecap source adds whitecap_weight·max(0, J_0 − J)·dt of the share still open, J bilinear in the tile", "[foam]") {
     // J linear in the tile's columns and rows (so bilinear interpolation is exact): J = 0.1 +
     // 0.01·X/Δt + 0.005·Z/Δt over a 32 m tile of 64 samples (Δt = 0.5 m), the map inside it.
     const int tn = 64;
@@ -114,22 +114,20 @@ TEST_CASE("the whitecap source adds whitecap_weight·max(0, J_0 − J)·dt, J bi
     const float dt = 0.1f;
     const ScrollingGrid grid = ScrollingGrid::centredOn({12.0f, 12.0f}, 0.25f, 64);  // x, z ∈ [4, 20) m
     const foam::RowSources sources(def, grid, foam::FoamInputs{jac, tn, tile}, dt);
-    std::vector<float> f(size_t(grid.n) * size_t(grid.n), 0.97f);
+    std::vector<float> f(size_t(grid.n) * size_t(grid.n), 0.6f);
     sources.addTo(f);
     double worst = 0.0;
-    int fed = 0, clamped = 0;
+    int fed = 0;
     for (int j = 0; j < grid.n; ++j)
         for (int i = 0; i < grid.n; ++i) {
             const glm::vec2 p = grid.origin() + glm::vec2(float(i), float(j)) * grid.cell;
             const double J = 0.1 + 0.01 * p.x / 0.5 + 0.005 * p.y / 0.5;
-            const double want = std::min(1.0, 0.97 + 2.0 * std::max(0.0, 0.5 - J) * dt);
+            const double want = 0.6 + 2.0 * std::max(0.0, 0.5 - J) * dt * (1.0 - 0.6);
             worst = std::max(worst, std::abs(f[size_t(j) * size_t(grid.n) + size_t(i)] - want));
             fed += J < 0.5;
-            clamped += want == 1.0;
         }
-    INFO(fed << " samples below J_0, " << clamped << " clamped; worst error " << worst);
+    INFO(fed << " samples below J_0; worst error " << worst);
     CHECK(fed > 100);
-    CHECK(clamped > 100);
     CHECK(fed < grid.n * grid.n);
     CHECK(worst < 1e-6);
 }

@@ -2,6 +2,7 @@
 // closed forms on a sum of cosines, the threshold's tail share against the normal law, Monahan's
 // W at its published points.
 #include "foam/foam_whitecaps.h"
+#include "foam/foam_map.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -85,4 +86,63 @@ TEST_CASE("the derived threshold leaves the normal law's tail below it, higher w
     // A flat sea (J = 1 everywhere) or no wind: no whitecaps.
     CHECK(deriveWhitecapLaw(jacobianStats(std::vector<float>(size_t(n) * n, 1.0f), n, 64.0f), 20.0, 9.81, 6.0).rate == 0.0f);
     CHECK(deriveWhitecapLaw(s, 0.0, 9.81, 6.0).rate == 0.0f);
+}
+
+TEST_CASE("a whitecap's foam follows the depth of breaking: soft edges, no flat plateau", "[foam][whitecaps]") {
+    // A sea of one crest direction, J = 1 − A·cos(k·x) (two waves over a 64 m tile, A = 0.6),
+    // under 28 m/s (a cosine dips at most √2·σ below its mean: a storm to break), held still for the law's mean episode (duration P/ν, §2.1 of
+    // docs/splash_foam.md) on a 0.25 m map without transport: the strips where J < J_b break.
+    // Whitecap foam is a density of bubbles, not a cut-out: across a strip it should rise from
+    // its rim with the depth of breaking (J_b − J) and keep varying inside, as a real whitecap
+    // thins toward its edges. So: (1) it rises from 10% to 90% of the strip's peak over at least
+    // a quarter of the strip's half-width w (the depth J_b − J itself does so over 0.64·w; a
+    // step does it within a cell or two), and (2) halfway to the rim, where the depth is 0.73 of
+    // the crest's, the coverage is below 0.95 of the peak (no flat white plateau; a clamp at 1
+    // holds it at the peak).
+    const int n = 64;
+    const float tile = 64.0f, amplitude = 0.6f;
+    const double k = 2.0 * std::numbers::pi * 2.0 / tile;
+    std::vector<float> jac(size_t(n) * size_t(n));
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) jac[size_t(j) * size_t(n) + size_t(i)] = float(1.0 - amplitude * std::cos(k * i * tile / n));
+    const JacobianStats stats = jacobianStats(jac, n, tile);
+    const WhitecapLaw law = deriveWhitecapLaw(stats, 28.0, 9.81, 6.0);
+    const double omega = std::sqrt(9.81 * stats.gradSigma / stats.sigma);
+    const double p = 0.5 * std::erfc(law.a / std::numbers::sqrt2), nu = omega / (2.0 * std::numbers::pi) * std::exp(-0.5 * law.a * law.a);
+    const double duration = p / nu;
+
+    FoamDef def;
+    def.resolution = 256;
+    def.wind_drift = 0.0f, def.streak_speed = 0.0f, def.ripple_weight = 0.0f;
+    FoamMap map(def, tile, {tile / 2, tile / 2});  // x from 0 to 64 m
+    FoamInputs in;
+    in.jacobian = jac, in.jacobianN = n, in.jacobianTile = tile, in.windSpeed = 28.0f;
+    const float dt = 1.0f / 60.0f;
+    for (int s = 0; s < int(std::lround(duration / dt)); ++s) map.update(in, dt);
+
+    // The strip around x = 0 (the crest at cos k·x = 1), on the map's middle row, x ≥ 0 (by
+    // symmetry): its half-width w where J = J_b.
+    const double w = std::acos((1.0 - double(law.j0)) / amplitude) / k;
+    const ob::ScrollingGrid& g = map.grid();
+    std::vector<std::pair<double, double>> profile;  // (x, coverage) for 0 ≤ x ≤ w
+    double peak = 0.0;
+    for (int i = 0; i < g.n; ++i) {
+        const double x = g.origin().x + i * g.cell;
+        if (x < 0.0 || x > w) continue;
+        const double c = map.coverage()[size_t(g.n / 2) * size_t(g.n) + size_t(i)];
+        profile.emplace_back(x, c);
+        peak = std::max(peak, c);
+    }
+    double x10 = w, x90 = 0.0, half = 0.0;
+    for (auto [x, c] : profile) {
+        if (c >= 0.9 * peak) x90 = std::max(x90, x);
+        if (c >= 0.1 * peak) x10 = x;  // the outermost sample over 10%
+        if (x <= 0.5 * w) half = c;    // the last sample up to w/2
+    }
+    const double rim = x10 - x90;
+    INFO("episode " << duration << " s, J_b " << law.j0 << ", strip half-width " << w << " m, peak " << peak << ", 10→90% over "
+                    << rim << " m, halfway " << half);
+    CHECK(peak > 0.5);
+    CHECK(rim >= 0.25 * w);
+    CHECK(half < 0.95 * peak);
 }
