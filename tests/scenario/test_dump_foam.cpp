@@ -26,7 +26,8 @@ double whitecapShare(const std::string& scene, float wind, int frames) {
 
 } // namespace
 
-TEST_CASE("dump foam: whitecap coverage follows Monahan's W(U10) within a factor of 2", "[dump][foam][whitecaps]") {
+TEST_CASE("dump foam: whitecap coverage follows Monahan's W(U10) within a factor of 2", "[dump][foam][whitecaps][long]") {
+    // [long]: nine whole-scene dumps (2.5 minutes under ASan); the plain run has it.
     // The default scene's sea (Phillips, a 250 m tile, two cascades, choppiness 1.2) at half its
     // resolution; no bodies, so every sample's foam is a whitecap's. The map spans the tile (its
     // whitecaps come in wave groups tens of metres apart), and the share is averaged over two
