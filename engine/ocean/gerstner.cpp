@@ -369,6 +369,7 @@ GerstnerField::GerstnerField(std::span<const GerstnerWave> waves, float gravity)
         m_kz.push_back(w.kz);
         m_psi.push_back(0.0f);
         m_omega.push_back(float(omega));
+        m_k.push_back(float(k));
         m_ax.push_back(float(ux * a));
         m_az.push_back(float(uz * a));
         m_a.push_back(float(a));
@@ -426,6 +427,19 @@ void GerstnerField::sums(const float* alpha, const float* beta, size_t count, Ge
         sumsOverPoints(w, m_count, a, b, tail);
         std::copy(tail, tail + (count - p), out + p);
     }
+}
+
+glm::vec3 GerstnerField::velocity(float alpha, float beta, float depth) const {
+    const float d = std::max(depth, 0.0f);
+    glm::vec3 u(0.0f);
+    for (int m = 0; m < m_count; ++m) {
+        const size_t i = size_t(m);
+        const float theta = m_kx[i] * alpha + m_kz[i] * beta - m_psi[i];
+        const float decay = std::exp(-m_k[i] * d);
+        const float c = std::cos(theta) * decay, s = std::sin(theta) * decay;
+        u += glm::vec3(m_wax[i] * c, m_wa[i] * s, m_waz[i] * c);
+    }
+    return u;
 }
 
 GerstnerPoint GerstnerField::evaluate(float alpha, float beta) const { return toPoint(sums(alpha, beta), alpha, beta); }

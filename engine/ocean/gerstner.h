@@ -148,6 +148,11 @@ public:
     /// Sums at `count` rest points (vectorised over the points).
     void sums(const float* alpha, const float* beta, size_t count, GerstnerSums* out) const;
 
+    /// The particle velocity (x, y, z), m/s, of the particle of rest point (α, β) whose orbit
+    /// centre lies `depth` m below the mean surface (depth ≤ 0 reads the surface): Gerstner's
+    /// exact solution, each wave's orbit scaled by e^{−k·depth}:
+    ///   Σ e^{−k·depth}·(K̂·a·ω·C, a·ω·S).
+    glm::vec3 velocity(float alpha, float beta, float depth) const;
     /// Position, unit normal, particle velocity and displacement of rest point (α, β).
     GerstnerPoint evaluate(float alpha, float beta) const;
     /// evaluate() at `count` rest points.
@@ -158,7 +163,7 @@ private:
     int m_padded = 0;
     double m_time = 0.0;
     // Per wave (SoA, m_padded long): θ = kx·α + kz·β − psi; the rest are products of a, k, K̂, ω.
-    std::vector<float> m_kx, m_kz, m_psi, m_omega;
+    std::vector<float> m_kx, m_kz, m_psi, m_omega, m_k;
     std::vector<float> m_ax, m_az, m_a;          // K̂x·a, K̂z·a, a
     std::vector<float> m_pxx, m_pxz, m_pzz;      // kx²/k·a, kx·kz/k·a, kz²/k·a
     std::vector<float> m_qx, m_qz;               // kx·a, kz·a

@@ -1,5 +1,6 @@
-// Water forces on a body from its probe spheres (no Bullet here): Archimedes on each
-// sphere's submerged cap, linear and quadratic drag against the water's vertical motion.
+// Water and air forces on a body from its probe spheres (no Bullet here), after Morison et al.
+// (1950): Froude–Krylov buoyancy along the pressure gradient, the inertia of the accelerating
+// water, drag against the water's full 3-D velocity, and windage on the emerged part.
 #pragma once
 #include "physics/physics_def.h"
 
@@ -19,18 +20,35 @@ struct ProbeState {
     glm::vec3 velocity{0.0f};     ///< the body's velocity at the centre, m/s
     float surfaceHeight = 0.0f;   ///< water height under the centre, m
     glm::vec3 surfaceNormal{0.0f, 1.0f, 0.0f};
-    float surfaceVelocity = 0.0f; ///< vertical velocity of the water there, m/s
+    glm::vec3 waterVelocity{0.0f};      ///< the water's velocity at the centre (WaterQuery::velocityAt), m/s
+    glm::vec3 waterAcceleration{0.0f};  ///< its rate Du/Dt along the probe, m/s² (bounded by g: accelerationBound)
+    glm::vec3 wind{0.0f};               ///< the air's velocity at the probe, m/s
+    /// The probe's share of the body's mass (kg, > 0 makes the drag implicit: it can slow the
+    /// relative motion within a step but never reverse it, whatever the coefficients); 0 = explicit.
+    float massShare = 0.0f;
+    float dt = 0.0f;                    ///< the step the force acts over, s (with massShare)
 };
 
-/// The water's force on one probe, applied at `point`.
+/// The forces on one probe, applied at `point`.
 struct ProbeForce {
-    glm::vec3 force{0.0f};   ///< N
-    glm::vec3 point{0.0f};   ///< world point of application (the probe centre), m
+    glm::vec3 force{0.0f};        ///< N: the water's (buoyancy, inertia, drag) + the air's
+    glm::vec3 airForce{0.0f};     ///< N: the air's part of `force` (windage)
+    glm::vec3 point{0.0f};        ///< world point of application (the probe centre), m
     float submergedFraction = 0.0f;  ///< 0..1 of the probe's volume under the surface
+    float addedMass = 0.0f;          ///< ρ·C_a·V_submerged, kg: the water the probe drags along (PhysicsDef::added_mass)
 };
 
-/// Buoyancy ρ·g·V (up, or along the surface normal) plus drag against the relative velocity
-/// (v − w·ŷ, w the water's vertical velocity), scaled by the submerged fraction.
+/// A wave's particle acceleration cannot exceed g before it breaks (a·ω² ≤ g): the bound on
+/// Du/Dt the caller's estimate is clamped to, m/s².
+inline float accelerationBound(const PhysicsDef& def) { return def.gravity; }
+
+/// Per probe, V the submerged volume, A its share of the cross-section (π r² times the
+/// submerged fraction), ρ the water's, u the water's velocity, v the probe's:
+///   Froude–Krylov + inertia  ρ·V·(g·ŷ + (1 + C_a)·Du/Dt)   (ŷ → the surface normal with buoyancy_along_normal)
+///   drag                     −(linear_drag·A + ½ρ·C_d·A·|v − u|)·(v − u)
+///   windage                  ½ρ_a·C_da·A_air·|w − v|·(w − v), A_air = π r² − A, horizontal wind w
+/// The added mass's other half, −ρ·V·C_a·dv/dt, depends on the body's own acceleration: the
+/// caller adds `addedMass` to the body's inertia (implicitly, see sim/objects.cpp).
 ProbeForce probeForce(const PhysicsDef& def, const ProbeState& probe);
 
 } // namespace ob::physics

@@ -4,6 +4,7 @@
 
 #include "core/parallel.h"
 #include "ocean/ocean_fft_cpu.h"
+#include "ocean/spectrum.h"
 
 #include <algorithm>
 #include <cassert>
@@ -41,9 +42,31 @@ CompositeWater::CompositeWater(std::span<const ocean::GerstnerWave> waves, float
         for (auto& frame : cas.frames) frame.assign(3 * count, 0.0f);
         cas.rate.assign(4 * count, 0.0f);
     }
+    measureWavenumbers();
+}
+
+void CompositeWater::measureWavenumbers() {
+    if (!m_fft) return;
+    for (int c = 0; c < m_fft->cascadeCount(); ++c) {
+        // k_c = Σ k·ω²|h̃0|² / Σ ω²|h̃0|²: the wavenumber the cascade's velocity variance is centred on.
+        const ocean::CascadeSpectrum& spectrum = m_fft->spectrum(c);
+        const int n = spectrum.resolution();
+        double weighted = 0.0, total = 0.0;
+        for (int j = -n / 2; j < n / 2; ++j)
+            for (int i = -n / 2; i < n / 2; ++i) {
+                const double k = std::hypot(spectrum.waveNumber(i), spectrum.waveNumber(j));
+                const double w = spectrum.omega(i, j);
+                const double e = w * w * double(std::norm(spectrum.h0(i, j)));
+                weighted += k * e;
+                total += e;
+            }
+        m_cascades[size_t(c)].k = total > 0.0 ? float(weighted / total) : float(2.0 * M_PI / m_fft->patchSize(c));
+    }
 }
 
 void CompositeWater::setRipple(RippleHook hook) { m_ripple = std::move(hook); }
+
+void CompositeWater::setCurrent(CurrentHook hook) { m_current = std::move(hook); }
 
 int CompositeWater::fftRateOrder() const { return m_fft ? std::max(m_frameCount - 1, 0) : 0; }
 
@@ -186,9 +209,12 @@ void CompositeWater::addSurface(float alpha, float beta, FftTerms& t) const {
         t.dxx += lambda * b.value(dd, 2, 0);
         t.dzz += lambda * b.value(dd, 2, 1);
         if (rates) {
+            const float ut = b.value(cas.rate.data(), 4, 1), vt = b.value(cas.rate.data(), 4, 2);
             t.ht += b.value(cas.rate.data(), 4, 0);
-            t.dxt += lambda * b.value(cas.rate.data(), 4, 1);
-            t.dzt += lambda * b.value(cas.rate.data(), 4, 2);
+            t.ut -= ut;  // eq. 7's D points against the orbit (the surface drawn moves by λ·D, λ = −choppiness)
+            t.vt -= vt;
+            t.dxt += lambda * ut;
+            t.dzt += lambda * vt;
         }
     }
 }
@@ -227,7 +253,7 @@ bool CompositeWater::step(const Eval& e, float x, float z, glm::vec2& rest, floa
     return false;
 }
 
-WaterSample CompositeWater::finish(const Eval& e, float x, float z, bool ripples) const {
+WaterSample CompositeWater::finish(const Eval& e, float x, float z, WaterLayers layers) const {
     const ocean::GerstnerSums& g = e.g;
     const FftTerms& f = e.f;
     WaterSample s;
@@ -243,6 +269,13 @@ WaterSample CompositeWater::finish(const Eval& e, float x, float z, bool ripples
         const float sx = (azz * yx - azx * yz) / det, sz = (axx * yz - axz * yx) / det;
         s.verticalVelocity = g.vy + f.ht - (sx * (g.vx + f.dxt) + sz * (g.vz + f.dzt));
     }
+    // The particle's own velocity (bounded at folds, unlike the Eulerian rate above).
+    s.velocity = {g.vx + f.ut, g.vy + f.ht, g.vz + f.vt};
+    if (layers.currents && m_current) {
+        const glm::vec2 u = m_current(x, z);
+        s.velocity.x += u.x;
+        s.velocity.z += u.y;
+    }
 
     glm::vec2 slope;
     if (m_settings.normal == CompositeSettings::Normal::Exact) {
@@ -257,7 +290,7 @@ WaterSample CompositeWater::finish(const Eval& e, float x, float z, bool ripples
         slope = glm::vec2{-n.x / ny + f.sx, -n.z / ny + f.sz};
     }
 
-    if (ripples && m_ripple.height) {
+    if (layers.ripples && m_ripple.height) {
         s.height += m_ripple.height(x, z);
         if (m_ripple.slope) {
             slope += m_ripple.slope(x, z);
@@ -266,7 +299,16 @@ WaterSample CompositeWater::finish(const Eval& e, float x, float z, bool ripples
             slope += glm::vec2{m_ripple.height(x + d, z) - m_ripple.height(x - d, z),
                                m_ripple.height(x, z + d) - m_ripple.height(x, z - d)} / (2.0f * d);
         }
-        if (m_ripple.rate) s.verticalVelocity += m_ripple.rate(x, z);
+        if (m_ripple.rate) {
+            const float w = m_ripple.rate(x, z);
+            s.verticalVelocity += w;
+            s.velocity.y += w;
+        }
+        if (m_ripple.horizontalVelocity) {
+            const glm::vec2 u = m_ripple.horizontalVelocity(x, z);
+            s.velocity.x += u.x;
+            s.velocity.z += u.y;
+        }
     }
     const float inv = 1.0f / std::sqrt(slope.x * slope.x + 1.0f + slope.y * slope.y);
     s.normal = {-slope.x * inv, inv, -slope.y * inv};
@@ -285,7 +327,9 @@ RestPoint CompositeWater::restPoint(float x, float z) const {
     }
 }
 
-WaterSample CompositeWater::sample(float x, float z, WaterLayers layers) const {
+// Finds the rest point under (x, z) of the layers asked; done(eval with the surface terms, α, β).
+template <class Done>
+void CompositeWater::invert(float x, float z, WaterLayers layers, Done&& done) const {
     glm::vec2 rest{x, z};
     for (int it = 1;; ++it) {
         Eval e{layers.gerstner ? m_gerstner.sums(rest.x, rest.y) : ocean::GerstnerSums{}, {}};
@@ -294,10 +338,56 @@ WaterSample CompositeWater::sample(float x, float z, WaterLayers layers) const {
         float residual;
         if (step(e, x, z, moved, residual) || it >= m_settings.maxIterations) {
             if (layers.fft) addSurface(rest.x, rest.y, e.f);
-            return finish(e, x, z, layers.ripples);
+            done(e, rest.x, rest.y);
+            return;
         }
         rest = moved;
     }
+}
+
+WaterSample CompositeWater::sample(float x, float z, WaterLayers layers) const {
+    WaterSample s;
+    invert(x, z, layers, [&](const Eval& e, float, float) { s = finish(e, x, z, layers); });
+    return s;
+}
+
+glm::vec3 CompositeWater::velocityAt(glm::vec3 p, WaterLayers layers) const {
+    glm::vec3 u(0.0f);
+    invert(p.x, p.z, layers, [&](const Eval& e, float alpha, float beta) {
+        float surface = e.g.y + e.f.h;
+        if (layers.ripples && m_ripple.height) surface += m_ripple.height(p.x, p.z);
+        const float depth = std::max(surface - p.y, 0.0f);
+        // Where each part's e^{kz} counts z from. A Lagrangian part (Gerstner; the cascades at
+        // choppiness ≥ 1) moves a particle of rest depth b on an orbit scaled by e^{−k·b}, and
+        // the particle under the surface by `depth` has b ≈ depth. An Eulerian part (the
+        // ripples; the cascades at choppiness 0) has its velocity field e^{kz} with z from its
+        // own mean level, so a point on a crest of height η reads e^{k·η} (linear theory's
+        // extrapolation, which gives the Stokes drift its second half, ⟨ζ·∂u/∂z⟩).
+        const float lagrangian = m_fft ? std::clamp(std::abs(m_fft->lambda()), 0.0f, 1.0f) : 1.0f;
+        const float ripple = layers.ripples && m_ripple.height ? m_ripple.height(p.x, p.z) : 0.0f;
+        const float eulerianZ = (1.0f - lagrangian) * e.f.h + ripple - depth;  // z of the Eulerian parts, m
+        if (layers.gerstner) u += m_gerstner.velocity(alpha, beta, depth);
+        if (layers.fft && m_fft && m_frameCount >= 2) {
+            const float z = lagrangian * -depth + (1.0f - lagrangian) * eulerianZ;
+            for (const Cascade& cas : m_cascades) {
+                const Bilinear b(alpha, beta, cas.invCell, m_fft->resolution());
+                const float decay = std::exp(cas.k * z);
+                u += decay * glm::vec3(-b.value(cas.rate.data(), 4, 1), b.value(cas.rate.data(), 4, 0),
+                                       -b.value(cas.rate.data(), 4, 2));
+            }
+        }
+        if (layers.ripples && m_ripple.height) {
+            const float decay = m_ripple.wavenumber ? std::exp(m_ripple.wavenumber() * eulerianZ) : 1.0f;
+            const glm::vec2 h = m_ripple.horizontalVelocity ? m_ripple.horizontalVelocity(p.x, p.z) : glm::vec2(0.0f);
+            const float w = m_ripple.rate ? m_ripple.rate(p.x, p.z) : 0.0f;
+            u += decay * glm::vec3(h.x, w, h.y);
+        }
+        if (layers.currents && m_current) {
+            const glm::vec2 c = m_current(p.x, p.z);
+            u += glm::vec3(c.x, 0.0f, c.y);
+        }
+    });
+    return u;
 }
 
 // Inverts the displacement at every point, 64 at a time, the Gerstner sums vectorised over the
@@ -372,6 +462,9 @@ void CompositeWater::horizontalVelocityBatch(std::span<const glm::vec2> points, 
                     const Bilinear b(alpha, beta, cas.invCell, m_fft->resolution());
                     u += lambda * glm::vec2(b.value(cas.rate.data(), 4, 1), b.value(cas.rate.data(), 4, 2));
                 }
+            const glm::vec2 x = points[begin + i];
+            if (m_ripple.horizontalVelocity) u += m_ripple.horizontalVelocity(x.x, x.y);
+            if (m_current) u += m_current(x.x, x.y);
             out[begin + i] = u;
             if (!rest.empty()) rest[begin + i] = glm::vec2(alpha, beta);
         }, rest.empty() ? nullptr : rest.data() + begin, tolerance);

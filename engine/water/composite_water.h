@@ -22,7 +22,16 @@ struct RippleHook {
     std::function<float(float x, float z)> rate;       ///< ∂height/∂t, m/s; empty = 0
     std::function<glm::vec2(float x, float z)> slope;  ///< (∂h/∂x, ∂h/∂z); empty = central differences of height
     float slopeStep = 0.05f;                           ///< step of those differences, metres
+    /// The layer's horizontal particle velocity at its surface (x, z), m/s; empty = 0 (a
+    /// height field without a velocity law: its vertical velocity only).
+    std::function<glm::vec2(float x, float z)> horizontalVelocity;
+    /// The wavenumber (rad/m) the layer's velocity decays with below the surface, e^{−k·depth}; empty = 0.
+    std::function<float()> wavenumber;
 };
+
+/// The surface current layer's entry point (engine/currents): its horizontal velocity at world
+/// (x, z), m/s, the same over the layer's depth.
+using CurrentHook = std::function<glm::vec2(float x, float z)>;
 
 /// How sample() inverts the displacement and forms the normal.
 struct CompositeSettings {
@@ -82,6 +91,8 @@ public:
     void setWaves(std::span<const ocean::GerstnerWave> waves, float gravity);
     /// Sets the ripple layer (replaces any earlier hook).
     void setRipple(RippleHook hook);
+    /// Sets the current layer (replaces any earlier hook; empty = no current).
+    void setCurrent(CurrentHook hook);
     /// Sets the time, seconds, and records the FFT's new maps for its rates. Call once per
     /// step after fft->update(t), with the same t.
     void update(double t);
@@ -92,13 +103,33 @@ public:
 
     using WaterQuery::sample;
     /// Left-out layers add nothing (the Newton inversion then moves only by the ones kept).
+    /// velocity: Gerstner's particle velocity + the cascades' (∂D/∂t, ∂h/∂t) at the rest point
+    /// (choppiness 1: the waves' orbital motion, whatever λ the drawn surface uses) + the
+    /// ripple hook's + the current's. It is a particle's velocity, so it stays bounded where
+    /// the surface folds (det J → 0), where verticalVelocity (Eulerian) does not.
     WaterSample sample(float x, float z, WaterLayers layers) const override;
     void sampleBatch(std::span<const glm::vec2> points, std::span<WaterSample> out) const override;
+
+    using WaterQuery::velocityAt;
+    /// The velocity at world point p, `depth` = (surface of the layers asked) − p.y ≥ 0 below the
+    /// surface above it: Gerstner exact per wave (e^{−k·depth} on each orbit: GerstnerField::velocity);
+    /// each cascade scaled by e^{−k_c·depth}, k_c its velocity-weighted mean wavenumber
+    /// (cascadeWavenumber: exact for a cascade's dominant band, docs/currents.md#velocity gives
+    /// the error for other waves in it); the ripples by e^{−k_r·depth} (RippleHook::wavenumber);
+    /// the current the same at every depth of its layer.
+    glm::vec3 velocityAt(glm::vec3 p, WaterLayers layers) const override;
+    /// k_c of cascade c, rad/m: Σ k·ω²·|h̃0|² / Σ ω²·|h̃0|² over its modes (the wavenumber its
+    /// velocity variance is centred on), from the spectrum at the last measureWavenumbers().
+    float cascadeWavenumber(int c) const { return m_cascades[size_t(c)].k; }
+    /// Measures every k_c again from the FFT's spectra (after h̃0 changed: a sea's fade, a test's
+    /// hand-set modes); the constructor measures them once. O(N²) per cascade.
+    void measureWavenumbers();
 
     /// Horizontal velocity (m/s, world x and z) of the surface above each world (x, z) point:
     /// ∂(x, z)/∂t of the particle displaced there (its rest point found as sample() finds it),
     /// Gerstner Σ K̂·a·ω·cos θ (analytic) plus the cascades' λ·∂D/∂t (the rates behind the
-    /// vertical velocity; 0 until two updates). The ripple layer is a height field: no part.
+    /// vertical velocity; 0 until two updates), plus the ripple hook's horizontal velocity and the
+    /// current's: the one velocity the foam and the bodies are carried by.
     /// out.size() must equal points.size().
     void horizontalVelocityBatch(std::span<const glm::vec2> points, std::span<glm::vec2> out) const;
     /// The same from a guess of each point's rest point (rest[i]: in, the guess; out, the rest
@@ -129,6 +160,7 @@ public:
         float hx = 0, hz = 0;                 ///< gradient of the bilinear h
         float jxx = 0, jxz = 0, jzx = 0, jzz = 0; ///< gradient of the bilinear λ·D: ∂Dx/∂α, ∂Dx/∂β, ∂Dz/∂α, ∂Dz/∂β
         float ht = 0, dxt = 0, dzt = 0;       ///< ∂h/∂t, λ·∂Dx/∂t, λ·∂Dz/∂t (m/s)
+        float ut = 0, vt = 0;                 ///< ∂Dx/∂t, ∂Dz/∂t (m/s): the orbital velocity, choppiness 1
     };
     /// FFT terms at rest point (α, β) (zero without an FFT).
     FftTerms fftTerms(float alpha, float beta) const;
@@ -140,6 +172,7 @@ private:
     };
     struct Cascade {
         float invCell = 0.0f;                      // N / patch size, 1/m
+        float k = 0.0f;                            // velocity-weighted mean wavenumber, rad/m (cascadeWavenumber)
         std::array<std::vector<float>, 3> frames;  // (h, Dx, Dz) planar per frame, ring of 3
         std::vector<float> rate;                   // (∂h/∂t, ∂Dx/∂t, ∂Dz/∂t, 0) per point
     };
@@ -147,7 +180,9 @@ private:
     void addDisplacement(float alpha, float beta, FftTerms& t) const;
     void addSurface(float alpha, float beta, FftTerms& t) const;
     bool step(const Eval& e, float x, float z, glm::vec2& rest, float& residual, float tolerance = 0.0f) const;
-    WaterSample finish(const Eval& e, float x, float z, bool ripples = true) const;
+    WaterSample finish(const Eval& e, float x, float z, WaterLayers layers = {}) const;
+    template <class Done>
+    void invert(float x, float z, WaterLayers layers, Done&& done) const;
     void recordFrame();
     template <class Finish>
     void invertBatch(std::span<const glm::vec2> points, Finish&& finish, const glm::vec2* guess = nullptr,
@@ -157,6 +192,7 @@ private:
     const ocean::OceanFftCpu* m_fft = nullptr;
     CompositeSettings m_settings;
     RippleHook m_ripple;
+    CurrentHook m_current;
     std::vector<Cascade> m_cascades;
     std::array<double, 3> m_frameTimes{};
     int m_newest = -1;      // ring slot of the newest frame

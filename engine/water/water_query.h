@@ -12,7 +12,11 @@ namespace ob::water {
 struct WaterSample {
     float height = 0.0f;             ///< y of the surface, metres
     glm::vec3 normal{0, 1, 0};       ///< unit normal, y up
-    float verticalVelocity = 0.0f;   ///< ∂height/∂t at the fixed world (x, z), m/s
+    float verticalVelocity = 0.0f;   ///< ∂height/∂t at the fixed world (x, z), m/s: how fast the drawn surface rises there
+    /// The water's own velocity at the surface there (x, y, z), m/s: the particle velocity of
+    /// the waves (orbital: Gerstner, cascades, ripples) plus the current. Unlike
+    /// verticalVelocity (Eulerian: ∂h/∂t = w − u·∇h) it stays bounded where the surface folds.
+    glm::vec3 velocity{0.0f};
 };
 
 /// Which layers of the surface a query includes; a left-out layer reads as flat, still
@@ -22,6 +26,7 @@ struct WaterLayers {
     bool gerstner = true;  ///< the Gerstner swell
     bool fft = true;       ///< the FFT cascades
     bool ripples = true;   ///< the interactive ripple layer
+    bool currents = true;  ///< the surface current layer (velocity only: it has no height)
 };
 
 /// Reads the composite water surface at world positions. Implementations are immutable
@@ -38,6 +43,13 @@ public:
     /// sample() at every point (world x, z); out.size() must equal points.size(). The default
     /// loops over sample(); implementations override it with a vectorised path.
     virtual void sampleBatch(std::span<const glm::vec2> points, std::span<WaterSample> out) const;
+
+    /// The water's velocity (m/s, x y z) at world point p on or under the surface of the given
+    /// layers: each wave part decays with depth below the local surface as e^{k·z} (deep-water
+    /// potential flow; see the implementation for the k each part uses); the current is a slab.
+    /// A point above the surface reads the surface's. The default: sample()'s velocity, no decay.
+    virtual glm::vec3 velocityAt(glm::vec3 p, WaterLayers layers) const { return sample(p.x, p.z, layers).velocity; }
+    glm::vec3 velocityAt(glm::vec3 p) const { return velocityAt(p, WaterLayers{}); }
 };
 
 /// A still, flat sea at height h0: normal up, no motion.

@@ -149,25 +149,25 @@ void hullForces(const Ship& ship, const ecs::Transform& t, const ecs::Motion& mo
                               : std::clamp(mass * targetSpeed * std::abs(targetSpeed) / (top * COAST_TIME) +
                                                mass * (targetSpeed - f.forward) / SPEED_TIME,
                                            -0.5f * maxThrust, 1.5f * maxThrust);
-    body.forces.push_back({f.bow * (thrust * wet), stern});
-    body.forces.push_back({-f.bow * (resistance * wet), t.position});
+    body.forces.push_back({f.bow * (thrust * wet), stern, true});
+    body.forces.push_back({-f.bow * (resistance * wet), t.position, true});
     // The keel: sideways slip decays in SLIP_TIME.
-    body.forces.push_back({-f.starboard * (mass * f.sideways / SLIP_TIME * wet), t.position});
+    body.forces.push_back({-f.starboard * (mass * f.sideways / SLIP_TIME * wet), t.position, true});
     // The rudder: a sideways force at the stern whose moment brings the yaw rate to the
     // rudder's (which needs water flowing past it: it fades below half the top speed).
     const float yawInertia = mass * (ship.def.hull.z * ship.def.hull.z + ship.def.hull.x * ship.def.hull.x) / 12.0f;
     const float wantedYawRate = -ship.rudder * MAX_TURN * std::clamp(f.forward / (0.5f * top), -1.0f, 1.0f);
     const float moment = yawInertia * (wantedYawRate - body.angularVelocity.y) / YAW_TIME;
     // A force F·(bow × up) at the stern (arm L/2 behind the centre) turns about +y by F·L/2.
-    body.forces.push_back({glm::cross(f.bow, glm::vec3(0, 1, 0)) * (moment / (0.5f * ship.def.hull.z) * wet), stern});
+    body.forces.push_back({glm::cross(f.bow, glm::vec3(0, 1, 0)) * (moment / (0.5f * ship.def.hull.z) * wet), stern, true});
     // Bilge keels: a couple about the hull's long axis against the roll rate (vertical
     // forces ±F at the two sides, F·beam = moment).
     const glm::vec3 keel = t.rotation * glm::vec3(0, 0, 1), side = t.rotation * glm::vec3(1, 0, 0), deck = t.rotation * glm::vec3(0, 1, 0);
     const float rollInertia = mass * (ship.def.hull.x * ship.def.hull.x + ship.def.hull.y * ship.def.hull.y) / 12.0f;
     const float rollMoment = -rollInertia * glm::dot(body.angularVelocity, keel) / ROLL_TIME * wet;
     const glm::vec3 couple = deck * (rollMoment / ship.def.hull.x);
-    body.forces.push_back({couple, t.position + side * (0.5f * ship.def.hull.x)});
-    body.forces.push_back({-couple, t.position - side * (0.5f * ship.def.hull.x)});
+    body.forces.push_back({couple, t.position + side * (0.5f * ship.def.hull.x), true});
+    body.forces.push_back({-couple, t.position - side * (0.5f * ship.def.hull.x), true});
 }
 
 } // namespace
@@ -185,7 +185,9 @@ void shipSystem(ecs::World& world, const ecs::Tick& tick) {
         if (glm::dot(bow, bow) < 1e-6f) continue;  // standing on its end: no steering
         bow = glm::normalize(bow);
         const glm::vec3 starboard = glm::cross(bow, glm::vec3(0, 1, 0));
-        const HullFrame frame{bow, starboard, std::atan2(bow.x, bow.z), glm::dot(motion.velocity, bow), glm::dot(motion.velocity, starboard)};
+        // The hull moves through the water: its speed is the one relative to the water's (the current, the waves' orbits).
+        const glm::vec3 through = motion.velocity - world.get<Body>(e).waterVelocity;
+        const HullFrame frame{bow, starboard, std::atan2(bow.x, bow.z), glm::dot(through, bow), glm::dot(through, starboard)};
         const float targetSpeed = pilot(ship, t.position, frame.heading, input, float(tick.dt));
         hullForces(ship, t, motion, world.get<Body>(e), frame, targetSpeed);
     }

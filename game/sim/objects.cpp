@@ -174,49 +174,125 @@ static float rippleAround(const interaction::RipplePatch& patch, glm::vec2 xz, f
     return sum / 8.0f;
 }
 
+// The ripples' velocity round a body, on the same ring as rippleAround: (x, z) horizontal and y
+// vertical, m/s. Between a stamp and the next step the cells under a body always move, which is
+// no current; the waves arriving from elsewhere are.
+static glm::vec3 rippleVelocityAround(const interaction::RipplePatch& patch, glm::vec2 xz, float radius, float dt) {
+    const float ring = radius + 2.0f * patch.def().cell_size;
+    glm::vec3 sum(0.0f);
+    for (int k = 0; k < 8; ++k) {
+        const float a = float(k) * float(M_PI) / 4.0f;
+        const glm::vec2 p = xz + ring * glm::vec2(std::cos(a), std::sin(a));
+        sum.y += patch.velocityAt(p, dt);
+    }
+    return sum / 8.0f;
+}
+
+// The wind at a height above the sea (m) from the wind at 10 m: the neutral log profile
+// U(z) = U10·ln(z/z0)/ln(10/z0), sea roughness z0 = 2e-4 m (Charnock's over a wind sea), z ≥ 0.1 m.
+static float windProfile(float height) {
+    constexpr float Z0 = 2e-4f;
+    return std::log(std::max(height, 0.1f) / Z0) / std::log(10.0f / Z0);
+}
+
 void physicsSystem(ecs::World& world, const ecs::Tick& tick) {
     auto* physicsWorld = world.resource<physics::PhysicsWorld>();
     const physics::PhysicsDef* def = findPhysicsDef(world);
     if (!physicsWorld) return;
     const water::WaterQuery* water = nullptr;
-    if (OceanState* ocean = world.resource<OceanState>()) water = ocean->water.get();
+    glm::vec3 wind10(0.0f);
+    if (OceanState* ocean = world.resource<OceanState>()) {
+        water = ocean->water.get();
+        const glm::vec2 d = ocean->def.wind_direction;
+        if (glm::dot(d, d) > 0.0f) wind10 = ocean->def.wind_speed * glm::normalize(glm::vec3(d.x, 0.0f, d.y));
+    }
     const water::FlatWater flat(0.0f);
     if (!water) water = &flat;
     const float dt = float(tick.dt);
     const auto* patch = world.resource<interaction::RipplePatch>();
+    auto* impulses = world.resource<WaterImpulses>();
+    const float gravity = def->gravity;
 
-    // --- water forces, per probe
+    // --- water and air forces, per probe (Morison: buoyancy.h), then the behaviours' forces;
+    // the added mass taken implicitly: with m_a = Σ ρ·C_a·V the body moves as if of mass
+    // m + m_a under every force but its weight's share, so every applied force is scaled by
+    // s = m/(m + m_a) and (1 − s)·m·g lifts it (what m_a's weight would not pull). Bullet keeps m.
     auto& bodies = world.pool<Body>();
+    std::vector<physics::ProbeForce> forces;
     for (size_t b = 0; b < bodies.size(); ++b) {
         Body& body = bodies.components()[b];
-        const auto* spheres = world.find<interaction::SphereSet>(bodies.entities()[b]);
+        const ecs::Entity entity = bodies.entities()[b];
+        const auto* spheres = world.find<interaction::SphereSet>(entity);
         const float reach = spheres && !spheres->spheres.empty() ? spheres->spheres[0].radius : 0.0f;
+        const float mass = world.get<ecs::Motion>(entity).mass;
         physics::BodyState s = physicsWorld->state(body.id);
-        float submerged = 0.0f, total = 0.0f;
-        for (const Probe& probe : body.probes) {
+        body.probeWater.resize(body.probes.size(), glm::vec3(0.0f));
+        float probeVolume = 0.0f;
+        for (const Probe& probe : body.probes) probeVolume += probe.radius * probe.radius * probe.radius;
+        forces.clear();
+        float submerged = 0.0f, addedMass = 0.0f, wet = 0.0f;
+        glm::vec3 waterSum(0.0f);
+        for (size_t k = 0; k < body.probes.size(); ++k) {
+            const Probe& probe = body.probes[k];
             physics::ProbeState p;
             p.centre = s.position + s.rotation * probe.offset;
             p.radius = probe.radius;
             p.velocity = s.linearVelocity + glm::cross(s.angularVelocity, p.centre - s.position);
-            p.velocity.x *= body.horizontalDrag;  // the drag sees this much of the horizontal motion
-            p.velocity.z *= body.horizontalDrag;
-            // The ocean without the ripples: their level comes from round the body (above),
-            // and drag is against the ocean's motion only (between a stamp and the next step
-            // the ripple cells near a body always move, which is no real current).
-            const water::WaterSample w = water->sample(p.centre.x, p.centre.z, {.ripples = false});
+            // The ocean and current without the ripples: their level and motion come from round
+            // the body (above), not from the crater it stamps itself.
+            const water::WaterLayers sea{.ripples = false};
+            const water::WaterSample w = water->sample(p.centre.x, p.centre.z, sea);
             p.surfaceHeight = w.height;
             p.surfaceNormal = w.normal;
-            p.surfaceVelocity = w.verticalVelocity;
-            if (patch) p.surfaceHeight += rippleAround(*patch, glm::vec2(p.centre.x, p.centre.z), reach);
+            p.waterVelocity = water->velocityAt(p.centre, sea);
+            if (patch) {
+                const glm::vec2 xz(p.centre.x, p.centre.z);
+                p.surfaceHeight += rippleAround(*patch, xz, reach);
+                p.waterVelocity += rippleVelocityAround(*patch, xz, reach, dt);
+            }
+            const glm::vec3 before = body.probeWater[k];
+            body.probeWater[k] = p.waterVelocity;
+            if (tick.step > 0 && dt > 0.0f) p.waterAcceleration = (p.waterVelocity - before) / dt;
+            // The drag sees this much of the horizontal motion through the water (ships: none,
+            // their hull model resists it).
+            p.velocity.x = p.waterVelocity.x + body.horizontalDrag * (p.velocity.x - p.waterVelocity.x);
+            p.velocity.z = p.waterVelocity.z + body.horizontalDrag * (p.velocity.z - p.waterVelocity.z);
+            p.wind = wind10 * windProfile(p.centre.y + p.radius - p.surfaceHeight);
+            const float share = probe.radius * probe.radius * probe.radius / std::max(probeVolume, 1e-12f);
+            p.massShare = mass * share;
+            p.dt = dt;
             physics::ProbeForce f = physics::probeForce(*def, p);
-            physicsWorld->applyForce(body.id, f.force, f.point);
-            float v = probe.radius * probe.radius * probe.radius;
+            forces.push_back(f);
+            const float v = probe.radius * probe.radius * probe.radius;
             submerged += f.submergedFraction * v;
-            total += v;
+            addedMass += f.addedMass;
+            if (f.submergedFraction > 0.0f) {
+                waterSum += p.waterVelocity * f.submergedFraction;
+                wet += f.submergedFraction;
+            }
         }
-        body.submergedFraction = total > 0.0f ? submerged / total : 0.0f;
-        for (const AppliedForce& f : body.forces) physicsWorld->applyForce(body.id, f.force, f.point);
+        body.submergedFraction = probeVolume > 0.0f ? submerged / probeVolume : 0.0f;
+        body.waterVelocity = wet > 0.0f ? waterSum / wet : glm::vec3(0.0f);
+
+        const float scale = mass / (mass + addedMass);
+        glm::vec3 outside(0.0f);  // the forces from outside the water: air, hands, moorings
+        for (size_t k = 0; k < forces.size(); ++k) {
+            const physics::ProbeForce& f = forces[k];
+            physicsWorld->applyForce(body.id, scale * f.force, f.point);
+            if (impulses) impulses->react(scale * (f.force - f.airForce), f.point, dt, body.probes[k].radius);
+            outside += f.airForce;
+        }
+        for (const AppliedForce& f : body.forces) {
+            physicsWorld->applyForce(body.id, scale * f.force, f.point);
+            if (!f.water) outside += f.force;
+            else if (impulses) impulses->react(scale * f.force, f.point, dt, std::max(reach, 0.5f));
+        }
         body.forces.clear();
+        if (addedMass > 0.0f) {
+            physicsWorld->applyForce(body.id, glm::vec3(0.0f, (1.0f - scale) * mass * gravity, 0.0f), s.position);
+            // The added mass's reaction: the water the body drags along took (1 − s) of the outside forces.
+            if (impulses) impulses->react((scale - 1.0f) * outside, s.position, dt, std::max(reach, 0.5f));
+        }
         if (body.submergedFraction > 0.0f)
             physicsWorld->dampAngular(body.id, std::pow(1.0f - def->angular_damping, dt * body.submergedFraction));
     }

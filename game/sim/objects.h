@@ -194,6 +194,26 @@ struct Probe {
 struct AppliedForce {
     glm::vec3 force{0.0f};  ///< N, world
     glm::vec3 point{0.0f};  ///< world point of application, m
+    /// True: the water's on the body (a hull's resistance, keel, propeller thrust): its opposite
+    /// goes into the current layer. False: from outside the water (a hand, a mooring line).
+    bool water = false;
+};
+
+/// A horizontal impulse a body put into the water this step (the opposite of what the water
+/// did to it: Newton's third law), for the current layer to take (sim/currents_system).
+struct WaterImpulse {
+    glm::vec2 at{0.0f};       ///< world (x, z), m
+    glm::vec2 impulse{0.0f};  ///< N·s
+    float radius = 0.5f;      ///< m, the footprint it spreads over
+};
+
+/// The step's impulses into the water (a resource: the physics adds, the current layer takes).
+struct WaterImpulses {
+    std::vector<WaterImpulse> items;
+    /// Adds −force·dt at `at` (the reaction of a horizontal water force on a body).
+    void react(glm::vec3 force, glm::vec3 at, float dt, float radius) {
+        if (force.x != 0.0f || force.z != 0.0f) items.push_back({{at.x, at.z}, -dt * glm::vec2(force.x, force.z), radius});
+    }
 };
 
 /// A simulated body: its Bullet id, its probes, and what the water did last step.
@@ -203,6 +223,8 @@ struct Body {  // what it is: the entity's ObjectTag
     float volume = 0.0f;             ///< m³ of the solid
     float submergedFraction = 0.0f;  ///< of the probes' volume under the surface, last step
     float horizontalDrag = 1.0f;     ///< scale of the probes' drag on horizontal motion (ships: 0, the hull model resists)
+    glm::vec3 waterVelocity{0.0f};   ///< the water's velocity averaged over the wet probes, last step, m/s (the hull model steers through it)
+    std::vector<glm::vec3> probeWater;  ///< each probe's water velocity last step, m/s (its rate is the water's Du/Dt)
     glm::vec3 angularVelocity{0.0f}; ///< rad/s, world, after the last step
     std::vector<AppliedForce> forces;  ///< behaviour forces for the next step (cleared by the step)
 };

@@ -71,6 +71,7 @@ void oceanSystem(ecs::World& world, const ecs::Tick& tick) {
         if (!prefetched) ocean->fade->apply(*ocean->cpu, ocean->mapsTime);  // a prefetched buffer took it before its update
         ocean->waves = ocean->fade->waves(ocean->mapsTime);
         ocean->water->setWaves(ocean->waves, ocean->def.gravity);
+        ocean->water->measureWavenumbers();
         ++ocean->seaVersion;
     }
     if (ocean->cpuNext && ocean->prefetchTime == ocean->mapsTime) {

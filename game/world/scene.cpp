@@ -84,6 +84,7 @@ void applyEnvironment(SceneDef& scene) {
     const environment::EnvironmentDef& env = scene.environment;
     scene.physics.gravity = env.gravity;
     scene.physics.water_density = env.water_density;
+    scene.physics.air_density = env.air_density;
     scene.ocean.gravity = env.gravity;  // spectrum dispersion and Gerstner waves
     scene.ripples.environment = env;
     scene.splash.environment = env;

@@ -35,7 +35,7 @@ TEST_CASE("a probe at rest feels rho g V up, drag opposes motion relative to the
     CHECK(f.submergedFraction == Approx(1.0f));
     p.velocity = glm::vec3(0.0f, -1.0f, 0.0f);
     CHECK(physics::probeForce(def, p).force.y > f.force.y);  // sinking: drag pushes up
-    p.surfaceVelocity = -1.0f;                                // moving with the water: no drag
+    p.waterVelocity = glm::vec3(0.0f, -1.0f, 0.0f);           // moving with the water: no drag
     CHECK(physics::probeForce(def, p).force.y == Approx(f.force.y).epsilon(1e-5));
 }
 
