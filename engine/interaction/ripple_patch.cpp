@@ -71,6 +71,13 @@ float RipplePatch::velocityAt(glm::vec2 world, float dt) const {
     return m_levels->composite(world, fine, fineWeight(world), [this](int L, glm::vec2 w) { return m_levels->velocityAt(L, w); });
 }
 
+glm::vec2 RipplePatch::horizontalVelocityAt(glm::vec2 world) const {
+    const glm::vec2 fine = m_solver->horizontalVelocityAt(toGrid(world));
+    if (!m_levels) return fine;
+    return m_levels->composite(world, fine, fineWeight(world),
+                               [this](int L, glm::vec2 w) { return m_levels->horizontalVelocityAt(L, w); });
+}
+
 void RipplePatch::hashState(StateHasher& h) const {
     m_solver->hashState(h);
     if (m_levels) m_levels->hashState(h);

@@ -33,6 +33,7 @@ public:
     template <class S> const S* solverAs() const { return dynamic_cast<const S*>(m_solver.get()); }
     /// The coarse levels 1..K−1 around the solver's grid (ewave, ripples.levels = K > 1), or null.
     const EWaveLevels* levels() const { return m_levels.get(); }
+    EWaveLevels* levels() { return m_levels.get(); }
     /// True once the solver steps on its GPU twin (interaction/gpu/attachGpu).
     bool onGpu() const { return m_solver->onGpu(); }
 
@@ -46,6 +47,13 @@ public:
     /// The vertical velocity at world (x, z), m/s (the solver's, see RippleSolver::velocityAt;
     /// with levels the composite, as heightAt).
     float velocityAt(glm::vec2 world, float dt) const;
+    /// The horizontal surface velocity at world (x, z), (x, z) components in m/s (the solver's, see
+    /// RippleSolver::horizontalVelocityAt: 0 for kang2008; with levels the composite, as heightAt).
+    glm::vec2 horizontalVelocityAt(glm::vec2 world) const;
+    /// The wavenumber the layer's vertical velocity variance is centred on, Σ|K|·|v̂|²/Σ|v̂|² over
+    /// the solver's own grid's modes after the last step, rad/m; 0 when still (and for kang2008).
+    /// For an e^{kz} decay of the layer's velocity below the surface.
+    float velocityWavenumber() const { return m_solver->velocityWavenumber(); }
     /// The composite's weight of the solver's own grid (level 0) at world (x, z): 1 without levels.
     float fineWeight(glm::vec2 world) const;
     /// World (x, z) of cell (0, 0)'s centre.

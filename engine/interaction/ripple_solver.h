@@ -59,6 +59,14 @@ public:
     /// The vertical velocity at grid position `g` (bilinear between cell centres; 0 off the
     /// interior), m/s; dt is the step in s (a two-level model differences its levels over it).
     virtual float velocityAt(glm::vec2 g, float dt) const = 0;
+    /// The horizontal surface velocity at grid position `g` (bilinear between cell centres; 0 off
+    /// the interior, as velocityAt), world (x, z), m/s. The default is none: a model without a
+    /// velocity law (kang2008's height field) contributes its vertical velocity only.
+    virtual glm::vec2 horizontalVelocityAt(glm::vec2 /*g*/) const { return {0.0f, 0.0f}; }
+    /// The wavenumber the vertical velocity's variance is centred on over the grid's modes after
+    /// the last step, rad/m (a caller's e^{kz} decay below the surface); 0 when still or unknown
+    /// (the default).
+    virtual float velocityWavenumber() const { return 0.0f; }
     /// The float levels of the state, the height first (a soak checks them).
     virtual std::vector<RippleLevel> levels() const = 0;
     /// Feeds the whole state that the next step reads, bit for bit, to `h` (the state hash).

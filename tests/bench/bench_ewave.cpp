@@ -52,6 +52,26 @@ BENCHMARK(BM_EWaveStep)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
+// The horizontal surface velocity derived from a state as it is (EWaveField::deriveHorizontal:
+// one forward and two inverse transforms), what the GPU twin's read-back costs on the CPU on top
+// of BM_EWaveStep's field (whose step makes it itself). Args: N, workers.
+void BM_EWaveDeriveHorizontal(benchmark::State& state) {
+    const int n = int(state.range(0));
+    ob::setWorkerCount(int(state.range(1)));
+    ob::setThreadMeasuring(false);
+    EWaveField field(n, n, 0.25f, RippleBoundary::Absorbing, 32);
+    field.setDamping(3.0f, 1e-3f);
+    fillNoise(field);
+    field.step(1.0f / 60.0f);
+    for (auto _ : state) field.deriveHorizontal();
+    ob::setThreadMeasuring(true);
+    ob::setWorkerCount(0);
+}
+BENCHMARK(BM_EWaveDeriveHorizontal)
+    ->ArgsProduct({{256, 512}, {1, 2}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
 // The GPU twin's step on OSMesa (llvmpipe here: the dispatches run on the CPU's cores), the
 // same field as BM_EWaveStep, glFinish included. Args: N, read (1: h and v read back into the
 // CPU field after the step, as the sandbox does).

@@ -66,6 +66,62 @@ OB_VECTOR_KERNEL void changeKernel(float* __restrict hs, float* __restrict vs, c
     }
 }
 
+// One spectrum row of n modes (SPEC §2.5c): the new state's ĥ', v̂' = scale·(ĥ, v̂) + their change
+// (coef's a − 1, b, c as changeKernel, which carry `scale`; coef null: no change, the state as it
+// is), then û = i·K·r·v̂' into ux, uz and, when xx is not null, ξ̂ = i·K·r·ĥ' into xx, xz, with
+// K = (kx[m], kz) and r = riesz[m] = 1/(|K|·tanh(|K|d)); sums[0] += w·|K|·|v̂'|², sums[1] +=
+// w·|v̂'|² over the modes with r > 0 (K ≠ 0), w = weight[m] the mode's count in the full spectrum.
+// Multiplying by i: (re, im) → (−im, re).
+OB_VECTOR_KERNEL void horizontalKernel(const float* __restrict hs, const float* __restrict vs,
+                                       const double* __restrict coef, float scale, const float* __restrict riesz,
+                                       const float* __restrict kabs, const float* __restrict kx,
+                                       const float* __restrict weight, float kz, float* __restrict ux,
+                                       float* __restrict uz, float* __restrict xx, float* __restrict xz, int n,
+                                       double* __restrict sums) {
+    double num = 0.0, den = 0.0;
+    for (int m = 0; m < n; ++m) {
+        double h[2], v[2];
+        for (int p = 0; p < 2; ++p) {
+            h[p] = double(scale) * hs[2 * m + p];
+            v[p] = double(scale) * vs[2 * m + p];
+        }
+        if (coef) {
+            const double am1 = coef[3 * m], b = coef[3 * m + 1], c = coef[3 * m + 2];
+            const double h0 = hs[2 * m], h1 = hs[2 * m + 1], v0 = vs[2 * m], v1 = vs[2 * m + 1];
+            h[0] += am1 * h0 + b * v0;
+            h[1] += am1 * h1 + b * v1;
+            v[0] += c * h0 + am1 * v0;
+            v[1] += c * h1 + am1 * v1;
+        }
+        const float r = riesz[m];
+        const float mx = kx[m] * r, mz = kz * r;
+        ux[2 * m] = float(-mx * v[1]);
+        ux[2 * m + 1] = float(mx * v[0]);
+        uz[2 * m] = float(-mz * v[1]);
+        uz[2 * m + 1] = float(mz * v[0]);
+        const double power = r > 0.0f ? double(weight[m]) * (v[0] * v[0] + v[1] * v[1]) : 0.0;
+        num += double(kabs[m]) * power;
+        den += power;
+    }
+    if (xx) {
+        for (int m = 0; m < n; ++m) {
+            double h[2] = {double(scale) * hs[2 * m], double(scale) * hs[2 * m + 1]};
+            if (coef) {
+                h[0] += coef[3 * m] * hs[2 * m] + coef[3 * m + 1] * vs[2 * m];
+                h[1] += coef[3 * m] * hs[2 * m + 1] + coef[3 * m + 1] * vs[2 * m + 1];
+            }
+            const float r = riesz[m];
+            const float mx = kx[m] * r, mz = kz * r;
+            xx[2 * m] = float(-mx * h[1]);
+            xx[2 * m + 1] = float(mx * h[0]);
+            xz[2 * m] = float(-mz * h[1]);
+            xz[2 * m + 1] = float(mz * h[0]);
+        }
+    }
+    sums[0] = num;
+    sums[1] = den;
+}
+
 // f += change, then its float copy (before the boundary: the caller redoes the band's).
 OB_VECTOR_KERNEL void addKernel(double* __restrict f, float* __restrict copy, const float* __restrict change, int n) {
     for (int i = 0; i < n; ++i) {
@@ -132,6 +188,12 @@ EWaveField::EWaveField(int rows, int cols, float cellSize, RippleBoundary bounda
     std::memset(m_float[1], 0, m_cells * sizeof(float));
     if (boundary == RippleBoundary::Absorbing) m_spongeWidth = std::clamp(spongeWidth, 1, std::min(rows, cols) / 2);
     m_coef.resize(3 * size_t(m_rows / 2 + 1) * size_t(m_specCols));
+    for (int f = 0; f < 4; ++f) {
+        m_horiz[f] = allocFloat(m_cells);
+        m_horizSpec[f] = allocFloat(2 * m_modes);
+    }
+    m_rowSums.assign(2 * size_t(m_rows), 0.0);
+    prepareHorizontal();
     m_sourceSum.assign(m_cells, 0.0f);
     chooseThreads();
 }
@@ -175,12 +237,68 @@ EWaveField::~EWaveField() {
         fftwf_free(m_spec[t]);
         fftwf_free(m_change[t]);
     }
+    for (int f = 0; f < 4; ++f) {
+        fftwf_free(m_horiz[f]);
+        fftwf_free(m_horizSpec[f]);
+    }
 }
 
 void EWaveField::setMedium(const EWaveMedium& medium) {
     assert(medium.gravity > 0.0 && medium.capillarity >= 0.0);
     m_medium = medium;
     m_preparedDt = -1.0f;
+    prepareHorizontal();
+}
+
+// Per mode of rows 0..rows/2 (row rows − j has row j's |K|) r = 1/(|K|·tanh(|K|d)) (deep water, or
+// |K|·d past 20: 1/|K|), 0 at K = 0; per column kx, 0 at the Nyquist column (its ±kx are one mode
+// of a real field, whose derivative there is taken as 0; kz likewise in horizontalRow); per
+// column the count of the full spectrum's modes it stands for (the half spectrum's inner columns
+// stand for K and −K).
+void EWaveField::prepareHorizontal() {
+    const double twoPi = 2.0 * std::numbers::pi;
+    const double lx = double(m_cols) * m_cellSize, lz = double(m_rows) * m_cellSize;
+    m_kx.assign(size_t(m_specCols), 0.0f);
+    m_weight.assign(size_t(m_specCols), 2.0f);
+    for (int i = 0; i < m_specCols; ++i) m_kx[size_t(i)] = 2 * i == m_cols ? 0.0f : float(twoPi * i / lx);
+    m_weight[0] = 1.0f;
+    if (m_cols % 2 == 0) m_weight[size_t(m_cols / 2)] = 1.0f;
+    const size_t modes = size_t(m_rows / 2 + 1) * size_t(m_specCols);
+    m_riesz.assign(modes, 0.0f);
+    m_kabs.assign(modes, 0.0f);
+    const double d = m_medium.depth;
+    for (int j = 0; j <= m_rows / 2; ++j) {
+        const double kz = twoPi * j / lz;
+        for (int i = 0; i < m_specCols; ++i) {
+            const double kx = twoPi * i / lx;
+            const double k = std::sqrt(kx * kx + kz * kz);
+            const size_t m = size_t(j) * size_t(m_specCols) + size_t(i);
+            m_kabs[m] = float(k);
+            if (k > 0.0) m_riesz[m] = float(1.0 / (d > 0.0 && k * d < 20.0 ? k * std::tanh(k * d) : k));
+        }
+    }
+}
+
+void EWaveField::keepHorizontalDisplacement(bool on) {
+    m_displacement = on;
+    if (!on)
+        for (int f = 2; f < 4; ++f) std::memset(m_horiz[f], 0, m_cells * sizeof(float));
+}
+
+// Spectrum row j (the step's: before changeRows turns it into the change; `change` false: the
+// state as transformed) into the horizontal fields' spectra and its sums of velocityWavenumber.
+// kz = 2π·(j or j − rows)/(rows·Δ), 0 at the Nyquist row.
+void EWaveField::horizontalRow(int j, bool change) {
+    const size_t row = 2 * size_t(j) * size_t(m_specCols);
+    const int jm = std::min(j, m_rows - j);
+    const size_t coefRow = size_t(jm) * size_t(m_specCols);
+    const int signedJ = j <= m_rows / 2 ? j : j - m_rows;
+    const float kz = 2 * j == m_rows ? 0.0f : float(2.0 * std::numbers::pi * signedJ / (double(m_rows) * m_cellSize));
+    const float scale = float(1.0 / (double(m_rows) * double(m_cols)));
+    horizontalKernel(m_spec[0] + row, m_spec[1] + row, change ? m_coef.data() + 3 * coefRow : nullptr, scale,
+                     m_riesz.data() + coefRow, m_kabs.data() + coefRow, m_kx.data(), m_weight.data(), kz,
+                     m_horizSpec[0] + row, m_horizSpec[1] + row, m_displacement ? m_horizSpec[2] + row : nullptr,
+                     m_displacement ? m_horizSpec[3] + row : nullptr, m_specCols, m_rowSums.data() + 2 * size_t(j));
 }
 
 void EWaveField::setDamping(float decayTime, float viscosity) {
@@ -261,9 +379,9 @@ void EWaveField::prepare(float dt) {
     m_preparedDt = dt;
 }
 
-void EWaveField::step(float dt) {
-    assert(dt > 0.0f);
-    if (dt != m_preparedDt) prepare(dt);
+// The float copies the forward transforms read, current: the sources in v, an edit's state, the
+// rows the sources wrote.
+void EWaveField::syncFloatCopies() {
     applySources();
     if (m_stale) syncHeight();
     if (m_vRows0 < m_vRows1) {  // rows the sources wrote
@@ -272,6 +390,12 @@ void EWaveField::step(float dt) {
         m_vRows0 = m_rows;
         m_vRows1 = 0;
     }
+}
+
+void EWaveField::step(float dt) {
+    assert(dt > 0.0f);
+    if (dt != m_preparedDt) prepare(dt);
+    syncFloatCopies();
     const int pairChunk = m_stepThreads > 1 ? 1 : 2;             // 2: both on the calling thread
     const int rowChunk = m_stepThreads > 1 ? m_rows / 2 : m_rows;  // two row bands, or one
     // --- 1. forward transforms of h and v, each whole on one worker
@@ -279,17 +403,92 @@ void EWaveField::step(float dt) {
         for (int t = b; t < e; ++t)
             fftwf_execute_dft_r2c(m_forward, m_float[t], reinterpret_cast<fftwf_complex*>(m_spec[t]));
     });
-    // --- 2. both spectra become their changes, in row bands
+    // --- 2. the horizontal fields' spectra of the new state, then both spectra become their
+    //        changes, in row bands
     parallelFor(0, m_rows, rowChunk, [&](int j0, int j1) { changeRows(j0, j1); });
-    // --- 3. per field: the inverse transform of its change, added to it, the boundary, its float copy
-    parallelFor(0, 2, pairChunk, [&](int b, int e) {
-        for (int t = b; t < e; ++t) {
-            fftwf_execute_dft_c2r(m_backward, reinterpret_cast<fftwf_complex*>(m_spec[t]), m_change[t]);
-            finishRows(t, 0, m_rows);
-        }
-    });
+    sumVelocityWavenumber();
+    // --- 3. per field: the inverse transform of its change, added to it, the boundary, its float
+    //        copy; the horizontal fields' inverse transforms and their boundary
+    inverseTransforms(true);
     // --- 4. the volume the rounding and the sponge moved, put back
     if (m_boundary != RippleBoundary::Fixed) conserveVolume();
+}
+
+// The inverse transforms over the workers, in an order that gives each of two workers one state
+// field (its transform and its finishRows, the larger tasks) and half the horizontal ones.
+void EWaveField::inverseTransforms(bool state) {
+    // Tasks: 0, 1 the state's h and v; 2.. the horizontal fields ux, uz, ξx, ξz.
+    static constexpr int STEP[] = {0, 2, 1, 3}, STEP_DISPLACEMENT[] = {0, 2, 4, 1, 3, 5}, DERIVED[] = {2, 3, 4, 5};
+    const int* tasks = state ? (m_displacement ? STEP_DISPLACEMENT : STEP) : DERIVED;
+    const int count = (state ? 2 : 0) + (m_displacement ? 4 : 2);
+    const int chunk = m_stepThreads > 1 ? 1 : count;
+    parallelFor(0, count, chunk, [&](int b, int e) {
+        for (int k = b; k < e; ++k) {
+            const int t = tasks[k];
+            if (t < 2) {
+                fftwf_execute_dft_c2r(m_backward, reinterpret_cast<fftwf_complex*>(m_spec[t]), m_change[t]);
+                finishRows(t, 0, m_rows);
+            } else {
+                fftwf_execute_dft_c2r(m_backward, reinterpret_cast<fftwf_complex*>(m_horizSpec[t - 2]), m_horiz[t - 2]);
+                if (state) finishHorizontal(t - 2);  // derived from a state that had its boundary: none again
+            }
+        }
+    });
+}
+
+// Field f of the horizontal ones after its transform: the boundary as finishRows applies it to v
+// (Fixed: the outer ring 0; Absorbing: the band scaled by the sponge factors, towards 0).
+void EWaveField::finishHorizontal(int f) {
+    float* const u = m_horiz[f];
+    const int rows = m_rows, cols = m_cols, w = m_spongeWidth;
+    switch (m_boundary) {
+    case RippleBoundary::Periodic:
+        break;
+    case RippleBoundary::Fixed:
+        std::fill(u, u + cols, 0.0f);
+        std::fill(u + size_t(rows - 1) * size_t(cols), u + m_cells, 0.0f);
+        for (int z = 1; z < rows - 1; ++z) u[size_t(z) * size_t(cols)] = u[size_t(z) * size_t(cols) + size_t(cols - 1)] = 0.0f;
+        break;
+    case RippleBoundary::Absorbing:
+        for (int z = 0; z < rows; ++z) {
+            float* r = u + size_t(z) * size_t(cols);
+            const float* s = m_sponge.data() + size_t(z) * size_t(cols);
+            if (z < w || z >= rows - w) {
+                for (int x = 0; x < cols; ++x) r[x] *= s[x];
+            } else {
+                for (int x = 0; x < w; ++x) r[x] *= s[x];
+                for (int x = cols - w; x < cols; ++x) r[x] *= s[x];
+            }
+        }
+        break;
+    }
+}
+
+// As the step's passes 1–3 with no change: the state as it is, its boundary already applied.
+void EWaveField::deriveHorizontal() {
+    syncFloatCopies();
+    const int pairChunk = m_stepThreads > 1 ? 1 : 2;
+    parallelFor(0, m_displacement ? 2 : 1, pairChunk, [&](int b, int e) {
+        for (int t = b; t < e; ++t) {
+            const int field = 1 - t;  // v first
+            fftwf_execute_dft_r2c(m_forward, m_float[field], reinterpret_cast<fftwf_complex*>(m_spec[field]));
+        }
+    });
+    const int rowChunk = m_stepThreads > 1 ? m_rows / 2 : m_rows;
+    parallelFor(0, m_rows, rowChunk, [&](int j0, int j1) {
+        for (int j = j0; j < j1; ++j) horizontalRow(j, false);
+    });
+    sumVelocityWavenumber();
+    inverseTransforms(false);
+}
+
+void EWaveField::sumVelocityWavenumber() {
+    double num = 0.0, den = 0.0;  // in row order: the same bits whatever the workers' split
+    for (int j = 0; j < m_rows; ++j) {
+        num += m_rowSums[2 * size_t(j)];
+        den += m_rowSums[2 * size_t(j) + 1];
+    }
+    m_velocityWavenumber = den > 0.0 ? num / den : 0.0;
 }
 
 // The step changes no mode but k = 0 of h by more than rounding, so the shift is that rounding
@@ -308,6 +507,7 @@ void EWaveField::changeRows(int j0, int j1) {
     for (int j = j0; j < j1; ++j) {
         const size_t row = size_t(j) * size_t(m_specCols);
         const size_t coefRow = size_t(std::min(j, m_rows - j)) * size_t(m_specCols);
+        horizontalRow(j, true);
         changeKernel(m_spec[0] + 2 * row, m_spec[1] + 2 * row, m_coef.data() + 3 * coefRow, m_specCols);
     }
     if (j0 == 0) {  // the change's spectrum carries the inverse transform's 1/(rows·cols), as the coefficients do
@@ -453,6 +653,7 @@ void EWaveField::scroll(int dx, int dz) {
     const double volume = m_volume;
     scrollCells(m_h, m_rows, m_cols, glm::ivec2(dx, dz), keep ? volume / double(m_cells) : 0.0);
     scrollCells(m_v, m_rows, m_cols, glm::ivec2(dx, dz), 0.0);
+    for (float* f : m_horiz) scrollCells(f, m_rows, m_cols, glm::ivec2(dx, dz), 0.0f);
     syncHeight();
     if (!keep) return;
     m_volume = volume;
@@ -482,6 +683,8 @@ void EWaveField::clear() {
     applySources();
     std::fill(m_h, m_h + m_cells, 0.0);
     std::fill(m_v, m_v + m_cells, 0.0);
+    for (float* f : m_horiz) std::fill(f, f + m_cells, 0.0f);
+    m_velocityWavenumber = 0.0;
     syncHeight();
 }
 

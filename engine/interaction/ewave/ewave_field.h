@@ -191,12 +191,47 @@ public:
     /// v at column x, row z (both in range), m/s.
     float velocityAt(int x, int z) const { return float(velocityState()[size_t(z) * size_t(m_cols) + size_t(x)]); }
 
+    // --- The horizontal surface velocity (SPEC §2.5c), derived from the state, not part of it.
+    /// The horizontal surface velocity of the state the last step made, axis 0: x (along a row),
+    /// 1: z (along a column); rows·cols floats row-major (as height()), m/s. Per Fourier mode
+    /// û = i·K·φ̂ with ∂ĥ/∂t = |K|·tanh(|K|d)·φ̂, so û = i·K/(|K|·tanh(|K|d))·v̂ (deep water: i·K/|K|·v̂,
+    /// the Riesz transform of v = ∂h/∂t); K = 0 and the Nyquist component of each axis give 0.
+    /// Made by each step from the new state's spectrum before the boundary, then the boundary
+    /// applied to it as to v (Fixed: the ring 0; Absorbing: scaled by the sponge factors); scrolls
+    /// with the state (new cells 0), 0 after clear(). An edit* leaves it as it was until the
+    /// next step or deriveHorizontal(). Not part of the state: nothing hashes it.
+    std::span<const float> horizontalVelocity(int axis) const { return {m_horiz[axis], m_cells}; }
+    /// The horizontal displacement of the surface, ξ̂ = i·K/(|K|·tanh(|K|d))·ĥ (∂ξ/∂t = u), m, as
+    /// horizontalVelocity; all 0 unless keepHorizontalDisplacement(true) (the coarse levels' Hermite
+    /// in time reads it: EWaveLevels).
+    std::span<const float> horizontalDisplacement(int axis) const { return {m_horiz[2 + axis], m_cells}; }
+    /// Whether the steps make horizontalDisplacement too (two more inverse transforms a step).
+    void keepHorizontalDisplacement(bool on);
+    /// The wavenumber the vertical velocity's variance is centred on, Σ|K|·|v̂|² / Σ|v̂|² over the
+    /// modes K ≠ 0 of the state the last step made (before the boundary), rad/m; 0 when still.
+    double velocityWavenumber() const { return m_velocityWavenumber; }
+    /// Derives the horizontal fields and velocityWavenumber from the state as it is now (after
+    /// edit*, or a GPU twin's read-back): one forward transform of v (and of h with the
+    /// displacement) and the inverse ones; no boundary (the state has had its own).
+    void deriveHorizontal();
+    /// Scales the horizontal velocity and displacement at cell `index` (z·cols + x) by `factor`
+    /// in [0, 1]: towards 0 inside a body, as the obstruction scales v (obstructField).
+    void scaleHorizontal(size_t index, float factor) {
+        for (float* f : m_horiz) f[index] *= factor;
+    }
+
 private:
     void chooseThreads();
     void prepare(float dt);
     void changeRows(int j0, int j1);
     void applySources() const;  // the sources' float sums into v (rows m_sourceRows0..1), then 0
     void finishRows(int t, int z0, int z1);
+    void finishHorizontal(int f);  // the boundary on horizontal field f (0, 1: u; 2, 3: ξ)
+    void inverseTransforms(bool state);  // pass 3 (state: h and v too) over the workers
+    void horizontalRow(int j, bool change);  // û (ξ̂) of spectrum row j's new state, its sums (see the .cpp)
+    void prepareHorizontal();  // m_riesz, m_kabs, m_kx, m_weight of the medium
+    void sumVelocityWavenumber();
+    void syncFloatCopies();  // before the forward transforms  // m_rowSums in row order into m_velocityWavenumber
     void conserveVolume();  // pass 4: h += (volume − Σh)/cells
 
     int m_rows, m_cols, m_specCols;
@@ -225,6 +260,16 @@ private:
     fftwf_plan_s* m_backward = nullptr;  // c2r, out of place (destroys its input)
     std::vector<double> m_coef;        // per mode of rows 0..rows/2: a − 1, b, c (modeStep's, times 1/(rows·cols))
     std::vector<float> m_sponge;       // per cell: the factor exp(−γΔt) (Absorbing), 1 away from the band
+    // The horizontal fields (horizontalVelocity, horizontalDisplacement): ux, uz (m/s), ξx, ξz (m).
+    float* m_horiz[4] = {};            // rows·cols each, row-major: the inverse transforms' output
+    float* m_horizSpec[4] = {};        // their spectra, complex rows × (cols/2 + 1)
+    std::vector<float> m_riesz;        // per mode of rows 0..rows/2: 1/(|K|·tanh(|K|d)), m; 0 at K = 0
+    std::vector<float> m_kabs;         // per mode of rows 0..rows/2: |K|, rad/m
+    std::vector<float> m_kx;           // per spectrum column: kx, rad/m, 0 at the Nyquist column
+    std::vector<float> m_weight;       // per spectrum column: its modes' count in the full spectrum (1 or 2)
+    std::vector<double> m_rowSums;     // per spectrum row: Σw·|K|·|v̂'|², Σw·|v̂'|² (velocityWavenumber)
+    double m_velocityWavenumber = 0.0; // rad/m
+    bool m_displacement = false;       // keepHorizontalDisplacement
 };
 
 /// A bounding sphere's stamp as an ewave source: a vertical acceleration `accel` (m/s²) on v

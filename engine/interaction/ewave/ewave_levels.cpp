@@ -39,6 +39,9 @@ EWaveLevels::EWaveLevels(const RippleDef& def) : m_sponge(def.sponge_width), m_c
         lv.b = L;
         lv.a = L - stride;
         for (auto* f : {&lv.h0, &lv.v0, &lv.h1, &lv.v1, &lv.shown}) f->assign(size_t(n) * size_t(n), 0.0f);
+        for (int a = 0; a < 2; ++a)
+            for (auto* f : {&lv.x0[a], &lv.u0[a], &lv.x1[a], &lv.u1[a]}) f->assign(size_t(n) * size_t(n), 0.0f);
+        lv.solver->field().keepHorizontalDisplacement(true);  // the Hermite of u reads ξ
     }
     m_sponge = m_levels.front().solver->field().spongeWidth();  // as the field clamps it
 }
@@ -74,6 +77,11 @@ void EWaveLevels::keepState(Level& lv) {
     for (double x : v) mean += x;
     mean /= double(v.size());
     std::transform(v.begin(), v.end(), lv.v1.begin(), [mean](double x) { return float(x - mean); });
+    const EWaveField& f = lv.solver->field();
+    for (int a = 0; a < 2; ++a) {
+        std::copy(f.horizontalDisplacement(a).begin(), f.horizontalDisplacement(a).end(), lv.x1[a].begin());
+        std::copy(f.horizontalVelocity(a).begin(), f.horizontalVelocity(a).end(), lv.u1[a].begin());
+    }
 }
 
 void EWaveLevels::centerOn(glm::vec2 world) {
@@ -91,6 +99,10 @@ void EWaveLevels::centerOn(glm::vec2 world) {
         for (float x : lv.v0) v0 += double(x);
         const float back = float(v0 / double(lv.v0.size()));
         for (float& x : lv.v0) x -= back;
+        for (int a = 0; a < 2; ++a) {  // derived, mean 0: new cells 0
+            scrollCells(lv.x0[a].data(), lv.grid.n, lv.grid.n, shift);
+            scrollCells(lv.u0[a].data(), lv.grid.n, lv.grid.n, shift);
+        }
         lv.shownFrame = -1;
     }
 }
@@ -186,6 +198,10 @@ void EWaveLevels::stepLevel(Level& lv, float dt, std::span<const ObstacleShape> 
     }
     std::swap(lv.h0, lv.h1);
     std::swap(lv.v0, lv.v1);
+    for (int a = 0; a < 2; ++a) {
+        std::swap(lv.x0[a], lv.x1[a]);
+        std::swap(lv.u0[a], lv.u1[a]);
+    }
     lv.solver->step(dt * float(lv.stride));
     keepState(lv);
     lv.a = lv.b;
@@ -244,6 +260,23 @@ float EWaveLevels::velocityAt(int L, glm::vec2 world) const {
     const Hermite w = Hermite::slope(phase(lv));
     return (w.h00 * bilinear<float>(lv.h0, n, n, g) + w.h01 * bilinear<float>(lv.h1, n, n, g)) / s +
            w.h10 * bilinear<float>(lv.v0, n, n, g) + w.h11 * bilinear<float>(lv.v1, n, n, g);
+}
+
+// The same Hermite slope as velocityAt, on ξ and u: ξ = R[h] and u = R[v] = ∂ξ/∂t with R the
+// per-mode i·K/(|K|·tanh(|K|d)), linear and the same at both ends, so this is R of velocityAt's
+// v(t) (the craters a step adds reach ξ with the step after: one coarse step late at most).
+glm::vec2 EWaveLevels::horizontalVelocityAt(int L, glm::vec2 world) const {
+    const Level& lv = level(L);
+    const float s = m_dt * float(lv.stride);
+    if (s <= 0.0f) return {0.0f, 0.0f};
+    const glm::vec2 g = lv.grid.toGrid(world);
+    const int n = lv.grid.n;
+    const Hermite w = Hermite::slope(phase(lv));
+    glm::vec2 u;
+    for (int a = 0; a < 2; ++a)
+        u[a] = (w.h00 * bilinear<float>(lv.x0[a], n, n, g) + w.h01 * bilinear<float>(lv.x1[a], n, n, g)) / s +
+               w.h10 * bilinear<float>(lv.u0[a], n, n, g) + w.h11 * bilinear<float>(lv.u1[a], n, n, g);
+    return u;
 }
 
 void EWaveLevels::hashState(StateHasher& h) const {

@@ -45,6 +45,9 @@ public:
     const ScrollingGrid& grid(int L) const { return level(L).grid; }
     /// Level L's solver (its state at frame b, not interpolated).
     const EWaveSolver& solver(int L) const { return *level(L).solver; }
+    /// Level L's solver, writable (tests that set a level's state: what the composite reads follows
+    /// from its next step on, the Hermite's both ends from the one after).
+    EWaveSolver& solver(int L) { return *m_levels[size_t(L - 1)].solver; }
     /// Level L's height at the patch's last step, interpolated in time, rows·cols row-major, m
     /// (the renderer's upload; made on the first call after a step, so not to be called from
     /// several threads at once: the queries below read pointwise and may).
@@ -80,12 +83,18 @@ public:
     float heightAt(int L, glm::vec2 world) const;
     /// Level L's vertical velocity at world (x, z): the Hermite's time derivative, m/s.
     float velocityAt(int L, glm::vec2 world) const;
+    /// Level L's horizontal surface velocity at world (x, z), (x, z) in m/s: the Hermite's time
+    /// derivative of its two states' horizontal displacement ξ and velocity u (EWaveField::
+    /// horizontalDisplacement, horizontalVelocity), i.e. the Riesz transform of velocityAt's v.
+    glm::vec2 horizontalVelocityAt(int L, glm::vec2 world) const;
     /// Level L's composite weight at world (x, z) (1 everywhere on the coarsest level).
     float weightAt(int L, glm::vec2 world) const;
     /// The composite value at `world` given level 0's value and weight there: each level takes
-    /// its weight of what the finer ones left, value(L, world) for L ≥ 1.
-    template <class Value> float composite(glm::vec2 world, float value0, float weight0, Value&& value) const {
-        float sum = weight0 * value0, rest = 1.0f - weight0;
+    /// its weight of what the finer ones left, value(L, world) for L ≥ 1 (float, or a vec2's
+    /// components alike).
+    template <class T, class Value> T composite(glm::vec2 world, T value0, float weight0, Value&& value) const {
+        T sum = weight0 * value0;
+        float rest = 1.0f - weight0;
         for (int L = 1; L < count() && rest > 0.0f; ++L) {
             const float w = weightAt(L, world);
             if (w > 0.0f) sum += rest * w * value(L, world);
@@ -116,6 +125,7 @@ private:
         int stride = 1;                         // frames per step
         int64_t a = 0, b = 0;                   // frames of the two states kept (b = the solver's)
         std::vector<float> h0, v0, h1, v1;      // (h, v) at frames a and b, m and m/s
+        std::vector<float> x0[2], u0[2], x1[2], u1[2];  // (ξ, u) per axis x, z at frames a and b, m and m/s (derived)
         mutable std::vector<float> shown;       // Hermite height at frame shownFrame, m (height())
         mutable int64_t shownFrame = -1;
         std::vector<WorldSource> queued;        // sources since its last step

@@ -86,6 +86,7 @@ void EWaveSolver::obstruct() {
 void obstructField(EWaveField& field, std::span<const ObstructionCell> cells) {
     obstructKeepingMean(field.editHeight(), cells, true);
     obstructKeepingMean(field.editVelocity(), cells);
+    for (const ObstructionCell& c : cells) field.scaleHorizontal(c.index, c.keep);
     field.syncHeight();
 }
 
@@ -114,8 +115,14 @@ float EWaveSolver::velocityAt(glm::vec2 g, float /*dt*/) const {
     return bilinear<double>(m_field.velocityState(), m_field.rows(), m_field.cols(), g);
 }
 
+glm::vec2 EWaveSolver::horizontalVelocityAt(glm::vec2 g) const {
+    const int rows = m_field.rows(), cols = m_field.cols();
+    return {bilinear<float>(m_field.horizontalVelocity(0), rows, cols, g), bilinear<float>(m_field.horizontalVelocity(1), rows, cols, g)};
+}
+
 void EWaveSolver::hashState(StateHasher& h) const {
-    // The whole state of the dispersive model: h and v, in double.
+    // The whole state of the dispersive model: h and v, in double (the horizontal velocity is
+    // derived from them: not state).
     h.bytes(m_field.heightState().data(), m_field.heightState().size_bytes());
     h.bytes(m_field.velocityState().data(), m_field.velocityState().size_bytes());
     if (m_craterVolume != 0.0) h.bytes(&m_craterVolume, sizeof m_craterVolume);  // between a crater and the step

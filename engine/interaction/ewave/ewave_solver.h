@@ -65,6 +65,11 @@ public:
     std::span<const float> height() const override { return m_field.height(); }
     /// v, bilinear at g in double (dt unused).
     float velocityAt(glm::vec2 g, float dt) const override;
+    /// The field's horizontal velocity (EWaveField::horizontalVelocity, exact per mode), bilinear
+    /// at g; 0 inside the bodies the obstruction masks (scaled by their keep factor as v is).
+    glm::vec2 horizontalVelocityAt(glm::vec2 g) const override;
+    /// EWaveField::velocityWavenumber.
+    float velocityWavenumber() const override { return float(m_field.velocityWavenumber()); }
     std::vector<RippleLevel> levels() const override { return {{"h", m_field.height()}}; }
     void hashState(StateHasher& h) const override;
     void retune(const RippleDef& def) override;
@@ -86,7 +91,8 @@ private:
 
 /// The iWave projection on an ewave field (docs/ewave.md#obstacles): h drawn towards each cell's
 /// level (0, or a hull's hollow) and v towards 0 by the cells' keep factors, each level's sum
-/// kept (obstructKeepingMean), the float copy rebuilt.
+/// kept (obstructKeepingMean), the float copy rebuilt; the derived horizontal velocity (and
+/// displacement) scaled by the keep factors too, towards 0 (no sum kept: it has no volume).
 /// EWaveSolver runs it after each step; tests run it on fields of any shape.
 void obstructField(EWaveField& field, std::span<const ObstructionCell> cells);
 

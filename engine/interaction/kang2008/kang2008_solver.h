@@ -12,6 +12,10 @@ namespace ob::interaction {
 /// RippleField behind the solver interface. Each sphere that stamps is written into Vh(t) and
 /// Vh(t−1) at once (stepSphere), before the step, as the paper does.
 ///
+/// Eq. 1–2 are a height field without a velocity law: the water's velocity it gives is the
+/// vertical one (velocityAt, the difference of its levels); its horizontal velocity is the
+/// interface's default, 0 (RippleSolver::horizontalVelocityAt), and velocityWavenumber 0.
+///
 /// On the GPU (setOffload, kang2008/gpu/): Table 2 still decides on the CPU against the field,
 /// the stamps and the step run in compute shaders, and Vh(t), Vh(t−1) are read back into the
 /// field after each step, so what is read (height, hash, dumps) is always the field.

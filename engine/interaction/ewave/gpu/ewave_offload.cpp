@@ -10,7 +10,10 @@ namespace ob::interaction {
 namespace {
 
 // The sources are already in the CPU field; it is uploaded when it changed (sources,
-// scrolling, edits), stepped, and h, v read back.
+// scrolling, edits), stepped, and h, v read back. The horizontal velocity (and
+// velocityWavenumber) is then derived on the CPU from the read-back state
+// (EWaveField::deriveHorizontal: one forward and two inverse FFTW transforms), not by the
+// compute shaders: the same law as the CPU step, after the GPU's boundary instead of before.
 class EWaveGpuOffload final : public EWaveSolver::Offload {
 public:
     explicit EWaveGpuOffload(EWaveField& field) : m_field(field), m_gpu(field) {}
@@ -20,6 +23,7 @@ public:
         m_gpu.step(dt);
         m_gpu.download(m_field.editHeight(), m_field.editVelocity());
         m_field.syncHeight();
+        m_field.deriveHorizontal();
     }
 
 private:
