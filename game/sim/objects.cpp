@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 #include <glm/gtc/matrix_transform.hpp>
 
 namespace ob::game {
@@ -174,16 +175,15 @@ static float rippleAround(const interaction::RipplePatch& patch, glm::vec2 xz, f
     return sum / 8.0f;
 }
 
-// The ripples' velocity round a body, on the same ring as rippleAround: (x, z) horizontal and y
-// vertical, m/s. Between a stamp and the next step the cells under a body always move, which is
-// no current; the waves arriving from elsewhere are.
-static glm::vec3 rippleVelocityAround(const interaction::RipplePatch& patch, glm::vec2 xz, float radius, float dt) {
+// The ripples' horizontal velocity round a body, on the same ring as rippleAround, m/s (x, z).
+// Their vertical velocity is left out, as their level is read apart: between a stamp and the
+// next step the cells near a body always move, which is no motion of the water to follow.
+static glm::vec2 rippleVelocityAround(const interaction::RipplePatch& patch, glm::vec2 xz, float radius) {
     const float ring = radius + 2.0f * patch.def().cell_size;
-    glm::vec3 sum(0.0f);
+    glm::vec2 sum(0.0f);
     for (int k = 0; k < 8; ++k) {
         const float a = float(k) * float(M_PI) / 4.0f;
-        const glm::vec2 p = xz + ring * glm::vec2(std::cos(a), std::sin(a));
-        sum.y += patch.velocityAt(p, dt);
+        sum += patch.horizontalVelocityAt(xz + ring * glm::vec2(std::cos(a), std::sin(a)));
     }
     return sum / 8.0f;
 }
@@ -215,8 +215,10 @@ void physicsSystem(ecs::World& world, const ecs::Tick& tick) {
 
     // --- water and air forces, per probe (Morison: buoyancy.h), then the behaviours' forces;
     // the added mass taken implicitly: with m_a = Σ ρ·C_a·V the body moves as if of mass
-    // m + m_a under every force but its weight's share, so every applied force is scaled by
-    // s = m/(m + m_a) and (1 − s)·m·g lifts it (what m_a's weight would not pull). Bullet keeps m.
+    // m + m_a under every force (m·dv/dt = F − m_a·dv/dt), so every applied force is scaled by
+    // s = m/(m + m_a) and (1 − s)·m·g lifts it (Bullet pulls m·g; m_a is weightless water). Bullet keeps m.
+    // A light body (a ball of 1 kg/m³) then rises at (ρ/ρ_body − 1)·g/(1 + ρ·C_a/ρ_body) ≈ 2g,
+    // not at 1000 g.
     auto& bodies = world.pool<Body>();
     std::vector<physics::ProbeForce> forces;
     for (size_t b = 0; b < bodies.size(); ++b) {
@@ -245,10 +247,15 @@ void physicsSystem(ecs::World& world, const ecs::Tick& tick) {
             p.surfaceHeight = w.height;
             p.surfaceNormal = w.normal;
             p.waterVelocity = water->velocityAt(p.centre, sea);
+            const glm::vec3 ocean = p.waterVelocity;  // what a hull steers through (its own wake left out)
             if (patch) {
                 const glm::vec2 xz(p.centre.x, p.centre.z);
-                p.surfaceHeight += rippleAround(*patch, xz, reach);
-                p.waterVelocity += rippleVelocityAround(*patch, xz, reach, dt);
+                const float level = rippleAround(*patch, xz, reach);
+                p.surfaceHeight += level;
+                // e^{kz}, z from the level the ripples ride on (an Eulerian layer: CompositeWater::velocityAt)
+                const glm::vec2 u = rippleVelocityAround(*patch, xz, reach) *
+                                    std::exp(patch->velocityWavenumber() * std::min(p.centre.y - w.height, level));
+                p.waterVelocity += glm::vec3(u.x, 0.0f, u.y);
             }
             const glm::vec3 before = body.probeWater[k];
             body.probeWater[k] = p.waterVelocity;
@@ -267,14 +274,19 @@ void physicsSystem(ecs::World& world, const ecs::Tick& tick) {
             submerged += f.submergedFraction * v;
             addedMass += f.addedMass;
             if (f.submergedFraction > 0.0f) {
-                waterSum += p.waterVelocity * f.submergedFraction;
+                waterSum += ocean * f.submergedFraction;
                 wet += f.submergedFraction;
             }
         }
         body.submergedFraction = probeVolume > 0.0f ? submerged / probeVolume : 0.0f;
+        if (body.submergedFraction == 0.0f)  // in flight: a ballistic body (windage is leeway, the drift of what floats)
+            for (physics::ProbeForce& f : forces) f.force -= std::exchange(f.airForce, glm::vec3(0.0f));
         body.waterVelocity = wet > 0.0f ? waterSum / wet : glm::vec3(0.0f);
 
-        const float scale = mass / (mass + addedMass);
+        // Horizontally the added mass counts as much as the probes' drag does (ships: not at
+        // all; their hull model, tuned on the hull's own surge and sway, stands in for it).
+        const glm::vec3 scale(mass / (mass + body.horizontalDrag * addedMass), mass / (mass + addedMass),
+                              mass / (mass + body.horizontalDrag * addedMass));
         glm::vec3 outside(0.0f);  // the forces from outside the water: air, hands, moorings
         for (size_t k = 0; k < forces.size(); ++k) {
             const physics::ProbeForce& f = forces[k];
@@ -289,7 +301,7 @@ void physicsSystem(ecs::World& world, const ecs::Tick& tick) {
         }
         body.forces.clear();
         if (addedMass > 0.0f) {
-            physicsWorld->applyForce(body.id, glm::vec3(0.0f, (1.0f - scale) * mass * gravity, 0.0f), s.position);
+            physicsWorld->applyForce(body.id, glm::vec3(0.0f, (1.0f - scale.y) * mass * gravity, 0.0f), s.position);
             // The added mass's reaction: the water the body drags along took (1 − s) of the outside forces.
             if (impulses) impulses->react((scale - 1.0f) * outside, s.position, dt, std::max(reach, 0.5f));
         }

@@ -97,7 +97,9 @@ void addRipples(ecs::World& world, const interaction::RippleDef& def, float step
     if (OceanState* ocean = world.resource<OceanState>()) {
         const float dt = stepSeconds;
         ocean->water->setRipple({[&patch](float x, float z) { return patch.heightAt({x, z}); },
-                                 [&patch, dt](float x, float z) { return patch.velocityAt({x, z}, dt); }, {}, 0.5f * def.cell_size});
+                                 [&patch, dt](float x, float z) { return patch.velocityAt({x, z}, dt); }, {}, 0.5f * def.cell_size,
+                                 [&patch](float x, float z) { return patch.horizontalVelocityAt({x, z}); },
+                                 [&patch] { return patch.velocityWavenumber(); }});
     }
 }
 
