@@ -18,14 +18,18 @@ constexpr int ROW_CHUNK = 128;
 
 // Bilinear value of a row-major field on the departure point (x − a, z − b) in samples, from the
 // sample at the centre of a 3 × 3 neighbourhood (rows rm = z − 1, r0 = z, rp = z + 1, column pi)
-// for |a|, |b| ≤ 1: the stencil is the sample and its upstream neighbours along each axis.
+// for |a|, |b| ≤ 1: the stencil is the sample and its upstream neighbours along each axis. All
+// nine samples are read and the upstream ones chosen by selects, so a row is one vector loop.
 inline float upstreamBilinear(const float* rm, const float* r0, const float* rp, int pi, float a, float b) {
+    const float mW = rm[pi - 1], mC = rm[pi], mE = rm[pi + 1];
+    const float cW = r0[pi - 1], cC = r0[pi], cE = r0[pi + 1];
+    const float pW = rp[pi - 1], pC = rp[pi], pE = rp[pi + 1];
+    const bool east = a <= 0.0f, north = b <= 0.0f;  // the departure point lies toward +x, +z
     const float ax = std::abs(a), bz = std::abs(b);
-    const float side = a > 0.0f ? r0[pi - 1] : r0[pi + 1];
-    const float* rz = b > 0.0f ? rm : rp;
-    const float up = rz[pi];
-    const float corner = a > 0.0f ? rz[pi - 1] : rz[pi + 1];
-    return (1.0f - bz) * ((1.0f - ax) * r0[pi] + ax * side) + bz * ((1.0f - ax) * up + ax * corner);
+    const float side = east ? cE : cW;
+    const float up = north ? pC : mC;
+    const float corner = north ? (east ? pE : pW) : (east ? mE : mW);
+    return (1.0f - bz) * ((1.0f - ax) * cC + ax * side) + bz * ((1.0f - ax) * up + ax * corner);
 }
 
 // One row of u faces, columns [1, n] of the padded row (all its faces). ur*: the u rows j − 1, j,

@@ -4,6 +4,7 @@
 
 #include "currents/current_advection.h"
 #include "currents/current_projection.h"
+#include "core/simd.h"
 
 #include <algorithm>
 #include <cassert>
@@ -36,6 +37,8 @@ CurrentLayer::CurrentLayer(const CurrentsDef& def, float waterDensity)
     m_u0 = m_u;
     m_v0 = m_v;
     m_projection = std::make_unique<CurrentProjection>(def.resolution);
+    m_openCount = glm::dvec2(double(def.resolution) * double(def.resolution));
+    m_sum = faceSum();
 }
 
 CurrentLayer::~CurrentLayer() = default;
@@ -51,6 +54,7 @@ void CurrentLayer::centerOn(glm::vec2 world) {
     scrollCells(m_v.data(), s, s, shift, bg.y);
     fillGhosts();
     m_projection->scroll(shift);
+    m_sum = faceSum();  // what left and what entered
 }
 
 void CurrentLayer::setWind(glm::vec2 u10) { m_wind = u10; }
@@ -74,6 +78,7 @@ void CurrentLayer::setFaces(std::span<const float> u, std::span<const float> v) 
             m_u[at(i, j)] = u[size_t(j) * size_t(n) + size_t(i)];
             m_v[at(i, j)] = v[size_t(j) * size_t(n) + size_t(i)];
         }
+    m_sum = faceSum();
 }
 
 // --- the step
@@ -84,34 +89,42 @@ void CurrentLayer::step(float dt) {
     // --- forcing: the background's change, wind, decay, sources, impulses (each exact over dt)
     applyForcing(dt);
     fillGhosts();
-    if (m_walls) zeroWallFaces();
+    if (m_walls) {
+        zeroWallFaces();  // what a wall closed over is the wall's
+        m_sum = faceSum();
+    }
     // --- self-advection, then the global conservative correction: semi-Lagrangian resampling
     // does not keep Σu (neither in the interior, where the bilinear weights of a non-uniform
     // backtrace do not sum to one per source face, nor at the edges, where the ghost ring's
-    // background replaces what leaves). The layer's momentum before it is given back as one
-    // uniform velocity over the open faces: a uniform field has no divergence and no
-    // shear, so the projection below keeps it, and the layer's momentum changes only by the
-    // forcing (and the walls' pressure).
-    const glm::dvec2 before = faceSum();
-    m_u0 = m_u;
-    m_v0 = m_v;
-    advectFaces(m_u0.data(), m_v0.data(), m_u.data(), m_v.data(), m_grid.n, m_grid.cell, dt);
+    // background replaces what leaves). The sum before it (m_sum: kept through the forcing, whose
+    // every change is known, so no pass sums it) is given back as one uniform velocity over the
+    // open faces: a uniform field has no divergence and no shear, so the projection below keeps
+    // it, and the layer's momentum changes only by the forcing (and the walls' pressure).
+    advectFaces(m_u.data(), m_v.data(), m_u0.data(), m_v0.data(), m_grid.n, m_grid.cell, dt);
+    m_u.swap(m_u0);
+    m_v.swap(m_v0);
+    fillGhosts();  // the other buffer's ring
     if (m_walls) zeroWallFaces();
+    glm::dvec2 correction(0.0);
     if (m_conserve) {
-        const size_t open = m_walls ? size_t(std::count(m_openU.begin(), m_openU.end(), uint8_t(1))) : size_t(m_grid.n) * size_t(m_grid.n);
-        const size_t openV = m_walls ? size_t(std::count(m_openV.begin(), m_openV.end(), uint8_t(1))) : open;
         const glm::dvec2 after = faceSum();
-        addUniform(glm::dvec2(open ? (before.x - after.x) / double(open) : 0.0, openV ? (before.y - after.y) / double(openV) : 0.0));
+        correction = glm::dvec2(m_openCount.x > 0.0 ? (m_sum.x - after.x) / m_openCount.x : 0.0,
+                                m_openCount.y > 0.0 ? (m_sum.y - after.y) / m_openCount.y : 0.0);
     }
     // --- projection: no divergence, no flow through walls
     if (m_walls) {
+        addUniform(correction);
         float speed = std::max(glm::length(background()), MIN_SPEED_SCALE);
         for (int j = 0; j < m_grid.n; ++j)
             for (int i = 0; i < m_grid.n; ++i) speed = std::max({speed, std::abs(m_u[at(i, j)]), std::abs(m_v[at(i, j)])});
         m_wallSolve = m_projection->projectWithWalls(m_u.data(), m_v.data(), m_solid.data(), WALL_TOLERANCE * speed, WALL_MAX_ITERATIONS);
+        m_sum = faceSum();  // the walls' pressure moved momentum
     } else {
-        m_projection->projectPeriodic(m_u.data(), m_v.data());
+        // The correction rides on the gradient's pass (a uniform field adds no divergence); the
+        // projection keeps Σu (k = 0), so m_sum stands.
+        m_projection->projectPeriodic(m_u.data(), m_v.data(), glm::vec2(correction));
         m_wallSolve = {};
+        if (!m_conserve) m_sum = faceSum();
     }
 }
 
@@ -120,6 +133,7 @@ void CurrentLayer::rasteriseWalls() {
     const int n = m_grid.n;
     const bool had = m_walls;
     m_walls = false;
+    m_openCount = glm::dvec2(double(n) * double(n));
     if (m_shapes.empty()) {
         if (had) m_projection->clearWarmStart();
         return;
@@ -141,6 +155,8 @@ void CurrentLayer::rasteriseWalls() {
             m_openU[c] = open && !m_solid[size_t(j) * size_t(n) + size_t((i + 1) % n)];
             m_openV[c] = open && !m_solid[size_t((j + 1) % n) * size_t(n) + size_t(i)];
         }
+    m_openCount = glm::dvec2(double(std::count(m_openU.begin(), m_openU.end(), uint8_t(1))),
+                             double(std::count(m_openV.begin(), m_openV.end(), uint8_t(1))));
 }
 
 void CurrentLayer::applyForcing(float dt) {
@@ -161,6 +177,8 @@ void CurrentLayer::applyForcing(float dt) {
     const glm::vec2 bg = background();
     if (m_def.decay_time > 0.0f) {
         const float a = float(std::exp(-double(dt) / double(m_def.decay_time)));
+        const glm::dvec2 bgSum = glm::dvec2(bg) * m_openCount;
+        m_sum = bgSum + (m_sum - bgSum) * double(a);
         for (int j = 0; j < n; ++j) {
             float* ur = m_u.data() + at(0, j);
             float* vr = m_v.data() + at(0, j);
@@ -178,15 +196,20 @@ void CurrentLayer::applyForcing(float dt) {
         const int z0 = std::max(0, int(std::floor(g.y - R - 1.0f))), z1 = std::min(n - 1, int(std::ceil(g.y + R + 1.0f)));
         for (int j = z0; j <= z1; ++j)
             for (int i = x0; i <= x1; ++i) {
-                const float wu = discWeight(glm::length(glm::vec2(float(i) + 0.5f, float(j)) - g), R);
-                const float wv = discWeight(glm::length(glm::vec2(float(i), float(j) + 0.5f) - g), R);
+                const size_t c = size_t(j) * size_t(n) + size_t(i);
+                const float wu = m_walls && !m_openU[c] ? 0.0f : discWeight(glm::length(glm::vec2(float(i) + 0.5f, float(j)) - g), R);
+                const float wv = m_walls && !m_openV[c] ? 0.0f : discWeight(glm::length(glm::vec2(float(i), float(j) + 0.5f) - g), R);
                 if (wu > 0.0f) {
                     const float f = float(std::exp(-double(wu) * double(dt) / double(src.time)));
-                    m_u[at(i, j)] = src.velocity.x + (m_u[at(i, j)] - src.velocity.x) * f;
+                    const float old = m_u[at(i, j)];
+                    m_u[at(i, j)] = src.velocity.x + (old - src.velocity.x) * f;
+                    m_sum.x += double(m_u[at(i, j)]) - double(old);
                 }
                 if (wv > 0.0f) {
                     const float f = float(std::exp(-double(wv) * double(dt) / double(src.time)));
-                    m_v[at(i, j)] = src.velocity.y + (m_v[at(i, j)] - src.velocity.y) * f;
+                    const float old = m_v[at(i, j)];
+                    m_v[at(i, j)] = src.velocity.y + (old - src.velocity.y) * f;
+                    m_sum.y += double(m_v[at(i, j)]) - double(old);
                 }
             }
     }
@@ -220,8 +243,10 @@ void CurrentLayer::depositImpulse(const Impulse& imp) {
     const double dv = sumV > 0.0 ? double(imp.impulse.y) / (sumV * faceMass) : 0.0;
     for (int j = z0; j <= z1; ++j)
         for (int i = x0; i <= x1; ++i) {
-            m_u[at(i, j)] += float(du * weightU(i, j));
-            m_v[at(i, j)] += float(dv * weightV(i, j));
+            const float ou = m_u[at(i, j)], ov = m_v[at(i, j)];
+            m_u[at(i, j)] = ou + float(du * weightU(i, j));
+            m_v[at(i, j)] = ov + float(dv * weightV(i, j));
+            m_sum += glm::dvec2(double(m_u[at(i, j)]) - double(ou), double(m_v[at(i, j)]) - double(ov));
         }
 }
 
@@ -244,29 +269,39 @@ void CurrentLayer::zeroWallFaces() {
         }
 }
 
-// Σ over the open faces, in double, in index order (the same bits whatever the workers did).
+// Σ over the open faces, in double: each row in sixteen interleaved partial sums (a vector's lanes,
+// in a fixed order), rows in index order, so the bits do not depend on the workers.
+namespace {
+OB_VECTOR_KERNEL double rowSum(const float* r, const uint8_t* open, int n) {
+    constexpr int LANES = 16;  // four AVX2 vectors of doubles: the adds' latency hidden
+    double lane[LANES] = {};
+    int i = 0;
+    if (open)
+        for (; i + LANES <= n; i += LANES)
+            for (int l = 0; l < LANES; ++l) lane[l] += double(r[i + l]) * double(open[i + l]);
+    else
+        for (; i + LANES <= n; i += LANES)
+            for (int l = 0; l < LANES; ++l) lane[l] += double(r[i + l]);
+    for (; i < n; ++i) lane[0] += double(r[i]) * (open ? double(open[i]) : 1.0);
+    double sum = 0.0;
+    for (int l = 0; l < LANES; ++l) sum += lane[l];
+    return sum;
+}
+} // namespace
+
 glm::dvec2 CurrentLayer::faceSum() const {
     const int n = m_grid.n;
     double su = 0.0, sv = 0.0;
     for (int j = 0; j < n; ++j) {
-        const float* ur = m_u.data() + at(0, j);
-        const float* vr = m_v.data() + at(0, j);
-        if (!m_walls) {
-            for (int i = 0; i < n; ++i) su += ur[i], sv += vr[i];
-            continue;
-        }
-        const uint8_t* ou = m_openU.data() + size_t(j) * size_t(n);
-        const uint8_t* ov = m_openV.data() + size_t(j) * size_t(n);
-        for (int i = 0; i < n; ++i) {
-            if (ou[i]) su += ur[i];
-            if (ov[i]) sv += vr[i];
-        }
+        su += rowSum(m_u.data() + at(0, j), m_walls ? m_openU.data() + size_t(j) * size_t(n) : nullptr, n);
+        sv += rowSum(m_v.data() + at(0, j), m_walls ? m_openV.data() + size_t(j) * size_t(n) : nullptr, n);
     }
     return {su, sv};
 }
 
 void CurrentLayer::addUniform(glm::dvec2 du) {
     const int n = m_grid.n;
+    m_sum += du * m_openCount;
     const float dx = float(du.x), dz = float(du.y);
     for (int j = 0; j < n; ++j) {
         float* ur = m_u.data() + at(0, j);

@@ -117,7 +117,7 @@ public:
 
     /// Switches the global momentum correction after the advection (on by default; tests switch
     /// it off to show the drift it removes).
-    void setConserveMomentum(bool on) { m_conserve = on; }
+    void setConserveMomentum(bool on) { m_conserve = on, m_sum = faceSum(); }
 
 private:
     struct Impulse {
@@ -147,6 +147,8 @@ private:
     glm::vec2 m_drift{0.0f};               // the wind-driven part of the background, m/s
     glm::vec2 m_appliedUniform{0.0f};      // the uniform the field holds (a retune shifts it at the next step)
     bool m_conserve = true;
+    glm::dvec2 m_sum{0.0};                 // Σ over the open faces as the forcing left it (kept, not summed: see step())
+    glm::dvec2 m_openCount{0.0};           // open u faces, open v faces
     bool m_walls = false;                  // some wall cell this step
     WallSolve m_wallSolve;
     std::unique_ptr<CurrentProjection> m_projection;

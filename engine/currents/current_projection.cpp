@@ -77,17 +77,19 @@ void CurrentProjection::divergence(const float* u, const float* v, float* out) c
     const int n = m_n;
     parallelFor(0, n, ROW_CHUNK, [&](int lo, int hi) {
         for (int j = lo; j < hi; ++j) {
-            const int js = wrap(j - 1, n);
-            for (int i = 0; i < n; ++i)
-                out[size_t(j) * size_t(n) + size_t(i)] =
-                    (u[face(i, j)] - u[face(wrap(i - 1, n), j)]) + (v[face(i, j)] - v[face(i, js)]);
+            const float* ur = u + face(0, j);
+            const float* vr = v + face(0, j);
+            const float* vs = v + face(0, wrap(j - 1, n));
+            float* o = out + size_t(j) * size_t(n);
+            o[0] = (ur[0] - ur[n - 1]) + (vr[0] - vs[0]);
+            for (int i = 1; i < n; ++i) o[i] = (ur[i] - ur[i - 1]) + (vr[i] - vs[i]);
         }
     });
 }
 
 // u(i, j) −= φ(i + 1, j) − φ(i, j), v(i, j) −= φ(i, j + 1) − φ(i, j), periodic; with `solid`, only
 // faces between two open cells (the rest stay 0).
-void CurrentProjection::applyGradient(float* u, float* v, const float* phi, const uint8_t* solid) const {
+void CurrentProjection::applyGradient(float* u, float* v, const float* phi, const uint8_t* solid, glm::vec2 add) const {
     const int n = m_n;
     parallelFor(0, n, ROW_CHUNK, [&](int lo, int hi) {
         for (int j = lo; j < hi; ++j) {
@@ -97,9 +99,9 @@ void CurrentProjection::applyGradient(float* u, float* v, const float* phi, cons
             float* ur = u + face(0, j);
             float* vr = v + face(0, j);
             if (!solid) {
-                for (int i = 0; i < n - 1; ++i) ur[i] -= p[i + 1] - p[i];
-                ur[n - 1] -= p[0] - p[n - 1];
-                for (int i = 0; i < n; ++i) vr[i] -= pn[i] - p[i];
+                for (int i = 0; i < n - 1; ++i) ur[i] = (ur[i] - (p[i + 1] - p[i])) + add.x;
+                ur[n - 1] = (ur[n - 1] - (p[0] - p[n - 1])) + add.x;
+                for (int i = 0; i < n; ++i) vr[i] = (vr[i] - (pn[i] - p[i])) + add.y;
                 continue;
             }
             const uint8_t* s = solid + size_t(j) * size_t(n);
@@ -113,7 +115,7 @@ void CurrentProjection::applyGradient(float* u, float* v, const float* phi, cons
     });
 }
 
-void CurrentProjection::projectPeriodic(float* u, float* v) {
+void CurrentProjection::projectPeriodic(float* u, float* v, glm::vec2 add) {
     const size_t modes = size_t(m_n) * size_t(m_n / 2 + 1);
     divergence(u, v, m_div);
     fftwf_execute_dft_r2c(m_forward, m_div, reinterpret_cast<fftwf_complex*>(m_spec));
@@ -122,7 +124,7 @@ void CurrentProjection::projectPeriodic(float* u, float* v) {
         m_spec[2 * m + 1] *= m_coef[m];
     }
     fftwf_execute_dft_c2r(m_backward, reinterpret_cast<fftwf_complex*>(m_spec), m_phiFft);
-    applyGradient(u, v, m_phiFft, nullptr);
+    applyGradient(u, v, m_phiFft, nullptr, add);
 }
 
 // (A·x)_c = Σ_n (x_c − x_n) over c's open neighbours; 0 on walls.

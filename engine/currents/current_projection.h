@@ -33,7 +33,8 @@ public:
     CurrentProjection& operator=(const CurrentProjection&) = delete;
 
     /// Makes the faces divergence-free on the periodic n × n grid (no walls); k = 0 untouched.
-    void projectPeriodic(float* u, float* v);
+    /// `add` (m/s) is added to every face in the same pass (a uniform flow: no divergence).
+    void projectPeriodic(float* u, float* v, glm::vec2 add = glm::vec2(0.0f));
     /// With `solid` (n² cells, 1 = wall): projectPeriodic, faces touching a wall zeroed, then
     /// MIC(0)-PCG on the open cells until max |D| ≤ tolerance (m/s) or maxIterations.
     WallSolve projectWithWalls(float* u, float* v, const uint8_t* solid, float tolerance, int maxIterations);
@@ -48,7 +49,7 @@ public:
 
 private:
     size_t face(int i, int j) const { return size_t(j + 1) * size_t(m_n + 2) + size_t(i + 1); }
-    void applyGradient(float* u, float* v, const float* phi, const uint8_t* solid) const;
+    void applyGradient(float* u, float* v, const float* phi, const uint8_t* solid, glm::vec2 add = glm::vec2(0.0f)) const;
     void factor(const uint8_t* solid);
     void applyA(const float* x, float* out, const uint8_t* solid) const;
     void precondition(const float* r, float* z, const uint8_t* solid);
