@@ -12,10 +12,6 @@ namespace ob::currents {
 
 namespace {
 
-// Rows a worker takes at least (below 2× this a grid is advected inline: a 128² step is
-// ~40 µs, about what waking a worker costs).
-constexpr int ROW_CHUNK = 128;
-
 // Bilinear value of a row-major field on the departure point (x − a, z − b) in samples, from the
 // sample at the centre of a 3 × 3 neighbourhood (rows rm = z − 1, r0 = z, rp = z + 1, column pi)
 // for |a|, |b| ≤ 1: the stencil is the sample and its upstream neighbours along each axis. All
@@ -96,10 +92,10 @@ float samplePadded(const float* f, int n, glm::vec2 p) {
     return (1.0f - tz) * ((1.0f - tx) * r0[x0] + tx * r0[x0 + 1]) + tz * ((1.0f - tx) * r1[x0] + tx * r1[x0 + 1]);
 }
 
-void advectFaces(const float* u0, const float* v0, float* u, float* v, int n, float cell, float dt) {
+void advectFaces(const float* u0, const float* v0, float* u, float* v, int n, float cell, float dt, int threads) {
     const size_t s = size_t(n + 2);
     const float k = dt / cell;
-    parallelFor(0, n, ROW_CHUNK, [&](int lo, int hi) {
+    parallelFor(0, n, threads > 1 ? (n + threads - 1) / threads : n, [&](int lo, int hi) {
         for (int j = lo; j < hi; ++j) {
             const size_t pj = size_t(j + 1);
             const float* um = u0 + (pj - 1) * s;

@@ -13,8 +13,9 @@
 namespace ob::currents {
 
 /// Advects the faces u0, v0 (padded (n + 2)², ghost ring = background) over dt s on cells of
-/// `cell` m into u, v (same layout; the ghost ring is not written).
-void advectFaces(const float* u0, const float* v0, float* u, float* v, int n, float cell, float dt);
+/// `cell` m into u, v (same layout; the ghost ring is not written), the rows split over at most
+/// `threads` workers.
+void advectFaces(const float* u0, const float* v0, float* u, float* v, int n, float cell, float dt, int threads = 1);
 
 /// Bilinear lookup of a padded face array at padded coordinates p (clamped to the ghost ring:
 /// beyond it the ghosts' background).

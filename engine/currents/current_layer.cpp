@@ -5,10 +5,13 @@
 #include "currents/current_advection.h"
 #include "currents/current_projection.h"
 #include "core/simd.h"
+#include "core/parallel.h"
+#include "core/thread_choice.h"
 
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <string>
 
 namespace ob::currents {
 
@@ -20,6 +23,8 @@ namespace {
 constexpr float WALL_TOLERANCE = 1e-4f;
 constexpr float MIN_SPEED_SCALE = 0.01f;  // m/s
 constexpr int WALL_MAX_ITERATIONS = 200;
+// Grids from this side on have their step's threads measured; smaller ones run on one.
+constexpr int PARALLEL_MIN_RESOLUTION = 256;
 
 // Weight of a point r cells from a disc's centre, R cells its radius: 1 inside, a linear edge one
 // cell wide centred on the rim (a small or moving disc changes what it covers smoothly).
@@ -39,6 +44,22 @@ CurrentLayer::CurrentLayer(const CurrentsDef& def, float waterDensity)
     m_projection = std::make_unique<CurrentProjection>(def.resolution);
     m_openCount = glm::dvec2(double(def.resolution) * double(def.resolution));
     m_sum = faceSum();
+    chooseThreads();
+}
+
+// One thread or two for the open step's advection and projection, measured once per machine and
+// size (core/thread_choice.h) from 256² on (below, a hand-off costs more than half the work): on
+// scratch copies of the faces, so the state is untouched. The bits do not depend on the choice.
+void CurrentLayer::chooseThreads() {
+    const int n = m_grid.n;
+    if (n < PARALLEL_MIN_RESOLUTION) return;
+    const std::string size = std::to_string(n) + "x" + std::to_string(n);
+    m_threads = measuredThreads("currents step " + size, std::min(2, workerCount()), [&](int threads) {
+        m_projection->setThreads(threads);
+        advectFaces(m_u.data(), m_v.data(), m_u0.data(), m_v0.data(), n, m_grid.cell, 1.0f / 60.0f, threads);
+        m_projection->projectPeriodic(m_u0.data(), m_v0.data());
+    });
+    m_projection->setThreads(m_threads);
 }
 
 CurrentLayer::~CurrentLayer() = default;
@@ -100,7 +121,7 @@ void CurrentLayer::step(float dt) {
     // every change is known, so no pass sums it) is given back as one uniform velocity over the
     // open faces: a uniform field has no divergence and no shear, so the projection below keeps
     // it, and the layer's momentum changes only by the forcing (and the walls' pressure).
-    advectFaces(m_u.data(), m_v.data(), m_u0.data(), m_v0.data(), m_grid.n, m_grid.cell, dt);
+    advectFaces(m_u.data(), m_v.data(), m_u0.data(), m_v0.data(), m_grid.n, m_grid.cell, dt, m_threads);
     m_u.swap(m_u0);
     m_v.swap(m_v0);
     fillGhosts();  // the other buffer's ring

@@ -132,6 +132,7 @@ private:
     void zeroWallFaces();
     glm::dvec2 faceSum() const;
     void addUniform(glm::dvec2 du);
+    void chooseThreads();
 
     CurrentsDef m_def;
     float m_rho;
@@ -150,6 +151,7 @@ private:
     glm::dvec2 m_sum{0.0};                 // Σ over the open faces as the forcing left it (kept, not summed: see step())
     glm::dvec2 m_openCount{0.0};           // open u faces, open v faces
     bool m_walls = false;                  // some wall cell this step
+    int m_threads = 1;                     // workers the advection and the projection's loops split over (measured)
     WallSolve m_wallSolve;
     std::unique_ptr<CurrentProjection> m_projection;
 };

@@ -18,9 +18,6 @@ namespace ob::currents {
 
 namespace {
 
-// Rows a worker takes at least: below 2× this the loops run inline (a hand-off costs about what
-// 64 rows of 256 cells of these loops do).
-constexpr int ROW_CHUNK = 64;
 // MIC(0)'s modification weight and its safeguard (the factor falls back to the diagonal where
 // the modified pivot is below SAFETY × the diagonal).
 constexpr double MIC_TAU = 0.97;
@@ -75,7 +72,7 @@ CurrentProjection::~CurrentProjection() {
 
 void CurrentProjection::divergence(const float* u, const float* v, float* out) const {
     const int n = m_n;
-    parallelFor(0, n, ROW_CHUNK, [&](int lo, int hi) {
+    parallelFor(0, n, rowChunk(), [&](int lo, int hi) {
         for (int j = lo; j < hi; ++j) {
             const float* ur = u + face(0, j);
             const float* vr = v + face(0, j);
@@ -91,7 +88,7 @@ void CurrentProjection::divergence(const float* u, const float* v, float* out) c
 // faces between two open cells (the rest stay 0).
 void CurrentProjection::applyGradient(float* u, float* v, const float* phi, const uint8_t* solid, glm::vec2 add) const {
     const int n = m_n;
-    parallelFor(0, n, ROW_CHUNK, [&](int lo, int hi) {
+    parallelFor(0, n, rowChunk(), [&](int lo, int hi) {
         for (int j = lo; j < hi; ++j) {
             const int jn = wrap(j + 1, n);
             const float* p = phi + size_t(j) * size_t(n);
@@ -127,24 +124,29 @@ void CurrentProjection::projectPeriodic(float* u, float* v, glm::vec2 add) {
     applyGradient(u, v, m_phiFft, nullptr, add);
 }
 
-// (A·x)_c = Σ_n (x_c − x_n) over c's open neighbours; 0 on walls.
+// (A·x)_c = Σ_n (x_c − x_n) over c's open neighbours; 0 on walls. A wall's x is 0 and its
+// open-neighbour weight `o` 0, so a row is a vector loop over its interior.
 void CurrentProjection::applyA(const float* x, float* out, const uint8_t* solid) const {
     const int n = m_n;
     for (int j = 0; j < n; ++j) {
-        const int js = wrap(j - 1, n), jn = wrap(j + 1, n);
-        for (int i = 0; i < n; ++i) {
-            const size_t c = size_t(j) * size_t(n) + size_t(i);
-            if (solid[c]) {
-                out[c] = 0.0f;
-                continue;
-            }
-            const size_t nb[4] = {size_t(j) * size_t(n) + size_t(wrap(i - 1, n)), size_t(j) * size_t(n) + size_t(wrap(i + 1, n)),
-                                  size_t(js) * size_t(n) + size_t(i), size_t(jn) * size_t(n) + size_t(i)};
+        const size_t r = size_t(j) * size_t(n), rs = size_t(wrap(j - 1, n)) * size_t(n), rn = size_t(wrap(j + 1, n)) * size_t(n);
+        auto cell = [&](int i, int iw, int ie) {
+            const size_t c = r + size_t(i);
+            if (solid[c]) return 0.0f;
             float sum = 0.0f;
-            for (size_t k : nb)
+            for (size_t k : {r + size_t(iw), r + size_t(ie), rs + size_t(i), rn + size_t(i)})
                 if (!solid[k]) sum += x[c] - x[k];
-            out[c] = sum;
+            return sum;
+        };
+        out[r] = cell(0, n - 1, 1);
+        for (int i = 1; i < n - 1; ++i) {
+            const size_t c = r + size_t(i);
+            const float o = solid[c] ? 0.0f : 1.0f;
+            const float ow = solid[c - 1] ? 0.0f : 1.0f, oe = solid[c + 1] ? 0.0f : 1.0f;
+            const float os = solid[rs + size_t(i)] ? 0.0f : 1.0f, on = solid[rn + size_t(i)] ? 0.0f : 1.0f;
+            out[c] = o * (ow * (x[c] - x[c - 1]) + oe * (x[c] - x[c + 1]) + os * (x[c] - x[rs + size_t(i)]) + on * (x[c] - x[rn + size_t(i)]));
         }
+        out[r + size_t(n - 1)] = cell(n - 1, n - 2, 0);
     }
 }
 
@@ -188,35 +190,35 @@ void CurrentProjection::factor(const uint8_t* solid) {
 }
 
 // z = (L·Lᵀ)⁻¹·r with L's off-diagonals A_ck·p_k = −p_k: forward then backward substitution.
-void CurrentProjection::precondition(const float* r, float* z, const uint8_t* solid) {
+// Walls and lone cells have p = 0, so they pass 0 on. In index order a cell's earlier neighbours
+// are W and S, and, across the periodic edges, E of the last column and N of the last row.
+void CurrentProjection::precondition(const float* r, float* z, const uint8_t* /*solid*/) {
     const int n = m_n;
-    const size_t cells = size_t(n) * size_t(n);
+    const float* p = m_precon.data();
     float* q = m_q.data();
-    for (size_t c = 0; c < cells; ++c) {
-        if (solid[c] || m_precon[c] == 0.0f) {
-            q[c] = 0.0f;
-            continue;
+    for (int j = 0; j < n; ++j) {
+        const size_t row = size_t(j) * size_t(n), south = size_t(wrap(j - 1, n)) * size_t(n);
+        for (int i = 0; i < n; ++i) {
+            const size_t c = row + size_t(i);
+            float t = r[c];
+            if (i > 0) t += p[c - 1] * q[c - 1];
+            if (j > 0) t += p[south + size_t(i)] * q[south + size_t(i)];
+            if (i == n - 1) t += p[row] * q[row];
+            if (j == n - 1) t += p[size_t(i)] * q[size_t(i)];
+            q[c] = t * p[c];
         }
-        const int i = int(c % size_t(n)), j = int(c / size_t(n));
-        const size_t nb[4] = {size_t(j) * size_t(n) + size_t(wrap(i - 1, n)), size_t(j) * size_t(n) + size_t(wrap(i + 1, n)),
-                              size_t(wrap(j - 1, n)) * size_t(n) + size_t(i), size_t(wrap(j + 1, n)) * size_t(n) + size_t(i)};
-        double t = r[c];
-        for (size_t k : nb)
-            if (k < c && !solid[k]) t += double(m_precon[k]) * q[k];
-        q[c] = float(t * m_precon[c]);
     }
-    for (size_t c = cells; c-- > 0;) {
-        if (solid[c] || m_precon[c] == 0.0f) {
-            z[c] = 0.0f;
-            continue;
+    for (int j = n - 1; j >= 0; --j) {
+        const size_t row = size_t(j) * size_t(n), north = size_t(wrap(j + 1, n)) * size_t(n);
+        for (int i = n - 1; i >= 0; --i) {
+            const size_t c = row + size_t(i);
+            float t = 0.0f;
+            if (i < n - 1) t += z[c + 1];
+            if (j < n - 1) t += z[north + size_t(i)];
+            if (i == 0) t += z[row + size_t(n - 1)];
+            if (j == 0) t += z[size_t(n - 1) * size_t(n) + size_t(i)];
+            z[c] = (q[c] + p[c] * t) * p[c];
         }
-        const int i = int(c % size_t(n)), j = int(c / size_t(n));
-        const size_t nb[4] = {size_t(j) * size_t(n) + size_t(wrap(i - 1, n)), size_t(j) * size_t(n) + size_t(wrap(i + 1, n)),
-                              size_t(wrap(j - 1, n)) * size_t(n) + size_t(i), size_t(wrap(j + 1, n)) * size_t(n) + size_t(i)};
-        double t = 0.0;
-        for (size_t k : nb)
-            if (k > c && !solid[k]) t += z[k];
-        z[c] = float((q[c] + double(m_precon[c]) * t) * m_precon[c]);
     }
 }
 

@@ -46,6 +46,8 @@ public:
     const std::vector<float>& phi() const { return m_phi; }
     /// Forgets the warm start (no wall this step).
     void clearWarmStart();
+    /// Splits the per-face loops over at most `threads` workers (1: inline).
+    void setThreads(int threads) { m_threads = threads; }
 
 private:
     size_t face(int i, int j) const { return size_t(j + 1) * size_t(m_n + 2) + size_t(i + 1); }
@@ -55,6 +57,8 @@ private:
     void precondition(const float* r, float* z, const uint8_t* solid);
 
     int m_n;
+    int m_threads = 1;
+    int rowChunk() const { return m_threads > 1 ? (m_n + m_threads - 1) / m_threads : m_n; }
     float* m_div = nullptr;     // n² real, FFTW-aligned
     float* m_spec = nullptr;    // n × (n/2 + 1) complex
     float* m_phiFft = nullptr;  // n² real

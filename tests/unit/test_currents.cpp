@@ -4,6 +4,7 @@
 // schema's refusals, and the same bits on any number of workers.
 #include "core/hash.h"
 #include "core/parallel.h"
+#include "core/thread_choice.h"
 #include "core/toml_reader.h"
 #include "currents/current_layer.h"
 
@@ -274,6 +275,7 @@ TEST_CASE("currents: the wind spins the layer up to wind_drift·U10 in wind_time
 }
 
 TEST_CASE("currents: the same bits on one worker and on two", "[currents]") {
+    setThreadMeasuring(false);  // two workers offered are two workers taken: the split is exercised
     auto hashOf = [](int workers) {
         setWorkerCount(workers);
         CurrentsDef d = calm(256);
@@ -291,6 +293,7 @@ TEST_CASE("currents: the same bits on one worker and on two", "[currents]") {
         return h.value();
     };
     CHECK(hashOf(1) == hashOf(2));
+    setThreadMeasuring(true);
 }
 
 TEST_CASE("currents: the schema reads [currents] and its sources and refuses bad values with file, line and key", "[currents]") {
