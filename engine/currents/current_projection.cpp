@@ -6,6 +6,7 @@
 #include "core/fftw_wisdom.h"
 #include "core/parallel.h"
 #include "core/scrolling_grid.h"
+#include "core/simd.h"
 
 #include <algorithm>
 #include <cmath>
@@ -32,6 +33,32 @@ float* allocFloat(size_t count) {
 
 inline int wrap(int i, int n) { return i < 0 ? i + n : (i >= n ? i - n : i); }
 
+// Σ a·b in double over count values, in sixteen interleaved partial sums (a fixed order: the same
+// bits every run), so the adds' latency does not bound the loop.
+OB_VECTOR_KERNEL double dot(const float* __restrict a, const float* __restrict b, size_t count) {
+    constexpr size_t LANES = 16;
+    double lane[LANES] = {};
+    size_t i = 0;
+    for (; i + LANES <= count; i += LANES)
+        for (size_t l = 0; l < LANES; ++l) lane[l] += double(a[i + l]) * double(b[i + l]);
+    for (; i < count; ++i) lane[0] += double(a[i]) * double(b[i]);
+    double sum = 0.0;
+    for (size_t l = 0; l < LANES; ++l) sum += lane[l];
+    return sum;
+}
+
+// φ += α·s, r −= α·t; returns max |r|.
+OB_VECTOR_KERNEL float updateKernel(float* __restrict phi, float* __restrict r, const float* __restrict s,
+                                    const float* __restrict t, float alpha, size_t count) {
+    float worst = 0.0f;
+    for (size_t c = 0; c < count; ++c) {
+        phi[c] += alpha * s[c];
+        r[c] -= alpha * t[c];
+        worst = std::max(worst, std::abs(r[c]));
+    }
+    return worst;
+}
+
 } // namespace
 
 CurrentProjection::CurrentProjection(int n) : m_n(n) {
@@ -56,7 +83,8 @@ CurrentProjection::CurrentProjection(int n) : m_n(n) {
             const double lambda = 4.0 * (sx * sx + sz * sz);
             m_coef[size_t(kz) * size_t(n / 2 + 1) + size_t(kx)] = lambda > 0.0 ? float(-1.0 / (lambda * cells2)) : 0.0f;
         }
-    for (auto* v : {&m_phi, &m_r, &m_z, &m_s, &m_t, &m_precon, &m_q}) v->assign(cells, 0.0f);
+    for (auto* v : {&m_phi, &m_r, &m_z, &m_s, &m_t, &m_precon, &m_pw, &m_q}) v->assign(cells, 0.0f);
+    m_row.assign(size_t(n), 0.0f);
 }
 
 CurrentProjection::~CurrentProjection() {
@@ -186,39 +214,52 @@ void CurrentProjection::factor(const uint8_t* solid) {
         if (e < MIC_SAFETY * diag) e = diag;
         m_precon[c] = float(1.0 / std::sqrt(e));
     }
+    for (size_t c = 0; c < cells; ++c) m_pw[c] = c % size_t(n) == 0 ? 0.0f : m_precon[c] * m_precon[c - 1];
     m_factored.assign(solid, solid + cells);
 }
 
 // z = (L·Lᵀ)⁻¹·r with L's off-diagonals A_ck·p_k = −p_k: forward then backward substitution.
 // Walls and lone cells have p = 0, so they pass 0 on. In index order a cell's earlier neighbours
-// are W and S, and, across the periodic edges, E of the last column and N of the last row.
+// are W and S, and, across the periodic edges, E of the last column and N of the last row. Each
+// sweep takes a row in two passes: what the neighbouring row gives (a vector loop), then the
+// recurrence along the row, one multiply-add per cell: forward q_c = t_c + (p_c·p_{c−1})·q_{c−1}
+// (m_pw holds p_c·p_{c−1}; 0 in the first column, whose W is a later cell), backward
+// z_c = p_c·t_c + p_c²·z_{c+1}.
 void CurrentProjection::precondition(const float* r, float* z, const uint8_t* /*solid*/) {
     const int n = m_n;
     const float* p = m_precon.data();
+    const float* pw = m_pw.data();
     float* q = m_q.data();
+    float* t = m_row.data();
     for (int j = 0; j < n; ++j) {
         const size_t row = size_t(j) * size_t(n), south = size_t(wrap(j - 1, n)) * size_t(n);
-        for (int i = 0; i < n; ++i) {
-            const size_t c = row + size_t(i);
-            float t = r[c];
-            if (i > 0) t += p[c - 1] * q[c - 1];
-            if (j > 0) t += p[south + size_t(i)] * q[south + size_t(i)];
-            if (i == n - 1) t += p[row] * q[row];
-            if (j == n - 1) t += p[size_t(i)] * q[size_t(i)];
-            q[c] = t * p[c];
-        }
+        if (j > 0)
+            for (int i = 0; i < n; ++i) t[i] = p[row + size_t(i)] * (r[row + size_t(i)] + p[south + size_t(i)] * q[south + size_t(i)]);
+        else
+            for (int i = 0; i < n; ++i) t[i] = p[size_t(i)] * r[size_t(i)];
+        if (j == n - 1)  // N across the edge: row 0, done
+            for (int i = 0; i < n; ++i) t[i] += p[row + size_t(i)] * (p[size_t(i)] * q[size_t(i)]);
+        q[row] = t[0];
+        for (int i = 1; i < n; ++i) q[row + size_t(i)] = t[i] + pw[row + size_t(i)] * q[row + size_t(i - 1)];
+        // E across the edge of the last column: cell (0, j), done.
+        q[row + size_t(n - 1)] += p[row + size_t(n - 1)] * (p[row] * q[row]);
     }
     for (int j = n - 1; j >= 0; --j) {
         const size_t row = size_t(j) * size_t(n), north = size_t(wrap(j + 1, n)) * size_t(n);
-        for (int i = n - 1; i >= 0; --i) {
-            const size_t c = row + size_t(i);
-            float t = 0.0f;
-            if (i < n - 1) t += z[c + 1];
-            if (j < n - 1) t += z[north + size_t(i)];
-            if (i == 0) t += z[row + size_t(n - 1)];
-            if (j == 0) t += z[size_t(n - 1) * size_t(n) + size_t(i)];
-            z[c] = (q[c] + p[c] * t) * p[c];
+        if (j < n - 1)
+            for (int i = 0; i < n; ++i) t[i] = q[row + size_t(i)] + p[row + size_t(i)] * z[north + size_t(i)];
+        else
+            for (int i = 0; i < n; ++i) t[i] = q[row + size_t(i)];
+        if (j == 0)  // S across the edge: row n − 1, done
+            for (int i = 0; i < n; ++i) t[i] += p[size_t(i)] * z[size_t(n - 1) * size_t(n) + size_t(i)];
+        // z_c = p_c·(t_c + p_c·z_{c+1}); the first column's W across the edge (cell n − 1) is done
+        // before the row's recurrence reaches it, so it joins its t first.
+        z[row + size_t(n - 1)] = p[row + size_t(n - 1)] * t[n - 1];
+        for (int i = n - 2; i >= 0; --i) {
+            const float pc = p[row + size_t(i)];
+            z[row + size_t(i)] = pc * t[i] + (pc * pc) * z[row + size_t(i + 1)];
         }
+        z[row] += p[row] * (p[row] * z[row + size_t(n - 1)]);
     }
 }
 
@@ -257,25 +298,17 @@ WallSolve CurrentProjection::projectWithWalls(float* u, float* v, const uint8_t*
     if (worst > tolerance) {
         precondition(r, z, solid);
         std::copy(z, z + cells, s);
-        double sigma = 0.0;
-        for (size_t c = 0; c < cells; ++c) sigma += double(r[c]) * z[c];
+        double sigma = dot(r, z, cells);
         while (out.iterations < maxIterations && sigma != 0.0) {
             ++out.iterations;
             applyA(s, t, solid);
-            double st = 0.0;
-            for (size_t c = 0; c < cells; ++c) st += double(s[c]) * t[c];
+            const double st = dot(s, t, cells);
             if (st <= 0.0) break;
             const float alpha = float(sigma / st);
-            worst = 0.0f;
-            for (size_t c = 0; c < cells; ++c) {
-                phi[c] += alpha * s[c];
-                r[c] -= alpha * t[c];
-                worst = std::max(worst, std::abs(r[c]));
-            }
+            worst = updateKernel(phi, r, s, t, alpha, cells);
             if (worst <= tolerance) break;
             precondition(r, z, solid);
-            double sigmaNew = 0.0;
-            for (size_t c = 0; c < cells; ++c) sigmaNew += double(r[c]) * z[c];
+            const double sigmaNew = dot(r, z, cells);
             const float beta = float(sigmaNew / sigma);
             sigma = sigmaNew;
             for (size_t c = 0; c < cells; ++c) s[c] = z[c] + beta * s[c];

@@ -66,7 +66,8 @@ private:
     fftwf_plan_s* m_backward = nullptr;
     std::vector<float> m_coef;  // per mode: −1/(λ·n²), 0 at k = 0
     // Wall solve (n² each).
-    std::vector<float> m_phi, m_r, m_z, m_s, m_t, m_precon, m_q;
+    std::vector<float> m_phi, m_r, m_z, m_s, m_t, m_precon, m_pw, m_q;
+    std::vector<float> m_row;  // a row's terms from its neighbouring row (precondition)
     std::vector<uint8_t> m_factored;  // the mask m_precon was made for
 };
 
