@@ -225,7 +225,7 @@ void CurrentProjection::factor(const uint8_t* solid) {
 // recurrence along the row, one multiply-add per cell: forward q_c = t_c + (p_c·p_{c−1})·q_{c−1}
 // (m_pw holds p_c·p_{c−1}; 0 in the first column, whose W is a later cell), backward
 // z_c = p_c·t_c + p_c²·z_{c+1}.
-void CurrentProjection::precondition(const float* r, float* z, const uint8_t* /*solid*/) {
+void CurrentProjection::precondition(const float* r, float* z) {
     const int n = m_n;
     const float* p = m_precon.data();
     const float* pw = m_pw.data();
@@ -296,7 +296,7 @@ WallSolve CurrentProjection::projectWithWalls(float* u, float* v, const uint8_t*
     }
     WallSolve out;
     if (worst > tolerance) {
-        precondition(r, z, solid);
+        precondition(r, z);
         std::copy(z, z + cells, s);
         double sigma = dot(r, z, cells);
         while (out.iterations < maxIterations && sigma != 0.0) {
@@ -307,7 +307,7 @@ WallSolve CurrentProjection::projectWithWalls(float* u, float* v, const uint8_t*
             const float alpha = float(sigma / st);
             worst = updateKernel(phi, r, s, t, alpha, cells);
             if (worst <= tolerance) break;
-            precondition(r, z, solid);
+            precondition(r, z);
             const double sigmaNew = dot(r, z, cells);
             const float beta = float(sigmaNew / sigma);
             sigma = sigmaNew;

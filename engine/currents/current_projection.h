@@ -54,7 +54,7 @@ private:
     void applyGradient(float* u, float* v, const float* phi, const uint8_t* solid, glm::vec2 add = glm::vec2(0.0f)) const;
     void factor(const uint8_t* solid);
     void applyA(const float* x, float* out, const uint8_t* solid) const;
-    void precondition(const float* r, float* z, const uint8_t* solid);
+    void precondition(const float* r, float* z);
 
     int m_n;
     int m_threads = 1;
