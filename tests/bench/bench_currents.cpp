@@ -1,6 +1,6 @@
 // The surface current layer (docs/currents.md): one CurrentLayer::step at N² cells, open patch
-// (FFT projection) or with a wall across it (FFT, then MIC(0)-PCG from the last step's φ), by
-// worker count. A source drives a jet and a body's impulse lands every step, so the flow is
+// (FFT projection) or with a wall across it (FFT, then MIC(0)-PCG from the last step's φ), still
+// or with a moving hull, by worker count. A source drives a jet and a body's impulse lands every step, so the flow is
 // never still; 600 steps (10 s) run before the timing, so the jet has reached the wall's gap.
 #include "core/parallel.h"
 #include "currents/current_layer.h"
@@ -13,10 +13,13 @@ namespace {
 
 constexpr float DT = 1.0f / 60.0f;
 
-// Args: N, wall (0 open, 1 a wall across the patch with a gap of 0.1·N cells), workers.
+// Args: N, wall (0 open; 1 a wall across the patch with a gap of 0.1·N cells; 2 that wall and a
+// 20 m × 6 m hull crossing a cell every step, so the mask and the preconditioner change each
+// step), workers.
 void BM_CurrentStep(benchmark::State& state) {
     const int n = int(state.range(0));
-    const bool wall = state.range(1) != 0;
+    const int kind = int(state.range(1));
+    const bool wall = kind != 0;
     ob::setWorkerCount(int(state.range(2)));
     ob::currents::CurrentsDef def;
     def.resolution = n;
@@ -39,7 +42,18 @@ void BM_CurrentStep(benchmark::State& state) {
         layer.step(DT);
     }
     int64_t iterations = 0, steps = 0;
+    float hullX = -60.0f;
     for (auto _ : state) {
+        if (kind == 2) {
+            hullX = hullX > 60.0f ? -60.0f : hullX + 2.0f;
+            ob::interaction::ObstacleShape hull;
+            hull.kind = ob::interaction::ObstacleShape::Kind::Ellipse;
+            hull.centre = {hullX, -30.0f};
+            hull.half = {10.0f, 3.0f};
+            std::vector<ob::interaction::ObstacleShape> all = shapes;
+            all.push_back(hull);
+            layer.setWalls(all);
+        }
         layer.addImpulse({float(steps % 50), 5.0f}, {2e5f, -1e5f}, 6.0f);
         layer.step(DT);
         iterations += layer.lastWallSolve().iterations;
@@ -53,7 +67,7 @@ void BM_CurrentStep(benchmark::State& state) {
 }
 BENCHMARK(BM_CurrentStep)
     ->ArgNames({"n", "wall", "workers"})
-    ->ArgsProduct({{128, 256}, {0, 1}, {1, 2}})
+    ->ArgsProduct({{128, 256}, {0, 1, 2}, {1, 2}})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
