@@ -1,0 +1,333 @@
+// The current layer's pressure projection: spectral on the periodic patch, MIC(0)-PCG with walls
+// (law and discretisation in current_projection.h).
+#include "currents/current_projection.h"
+
+#include "core/error.h"
+#include "core/fftw_wisdom.h"
+#include "core/parallel.h"
+#include "core/scrolling_grid.h"
+#include "core/simd.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <fftw3.h>
+#include <numbers>
+#include <string>
+
+namespace ob::currents {
+
+namespace {
+
+// MIC(0)'s modification weight and its safeguard (the factor falls back to the diagonal where
+// the modified pivot is below SAFETY × the diagonal).
+constexpr double MIC_TAU = 0.97;
+constexpr double MIC_SAFETY = 0.25;
+
+float* allocFloat(size_t count) {
+    float* p = fftwf_alloc_real(count);
+    if (!p) throw RuntimeError("out of memory for the current layer's projection");
+    std::memset(p, 0, count * sizeof(float));
+    return p;
+}
+
+inline int wrap(int i, int n) { return i < 0 ? i + n : (i >= n ? i - n : i); }
+
+// Σ a·b in double over count values, in sixteen interleaved partial sums (a fixed order: the same
+// bits every run), so the adds' latency does not bound the loop.
+OB_VECTOR_KERNEL double dot(const float* __restrict a, const float* __restrict b, size_t count) {
+    constexpr size_t LANES = 16;
+    double lane[LANES] = {};
+    size_t i = 0;
+    for (; i + LANES <= count; i += LANES)
+        for (size_t l = 0; l < LANES; ++l) lane[l] += double(a[i + l]) * double(b[i + l]);
+    for (; i < count; ++i) lane[0] += double(a[i]) * double(b[i]);
+    double sum = 0.0;
+    for (size_t l = 0; l < LANES; ++l) sum += lane[l];
+    return sum;
+}
+
+// φ += α·s, r −= α·t; returns max |r|.
+OB_VECTOR_KERNEL float updateKernel(float* __restrict phi, float* __restrict r, const float* __restrict s,
+                                    const float* __restrict t, float alpha, size_t count) {
+    float worst = 0.0f;
+    for (size_t c = 0; c < count; ++c) {
+        phi[c] += alpha * s[c];
+        r[c] -= alpha * t[c];
+        worst = std::max(worst, std::abs(r[c]));
+    }
+    return worst;
+}
+
+} // namespace
+
+CurrentProjection::CurrentProjection(int n) : m_n(n) {
+    const size_t cells = size_t(n) * size_t(n), modes = size_t(n) * size_t(n / 2 + 1);
+    m_div = allocFloat(cells);
+    m_spec = allocFloat(2 * modes);
+    m_phiFft = allocFloat(cells);
+    m_forward = ocean::planWithWisdom([&](unsigned flags) {
+        return fftwf_plan_dft_r2c_2d(n, n, m_div, reinterpret_cast<fftwf_complex*>(m_spec), flags);
+    });
+    m_backward = ocean::planWithWisdom([&](unsigned flags) {
+        return fftwf_plan_dft_c2r_2d(n, n, reinterpret_cast<fftwf_complex*>(m_spec), m_phiFft, flags);
+    });
+    if (!m_forward || !m_backward)
+        throw RuntimeError("FFTW could not plan a " + std::to_string(n) + "×" + std::to_string(n) + " transform");
+    // φ̂ = −D̂/λ, and FFTW's unnormalised pair multiplies by n²: both folded into one factor.
+    m_coef.resize(modes);
+    const double pi = std::numbers::pi, cells2 = double(cells);
+    for (int kz = 0; kz < n; ++kz)
+        for (int kx = 0; kx <= n / 2; ++kx) {
+            const double sx = std::sin(pi * kx / n), sz = std::sin(pi * kz / n);
+            const double lambda = 4.0 * (sx * sx + sz * sz);
+            m_coef[size_t(kz) * size_t(n / 2 + 1) + size_t(kx)] = lambda > 0.0 ? float(-1.0 / (lambda * cells2)) : 0.0f;
+        }
+    for (auto* v : {&m_phi, &m_r, &m_z, &m_s, &m_t, &m_precon, &m_pw, &m_q}) v->assign(cells, 0.0f);
+    m_row.assign(size_t(n), 0.0f);
+}
+
+CurrentProjection::~CurrentProjection() {
+    {
+        std::lock_guard<std::mutex> lock(ocean::fftwPlannerMutex());
+        if (m_forward) fftwf_destroy_plan(m_forward);
+        if (m_backward) fftwf_destroy_plan(m_backward);
+    }
+    fftwf_free(m_div);
+    fftwf_free(m_spec);
+    fftwf_free(m_phiFft);
+}
+
+void CurrentProjection::divergence(const float* u, const float* v, float* out) const {
+    const int n = m_n;
+    parallelFor(0, n, rowChunk(), [&](int lo, int hi) {
+        for (int j = lo; j < hi; ++j) {
+            const float* ur = u + face(0, j);
+            const float* vr = v + face(0, j);
+            const float* vs = v + face(0, wrap(j - 1, n));
+            float* o = out + size_t(j) * size_t(n);
+            o[0] = (ur[0] - ur[n - 1]) + (vr[0] - vs[0]);
+            for (int i = 1; i < n; ++i) o[i] = (ur[i] - ur[i - 1]) + (vr[i] - vs[i]);
+        }
+    });
+}
+
+// u(i, j) −= φ(i + 1, j) − φ(i, j), v(i, j) −= φ(i, j + 1) − φ(i, j), periodic; with `solid`, only
+// faces between two open cells (the rest stay 0).
+void CurrentProjection::applyGradient(float* u, float* v, const float* phi, const uint8_t* solid, glm::vec2 add) const {
+    const int n = m_n;
+    parallelFor(0, n, rowChunk(), [&](int lo, int hi) {
+        for (int j = lo; j < hi; ++j) {
+            const int jn = wrap(j + 1, n);
+            const float* p = phi + size_t(j) * size_t(n);
+            const float* pn = phi + size_t(jn) * size_t(n);
+            float* ur = u + face(0, j);
+            float* vr = v + face(0, j);
+            if (!solid) {
+                for (int i = 0; i < n - 1; ++i) ur[i] = (ur[i] - (p[i + 1] - p[i])) + add.x;
+                ur[n - 1] = (ur[n - 1] - (p[0] - p[n - 1])) + add.x;
+                for (int i = 0; i < n; ++i) vr[i] = (vr[i] - (pn[i] - p[i])) + add.y;
+                continue;
+            }
+            const uint8_t* s = solid + size_t(j) * size_t(n);
+            const uint8_t* sn = solid + size_t(jn) * size_t(n);
+            for (int i = 0; i < n; ++i) {
+                const int ie = wrap(i + 1, n);
+                if (!s[i] && !s[ie]) ur[i] -= p[ie] - p[i];
+                if (!s[i] && !sn[i]) vr[i] -= pn[i] - p[i];
+            }
+        }
+    });
+}
+
+void CurrentProjection::projectPeriodic(float* u, float* v, glm::vec2 add) {
+    const size_t modes = size_t(m_n) * size_t(m_n / 2 + 1);
+    divergence(u, v, m_div);
+    fftwf_execute_dft_r2c(m_forward, m_div, reinterpret_cast<fftwf_complex*>(m_spec));
+    for (size_t m = 0; m < modes; ++m) {
+        m_spec[2 * m] *= m_coef[m];
+        m_spec[2 * m + 1] *= m_coef[m];
+    }
+    fftwf_execute_dft_c2r(m_backward, reinterpret_cast<fftwf_complex*>(m_spec), m_phiFft);
+    applyGradient(u, v, m_phiFft, nullptr, add);
+}
+
+// (A·x)_c = Σ_n (x_c − x_n) over c's open neighbours; 0 on walls. A wall's x is 0 and its
+// open-neighbour weight `o` 0, so a row is a vector loop over its interior.
+void CurrentProjection::applyA(const float* x, float* out, const uint8_t* solid) const {
+    const int n = m_n;
+    for (int j = 0; j < n; ++j) {
+        const size_t r = size_t(j) * size_t(n), rs = size_t(wrap(j - 1, n)) * size_t(n), rn = size_t(wrap(j + 1, n)) * size_t(n);
+        auto cell = [&](int i, int iw, int ie) {
+            const size_t c = r + size_t(i);
+            if (solid[c]) return 0.0f;
+            float sum = 0.0f;
+            for (size_t k : {r + size_t(iw), r + size_t(ie), rs + size_t(i), rn + size_t(i)})
+                if (!solid[k]) sum += x[c] - x[k];
+            return sum;
+        };
+        out[r] = cell(0, n - 1, 1);
+        for (int i = 1; i < n - 1; ++i) {
+            const size_t c = r + size_t(i);
+            const float o = solid[c] ? 0.0f : 1.0f;
+            const float ow = solid[c - 1] ? 0.0f : 1.0f, oe = solid[c + 1] ? 0.0f : 1.0f;
+            const float os = solid[rs + size_t(i)] ? 0.0f : 1.0f, on = solid[rn + size_t(i)] ? 0.0f : 1.0f;
+            out[c] = o * (ow * (x[c] - x[c - 1]) + oe * (x[c] - x[c + 1]) + os * (x[c] - x[rs + size_t(i)]) + on * (x[c] - x[rn + size_t(i)]));
+        }
+        out[r + size_t(n - 1)] = cell(n - 1, n - 2, 0);
+    }
+}
+
+// MIC(0) of A in index order (Bridson, "Fluid Simulation for Computer Graphics", §5.2, written
+// for any neighbour order so the periodic edges are held): with p_k = 1/√e_k,
+//   e_c = A_cc − Σ_{k<c} p_k²·(1 + τ·m_k),
+// k over c's open neighbours before it in index order, m_k the count of k's open neighbours
+// after k other than c (the fill-in IC(0) drops, given back to the diagonal).
+void CurrentProjection::factor(const uint8_t* solid) {
+    const int n = m_n;
+    const size_t cells = size_t(n) * size_t(n);
+    auto neighbours = [n](size_t c, size_t out[4]) {
+        const int i = int(c % size_t(n)), j = int(c / size_t(n));
+        out[0] = size_t(j) * size_t(n) + size_t(wrap(i - 1, n));
+        out[1] = size_t(j) * size_t(n) + size_t(wrap(i + 1, n));
+        out[2] = size_t(wrap(j - 1, n)) * size_t(n) + size_t(i);
+        out[3] = size_t(wrap(j + 1, n)) * size_t(n) + size_t(i);
+    };
+    for (size_t c = 0; c < cells; ++c) {
+        m_precon[c] = 0.0f;
+        if (solid[c]) continue;
+        size_t nb[4];
+        neighbours(c, nb);
+        double diag = 0.0, e = 0.0;
+        for (size_t k : nb) diag += solid[k] ? 0.0 : 1.0;
+        if (diag == 0.0) continue;  // a lone open cell: nothing flows
+        e = diag;
+        for (size_t k : nb) {
+            if (solid[k] || k >= c) continue;
+            size_t kb[4];
+            neighbours(k, kb);
+            int later = 0;
+            for (size_t m : kb) later += (!solid[m] && m > k && m != c) ? 1 : 0;
+            const double pk = m_precon[k];
+            e -= pk * pk * (1.0 + MIC_TAU * later);
+        }
+        if (e < MIC_SAFETY * diag) e = diag;
+        m_precon[c] = float(1.0 / std::sqrt(e));
+    }
+    for (size_t c = 0; c < cells; ++c) m_pw[c] = c % size_t(n) == 0 ? 0.0f : m_precon[c] * m_precon[c - 1];
+    m_factored.assign(solid, solid + cells);
+}
+
+// z = (L·Lᵀ)⁻¹·r with L's off-diagonals A_ck·p_k = −p_k: forward then backward substitution.
+// Walls and lone cells have p = 0, so they pass 0 on. In index order a cell's earlier neighbours
+// are W and S, and, across the periodic edges, E of the last column and N of the last row. Each
+// sweep takes a row in two passes: what the neighbouring row gives (a vector loop), then the
+// recurrence along the row, one multiply-add per cell: forward q_c = t_c + (p_c·p_{c−1})·q_{c−1}
+// (m_pw holds p_c·p_{c−1}; 0 in the first column, whose W is a later cell), backward
+// z_c = p_c·t_c + p_c²·z_{c+1}.
+void CurrentProjection::precondition(const float* r, float* z) {
+    const int n = m_n;
+    const float* p = m_precon.data();
+    const float* pw = m_pw.data();
+    float* q = m_q.data();
+    float* t = m_row.data();
+    for (int j = 0; j < n; ++j) {
+        const size_t row = size_t(j) * size_t(n), south = size_t(wrap(j - 1, n)) * size_t(n);
+        if (j > 0)
+            for (int i = 0; i < n; ++i) t[i] = p[row + size_t(i)] * (r[row + size_t(i)] + p[south + size_t(i)] * q[south + size_t(i)]);
+        else
+            for (int i = 0; i < n; ++i) t[i] = p[size_t(i)] * r[size_t(i)];
+        if (j == n - 1)  // N across the edge: row 0, done
+            for (int i = 0; i < n; ++i) t[i] += p[row + size_t(i)] * (p[size_t(i)] * q[size_t(i)]);
+        q[row] = t[0];
+        for (int i = 1; i < n; ++i) q[row + size_t(i)] = t[i] + pw[row + size_t(i)] * q[row + size_t(i - 1)];
+        // E across the edge of the last column: cell (0, j), done.
+        q[row + size_t(n - 1)] += p[row + size_t(n - 1)] * (p[row] * q[row]);
+    }
+    for (int j = n - 1; j >= 0; --j) {
+        const size_t row = size_t(j) * size_t(n), north = size_t(wrap(j + 1, n)) * size_t(n);
+        if (j < n - 1)
+            for (int i = 0; i < n; ++i) t[i] = q[row + size_t(i)] + p[row + size_t(i)] * z[north + size_t(i)];
+        else
+            for (int i = 0; i < n; ++i) t[i] = q[row + size_t(i)];
+        if (j == 0)  // S across the edge: row n − 1, done
+            for (int i = 0; i < n; ++i) t[i] += p[size_t(i)] * z[size_t(n - 1) * size_t(n) + size_t(i)];
+        // z_c = p_c·(t_c + p_c·z_{c+1}); the first column's W across the edge (cell n − 1) is done
+        // before the row's recurrence reaches it, so it joins its t first.
+        z[row + size_t(n - 1)] = p[row + size_t(n - 1)] * t[n - 1];
+        for (int i = n - 2; i >= 0; --i) {
+            const float pc = p[row + size_t(i)];
+            z[row + size_t(i)] = pc * t[i] + (pc * pc) * z[row + size_t(i + 1)];
+        }
+        z[row] += p[row] * (p[row] * z[row + size_t(n - 1)]);
+    }
+}
+
+WallSolve CurrentProjection::projectWithWalls(float* u, float* v, const uint8_t* solid, float tolerance, int maxIterations) {
+    const int n = m_n;
+    const size_t cells = size_t(n) * size_t(n);
+    // --- the bulk: the periodic projection, then no flow through any face of a wall cell
+    projectPeriodic(u, v);
+    for (int j = 0; j < n; ++j) {
+        const int jn = wrap(j + 1, n);
+        for (int i = 0; i < n; ++i) {
+            const int ie = wrap(i + 1, n);
+            const uint8_t s = solid[size_t(j) * size_t(n) + size_t(i)];
+            if (s || solid[size_t(j) * size_t(n) + size_t(ie)]) u[face(i, j)] = 0.0f;
+            if (s || solid[size_t(jn) * size_t(n) + size_t(i)]) v[face(i, j)] = 0.0f;
+        }
+    }
+    if (m_factored.size() != cells || !std::equal(m_factored.begin(), m_factored.end(), solid)) factor(solid);
+
+    // --- the rest: A·φ = −D on the open cells, from last step's φ
+    divergence(u, v, m_div);
+    float* phi = m_phi.data();
+    float* r = m_r.data();
+    float* z = m_z.data();
+    float* s = m_s.data();
+    float* t = m_t.data();
+    for (size_t c = 0; c < cells; ++c)
+        if (solid[c]) phi[c] = 0.0f;
+    applyA(phi, t, solid);
+    float worst = 0.0f;
+    for (size_t c = 0; c < cells; ++c) {
+        r[c] = solid[c] ? 0.0f : -m_div[c] - t[c];
+        worst = std::max(worst, std::abs(r[c]));
+    }
+    WallSolve out;
+    if (worst > tolerance) {
+        precondition(r, z);
+        std::copy(z, z + cells, s);
+        double sigma = dot(r, z, cells);
+        while (out.iterations < maxIterations && sigma != 0.0) {
+            ++out.iterations;
+            applyA(s, t, solid);
+            const double st = dot(s, t, cells);
+            if (st <= 0.0) break;
+            const float alpha = float(sigma / st);
+            worst = updateKernel(phi, r, s, t, alpha, cells);
+            if (worst <= tolerance) break;
+            precondition(r, z);
+            const double sigmaNew = dot(r, z, cells);
+            const float beta = float(sigmaNew / sigma);
+            sigma = sigmaNew;
+            for (size_t c = 0; c < cells; ++c) s[c] = z[c] + beta * s[c];
+        }
+    }
+    applyGradient(u, v, phi, solid);
+    // The residual as the faces now hold it (the recurrence's r drifts from it in float).
+    divergence(u, v, m_div);
+    out.residual = 0.0f;
+    for (size_t c = 0; c < cells; ++c)
+        if (!solid[c]) out.residual = std::max(out.residual, std::abs(m_div[c]));
+    return out;
+}
+
+void CurrentProjection::scroll(glm::ivec2 shift) { scrollCells(m_phi.data(), m_n, m_n, shift, 0.0f); }
+
+void CurrentProjection::clearWarmStart() {
+    std::fill(m_phi.begin(), m_phi.end(), 0.0f);
+    m_factored.clear();
+}
+
+} // namespace ob::currents
