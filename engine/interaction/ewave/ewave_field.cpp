@@ -122,6 +122,52 @@ OB_VECTOR_KERNEL void horizontalKernel(const float* __restrict hs, const float* 
     sums[1] = den;
 }
 
+// changeKernel and the horizontal velocity's spectra in one pass over a spectrum row (the step
+// without the displacement): with Δĥ, Δv̂ as changeKernel makes them, the new state's v̂' =
+// scale·v̂ + Δv̂ (the coefficients carry `scale`, 1/(rows·cols)), û = i·K·r·v̂' into ux, uz as
+// horizontalKernel, and power[m] = w·|v̂'|² where r > 0 (K ≠ 0), the reduction left to sumsKernel
+// so this loop vectorises.
+OB_VECTOR_KERNEL void changeVelocityKernel(float* __restrict hs, float* __restrict vs, const double* __restrict coef,
+                                           double scale, const float* __restrict riesz, const float* __restrict kx,
+                                           const float* __restrict weight, float kz, float* __restrict ux,
+                                           float* __restrict uz, float* __restrict power, int n) {
+    for (int m = 0; m < n; ++m) {
+        const double am1 = coef[3 * m], b = coef[3 * m + 1], c = coef[3 * m + 2];
+        const double h0 = hs[2 * m], h1 = hs[2 * m + 1], v0 = vs[2 * m], v1 = vs[2 * m + 1];
+        const double dv0 = c * h0 + am1 * v0, dv1 = c * h1 + am1 * v1;
+        hs[2 * m] = float(am1 * h0 + b * v0);
+        hs[2 * m + 1] = float(am1 * h1 + b * v1);
+        vs[2 * m] = float(dv0);
+        vs[2 * m + 1] = float(dv1);
+        const float n0 = float(scale * v0 + dv0), n1 = float(scale * v1 + dv1);
+        const float r = riesz[m];
+        const float mx = kx[m] * r, mz = kz * r;
+        ux[2 * m] = -mx * n1;
+        ux[2 * m + 1] = mx * n0;
+        uz[2 * m] = -mz * n1;
+        uz[2 * m + 1] = mz * n0;
+        power[m] = r > 0.0f ? weight[m] * (n0 * n0 + n1 * n1) : 0.0f;
+    }
+}
+
+// sums[0] = Σ kabs[m]·power[m], sums[1] = Σ power[m] over a row, in double, four lanes (in a
+// fixed order: the same bits on any worker).
+OB_VECTOR_KERNEL void sumsKernel(const float* __restrict power, const float* __restrict kabs, int n, double* __restrict sums) {
+    double num[4] = {}, den[4] = {};
+    int m = 0;
+    for (; m + 4 <= n; m += 4)
+        for (int l = 0; l < 4; ++l) {
+            num[l] += double(kabs[m + l]) * double(power[m + l]);
+            den[l] += double(power[m + l]);
+        }
+    for (; m < n; ++m) {
+        num[0] += double(kabs[m]) * double(power[m]);
+        den[0] += double(power[m]);
+    }
+    sums[0] = (num[0] + num[1]) + (num[2] + num[3]);
+    sums[1] = (den[0] + den[1]) + (den[2] + den[3]);
+}
+
 // f += change, then its float copy (before the boundary: the caller redoes the band's).
 OB_VECTOR_KERNEL void addKernel(double* __restrict f, float* __restrict copy, const float* __restrict change, int n) {
     for (int i = 0; i < n; ++i) {
@@ -193,6 +239,7 @@ EWaveField::EWaveField(int rows, int cols, float cellSize, RippleBoundary bounda
         m_horizSpec[f] = allocFloat(2 * m_modes);
     }
     m_rowSums.assign(2 * size_t(m_rows), 0.0);
+    m_power.assign(m_modes, 0.0f);
     prepareHorizontal();
     m_sourceSum.assign(m_cells, 0.0f);
     chooseThreads();
@@ -507,8 +554,18 @@ void EWaveField::changeRows(int j0, int j1) {
     for (int j = j0; j < j1; ++j) {
         const size_t row = size_t(j) * size_t(m_specCols);
         const size_t coefRow = size_t(std::min(j, m_rows - j)) * size_t(m_specCols);
-        horizontalRow(j, true);
-        changeKernel(m_spec[0] + 2 * row, m_spec[1] + 2 * row, m_coef.data() + 3 * coefRow, m_specCols);
+        if (m_displacement) {  // ξ too (the coarse levels, which step rarely): the two passes
+            horizontalRow(j, true);
+            changeKernel(m_spec[0] + 2 * row, m_spec[1] + 2 * row, m_coef.data() + 3 * coefRow, m_specCols);
+            continue;
+        }
+        const int signedJ = j <= m_rows / 2 ? j : j - m_rows;
+        const float kz = 2 * j == m_rows ? 0.0f : float(2.0 * std::numbers::pi * signedJ / (double(m_rows) * m_cellSize));
+        float* power = m_power.data() + row;
+        changeVelocityKernel(m_spec[0] + 2 * row, m_spec[1] + 2 * row, m_coef.data() + 3 * coefRow,
+                             1.0 / (double(m_rows) * double(m_cols)), m_riesz.data() + coefRow, m_kx.data(),
+                             m_weight.data(), kz, m_horizSpec[0] + 2 * row, m_horizSpec[1] + 2 * row, power, m_specCols);
+        sumsKernel(power, m_kabs.data() + coefRow, m_specCols, m_rowSums.data() + 2 * size_t(j));
     }
     if (j0 == 0) {  // the change's spectrum carries the inverse transform's 1/(rows·cols), as the coefficients do
         const float norm = float(1.0 / (double(m_rows) * double(m_cols)));

@@ -268,6 +268,7 @@ private:
     std::vector<float> m_kx;           // per spectrum column: kx, rad/m, 0 at the Nyquist column
     std::vector<float> m_weight;       // per spectrum column: its modes' count in the full spectrum (1 or 2)
     std::vector<double> m_rowSums;     // per spectrum row: Σw·|K|·|v̂'|², Σw·|v̂'|² (velocityWavenumber)
+    std::vector<float> m_power;        // per mode: w·|v̂'|² (the step's fused pass, summed per row after it)
     double m_velocityWavenumber = 0.0; // rad/m
     bool m_displacement = false;       // keepHorizontalDisplacement
 };
