@@ -58,9 +58,11 @@ struct EWaveMedium {
 ///   1. the forward real-to-complex transforms of the float copies of h and v (FFTW, float,
 ///      each whole on one worker);
 ///   2. per mode, in place, in row bands: Δĥ = (a − 1)·ĥ + b·v̂, Δv̂ = c·ĥ + (a − 1)·v̂ (double;
-///      a, b, c of modeStep, stored once for rows j and rows − j, which share |k|);
+///      a, b, c of modeStep, stored once for rows j and rows − j, which share |k|), and in the
+///      same pass the horizontal velocity's spectra i·K/(|K|·tanh(|K|d))·v̂' of the new v̂' and
+///      the sums of velocityWavenumber;
 ///   3. per field: the inverse transform of its change added to it, the boundary in real space,
-///      its float copy;
+///      its float copy; the horizontal velocity's two inverse transforms and the boundary;
 ///   4. the volume (Periodic, Absorbing): h's sum set back to what it was, exactly (conserveVolume).
 ///
 /// Volume. A pressure (a source) or a sponge moves water; it cannot make or remove it, so the
