@@ -125,8 +125,8 @@ OB_VECTOR_KERNEL void horizontalKernel(const float* __restrict hs, const float* 
 // changeKernel and the horizontal velocity's spectra in one pass over a spectrum row (the step
 // without the displacement): with Δĥ, Δv̂ as changeKernel makes them, the new state's v̂' =
 // scale·v̂ + Δv̂ (the coefficients carry `scale`, 1/(rows·cols)), û = i·K·r·v̂' into ux, uz as
-// horizontalKernel, and power[m] = w·|v̂'|² where r > 0 (K ≠ 0), the reduction left to sumsKernel
-// so this loop vectorises.
+// horizontalKernel, and power[m] = w·|v̂'|² (the caller zeroes K = 0's), the reduction left to
+// sumsKernel: no branch and no reduction, so this loop vectorises.
 OB_VECTOR_KERNEL void changeVelocityKernel(float* __restrict hs, float* __restrict vs, const double* __restrict coef,
                                            double scale, const float* __restrict riesz, const float* __restrict kx,
                                            const float* __restrict weight, float kz, float* __restrict ux,
@@ -146,26 +146,23 @@ OB_VECTOR_KERNEL void changeVelocityKernel(float* __restrict hs, float* __restri
         ux[2 * m + 1] = mx * n0;
         uz[2 * m] = -mz * n1;
         uz[2 * m + 1] = mz * n0;
-        power[m] = r > 0.0f ? weight[m] * (n0 * n0 + n1 * n1) : 0.0f;
+        power[m] = weight[m] * (n0 * n0 + n1 * n1);
     }
 }
 
-// sums[0] = Σ kabs[m]·power[m], sums[1] = Σ power[m] over a row, in double, four lanes (in a
-// fixed order: the same bits on any worker).
+// sums[0] = Σ kabs[m]·power[m], sums[1] = Σ power[m] over a row, in float (a row's sum to ~1e-6
+// of itself, ample for a mean wavenumber), reassociated into vector lanes: the order is fixed by
+// the code the clone was built with, so the bits do not depend on the workers; only this
+// reduction is relaxed, never the state's arithmetic.
+__attribute__((optimize("associative-math", "no-signed-zeros", "no-trapping-math")))
 OB_VECTOR_KERNEL void sumsKernel(const float* __restrict power, const float* __restrict kabs, int n, double* __restrict sums) {
-    double num[4] = {}, den[4] = {};
-    int m = 0;
-    for (; m + 4 <= n; m += 4)
-        for (int l = 0; l < 4; ++l) {
-            num[l] += double(kabs[m + l]) * double(power[m + l]);
-            den[l] += double(power[m + l]);
-        }
-    for (; m < n; ++m) {
-        num[0] += double(kabs[m]) * double(power[m]);
-        den[0] += double(power[m]);
+    float num = 0.0f, den = 0.0f;
+    for (int m = 0; m < n; ++m) {
+        num += kabs[m] * power[m];
+        den += power[m];
     }
-    sums[0] = (num[0] + num[1]) + (num[2] + num[3]);
-    sums[1] = (den[0] + den[1]) + (den[2] + den[3]);
+    sums[0] = num;
+    sums[1] = den;
 }
 
 // f += change, then its float copy (before the boundary: the caller redoes the band's).
@@ -565,6 +562,7 @@ void EWaveField::changeRows(int j0, int j1) {
         changeVelocityKernel(m_spec[0] + 2 * row, m_spec[1] + 2 * row, m_coef.data() + 3 * coefRow,
                              1.0 / (double(m_rows) * double(m_cols)), m_riesz.data() + coefRow, m_kx.data(),
                              m_weight.data(), kz, m_horizSpec[0] + 2 * row, m_horizSpec[1] + 2 * row, power, m_specCols);
+        if (j == 0) power[0] = 0.0f;  // K = 0: the mean, no wave (its û is 0: r = 0)
         sumsKernel(power, m_kabs.data() + coefRow, m_specCols, m_rowSums.data() + 2 * size_t(j));
     }
     if (j0 == 0) {  // the change's spectrum carries the inverse transform's 1/(rows·cols), as the coefficients do
