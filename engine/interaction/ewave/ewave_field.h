@@ -231,6 +231,7 @@ private:
     void finishHorizontal(int f);  // the boundary on horizontal field f (0, 1: u; 2, 3: ξ)
     void inverseTransforms(bool state);  // pass 3 (state: h and v too) over the workers
     void horizontalRow(int j, bool change);  // û (ξ̂) of spectrum row j's new state, its sums (see the .cpp)
+    float rowKz(int j) const;                // kz of spectrum row j, rad/m (0 at the Nyquist row)
     void prepareHorizontal();  // m_riesz, m_kabs, m_kx, m_weight of the medium
     void sumVelocityWavenumber();
     void syncFloatCopies();  // before the forward transforms  // m_rowSums in row order into m_velocityWavenumber
