@@ -148,8 +148,12 @@ OB_VECTOR_KERNEL void changeVelocityKernel(float* __restrict hs, float* __restri
 // of itself, ample for a mean wavenumber), reassociated into vector lanes: the order is fixed by
 // the code the clone was built with, so the bits do not depend on the workers; only this
 // reduction is relaxed, never the state's arithmetic.
-__attribute__((optimize("associative-math", "no-signed-zeros", "no-trapping-math")))
-OB_VECTOR_KERNEL void sumsKernel(const float* __restrict power, const float* __restrict kabs, int n, double* __restrict sums) {
+#if defined(__GNUC__) && !defined(__clang__)
+#define OB_RELAXED_SUM __attribute__((optimize("associative-math", "no-signed-zeros", "no-trapping-math")))
+#else
+#define OB_RELAXED_SUM
+#endif
+OB_RELAXED_SUM OB_VECTOR_KERNEL void sumsKernel(const float* __restrict power, const float* __restrict kabs, int n, double* __restrict sums) {
     float num = 0.0f, den = 0.0f;
     for (int m = 0; m < n; ++m) {
         num += kabs[m] * power[m];
