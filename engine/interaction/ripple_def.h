@@ -76,7 +76,7 @@ struct RippleDef : RippleModels::Defs {
 template <class V> void describe(V& v, RippleDef& d) {
     v.field("enabled", d.enabled, "ripple layer on or off");
     v.field("model", d.model,
-"kang2008: [Kang2008] eq. 1-2 (the paper; a height field: vertical water velocity only, no horizontal); "
+            "kang2008: [Kang2008] eq. 1-2 (the paper; a height field: vertical water velocity only, no horizontal); "
             "ewave: dispersive water waves (exact per Fourier mode; vertical and horizontal surface velocity)");
     v.field("backend", d.backend, "where the ripple step runs (either model; ewave on the GPU up to 2048 cells per side)");
     v.field("resolution", d.resolution, powerOfTwo(16, 4096), "cells per side (N)");

@@ -2,6 +2,8 @@
 // Fourier mode û = i·K/(|K|·tanh(|K|d))·∂ĥ/∂t, so a travelling wave h = a·cos(K·X − ωt) carries
 // u = a·ω/tanh(|K|d)·cos(K·X − ωt)·K̂ (deep water: tanh → 1), ω the medium's dispersion; the
 // nested levels' composite cross-fades it as it does h and v; kang2008 has none.
+#include "core/parallel.h"
+#include "core/thread_choice.h"
 #include "interaction/ewave/ewave_levels.h"
 #include "interaction/ewave/ewave_solver.h"
 #include "interaction/ripple_patch.h"
@@ -12,6 +14,7 @@
 #include <cmath>
 #include <functional>
 #include <numbers>
+#include <random>
 #include <string>
 
 using namespace ob::interaction;
@@ -275,4 +278,34 @@ TEST_CASE("ewave horizontal velocity: scrolls with the grid, clears, is 0 inside
     CHECK(glm::length(patch.horizontalVelocityAt({3.0f + 2.0f, 2.0f})) > 0.0f);
     solver.clear();
     CHECK(glm::length(patch.horizontalVelocityAt(at)) == 0.0f);
+}
+
+// The horizontal fields and the wavenumber are made in row bands (the fused pass) and by
+// transforms on either worker: on 1, 2 and 3 workers (the step split over 2 or not) they are the
+// same bits, as the state is (absorbing 256², noise, 3 steps).
+TEST_CASE("ewave horizontal velocity: the same bits on any worker count", "[ewave][ewave_velocity][parallel]") {
+    const int n = 256;
+    std::vector<float> first[2];
+    double firstK = -1.0;
+    ob::setThreadMeasuring(false);  // every worker count splits, whatever this machine measured
+    for (int workers : {1, 2, 3}) {
+        ob::setWorkerCount(workers);
+        EWaveField f(n, n, 0.25f, RippleBoundary::Absorbing, 32);
+        std::mt19937 rng(7);
+        std::uniform_real_distribution<double> noise(-0.01, 0.01);
+        for (double& h : f.editHeight()) h = noise(rng);
+        for (double& v : f.editVelocity()) v = 3.0 * noise(rng);
+        for (int s = 0; s < 3; ++s) f.step(1.0f / 60.0f);
+        INFO(workers << " workers: velocityWavenumber " << f.velocityWavenumber() << " rad/m");
+        CHECK(f.velocityWavenumber() > 0.0);
+        if (firstK < 0.0) {
+            firstK = f.velocityWavenumber();
+            for (int a = 0; a < 2; ++a) first[a].assign(f.horizontalVelocity(a).begin(), f.horizontalVelocity(a).end());
+            continue;
+        }
+        CHECK(f.velocityWavenumber() == firstK);
+        for (int a = 0; a < 2; ++a) CHECK(std::equal(first[a].begin(), first[a].end(), f.horizontalVelocity(a).begin()));
+    }
+    ob::setWorkerCount(0);
+    ob::setThreadMeasuring(true);
 }

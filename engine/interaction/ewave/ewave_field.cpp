@@ -69,54 +69,95 @@ OB_VECTOR_KERNEL void changeKernel(float* __restrict hs, float* __restrict vs, c
 // One spectrum row of n modes (SPEC §2.5c): the new state's ĥ', v̂' = scale·(ĥ, v̂) + their change
 // (coef's a − 1, b, c as changeKernel, which carry `scale`; coef null: no change, the state as it
 // is), then û = i·K·r·v̂' into ux, uz and, when xx is not null, ξ̂ = i·K·r·ĥ' into xx, xz, with
-// K = (kx[m], kz) and r = riesz[m] = 1/(|K|·tanh(|K|d)); sums[0] += w·|K|·|v̂'|², sums[1] +=
-// w·|v̂'|² over the modes with r > 0 (K ≠ 0), w = weight[m] the mode's count in the full spectrum.
+// K = (kx[m], kz) and r = riesz[m] = 1/(|K|·tanh(|K|d)); power[m] = weight[m]·|v̂'|² (weight: the
+// mode's count in the full spectrum; the caller zeroes K = 0's and sums: sumsKernel).
 // Multiplying by i: (re, im) → (−im, re).
 OB_VECTOR_KERNEL void horizontalKernel(const float* __restrict hs, const float* __restrict vs,
-                                       const double* __restrict coef, float scale, const float* __restrict riesz,
-                                       const float* __restrict kabs, const float* __restrict kx,
-                                       const float* __restrict weight, float kz, float* __restrict ux,
-                                       float* __restrict uz, float* __restrict xx, float* __restrict xz, int n,
-                                       double* __restrict sums) {
-    double num = 0.0, den = 0.0;
+                                       const double* __restrict coef, double scale, const float* __restrict riesz,
+                                       const float* __restrict kx, const float* __restrict weight, float kz,
+                                       float* __restrict ux, float* __restrict uz, float* __restrict xx,
+                                       float* __restrict xz, float* __restrict power, int n) {
+    if (coef) {
+        for (int m = 0; m < n; ++m) {
+            const double am1 = coef[3 * m], c = coef[3 * m + 2];
+            const float n0 = float(scale * vs[2 * m] + (c * hs[2 * m] + am1 * vs[2 * m]));
+            const float n1 = float(scale * vs[2 * m + 1] + (c * hs[2 * m + 1] + am1 * vs[2 * m + 1]));
+            const float mx = kx[m] * riesz[m], mz = kz * riesz[m];
+            ux[2 * m] = -mx * n1;
+            ux[2 * m + 1] = mx * n0;
+            uz[2 * m] = -mz * n1;
+            uz[2 * m + 1] = mz * n0;
+            power[m] = weight[m] * (n0 * n0 + n1 * n1);
+        }
+    } else {
+        const float sc = float(scale);
+        for (int m = 0; m < n; ++m) {
+            const float n0 = sc * vs[2 * m], n1 = sc * vs[2 * m + 1];
+            const float mx = kx[m] * riesz[m], mz = kz * riesz[m];
+            ux[2 * m] = -mx * n1;
+            ux[2 * m + 1] = mx * n0;
+            uz[2 * m] = -mz * n1;
+            uz[2 * m + 1] = mz * n0;
+            power[m] = weight[m] * (n0 * n0 + n1 * n1);
+        }
+    }
+    if (!xx) return;
     for (int m = 0; m < n; ++m) {
-        double h[2], v[2];
-        for (int p = 0; p < 2; ++p) {
-            h[p] = double(scale) * hs[2 * m + p];
-            v[p] = double(scale) * vs[2 * m + p];
-        }
+        double h0 = scale * hs[2 * m], h1 = scale * hs[2 * m + 1];
         if (coef) {
-            const double am1 = coef[3 * m], b = coef[3 * m + 1], c = coef[3 * m + 2];
-            const double h0 = hs[2 * m], h1 = hs[2 * m + 1], v0 = vs[2 * m], v1 = vs[2 * m + 1];
-            h[0] += am1 * h0 + b * v0;
-            h[1] += am1 * h1 + b * v1;
-            v[0] += c * h0 + am1 * v0;
-            v[1] += c * h1 + am1 * v1;
+            h0 += coef[3 * m] * hs[2 * m] + coef[3 * m + 1] * vs[2 * m];
+            h1 += coef[3 * m] * hs[2 * m + 1] + coef[3 * m + 1] * vs[2 * m + 1];
         }
+        const float mx = kx[m] * riesz[m], mz = kz * riesz[m];
+        xx[2 * m] = float(-mx * h1);
+        xx[2 * m + 1] = float(mx * h0);
+        xz[2 * m] = float(-mz * h1);
+        xz[2 * m + 1] = float(mz * h0);
+    }
+}
+
+// changeKernel and the horizontal velocity's spectra in one pass over a spectrum row (the step
+// without the displacement): with Δĥ, Δv̂ as changeKernel makes them, the new state's v̂' =
+// scale·v̂ + Δv̂ (the coefficients carry `scale`, 1/(rows·cols)), û = i·K·r·v̂' into ux, uz as
+// horizontalKernel, and power[m] = w·|v̂'|² (the caller zeroes K = 0's), the reduction left to
+// sumsKernel: no branch and no reduction, so this loop vectorises.
+OB_VECTOR_KERNEL void changeVelocityKernel(float* __restrict hs, float* __restrict vs, const double* __restrict coef,
+                                           double scale, const float* __restrict riesz, const float* __restrict kx,
+                                           const float* __restrict weight, float kz, float* __restrict ux,
+                                           float* __restrict uz, float* __restrict power, int n) {
+    for (int m = 0; m < n; ++m) {
+        const double am1 = coef[3 * m], b = coef[3 * m + 1], c = coef[3 * m + 2];
+        const double h0 = hs[2 * m], h1 = hs[2 * m + 1], v0 = vs[2 * m], v1 = vs[2 * m + 1];
+        const double dv0 = c * h0 + am1 * v0, dv1 = c * h1 + am1 * v1;
+        hs[2 * m] = float(am1 * h0 + b * v0);
+        hs[2 * m + 1] = float(am1 * h1 + b * v1);
+        vs[2 * m] = float(dv0);
+        vs[2 * m + 1] = float(dv1);
+        const float n0 = float(scale * v0 + dv0), n1 = float(scale * v1 + dv1);
         const float r = riesz[m];
         const float mx = kx[m] * r, mz = kz * r;
-        ux[2 * m] = float(-mx * v[1]);
-        ux[2 * m + 1] = float(mx * v[0]);
-        uz[2 * m] = float(-mz * v[1]);
-        uz[2 * m + 1] = float(mz * v[0]);
-        const double power = r > 0.0f ? double(weight[m]) * (v[0] * v[0] + v[1] * v[1]) : 0.0;
-        num += double(kabs[m]) * power;
-        den += power;
+        ux[2 * m] = -mx * n1;
+        ux[2 * m + 1] = mx * n0;
+        uz[2 * m] = -mz * n1;
+        uz[2 * m + 1] = mz * n0;
+        power[m] = weight[m] * (n0 * n0 + n1 * n1);
     }
-    if (xx) {
-        for (int m = 0; m < n; ++m) {
-            double h[2] = {double(scale) * hs[2 * m], double(scale) * hs[2 * m + 1]};
-            if (coef) {
-                h[0] += coef[3 * m] * hs[2 * m] + coef[3 * m + 1] * vs[2 * m];
-                h[1] += coef[3 * m] * hs[2 * m + 1] + coef[3 * m + 1] * vs[2 * m + 1];
-            }
-            const float r = riesz[m];
-            const float mx = kx[m] * r, mz = kz * r;
-            xx[2 * m] = float(-mx * h[1]);
-            xx[2 * m + 1] = float(mx * h[0]);
-            xz[2 * m] = float(-mz * h[1]);
-            xz[2 * m + 1] = float(mz * h[0]);
-        }
+}
+
+// sums[0] = Σ kabs[m]·power[m], sums[1] = Σ power[m] over a row, in float (a row's sum to ~1e-6
+// of itself, ample for a mean wavenumber), reassociated into vector lanes: the order is fixed by
+// the code the clone was built with, so the bits do not depend on the workers; only this
+// reduction is relaxed, never the state's arithmetic.
+#if defined(__GNUC__) && !defined(__clang__)
+#define OB_RELAXED_SUM __attribute__((optimize("associative-math", "no-signed-zeros", "no-trapping-math")))
+#else
+#define OB_RELAXED_SUM
+#endif
+OB_RELAXED_SUM OB_VECTOR_KERNEL void sumsKernel(const float* __restrict power, const float* __restrict kabs, int n, double* __restrict sums) {
+    float num = 0.0f, den = 0.0f;
+    for (int m = 0; m < n; ++m) {
+        num += kabs[m] * power[m];
+        den += power[m];
     }
     sums[0] = num;
     sums[1] = den;
@@ -193,6 +234,7 @@ EWaveField::EWaveField(int rows, int cols, float cellSize, RippleBoundary bounda
         m_horizSpec[f] = allocFloat(2 * m_modes);
     }
     m_rowSums.assign(2 * size_t(m_rows), 0.0);
+    m_power.assign(m_modes, 0.0f);
     prepareHorizontal();
     m_sourceSum.assign(m_cells, 0.0f);
     chooseThreads();
@@ -289,16 +331,23 @@ void EWaveField::keepHorizontalDisplacement(bool on) {
 // state as transformed) into the horizontal fields' spectra and its sums of velocityWavenumber.
 // kz = 2π·(j or j − rows)/(rows·Δ), 0 at the Nyquist row.
 void EWaveField::horizontalRow(int j, bool change) {
-    const size_t row = 2 * size_t(j) * size_t(m_specCols);
-    const int jm = std::min(j, m_rows - j);
-    const size_t coefRow = size_t(jm) * size_t(m_specCols);
+    const size_t row = size_t(j) * size_t(m_specCols);
+    const size_t coefRow = size_t(std::min(j, m_rows - j)) * size_t(m_specCols);
+    float* power = m_power.data() + row;
+    horizontalKernel(m_spec[0] + 2 * row, m_spec[1] + 2 * row, change ? m_coef.data() + 3 * coefRow : nullptr,
+                     1.0 / (double(m_rows) * double(m_cols)), m_riesz.data() + coefRow, m_kx.data(), m_weight.data(),
+                     rowKz(j), m_horizSpec[0] + 2 * row, m_horizSpec[1] + 2 * row,
+                     m_displacement ? m_horizSpec[2] + 2 * row : nullptr, m_displacement ? m_horizSpec[3] + 2 * row : nullptr,
+                     power, m_specCols);
+    if (j == 0) power[0] = 0.0f;  // K = 0: the mean, no wave (its û is 0: r = 0)
+    sumsKernel(power, m_kabs.data() + coefRow, m_specCols, m_rowSums.data() + 2 * size_t(j));
+}
+
+// kz of spectrum row j: 2π·(j, or j − rows past the middle)/(rows·Δ), rad/m; 0 at the Nyquist
+// row (its ±kz are one mode of a real field).
+float EWaveField::rowKz(int j) const {
     const int signedJ = j <= m_rows / 2 ? j : j - m_rows;
-    const float kz = 2 * j == m_rows ? 0.0f : float(2.0 * std::numbers::pi * signedJ / (double(m_rows) * m_cellSize));
-    const float scale = float(1.0 / (double(m_rows) * double(m_cols)));
-    horizontalKernel(m_spec[0] + row, m_spec[1] + row, change ? m_coef.data() + 3 * coefRow : nullptr, scale,
-                     m_riesz.data() + coefRow, m_kabs.data() + coefRow, m_kx.data(), m_weight.data(), kz,
-                     m_horizSpec[0] + row, m_horizSpec[1] + row, m_displacement ? m_horizSpec[2] + row : nullptr,
-                     m_displacement ? m_horizSpec[3] + row : nullptr, m_specCols, m_rowSums.data() + 2 * size_t(j));
+    return 2 * j == m_rows ? 0.0f : float(2.0 * std::numbers::pi * signedJ / (double(m_rows) * m_cellSize));
 }
 
 void EWaveField::setDamping(float decayTime, float viscosity) {
@@ -507,8 +556,18 @@ void EWaveField::changeRows(int j0, int j1) {
     for (int j = j0; j < j1; ++j) {
         const size_t row = size_t(j) * size_t(m_specCols);
         const size_t coefRow = size_t(std::min(j, m_rows - j)) * size_t(m_specCols);
-        horizontalRow(j, true);
-        changeKernel(m_spec[0] + 2 * row, m_spec[1] + 2 * row, m_coef.data() + 3 * coefRow, m_specCols);
+        if (m_displacement) {  // ξ too (the coarse levels, which step rarely): the two passes
+            horizontalRow(j, true);
+            changeKernel(m_spec[0] + 2 * row, m_spec[1] + 2 * row, m_coef.data() + 3 * coefRow, m_specCols);
+            continue;
+        }
+        float* power = m_power.data() + row;
+        changeVelocityKernel(m_spec[0] + 2 * row, m_spec[1] + 2 * row, m_coef.data() + 3 * coefRow,
+                             1.0 / (double(m_rows) * double(m_cols)), m_riesz.data() + coefRow, m_kx.data(),
+                             m_weight.data(), rowKz(j), m_horizSpec[0] + 2 * row, m_horizSpec[1] + 2 * row, power,
+                             m_specCols);
+        if (j == 0) power[0] = 0.0f;  // K = 0: the mean, no wave (its û is 0: r = 0)
+        sumsKernel(power, m_kabs.data() + coefRow, m_specCols, m_rowSums.data() + 2 * size_t(j));
     }
     if (j0 == 0) {  // the change's spectrum carries the inverse transform's 1/(rows·cols), as the coefficients do
         const float norm = float(1.0 / (double(m_rows) * double(m_cols)));

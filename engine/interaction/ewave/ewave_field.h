@@ -58,9 +58,11 @@ struct EWaveMedium {
 ///   1. the forward real-to-complex transforms of the float copies of h and v (FFTW, float,
 ///      each whole on one worker);
 ///   2. per mode, in place, in row bands: Δĥ = (a − 1)·ĥ + b·v̂, Δv̂ = c·ĥ + (a − 1)·v̂ (double;
-///      a, b, c of modeStep, stored once for rows j and rows − j, which share |k|);
+///      a, b, c of modeStep, stored once for rows j and rows − j, which share |k|), and in the
+///      same pass the horizontal velocity's spectra i·K/(|K|·tanh(|K|d))·v̂' of the new v̂' and
+///      the sums of velocityWavenumber;
 ///   3. per field: the inverse transform of its change added to it, the boundary in real space,
-///      its float copy;
+///      its float copy; the horizontal velocity's two inverse transforms and the boundary;
 ///   4. the volume (Periodic, Absorbing): h's sum set back to what it was, exactly (conserveVolume).
 ///
 /// Volume. A pressure (a source) or a sponge moves water; it cannot make or remove it, so the
@@ -229,6 +231,7 @@ private:
     void finishHorizontal(int f);  // the boundary on horizontal field f (0, 1: u; 2, 3: ξ)
     void inverseTransforms(bool state);  // pass 3 (state: h and v too) over the workers
     void horizontalRow(int j, bool change);  // û (ξ̂) of spectrum row j's new state, its sums (see the .cpp)
+    float rowKz(int j) const;                // kz of spectrum row j, rad/m (0 at the Nyquist row)
     void prepareHorizontal();  // m_riesz, m_kabs, m_kx, m_weight of the medium
     void sumVelocityWavenumber();
     void syncFloatCopies();  // before the forward transforms  // m_rowSums in row order into m_velocityWavenumber
@@ -268,6 +271,7 @@ private:
     std::vector<float> m_kx;           // per spectrum column: kx, rad/m, 0 at the Nyquist column
     std::vector<float> m_weight;       // per spectrum column: its modes' count in the full spectrum (1 or 2)
     std::vector<double> m_rowSums;     // per spectrum row: Σw·|K|·|v̂'|², Σw·|v̂'|² (velocityWavenumber)
+    std::vector<float> m_power;        // per mode: w·|v̂'|² (the step's fused pass, summed per row after it)
     double m_velocityWavenumber = 0.0; // rad/m
     bool m_displacement = false;       // keepHorizontalDisplacement
 };
