@@ -32,9 +32,10 @@ template <class V> void describe(V& v, CurrentSource& d) {
 struct CurrentsDef {
     bool enabled = true;                   ///< false: no current layer at all
     int resolution = 128;                  ///< cells a side, power of two in [16, 1024]
-    float cell_size = 2.0f;                ///< Δ, m, [0.05, 100]: 128 × 2 m covers a harbour basin of 256 m
-    float depth = 2.0f;                    ///< d, thickness of the layer that carries the momentum, m, [0.05, 1000]; a hull's
-                                           ///< draft: the water a small craft pushes and is pushed by
+    float cell_size = 0.5f;                ///< Δ, m, [0.05, 100]: 128 × 0.5 m covers the default ripple patch (51 m) and
+                                           ///< resolves the swirl of a stir of 0.6 m (a harbour basin: 2 m cells)
+    float depth = 1.0f;                    ///< d, thickness of the layer that carries the momentum, m, [0.05, 1000]; the
+                                           ///< draft of what floats: the water a small craft pushes and is pushed by
     glm::vec2 uniform{0.0f, 0.0f};         ///< background current (tide, river), [x, z] m/s, each in [-10, 10]
     float decay_time = 120.0f;             ///< e-folding time of the departure from the background by bottom friction and
                                            ///< mixing, s, [0, 1e6]; 0 = no decay. 120 s: a jet of a few m/s fades within

@@ -3,6 +3,7 @@
 // (sim/objects.h WaterImpulses: Newton's third law), the wind and the walls, then stepped.
 #pragma once
 #include "currents/currents_def.h"
+#include "ecs/schedule.h"
 #include "ecs/world.h"
 
 namespace ob::game {

@@ -11,6 +11,7 @@ namespace ob::game {
 namespace {
 
 constexpr double WIND_DIRECTION_LIMIT = 3600.0;  // degrees either way
+constexpr float CURRENT_SPEED_LIMIT = 10.0f;     // m/s: the uniform current's components' range
 
 // Visits the scene's numbers and switches with their full path: `found(key, slot)` is called
 // for each with a SceneKey and the address of its value.
@@ -77,6 +78,8 @@ std::vector<std::string> liveKeys() {
     for (const SceneKey& k : sceneKeys())
         if (k.change == Change::Live) keys.push_back(k.path);
     keys.push_back(WIND_DIRECTION_DEG);
+    keys.push_back(CURRENT_SPEED);
+    keys.push_back(CURRENT_DIRECTION_DEG);
     return keys;
 }
 
@@ -87,10 +90,14 @@ std::string liveKeyHelp() {
 }
 
 std::string checkLiveSet(const std::string& key, float value) {
-    if (key == WIND_DIRECTION_DEG)
+    if (key == WIND_DIRECTION_DEG || key == CURRENT_DIRECTION_DEG)
         return std::abs(value) <= WIND_DIRECTION_LIMIT
                    ? ""
                    : "value: " + key + " takes degrees in [-3600, 3600], got " + std::to_string(value);
+    if (key == CURRENT_SPEED)
+        return value >= 0.0f && value <= CURRENT_SPEED_LIMIT
+                   ? ""
+                   : "value: " + key + " takes m/s in [0, 10], got " + std::to_string(value);
     SceneDef scene;
     const Slot slot = findKey(scene, key);
     if (!slot.value) return "key: '" + key + "' is not a number or switch of the scene";
@@ -104,6 +111,13 @@ SceneSection setLiveKey(SceneDef& scene, const std::string& key, float value) {
         const double rad = double(value) * std::numbers::pi / 180.0;
         scene.ocean.wind_direction = {float(std::cos(rad)), float(std::sin(rad))};
         return SceneSection::Ocean;
+    }
+    if (key == CURRENT_SPEED || key == CURRENT_DIRECTION_DEG) {
+        glm::vec2& u = scene.currents.uniform;
+        const float speed = key == CURRENT_SPEED ? value : std::hypot(u.x, u.y);
+        const double rad = key == CURRENT_DIRECTION_DEG ? double(value) * std::numbers::pi / 180.0 : std::atan2(u.y, u.x);
+        u = speed * glm::vec2(float(std::cos(rad)), float(std::sin(rad)));
+        return SceneSection::Currents;
     }
     const Slot slot = findKey(scene, key);
     assert(slot.value && slot.key.change == Change::Live && "checkLiveSet first");

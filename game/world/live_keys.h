@@ -23,10 +23,14 @@ struct SceneKey {
 /// +x toward +z (a `set` carries one number; ocean.wind_direction is a vector). It writes
 /// ocean.wind_direction = [cos, sin].
 constexpr const char* WIND_DIRECTION_DEG = "ocean.wind_direction_deg";
+/// Two more: the uniform current's speed (m/s, [0, 10]) and heading (degrees as the wind's);
+/// they write currents.uniform = speed·[cos, sin].
+constexpr const char* CURRENT_SPEED = "currents.speed";
+constexpr const char* CURRENT_DIRECTION_DEG = "currents.direction_deg";
 
 /// Every number and switch of the scene's sections, in describe() order.
 std::vector<SceneKey> sceneKeys();
-/// The keys a `set` may change while the world runs (the LIVE ones, and WIND_DIRECTION_DEG).
+/// The keys a `set` may change while the world runs (the LIVE ones, WIND_DIRECTION_DEG and the current's two).
 std::vector<std::string> liveKeys();
 /// The live keys as one line for messages and help.
 std::string liveKeyHelp();

@@ -5,6 +5,8 @@
 #include "behaviours/cannon.h"
 #include "world/controls.h"
 #include "core/hash.h"
+#include "currents/current_layer.h"
+#include "sim/currents_system.h"
 #include "ecs/components.h"
 #include "interaction/ripple_patch.h"
 #include "behaviours/fish.h"
@@ -55,6 +57,7 @@ const ecs::SystemEntry SYSTEMS[] = {
     {Phase::Script, Rate::Step, "game", gameSystem},  // after the behaviours: judges the last physics step
     {Phase::Physics, Rate::Step, "bodies", physicsSystem},
     {Phase::Interaction, Rate::Step, "patch follows", patchFollowSystem},
+    {Phase::Interaction, Rate::Step, "currents", currentsSystem},  // after the bodies' impulses, before the foam it carries
     {Phase::Interaction, Rate::Step, "ripples", interactionSystem},
     {Phase::Interaction, Rate::Step, "splashes and foam", splashFoamSystem},
     {Phase::Ocean, Rate::Step, "ocean", oceanSystem},
@@ -74,6 +77,7 @@ Sandbox::Sandbox(const SceneDef& scene) : m_schedule(scene.sim) {
     spawnCamera(m_world, def.camera);
     addOcean(m_world, def.ocean, def.gerstner);
     addRipples(m_world, def.ripples, float(m_schedule.stepSeconds()));
+    addCurrents(m_world, def.currents, def.physics.water_density);
     addSplashFoam(m_world, def.splash, def.foam, def.sim.seed);
     for (const StampSource& source : {bodySource(), cannonSource(), fishSource()}) addStampSource(m_world, source);
     spawnObjects(m_world, def.physics, def.objects, def.sim.seed);
@@ -183,6 +187,7 @@ uint64_t Sandbox::stateHash() {
         for (const glm::vec3& p : school.position) h.f32s(&p.x, 3);
     }
     if (auto* patch = m_world.resource<interaction::RipplePatch>()) patch->hashState(h);
+    if (auto* layer = m_world.resource<currents::CurrentLayer>()) layer->hashState(h);
     auto& motions = m_world.pool<ecs::Motion>();
     for (size_t i = 0; i < motions.size(); ++i) h.f32s(&motions.components()[i].velocity.x, 3);
     hashSplashFoam(m_world, h);

@@ -5,6 +5,7 @@
 #include "world/controls.h"
 #include "sim/objects.h"
 #include "ecs/schedule.h"
+#include "currents/currents_def.h"
 #include "environment/environment_def.h"
 #include "foam/foam_def.h"
 #include "view_data/render_def.h"
@@ -52,6 +53,7 @@ struct SceneDef {
     physics::PhysicsDef physics;  ///< [physics]
     splash::SplashDef splash;     ///< [splash]
     foam::FoamDef foam;           ///< [foam]
+    currents::CurrentsDef currents; ///< [currents]: the surface current layer
     GameDef game;                 ///< [game]: the goal
     std::vector<ObjectDef> objects; ///< [[objects]]
     std::vector<EventDef> events;   ///< [[events]]: the timeline
@@ -72,6 +74,7 @@ template <class V> void describe(V& v, SceneDef& s) {
     v.section("physics", s.physics);
     v.section("splash", s.splash);
     v.section("foam", s.foam);
+    v.section("currents", s.currents);
     v.section("game", s.game);
     v.list("objects", s.objects, "bodies, ships, cannons, fish schools");
     v.list("events", s.events, "timeline: actions at simulated times");

@@ -1,6 +1,7 @@
 // The scene resource, and the push of a changed section to the objects that keep a copy.
 #include "world/scene_settings.h"
 
+#include "currents/current_layer.h"
 #include "interaction/ripple_patch.h"
 #include "world/camera.h"
 
@@ -14,6 +15,7 @@ namespace {
 struct SettingsSeen {
     SectionSeen camera;
     SectionSeen ripples;
+    SectionSeen currents;
 };
 
 } // namespace
@@ -41,6 +43,8 @@ void settingsSystem(ecs::World& world, const ecs::Tick&) {
     }
     if (seen->ripples.moved(*settings, SceneSection::Ripples))
         if (auto* patch = world.resource<interaction::RipplePatch>()) patch->retune(settings->def.ripples);
+    if (seen->currents.moved(*settings, SceneSection::Currents))
+        if (auto* layer = world.resource<currents::CurrentLayer>()) layer->retune(settings->def.currents);
 }
 
 } // namespace ob::game

@@ -11,8 +11,10 @@
 namespace ob::game {
 
 /// The sections with live keys (core/schema.h: LIVE), the unit a version counts changes of.
-enum class SceneSection : uint8_t { Camera, Render, Ocean, Gerstner, Ripples, Physics };
-constexpr std::array<const char*, 6> names(SceneSection) { return {"camera", "render", "ocean", "gerstner", "ripples", "physics"}; }
+enum class SceneSection : uint8_t { Camera, Render, Ocean, Gerstner, Ripples, Physics, Currents };
+constexpr std::array<const char*, 7> names(SceneSection) {
+    return {"camera", "render", "ocean", "gerstner", "ripples", "physics", "currents"};
+}
 
 /// The scene as the world runs it (a resource, made first by the sandbox).
 struct SceneSettings {

@@ -10,6 +10,7 @@
 #include "core/log.h"
 #include "ecs/components.h"
 #include "interaction/sphere_set.h"
+#include "physics/buoyancy.h"
 #include "sim/objects.h"
 #include "sim/water_systems.h"
 #include "water/composite_water.h"
@@ -86,6 +87,25 @@ void release(ecs::World& world, PlayerTools& tools) {
     tools.grabbed = ecs::Entity::None;
 }
 
+// The momentum a sphere of radius r moving at `velocity` through the water puts into the current
+// layer over dt (a hand's drag, ½ρ·C_d·A·|v − u|·(v − u) on its wet cross-section A), taken
+// implicitly on the water it sweeps (ρ·V: it can bring that water to its own speed, not past it,
+// so a cursor's jump pushes no more than a steady stroke).
+void pushWater(ecs::World& world, glm::vec3 centre, glm::vec3 velocity, float r, float dt) {
+    auto* impulses = world.resource<WaterImpulses>();
+    const OceanState* ocean = world.resource<OceanState>();
+    const physics::PhysicsDef* def = findPhysicsDef(world);
+    if (!impulses || !ocean || !def || dt <= 0.0f) return;
+    const water::WaterSample s = ocean->water->sample(centre.x, centre.z);
+    const float volume = physics::submergedSphereVolume(r, s.height - centre.y);
+    if (volume <= 0.0f) return;
+    const glm::vec3 relative = velocity - ocean->water->velocityAt(centre);
+    const float area = float(M_PI) * r * r * volume / (4.0f / 3.0f * float(M_PI) * r * r * r);
+    float c = 0.5f * def->water_density * def->quadratic_drag * area * glm::length(relative);
+    c /= 1.0f + c * dt / (def->water_density * volume);
+    impulses->react(-c * relative, centre, dt, r);
+}
+
 // --- stir: a source sphere held at stir_depth under the water point, moving with the cursor
 void stir(ecs::World& world, PlayerTools& tools, glm::vec3 waterPoint, float dt) {
     const float r = tools.def.stir_radius;
@@ -102,9 +122,11 @@ void stir(ecs::World& world, PlayerTools& tools, glm::vec3 waterPoint, float dt)
         world.add<interaction::SphereSet>(tools.stirrer, {{sphere}, {}, false});
     }
     ecs::Transform& t = world.get<ecs::Transform>(tools.stirrer);
-    world.get<ecs::Motion>(tools.stirrer).velocity = (centre - t.position) / std::max(dt, 1e-6f);
+    const glm::vec3 velocity = (centre - t.position) / std::max(dt, 1e-6f);
+    world.get<ecs::Motion>(tools.stirrer).velocity = velocity;
     t.position = centre;
     world.get<interaction::SphereSet>(tools.stirrer).spheres[0].radius = r;
+    pushWater(world, centre, velocity, r, dt);
 }
 
 void stopStirring(ecs::World& world, PlayerTools& tools) {
