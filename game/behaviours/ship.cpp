@@ -3,6 +3,8 @@
 // keel, high across it, and thrust and a rudder at the stern.
 #include "behaviours/ship.h"
 
+#include "currents/current_layer.h"
+
 #include "ecs/components.h"
 #include "interaction/sphere_set.h"
 #include "behaviours/step_input.h"
@@ -185,8 +187,17 @@ void shipSystem(ecs::World& world, const ecs::Tick& tick) {
         if (glm::dot(bow, bow) < 1e-6f) continue;  // standing on its end: no steering
         bow = glm::normalize(bow);
         const glm::vec3 starboard = glm::cross(bow, glm::vec3(0, 1, 0));
-        // The hull moves through the water: its speed is the one relative to the water's (the current, the waves' orbits).
-        const glm::vec3 through = motion.velocity - world.get<Body>(e).waterVelocity;
+        // The hull moves through the water: its speed is the one relative to the waves' orbits
+        // and the current it sails in, read two hull lengths ahead of the bow (the free stream:
+        // under and near the hull the current is the one the hull itself drags and pushes, a
+        // dipole of its resistance and its propeller's thrust, weaker as 1/r² away).
+        glm::vec3 water = world.get<Body>(e).waveVelocity;
+        if (const auto* layer = world.resource<currents::CurrentLayer>()) {
+            const glm::vec3 ahead = t.position + bow * (2.0f * ship.def.hull.z);
+            const glm::vec2 u = layer->velocityAt({ahead.x, ahead.z});
+            water += glm::vec3(u.x, 0.0f, u.y);
+        }
+        const glm::vec3 through = motion.velocity - water;
         const HullFrame frame{bow, starboard, std::atan2(bow.x, bow.z), glm::dot(through, bow), glm::dot(through, starboard)};
         const float targetSpeed = pilot(ship, t.position, frame.heading, input, float(tick.dt));
         hullForces(ship, t, motion, world.get<Body>(e), frame, targetSpeed);

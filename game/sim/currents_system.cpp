@@ -32,7 +32,11 @@ void currentsSystem(ecs::World& world, const ecs::Tick& tick) {
     if (const OceanState* ocean = world.resource<OceanState>()) {
         const glm::vec2 d = ocean->def.wind_direction;
         layer->setWind(glm::dot(d, d) > 0.0f ? ocean->def.wind_speed * glm::normalize(d) : glm::vec2(0.0f));
-        layer->setWalls(obstacleFootprints(world, ocean->water.get()));
+        // Walls: the fixed bodies. A floating hull moves with its water and trades momentum with
+        // it through its forces (WaterImpulses); held as a still wall it would stop the water it carries.
+        std::vector<interaction::ObstacleShape> walls = obstacleFootprints(world, ocean->water.get());
+        std::erase_if(walls, [](const interaction::ObstacleShape& s) { return s.displaces; });
+        layer->setWalls(walls);
     }
     for (const WaterImpulse& i : impulses->items) layer->addImpulse(i.at, i.impulse, std::max(i.radius, 0.5f * layer->cellSize()));
     impulses->items.clear();

@@ -12,7 +12,7 @@ namespace ob::game {
 /// adds it to the ocean's query. waterDensity in kg/m³. After addOcean.
 void addCurrents(ecs::World& world, const currents::CurrentsDef& def, float waterDensity);
 /// Interaction phase: the layer follows the ripple patch (or stays put without one), takes the
-/// wind at 10 m, the obstacles' footprints as walls and the step's impulses, then steps.
+/// wind at 10 m, the fixed bodies' footprints as walls and the step's impulses, then steps.
 void currentsSystem(ecs::World& world, const ecs::Tick& tick);
 
 } // namespace ob::game

@@ -2,6 +2,7 @@
 #include "sim/objects.h"
 
 #include "ecs/components.h"
+#include "currents/current_layer.h"
 #include "interaction/ripple_def.h"
 #include "interaction/ripple_patch.h"
 #include "interaction/sphere_set.h"
@@ -211,6 +212,7 @@ void physicsSystem(ecs::World& world, const ecs::Tick& tick) {
     const float dt = float(tick.dt);
     const auto* patch = world.resource<interaction::RipplePatch>();
     auto* impulses = world.resource<WaterImpulses>();
+    const auto* layer = world.resource<currents::CurrentLayer>();
     const float gravity = def->gravity;
 
     // --- water and air forces, per probe (Morison: buoyancy.h), then the behaviours' forces;
@@ -242,12 +244,16 @@ void physicsSystem(ecs::World& world, const ecs::Tick& tick) {
             p.velocity = s.linearVelocity + glm::cross(s.angularVelocity, p.centre - s.position);
             // The ocean and current without the ripples: their level and motion come from round
             // the body (above), not from the crater it stamps itself.
-            const water::WaterLayers sea{.ripples = false};
+            const water::WaterLayers sea{.ripples = false, .currents = false};
             const water::WaterSample w = water->sample(p.centre.x, p.centre.z, sea);
             p.surfaceHeight = w.height;
             p.surfaceNormal = w.normal;
-            p.waterVelocity = water->velocityAt(p.centre, sea);
-            const glm::vec3 ocean = p.waterVelocity;  // what a hull steers through (its own wake left out)
+            const glm::vec3 waves = water->velocityAt(p.centre, sea);  // the waves' orbits: what a hull's model adds its current to
+            p.waterVelocity = waves;
+            if (layer) {
+                const glm::vec2 u = layer->velocityAt({p.centre.x, p.centre.z});
+                p.waterVelocity += glm::vec3(u.x, 0.0f, u.y);
+            }
             if (patch) {
                 const glm::vec2 xz(p.centre.x, p.centre.z);
                 const float level = rippleAround(*patch, xz, reach);
@@ -274,14 +280,14 @@ void physicsSystem(ecs::World& world, const ecs::Tick& tick) {
             submerged += f.submergedFraction * v;
             addedMass += f.addedMass;
             if (f.submergedFraction > 0.0f) {
-                waterSum += ocean * f.submergedFraction;
+                waterSum += waves * f.submergedFraction;
                 wet += f.submergedFraction;
             }
         }
         body.submergedFraction = probeVolume > 0.0f ? submerged / probeVolume : 0.0f;
         if (body.submergedFraction == 0.0f)  // in flight: a ballistic body (windage is leeway, the drift of what floats)
             for (physics::ProbeForce& f : forces) f.force -= std::exchange(f.airForce, glm::vec3(0.0f));
-        body.waterVelocity = wet > 0.0f ? waterSum / wet : glm::vec3(0.0f);
+        body.waveVelocity = wet > 0.0f ? waterSum / wet : glm::vec3(0.0f);
 
         // Horizontally the added mass counts as much as the probes' drag does (ships: not at
         // all; their hull model, tuned on the hull's own surge and sway, stands in for it).

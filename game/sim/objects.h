@@ -223,7 +223,8 @@ struct Body {  // what it is: the entity's ObjectTag
     float volume = 0.0f;             ///< m³ of the solid
     float submergedFraction = 0.0f;  ///< of the probes' volume under the surface, last step
     float horizontalDrag = 1.0f;     ///< scale of the probes' drag on horizontal motion (ships: 0, the hull model resists)
-    glm::vec3 waterVelocity{0.0f};   ///< the water's velocity averaged over the wet probes, last step, m/s (the hull model steers through it)
+    glm::vec3 waveVelocity{0.0f};    ///< the waves' orbital velocity averaged over the wet probes, last step, m/s (no
+                                     ///< current, no ripples: a hull model adds the current it sails in, see ship.cpp)
     std::vector<glm::vec3> probeWater;  ///< each probe's water velocity last step, m/s (its rate is the water's Du/Dt)
     glm::vec3 angularVelocity{0.0f}; ///< rad/s, world, after the last step
     std::vector<AppliedForce> forces;  ///< behaviour forces for the next step (cleared by the step)

@@ -154,7 +154,7 @@ TEST_CASE("currents: the projection leaves a random field divergence-free (stagg
     CHECK(walled.maxDivergence() / maxFaceSpeed(walled) <= 1e-3f);
 }
 
-TEST_CASE("currents: no flux through a wall; the flow through its gap is what crosses the whole line", "[currents]") {
+TEST_CASE("currents: no flux through a wall, the flow through its gap is what crosses the whole line", "[currents]") {
     const GapFlow with = channelFlow(true);
     INFO("gap " << with.gap << " m²/s, wall line " << with.wallLine << ", upstream column " << with.upstream << ", wall cells "
                 << with.wallCells);

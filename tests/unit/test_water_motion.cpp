@@ -108,14 +108,15 @@ TEST_CASE("a small ball on one linear (Airy) wave drifts at the Stokes drift", "
 }
 
 TEST_CASE("leeway: a floating ball in the wind drifts where the air's drag equals the water's", "[physics][water_motion]") {
-    // No waves, no current: steady drift v where, per the drag laws of physics/buoyancy.h with
+    // No waves, no current (the layer off: its water would be dragged along by the ball's own
+    // drag, Newton's third law, and carry it faster): steady drift v where, per the drag laws of physics/buoyancy.h with
     // the scene's coefficients (C_da = 1, C_d = 0.6, linear 1000 N·s/m per m²),
     //   ½ρ_a·C_da·A_air·(U − v)² = linear·A_w·v + ½ρ_w·C_d·A_w·v²,
     // A_w = π r²·f and A_air = π r²·(1 − f) (f the submerged fraction), U the wind at the ball's
     // top from the neutral log profile U10·ln(z/z0)/ln(10/z0), z0 = 2e-4 m.
     const double u10 = 20.0, r = 0.5;
     const std::string scene = "[ocean]\namplitude = 0.0\nwind_speed = 20.0\nwind_direction = [1.0, 0.0]\n[gerstner]\ncount = 0\n"
-                              "[ripples]\nenabled = false\n[[objects]]\ntype = \"sphere\"\nradius = 0.5\ndensity = 300.0\n"
+                              "[ripples]\nenabled = false\n[currents]\nenabled = false\n[[objects]]\ntype = \"sphere\"\nradius = 0.5\ndensity = 300.0\n"
                               "position = [0, 0, 0]\n";
     game::Sandbox sandbox(game::parseScene(scene, "leeway.toml"));
     const std::vector<glm::vec3> p = track(sandbox, 60 * 40);
