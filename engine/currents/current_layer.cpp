@@ -341,10 +341,21 @@ void CurrentLayer::addUniform(glm::dvec2 du) {
 }
 
 // --- queries
-glm::vec2 CurrentLayer::velocityAt(glm::vec2 world) const {
+glm::vec2 CurrentLayer::flowAt(glm::vec2 world) const {
     const glm::vec2 g = m_grid.toGrid(world);
     const int n = m_grid.n;
     return {samplePadded(m_u.data(), n, g + glm::vec2(0.5f, 1.0f)), samplePadded(m_v.data(), n, g + glm::vec2(1.0f, 0.5f))};
+}
+
+glm::vec2 CurrentLayer::velocityAt(glm::vec2 world) const {
+    glm::vec2 u = flowAt(world);
+    // A 2-D source of outflow q at s moves the water at q/(2π)·r/|r|², r = x − s.
+    for (const Displacer& d : m_displacers) {
+        const glm::vec2 a = world - d.source, b = world - d.sink;
+        const float c2 = d.core * d.core;
+        u += d.strength / (2.0f * float(M_PI)) * (a / (glm::dot(a, a) + c2) - b / (glm::dot(b, b) + c2));
+    }
+    return u;
 }
 
 void CurrentLayer::velocityBatch(std::span<const glm::vec2> world, std::span<glm::vec2> out) const {

@@ -74,6 +74,21 @@ public:
     /// The flow at a world point, [x, z] m/s: bilinear on the faces; outside the grid the
     /// background flow (uniform + the wind drift it tends to).
     glm::vec2 velocityAt(glm::vec2 world) const;
+    /// The layer's own flow at `world` (velocityAt without the displacers' flow), m/s.
+    glm::vec2 flowAt(glm::vec2 world) const;
+    /// A hull moving through the layer pushes its water aside: the potential flow round a
+    /// Rankine body, a 2-D source of `strength` q (m²/s of outflow) at `source` and the sink −q at
+    /// `sink` (a hull of beam B moving at U along its keel: q = U·B, the flux its half-body
+    /// parts; far away a dipole, 1/r²). Instantaneous and momentless, it is added to what
+    /// velocityAt reads (bodies, foam), not stored. `core`: m, the radius inside which it is
+    /// smoothed (|r|² + core²).
+    struct Displacer {
+        glm::vec2 source{0.0f}, sink{0.0f};  ///< world (x, z), m
+        float strength = 0.0f;               ///< q, m²/s
+        float core = 0.5f;                   ///< m
+    };
+    /// The displacers of this step (replacing the last ones).
+    void setDisplacers(std::vector<Displacer> displacers) { m_displacers = std::move(displacers); }
     /// velocityAt for each point of `world` into `out` (same size).
     void velocityBatch(std::span<const glm::vec2> world, std::span<glm::vec2> out) const;
     /// The flow at cell (i, j)'s centre (the mean of its faces), m/s: what an arrow shows.
@@ -135,6 +150,7 @@ private:
     void chooseThreads();
 
     CurrentsDef m_def;
+    std::vector<Displacer> m_displacers;
     float m_rho;
     ScrollingGrid m_grid;
     std::vector<float> m_u, m_v;            // faces, (n + 2)² each

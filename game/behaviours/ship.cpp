@@ -151,7 +151,9 @@ void hullForces(const Ship& ship, const ecs::Transform& t, const ecs::Motion& mo
                               : std::clamp(mass * targetSpeed * std::abs(targetSpeed) / (top * COAST_TIME) +
                                                mass * (targetSpeed - f.forward) / SPEED_TIME,
                                            -0.5f * maxThrust, 1.5f * maxThrust);
-    body.forces.push_back({f.bow * (thrust * wet), stern, true});
+    // The propeller works below the surface layer (under the keel): its jet is not the layer's,
+    // so its reaction goes outside it; the hull's resistance, keel and rudder act on the layer.
+    body.forces.push_back({f.bow * (thrust * wet), stern, false});
     body.forces.push_back({-f.bow * (resistance * wet), t.position, true});
     // The keel: sideways slip decays in SLIP_TIME.
     body.forces.push_back({-f.starboard * (mass * f.sideways / SLIP_TIME * wet), t.position, true});
@@ -194,7 +196,7 @@ void shipSystem(ecs::World& world, const ecs::Tick& tick) {
         glm::vec3 water = world.get<Body>(e).waveVelocity;
         if (const auto* layer = world.resource<currents::CurrentLayer>()) {
             const glm::vec3 ahead = t.position + bow * (2.0f * ship.def.hull.z);
-            const glm::vec2 u = layer->velocityAt({ahead.x, ahead.z});
+            const glm::vec2 u = layer->flowAt({ahead.x, ahead.z});  // without the hulls' displacement flow
             water += glm::vec3(u.x, 0.0f, u.y);
         }
         const glm::vec3 through = motion.velocity - water;

@@ -2,6 +2,7 @@
 #include "sim/currents_system.h"
 
 #include "currents/current_layer.h"
+#include "ecs/components.h"
 #include "interaction/ripple_patch.h"
 #include "sim/objects.h"
 #include "sim/obstacles.h"
@@ -38,6 +39,26 @@ void currentsSystem(ecs::World& world, const ecs::Tick& tick) {
         std::erase_if(walls, [](const interaction::ObstacleShape& s) { return s.displaces; });
         layer->setWalls(walls);
     }
+    // Hulls push their water aside (a Rankine body each: CurrentLayer::Displacer), at their speed
+    // along the keel through the layer's flow.
+    std::vector<currents::CurrentLayer::Displacer> displacers;
+    auto& obstacles = world.pool<Obstacle>();
+    for (size_t k = 0; k < obstacles.size(); ++k) {
+        const Obstacle& o = obstacles.components()[k];
+        const ecs::Entity e = obstacles.entities()[k];
+        const Body* body = world.find<Body>(e);
+        if (o.shape != Obstacle::Shape::Hull || !body || body->submergedFraction <= 0.0f) continue;
+        const ecs::Transform& t = world.get<ecs::Transform>(e);
+        glm::vec3 keel = t.rotation * glm::vec3(0.0f, 0.0f, 1.0f);
+        const glm::vec2 axis(keel.x, keel.z);
+        if (glm::dot(axis, axis) < 1e-6f) continue;
+        const glm::vec2 a = glm::normalize(axis), centre(t.position.x, t.position.z);
+        const glm::vec3 v = world.get<ecs::Motion>(e).velocity;
+        const float speed = glm::dot(glm::vec2(v.x, v.z) - layer->flowAt(centre), a);
+        const float reach = std::max(o.half.z - o.half.x, 0.0f);  // the source and sink a half-beam inside the ends
+        displacers.push_back({centre + a * reach, centre - a * reach, speed * 2.0f * o.half.x, o.half.x});
+    }
+    layer->setDisplacers(std::move(displacers));
     for (const WaterImpulse& i : impulses->items) layer->addImpulse(i.at, i.impulse, std::max(i.radius, 0.5f * layer->cellSize()));
     impulses->items.clear();
     layer->step(float(tick.dt));

@@ -106,3 +106,34 @@ TEST_CASE("currents: a circular stir sets the water turning and carries a ball 1
     CHECK(with >= 1.0f);
     CHECK(without < 0.5f * with);
 }
+
+TEST_CASE("currents: a passing ship shoves a crate beside its track and draws one in its track along", "[currents][water_motion][ship]") {
+    // The ship runs along +z at 5 m/s from z = −30; one crate floats 8 m beside the track, one on
+    // it. The hull pushes its water aside as it comes (a Rankine body: about q/(2π·r) = 0.25 m/s
+    // at 8 m for q = U·B = 15 m²/s) and lets it back as it goes: the crate beside is shoved out,
+    // then drawn part way back. The one in the track starts 3 m behind the stern and is towed
+    // in the current the hull drags after it (the reactions of its resistance).
+    const auto run = [](bool currents) {
+        game::Sandbox sandbox(game::parseScene(
+            STILL + "[ripples]\nmodel = \"ewave\"\nfollow = \"ship\"\n[currents]\nenabled = " + (currents ? "true" : "false") +
+                "\n[[objects]]\ntype = \"ship\"\nname = \"ship\"\nposition = [0, 0.1, -30]\nspeed = 5.0\nvelocity = [0, 0, 5]\n"
+                "[[objects]]\ntype = \"box\"\nname = \"beside\"\nsize = [0.8, 0.5, 0.8]\ndensity = 400.0\nposition = [8, 0, 0]\n"
+                "[[objects]]\ntype = \"box\"\nname = \"track\"\nsize = [0.8, 0.5, 0.8]\ndensity = 400.0\nposition = [0, 0, -38]\n",
+            "ship_crates.toml"));
+        const glm::vec3 beside0 = position(sandbox, "beside");
+        float away = 0.0f;  // the largest lateral displacement while the ship passes
+        for (int i = 0; i < 60 * 14; ++i) {  // the ship passes both
+            sandbox.step();
+            away = std::max(away, position(sandbox, "beside").x - beside0.x);
+        }
+        return std::pair{away, position(sandbox, "track").z};
+    };
+    const auto [sideways, along] = run(true);
+    const auto [sidewaysOff, alongOff] = run(false);
+    INFO("the crate beside the track moved " << sideways << " m away from it (" << sidewaysOff << " without the layer); the one in the track is at z = "
+                                             << along << " (" << alongOff << " without), from -38");
+    CHECK(sideways >= 0.2f);
+    CHECK(sidewaysOff < 0.5f * sideways);
+    CHECK(along > -38.0f + 0.25f);
+    CHECK(along - (-38.0f) > 2.0f * (alongOff - (-38.0f)));
+}
