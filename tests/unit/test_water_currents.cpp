@@ -137,3 +137,44 @@ TEST_CASE("currents: a passing ship shoves a crate beside its track and draws on
     CHECK(along > -38.0f + 0.25f);
     CHECK(along - (-38.0f) > 2.0f * (alongOff - (-38.0f)));
 }
+
+TEST_CASE("currents: bodies and the layer keep their horizontal momentum between them", "[currents][water_motion]") {
+    // No walls, no decay, no wind: a coasting ship (engine idle), a crate thrown at 4 m/s and a
+    // ball trade momentum with the current layer through every horizontal water force (drag,
+    // inertia, the hull model's resistance and keel): Σ m·v of the bodies + the layer's
+    // ρ·d·Δ²·Σu stays what it was. (The air's drag, a ship's propeller and the stir are outside
+    // forces: no air here, the propeller works below the layer, the stir is a hand.)
+    game::Sandbox sandbox(game::parseScene(
+        STILL + "[environment]\nair_density = 0.0\n[ripples]\nmodel = \"ewave\"\n[currents]\ndecay_time = 0.0\nwind_drift = 0.0\n"
+                "[[objects]]\ntype = \"ship\"\nname = \"ship\"\nplayer = true\nposition = [0, 0.1, -10]\nvelocity = [0, 0, 4]\n"
+                "[[objects]]\ntype = \"box\"\nname = \"crate\"\nsize = [0.8, 0.5, 0.8]\ndensity = 400.0\nposition = [6, 0.5, 0]\nvelocity = [-4, 0, 1]\n"
+                "[[objects]]\ntype = \"sphere\"\nname = \"ball\"\nradius = 0.3\ndensity = 300.0\nposition = [-5, 0, 5]\n",
+        "momentum.toml"));
+    ecs::World& world = sandbox.world();
+    const auto total = [&] {
+        glm::dvec2 p(world.resource<currents::CurrentLayer>()->momentum());
+        auto& bodies = world.pool<game::Body>();
+        for (size_t i = 0; i < bodies.size(); ++i) {
+            const ecs::Motion& m = world.get<ecs::Motion>(bodies.entities()[i]);
+            p += double(m.mass) * glm::dvec2(m.velocity.x, m.velocity.z);
+        }
+        return p;
+    };
+    sandbox.step();  // the first step: the bodies' first forces and the layer's first impulses
+    const glm::dvec2 start = total();
+    double worst = 0.0, bodies = 0.0;
+    for (int i = 0; i < 600; ++i) {
+        sandbox.step();
+        worst = std::max(worst, glm::length(total() - start));
+    }
+    auto& pool = world.pool<game::Body>();
+    for (size_t i = 0; i < pool.size(); ++i) {
+        const ecs::Motion& m = world.get<ecs::Motion>(pool.entities()[i]);
+        bodies += double(m.mass) * glm::length(glm::dvec2(m.velocity.x, m.velocity.z));
+    }
+    const glm::dvec2 layer(world.resource<currents::CurrentLayer>()->momentum());
+    INFO("momentum at the start " << glm::length(start) << " kg·m/s; largest change " << worst << "; the layer holds "
+                                  << glm::length(layer) << " at the end, the bodies " << bodies);
+    CHECK(worst <= 1e-4 * glm::length(start));
+    CHECK(glm::length(layer) > 0.05 * glm::length(start));  // the layer did take a share
+}
