@@ -178,3 +178,18 @@ TEST_CASE("currents: bodies and the layer keep their horizontal momentum between
     CHECK(worst <= 1e-4 * glm::length(start));
     CHECK(glm::length(layer) > 0.05 * glm::length(start));  // the layer did take a share
 }
+
+TEST_CASE("tide.toml: the flood carries the balls through the harbour gap, and alone wins nothing", "[currents][water_motion][scene]") {
+    game::Sandbox sandbox(game::loadScene("config/scenes/tide.toml"));
+    for (int s = 0; s < 60 * 50; ++s) sandbox.step();
+    int through = 0;
+    for (int k = 1; k <= 4; ++k)
+        if (position(sandbox, "ball" + std::to_string(k)).z > 9.0f) ++through;  // past the breakwaters' line (z = 8 ± 0.6)
+    INFO(through << " of 4 balls through the gap after 50 s");
+    CHECK(through >= 2);
+    auto* layer = sandbox.world().resource<currents::CurrentLayer>();
+    const float gap = layer->velocityAt({0.0f, 8.0f}).y, wall = std::abs(layer->velocityAt({-10.0f, 8.0f}).y);
+    INFO("the flow through the gap " << gap << " m/s, through the wall " << wall);
+    CHECK(gap > 0.3f);
+    CHECK(wall < 0.01f * gap);
+}
