@@ -79,6 +79,17 @@ void seaPanel(ecs::World& world, const SceneDef& scene) {
             return 0;
         });
     }
+    if (scene.currents.enabled) {
+        const glm::vec2 u = scene.currents.uniform;
+        float heading = float(std::atan2(double(u.y), double(u.x)) * 180.0 / std::numbers::pi);
+        if (heading < 0.0f) heading += 360.0f;
+        liveSlider(world, "current m/s", "currents.speed", std::hypot(u.x, u.y), 0.0f, 3.0f, "%.2f",
+                   "the uniform current (a tide, a river) everywhere, m/s");
+        liveSlider(world, "current toward deg", "currents.direction_deg", heading, 0.0f, 360.0f, "%.0f",
+                   "heading the current runs toward, degrees from +x toward +z");
+        bool arrows = scene.currents.arrows;
+        if (ImGui::Checkbox("current arrows", &arrows)) request(world, "currents.arrows", arrows ? 1.0f : 0.0f);
+    }
     if (scene.render.time_of_day >= 0.0f) {
         liveSlider(world, "time of day h", "render.time_of_day", scene.render.time_of_day, 0.0f, 24.0f, "%.2f",
                    "local solar time: sun, sky and light follow");

@@ -3,6 +3,7 @@
 // "save scene as", the scene picker; the goal's HUD and result panel.
 #include "ui/ui_panels.h"
 
+#include "currents/current_layer.h"
 #include "world/camera.h"
 #include "behaviours/cannon.h"
 #include "world/controls.h"
@@ -305,9 +306,45 @@ static void toolsPanel(ecs::World& world, double now) {
     ImGui::End();
 }
 
+// The current layer's flow as arrows on the water (currents.arrows): every 8th cell, from the
+// cell's centre on the mean level to where the water there goes in 4 s, behind the windows.
+static void currentArrows(ecs::World& world) {
+    const auto* layer = world.resource<currents::CurrentLayer>();
+    if (!layer || !layer->def().arrows) return;
+    const ImVec2 size = ImGui::GetIO().DisplaySize;
+    const gfx::CameraView view = cameraView(world, {int(size.x), int(size.y)});
+    const glm::mat4 clip = view.projection * view.view;
+    const auto toScreen = [&](glm::vec3 p, ImVec2& out) {
+        const glm::vec4 c = clip * glm::vec4(p, 1.0f);
+        if (c.w <= 0.1f) return false;
+        out = ImVec2((c.x / c.w * 0.5f + 0.5f) * size.x, (0.5f - c.y / c.w * 0.5f) * size.y);
+        return true;
+    };
+    ImDrawList* draw = ImGui::GetBackgroundDrawList();
+    constexpr int EVERY = 8;
+    constexpr float SECONDS = 4.0f;
+    const ImU32 colour = IM_COL32(120, 230, 255, 220);
+    for (int j = EVERY / 2; j < layer->resolution(); j += EVERY)
+        for (int i = EVERY / 2; i < layer->resolution(); i += EVERY) {
+            const glm::vec2 at = layer->origin() + glm::vec2(float(i), float(j)) * layer->cellSize();
+            const glm::vec2 u = layer->velocityAt(at);
+            const glm::vec2 to = at + SECONDS * u;
+            ImVec2 a, b;
+            if (!toScreen({at.x, 0.0f, at.y}, a) || !toScreen({to.x, 0.0f, to.y}, b)) continue;
+            draw->AddLine(a, b, colour, 1.5f);
+            const glm::vec2 d(b.x - a.x, b.y - a.y);
+            const float len = glm::length(d);
+            if (len < 3.0f) continue;
+            const glm::vec2 n = d / len, side(-n.y, n.x);
+            const glm::vec2 tip(b.x, b.y), l = tip - 6.0f * n + 3.5f * side, r = tip - 6.0f * n - 3.5f * side;
+            draw->AddTriangleFilled(b, ImVec2(l.x, l.y), ImVec2(r.x, r.y), colour);
+        }
+}
+
 void drawPanels(ecs::World& world, SceneSettings& settings, const ecs::FrameTimer& timer, std::optional<float> dynamicScale,
                 std::optional<SceneDef>& restart, double now) {
     const SceneDef& scene = settings.def;
+    currentArrows(world);
     // The goal's windows come last, in front; the panel never comes before them.
     const auto goal = [&world] {
         if (const GameState* game = gameState(world)) {
