@@ -11,6 +11,7 @@
 #include "water/composite_water.h"
 #include "world/camera.h"
 #include "world/picking.h"
+#include "support/scripted_input.h"
 #include "world/sandbox.h"
 
 #include <catch2/catch.hpp>
@@ -23,21 +24,17 @@ using T = InputEvent::Type;
 
 namespace {
 
-constexpr double DT = 1.0 / 60.0;
-const glm::ivec2 SIZE{640, 360};
+using test::at;
+using test::DT;
+using test::pixelOf;
+using test::push;
+using test::runTo;
+using test::SIZE;
+using test::view;
 
 // A still sea (no swell, no FFT waves), a fixed camera 10 m up looking at the origin.
 const std::string CALM = "[window]\nwidth = 640\nheight = 360\n[ocean]\namplitude = 0.0\n[gerstner]\ncount = 0\n"
                          "[camera]\nmode = \"fixed\"\nposition = [0, 10, -20]\ntarget = [0, 0, 0]\n";
-
-void push(game::Sandbox& sandbox, InputEvent e) { sandbox.world().resource<platform::InputQueue>()->push(e); }
-
-InputEvent at(T type, double time, glm::vec2 pos, platform::Key key = platform::Key::W) {
-    InputEvent e{type, time, key, platform::MouseButton::Left};
-    e.hasPos = true;
-    e.pos = pos;
-    return e;
-}
 
 void tap(game::Sandbox& sandbox, platform::Key key, double time) {
     push(sandbox, {T::KeyDown, time, key});
@@ -50,26 +47,12 @@ void click(game::Sandbox& sandbox, glm::vec2 pixel, double time, double hold = 0
     push(sandbox, {T::ButtonUp, time + hold, platform::Key::W, platform::MouseButton::Left});
 }
 
-// Runs frames (one step each) up to time `until`.
-void runTo(game::Sandbox& sandbox, double until) {
-    for (double t = sandbox.schedule().simTime() + DT; t <= until + 1e-9; t += DT) sandbox.frame(t);
-}
-
-gfx::CameraView view(game::Sandbox& sandbox) { return game::cameraView(sandbox.world(), SIZE); }
-
 // Where the pixel's ray meets y = 0: the calm sea, by hand (the view's own matrices inverted).
 glm::vec3 onPlane(game::Sandbox& sandbox, glm::vec2 pixel) {
     const game::Ray ray = game::pixelRay(view(sandbox), SIZE, pixel);
     return ray.at(-ray.origin.y / ray.direction.y);
 }
 
-// The pixel a world point is drawn at.
-glm::vec2 pixelOf(game::Sandbox& sandbox, glm::vec3 p) {
-    const gfx::CameraView v = view(sandbox);
-    const glm::vec4 clip = v.projection * v.view * glm::vec4(p, 1.0f);
-    const glm::vec2 ndc = glm::vec2(clip) / clip.w;
-    return {(ndc.x + 1.0f) * 0.5f * float(SIZE.x), (1.0f - ndc.y) * 0.5f * float(SIZE.y)};
-}
 
 const ecs::Transform* body(game::Sandbox& sandbox, const std::string& name) {
     const ecs::Entity e = game::findObject(sandbox.world(), name);

@@ -12,19 +12,17 @@
 #include "world/sandbox.h"
 #include "world/scene.h"
 #include "world/tools.h"
+#include "support/scripted_input.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <string>
 
 using namespace ob;
-using platform::InputEvent;
-using T = InputEvent::Type;
+using namespace ob::test;  // the scripted input: push, at, runTo, pixelOf
+using T = platform::InputEvent::Type;
 
 namespace {
-
-constexpr double DT = 1.0 / 60.0;
-const glm::ivec2 SIZE{640, 360};
 
 // Still water, no wind: nothing moves a body but what the test does.
 const std::string STILL = "[window]\nwidth = 640\nheight = 360\n[ocean]\namplitude = 0.0\nwind_speed = 0.0\n[gerstner]\ncount = 0\n"
@@ -38,27 +36,6 @@ glm::vec3 position(game::Sandbox& sandbox, const std::string& name) {
 
 glm::vec3 velocity(game::Sandbox& sandbox, const std::string& name) {
     return sandbox.world().get<ecs::Motion>(game::findObject(sandbox.world(), name)).velocity;
-}
-
-void runTo(game::Sandbox& sandbox, double until) {
-    for (double t = sandbox.schedule().simTime() + DT; t <= until + 1e-9; t += DT) sandbox.frame(t);
-}
-
-// The pixel whose ray meets y = 0 at `p` (the view's matrices: project).
-glm::vec2 pixelOf(game::Sandbox& sandbox, glm::vec3 p) {
-    const gfx::CameraView v = game::cameraView(sandbox.world(), SIZE);
-    const glm::vec4 clip = v.projection * v.view * glm::vec4(p, 1.0f);
-    const glm::vec2 ndc = glm::vec2(clip) / clip.w;
-    return {(ndc.x * 0.5f + 0.5f) * float(SIZE.x), (0.5f - ndc.y * 0.5f) * float(SIZE.y)};
-}
-
-void push(game::Sandbox& sandbox, InputEvent e) { sandbox.world().resource<platform::InputQueue>()->push(e); }
-
-InputEvent at(T type, double time, glm::vec2 pos) {
-    InputEvent e{type, time, platform::Key::W, platform::MouseButton::Left};
-    e.hasPos = true;
-    e.pos = pos;
-    return e;
 }
 
 } // namespace
