@@ -351,43 +351,56 @@ WaterSample CompositeWater::sample(float x, float z, WaterLayers layers) const {
     return s;
 }
 
+glm::vec3 CompositeWater::velocityBelow(const Eval& e, float alpha, float beta, glm::vec3 p, WaterLayers layers) const {
+    glm::vec3 u(0.0f);
+    float surface = e.g.y + e.f.h;
+    if (layers.ripples && m_ripple.height) surface += m_ripple.height(p.x, p.z);
+    const float depth = std::max(surface - p.y, 0.0f);
+    // Where each part's e^{kz} counts z from. A Lagrangian part (Gerstner; the cascades at
+    // choppiness ≥ 1) moves a particle of rest depth b on an orbit scaled by e^{−k·b}, and
+    // the particle under the surface by `depth` has b ≈ depth. An Eulerian part (the
+    // ripples; the cascades at choppiness 0) has its velocity field e^{kz} with z from its
+    // own mean level, so a point on a crest of height η reads e^{k·η} (linear theory's
+    // extrapolation, which gives the Stokes drift its second half, ⟨ζ·∂u/∂z⟩).
+    const float lagrangian = m_fft ? std::clamp(std::abs(m_fft->lambda()), 0.0f, 1.0f) : 1.0f;
+    const float ripple = layers.ripples && m_ripple.height ? m_ripple.height(p.x, p.z) : 0.0f;
+    const float eulerianZ = (1.0f - lagrangian) * e.f.h + ripple - depth;  // z of the Eulerian parts, m
+    if (layers.gerstner) u += m_gerstner.velocity(alpha, beta, depth);
+    if (layers.fft && m_fft && m_frameCount >= 2) {
+        const float z = lagrangian * -depth + (1.0f - lagrangian) * eulerianZ;
+        for (const Cascade& cas : m_cascades) {
+            const Bilinear b(alpha, beta, cas.invCell, m_fft->resolution());
+            const float decay = std::exp(cas.k * z);
+            u += decay * glm::vec3(-b.value(cas.rate.data(), 4, 1), b.value(cas.rate.data(), 4, 0),
+                                   -b.value(cas.rate.data(), 4, 2));
+        }
+    }
+    if (layers.ripples && m_ripple.height) {
+        const float decay = m_ripple.wavenumber ? std::exp(m_ripple.wavenumber() * eulerianZ) : 1.0f;
+        const glm::vec2 h = m_ripple.horizontalVelocity ? m_ripple.horizontalVelocity(p.x, p.z) : glm::vec2(0.0f);
+        const float w = m_ripple.rate ? m_ripple.rate(p.x, p.z) : 0.0f;
+        u += decay * glm::vec3(h.x, w, h.y);
+    }
+    if (layers.currents && m_current) {
+        const glm::vec2 c = m_current(p.x, p.z);
+        u += glm::vec3(c.x, 0.0f, c.y);
+    }
+    return u;
+}
+
 glm::vec3 CompositeWater::velocityAt(glm::vec3 p, WaterLayers layers) const {
     glm::vec3 u(0.0f);
-    invert(p.x, p.z, layers, [&](const Eval& e, float alpha, float beta) {
-        float surface = e.g.y + e.f.h;
-        if (layers.ripples && m_ripple.height) surface += m_ripple.height(p.x, p.z);
-        const float depth = std::max(surface - p.y, 0.0f);
-        // Where each part's e^{kz} counts z from. A Lagrangian part (Gerstner; the cascades at
-        // choppiness ≥ 1) moves a particle of rest depth b on an orbit scaled by e^{−k·b}, and
-        // the particle under the surface by `depth` has b ≈ depth. An Eulerian part (the
-        // ripples; the cascades at choppiness 0) has its velocity field e^{kz} with z from its
-        // own mean level, so a point on a crest of height η reads e^{k·η} (linear theory's
-        // extrapolation, which gives the Stokes drift its second half, ⟨ζ·∂u/∂z⟩).
-        const float lagrangian = m_fft ? std::clamp(std::abs(m_fft->lambda()), 0.0f, 1.0f) : 1.0f;
-        const float ripple = layers.ripples && m_ripple.height ? m_ripple.height(p.x, p.z) : 0.0f;
-        const float eulerianZ = (1.0f - lagrangian) * e.f.h + ripple - depth;  // z of the Eulerian parts, m
-        if (layers.gerstner) u += m_gerstner.velocity(alpha, beta, depth);
-        if (layers.fft && m_fft && m_frameCount >= 2) {
-            const float z = lagrangian * -depth + (1.0f - lagrangian) * eulerianZ;
-            for (const Cascade& cas : m_cascades) {
-                const Bilinear b(alpha, beta, cas.invCell, m_fft->resolution());
-                const float decay = std::exp(cas.k * z);
-                u += decay * glm::vec3(-b.value(cas.rate.data(), 4, 1), b.value(cas.rate.data(), 4, 0),
-                                       -b.value(cas.rate.data(), 4, 2));
-            }
-        }
-        if (layers.ripples && m_ripple.height) {
-            const float decay = m_ripple.wavenumber ? std::exp(m_ripple.wavenumber() * eulerianZ) : 1.0f;
-            const glm::vec2 h = m_ripple.horizontalVelocity ? m_ripple.horizontalVelocity(p.x, p.z) : glm::vec2(0.0f);
-            const float w = m_ripple.rate ? m_ripple.rate(p.x, p.z) : 0.0f;
-            u += decay * glm::vec3(h.x, w, h.y);
-        }
-        if (layers.currents && m_current) {
-            const glm::vec2 c = m_current(p.x, p.z);
-            u += glm::vec3(c.x, 0.0f, c.y);
-        }
-    });
+    invert(p.x, p.z, layers, [&](const Eval& e, float alpha, float beta) { u = velocityBelow(e, alpha, beta, p, layers); });
     return u;
+}
+
+WaterSample CompositeWater::sampleBelow(glm::vec3 p, WaterLayers layers) const {
+    WaterSample s;
+    invert(p.x, p.z, layers, [&](const Eval& e, float alpha, float beta) {
+        s = finish(e, p.x, p.z, layers);
+        s.velocity = velocityBelow(e, alpha, beta, p, layers);
+    });
+    return s;
 }
 
 // Inverts the displacement at every point, 64 at a time, the Gerstner sums vectorised over the

@@ -118,6 +118,8 @@ public:
     /// the error for other waves in it); the ripples by e^{−k_r·depth} (RippleHook::wavenumber);
     /// the current the same at every depth of its layer.
     glm::vec3 velocityAt(glm::vec3 p, WaterLayers layers) const override;
+    /// sample() and velocityAt() from one inversion.
+    WaterSample sampleBelow(glm::vec3 p, WaterLayers layers) const override;
     /// k_c of cascade c, rad/m: Σ k·ω²·|h̃0|² / Σ ω²·|h̃0|² over its modes (the wavenumber its
     /// velocity variance is centred on), from the spectrum at the last measureWavenumbers().
     float cascadeWavenumber(int c) const { return m_cascades[size_t(c)].k; }
@@ -181,6 +183,7 @@ private:
     void addSurface(float alpha, float beta, FftTerms& t) const;
     bool step(const Eval& e, float x, float z, glm::vec2& rest, float& residual, float tolerance = 0.0f) const;
     WaterSample finish(const Eval& e, float x, float z, WaterLayers layers = {}) const;
+    glm::vec3 velocityBelow(const Eval& e, float alpha, float beta, glm::vec3 p, WaterLayers layers) const;
     template <class Done>
     void invert(float x, float z, WaterLayers layers, Done&& done) const;
     void recordFrame();

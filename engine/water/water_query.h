@@ -50,6 +50,13 @@ public:
     /// A point above the surface reads the surface's. The default: sample()'s velocity, no decay.
     virtual glm::vec3 velocityAt(glm::vec3 p, WaterLayers layers) const { return sample(p.x, p.z, layers).velocity; }
     glm::vec3 velocityAt(glm::vec3 p) const { return velocityAt(p, WaterLayers{}); }
+    /// The surface above world point p (sample()'s height, normal and vertical velocity) with
+    /// `velocity` the water's at p itself (velocityAt): what a body's probe reads, in one query.
+    virtual WaterSample sampleBelow(glm::vec3 p, WaterLayers layers) const {
+        WaterSample s = sample(p.x, p.z, layers);
+        s.velocity = velocityAt(p, layers);
+        return s;
+    }
 };
 
 /// A still, flat sea at height h0: normal up, no motion.

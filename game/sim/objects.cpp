@@ -245,10 +245,10 @@ void physicsSystem(ecs::World& world, const ecs::Tick& tick) {
             // The ocean and current without the ripples: their level and motion come from round
             // the body (above), not from the crater it stamps itself.
             const water::WaterLayers sea{.ripples = false, .currents = false};
-            const water::WaterSample w = water->sample(p.centre.x, p.centre.z, sea);
+            const water::WaterSample w = water->sampleBelow(p.centre, sea);
             p.surfaceHeight = w.height;
             p.surfaceNormal = w.normal;
-            const glm::vec3 waves = water->velocityAt(p.centre, sea);  // the waves' orbits: what a hull's model adds its current to
+            const glm::vec3 waves = w.velocity;  // the waves' orbits at the centre: what a hull's model adds its current to
             p.waterVelocity = waves;
             if (layer) {
                 const glm::vec2 u = layer->velocityAt({p.centre.x, p.centre.z});

@@ -14,6 +14,7 @@
 
 #include <catch2/catch.hpp>
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <vector>
 
@@ -167,4 +168,31 @@ TEST_CASE("the water's velocity of one FFT mode is the Airy wave's, in phase wit
     INFO("largest error at the surface " << worst << ", 2 m down " << worstDeep << " m/s (a·ω = " << a * omega << ")");
     CHECK(worst < 0.01 * a * omega);
     CHECK(worstDeep < 0.01 * a * omega);
+}
+
+// Not a test: the probe's query cost, sample() against sampleBelow() (height + the velocity at
+// depth, one inversion), on the default scene's sea; medians of 9 rounds of 20 000 points.
+// build/bin/tests_unit "[.query_cost]" -s
+TEST_CASE("water query cost: a probe's sample with and without its velocity", "[.query_cost]") {
+    game::Sandbox sandbox(game::loadScene("config/scenes/default.toml"));
+    for (int i = 0; i < 3; ++i) sandbox.step();
+    const water::CompositeWater& w = *sandbox.world().resource<game::OceanState>()->water;
+    std::vector<glm::vec3> points;
+    for (int i = 0; i < 20000; ++i) points.push_back({float(i % 200) * 0.37f - 30.0f, -0.3f, float(i / 200) * 0.41f - 20.0f});
+    const water::WaterLayers sea{.ripples = false, .currents = false};
+    const auto time = [&](auto&& f) {
+        std::vector<double> ns;
+        for (int r = 0; r < 9; ++r) {
+            const auto t0 = std::chrono::steady_clock::now();
+            float sink = 0.0f;
+            for (const glm::vec3& p : points) sink += f(p);
+            const auto t1 = std::chrono::steady_clock::now();
+            ns.push_back(std::chrono::duration<double, std::nano>(t1 - t0).count() / double(points.size()) + 0.0 * sink);
+        }
+        std::sort(ns.begin(), ns.end());
+        return ns[4];
+    };
+    const double height = time([&](glm::vec3 p) { return w.sample(p.x, p.z, sea).height; });
+    const double both = time([&](glm::vec3 p) { const water::WaterSample s = w.sampleBelow(p, sea); return s.height + s.velocity.x; });
+    WARN("sample " << height << " ns, sampleBelow " << both << " ns: " << both / height << "x");
 }
