@@ -277,7 +277,7 @@ TEST_CASE("currents: the wind spins the layer up to wind_drift·U10 in wind_time
     CHECK(std::abs(layer.velocityAt({3.0f, -5.0f}).y) <= 1e-6);
 }
 
-TEST_CASE("currents: the same bits on one worker and on two", "[currents]") {
+TEST_CASE("currents: the same bits on one worker and on two", "[currents][parallel]") {
     setThreadMeasuring(false);  // two workers offered are two workers taken: the split is exercised
     auto hashOf = [](int workers) {
         setWorkerCount(workers);

@@ -156,7 +156,7 @@ TEST_CASE("currents: bodies and the layer keep their horizontal momentum between
     CHECK(glm::length(layer) > 0.05 * glm::length(start));  // the layer did take a share
 }
 
-TEST_CASE("tide.toml: the flood carries the balls through the harbour gap, and alone wins nothing", "[currents][water_motion][scene]") {
+TEST_CASE("tide.toml: the flood carries the balls through the harbour gap, and alone wins nothing", "[currents][water_motion][scene][long]") {
     game::Sandbox sandbox(game::loadScene("config/scenes/tide.toml"));
     for (int s = 0; s < 60 * 50; ++s) sandbox.step();
     int through = 0;
