@@ -171,9 +171,13 @@ struct CompositeWater::Bilinear {
 };
 
 // Stage 1, every iteration: λ·D and the gradient of the bilinear λ·D (Newton's J).
-void CompositeWater::addDisplacement(float alpha, float beta, FftTerms& t) const {
+float CompositeWater::lambda(WaterLayers layers) const {
+    const float l = m_fft ? m_fft->lambda() : 0.0f;
+    return layers.orbital ? std::clamp(l, -1.0f, 1.0f) : l;
+}
+
+void CompositeWater::addDisplacement(float alpha, float beta, FftTerms& t, float lambda) const {
     if (!m_fft) return;
-    const float lambda = m_fft->lambda();
     for (size_t c = 0; c < m_cascades.size(); ++c) {
         const Bilinear b(alpha, beta, m_cascades[c].invCell, m_fft->resolution());
         const float* disp = m_fft->packed(int(c), 1);  // (Dx, Dz) pairs
@@ -188,9 +192,8 @@ void CompositeWater::addDisplacement(float alpha, float beta, FftTerms& t) const
 }
 
 // Stage 2, once at the rest point found: height, slopes, analytic ∂D, rates.
-void CompositeWater::addSurface(float alpha, float beta, FftTerms& t) const {
+void CompositeWater::addSurface(float alpha, float beta, FftTerms& t, float lambda) const {
     if (!m_fft) return;
-    const float lambda = m_fft->lambda();
     const bool rates = m_frameCount >= 2;
     for (size_t c = 0; c < m_cascades.size(); ++c) {
         const Cascade& cas = m_cascades[c];
@@ -221,8 +224,8 @@ void CompositeWater::addSurface(float alpha, float beta, FftTerms& t) const {
 
 CompositeWater::FftTerms CompositeWater::fftTerms(float alpha, float beta) const {
     FftTerms t;
-    addDisplacement(alpha, beta, t);
-    addSurface(alpha, beta, t);
+    addDisplacement(alpha, beta, t, lambda({}));
+    addSurface(alpha, beta, t, lambda({}));
     return t;
 }
 
@@ -320,7 +323,7 @@ RestPoint CompositeWater::restPoint(float x, float z) const {
     r.rest = {x, z};
     for (r.iterations = 1;; ++r.iterations) {
         Eval e{m_gerstner.sums(r.rest.x, r.rest.y), {}};
-        addDisplacement(r.rest.x, r.rest.y, e.f);
+        addDisplacement(r.rest.x, r.rest.y, e.f, lambda({}));
         glm::vec2 moved = r.rest;
         if (step(e, x, z, moved, r.residual) || r.iterations >= m_settings.maxIterations) return r;
         r.rest = moved;
@@ -333,11 +336,11 @@ void CompositeWater::invert(float x, float z, WaterLayers layers, Done&& done) c
     glm::vec2 rest{x, z};
     for (int it = 1;; ++it) {
         Eval e{layers.gerstner ? m_gerstner.sums(rest.x, rest.y) : ocean::GerstnerSums{}, {}};
-        if (layers.fft) addDisplacement(rest.x, rest.y, e.f);
+        if (layers.fft) addDisplacement(rest.x, rest.y, e.f, lambda(layers));
         glm::vec2 moved = rest;
         float residual;
         if (step(e, x, z, moved, residual) || it >= m_settings.maxIterations) {
-            if (layers.fft) addSurface(rest.x, rest.y, e.f);
+            if (layers.fft) addSurface(rest.x, rest.y, e.f, lambda(layers));
             done(e, rest.x, rest.y);
             return;
         }
@@ -362,7 +365,7 @@ glm::vec3 CompositeWater::velocityBelow(const Eval& e, float alpha, float beta, 
     // ripples; the cascades at choppiness 0) has its velocity field e^{kz} with z from its
     // own mean level, so a point on a crest of height η reads e^{k·η} (linear theory's
     // extrapolation, which gives the Stokes drift its second half, ⟨ζ·∂u/∂z⟩).
-    const float lagrangian = m_fft ? std::clamp(std::abs(m_fft->lambda()), 0.0f, 1.0f) : 1.0f;
+    const float lagrangian = std::min(std::abs(lambda(layers)), 1.0f);
     const float ripple = layers.ripples && m_ripple.height ? m_ripple.height(p.x, p.z) : 0.0f;
     const float eulerianZ = (1.0f - lagrangian) * e.f.h + ripple - depth;  // z of the Eulerian parts, m
     if (layers.gerstner) u += m_gerstner.velocity(alpha, beta, depth);
@@ -431,7 +434,7 @@ void CompositeWater::invertBatch(std::span<const glm::vec2> points, Finish&& fin
                 const size_t i = active[k];
                 const glm::vec2 target = points[base + i];
                 Eval e{sums[k], {}};
-                addDisplacement(alpha[k], beta[k], e.f);
+                addDisplacement(alpha[k], beta[k], e.f, lambda({}));
                 glm::vec2 moved = rest[i];
                 float residual;
                 if (step(e, target.x, target.y, moved, residual, tolerance) || it >= m_settings.maxIterations) {
@@ -449,7 +452,7 @@ void CompositeWater::invertBatch(std::span<const glm::vec2> points, Finish&& fin
 void CompositeWater::sampleBatch(std::span<const glm::vec2> points, std::span<WaterSample> out) const {
     assert(points.size() == out.size());
     invertBatch(points, [&](size_t i, Eval& e, float alpha, float beta) {
-        addSurface(alpha, beta, e.f);
+        addSurface(alpha, beta, e.f, lambda({}));
         out[i] = finish(e, points[i].x, points[i].y);
     });
 }

@@ -179,8 +179,9 @@ private:
         std::vector<float> rate;                   // (∂h/∂t, ∂Dx/∂t, ∂Dz/∂t, 0) per point
     };
     struct Bilinear;
-    void addDisplacement(float alpha, float beta, FftTerms& t) const;
-    void addSurface(float alpha, float beta, FftTerms& t) const;
+    float lambda(WaterLayers layers) const;
+    void addDisplacement(float alpha, float beta, FftTerms& t, float lambda) const;
+    void addSurface(float alpha, float beta, FftTerms& t, float lambda) const;
     bool step(const Eval& e, float x, float z, glm::vec2& rest, float& residual, float tolerance = 0.0f) const;
     WaterSample finish(const Eval& e, float x, float z, WaterLayers layers = {}) const;
     glm::vec3 velocityBelow(const Eval& e, float alpha, float beta, glm::vec3 p, WaterLayers layers) const;

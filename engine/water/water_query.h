@@ -27,6 +27,10 @@ struct WaterLayers {
     bool fft = true;       ///< the FFT cascades
     bool ripples = true;   ///< the interactive ripple layer
     bool currents = true;  ///< the surface current layer (velocity only: it has no height)
+    /// The FFT cascades displaced by at most the waves' own orbits (choppiness ≤ 1, a linear
+    /// wave's Lagrangian surface): above 1 the choppiness sharpens the drawn crests only, a
+    /// look, and folds the surface in a steep sea. What floating bodies ride (physics).
+    bool orbital = false;
 };
 
 /// Reads the composite water surface at world positions. Implementations are immutable

@@ -163,30 +163,25 @@ ecs::Entity spawnFloatingBody(ecs::World& world, const ObjectDef& o, uint64_t /*
     return e;
 }
 
-// The ripple level a body floats in: the patch averaged on a ring just outside the body's
-// own footprint. A body sees the waves of others arriving (a ship rocks in another's wake)
-// but not the crater it stamps itself, which would feed its buoyancy back into its stamps.
-static float rippleAround(const interaction::RipplePatch& patch, glm::vec2 xz, float radius) {
+// The ripples round a body: the patch averaged on a ring just outside the body's own
+// footprint. A body sees the waves of others arriving (a ship rocks in another's wake) but not
+// the crater it stamps itself, which would feed its buoyancy back into its stamps. Level (m) and
+// horizontal velocity (m/s); their vertical velocity is left out for the same reason: between a
+// stamp and the next step the cells near a body always move, which is no motion of the water.
+struct RippleRing {
+    float level = 0.0f;
+    glm::vec2 velocity{0.0f};
+};
+static RippleRing rippleAround(const interaction::RipplePatch& patch, glm::vec2 xz, float radius) {
     const float ring = radius + 2.0f * patch.def().cell_size;
-    float sum = 0.0f;
-    for (int k = 0; k < 8; ++k) {
-        float a = float(k) * float(M_PI) / 4.0f;
-        sum += patch.heightAt(xz + ring * glm::vec2(std::cos(a), std::sin(a)));
-    }
-    return sum / 8.0f;
-}
-
-// The ripples' horizontal velocity round a body, on the same ring as rippleAround, m/s (x, z).
-// Their vertical velocity is left out, as their level is read apart: between a stamp and the
-// next step the cells near a body always move, which is no motion of the water to follow.
-static glm::vec2 rippleVelocityAround(const interaction::RipplePatch& patch, glm::vec2 xz, float radius) {
-    const float ring = radius + 2.0f * patch.def().cell_size;
-    glm::vec2 sum(0.0f);
+    RippleRing sum;
     for (int k = 0; k < 8; ++k) {
         const float a = float(k) * float(M_PI) / 4.0f;
-        sum += patch.horizontalVelocityAt(xz + ring * glm::vec2(std::cos(a), std::sin(a)));
+        const glm::vec2 p = xz + ring * glm::vec2(std::cos(a), std::sin(a));
+        sum.level += patch.heightAt(p) / 8.0f;
+        sum.velocity += patch.horizontalVelocityAt(p) / 8.0f;
     }
-    return sum / 8.0f;
+    return sum;
 }
 
 // The wind at a height above the sea (m) from the wind at 10 m: the neutral log profile
@@ -244,7 +239,7 @@ void physicsSystem(ecs::World& world, const ecs::Tick& tick) {
             p.velocity = s.linearVelocity + glm::cross(s.angularVelocity, p.centre - s.position);
             // The ocean and current without the ripples: their level and motion come from round
             // the body (above), not from the crater it stamps itself.
-            const water::WaterLayers sea{.ripples = false, .currents = false};
+            const water::WaterLayers sea{.ripples = false, .currents = false, .orbital = true};
             const water::WaterSample w = water->sampleBelow(p.centre, sea);
             p.surfaceHeight = w.height;
             p.surfaceNormal = w.normal;
@@ -256,11 +251,11 @@ void physicsSystem(ecs::World& world, const ecs::Tick& tick) {
             }
             if (patch) {
                 const glm::vec2 xz(p.centre.x, p.centre.z);
-                const float level = rippleAround(*patch, xz, reach);
-                p.surfaceHeight += level;
+                const RippleRing ripples = rippleAround(*patch, xz, reach);
+                p.surfaceHeight += ripples.level;
                 // e^{kz}, z from the level the ripples ride on (an Eulerian layer: CompositeWater::velocityAt)
-                const glm::vec2 u = rippleVelocityAround(*patch, xz, reach) *
-                                    std::exp(patch->velocityWavenumber() * std::min(p.centre.y - w.height, level));
+                const glm::vec2 u = ripples.velocity *
+                                    std::exp(patch->velocityWavenumber() * std::min(p.centre.y - w.height, ripples.level));
                 p.waterVelocity += glm::vec3(u.x, 0.0f, u.y);
             }
             const glm::vec3 before = body.probeWater[k];

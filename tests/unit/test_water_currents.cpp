@@ -2,6 +2,7 @@
 // current takes up the current's speed; a stir sets the water turning and the turning water
 // carries a ball away (none without the layer); a ship shoves a crate beside its track and
 // draws one in its track along behind it; bodies and layer together keep their momentum.
+#include "core/error.h"
 #include "currents/current_layer.h"
 #include "ecs/components.h"
 #include "interaction/ripple_patch.h"
@@ -9,6 +10,7 @@
 #include "sim/water_systems.h"
 #include "water/composite_water.h"
 #include "world/camera.h"
+#include "world/live_keys.h"
 #include "world/sandbox.h"
 #include "world/scene.h"
 #include "world/tools.h"
@@ -169,4 +171,27 @@ TEST_CASE("tide.toml: the flood carries the balls through the harbour gap, and a
     INFO("the flow through the gap " << gap << " m/s, through the wall " << wall);
     CHECK(gap > 0.3f);
     CHECK(wall < 0.01f * gap);
+}
+
+TEST_CASE("currents: a bad [currents] key is refused with the file, its line and the key", "[currents][scene_config]") {
+    const auto refused = [](const std::string& text) {
+        try {
+            game::parseScene(text, "bad_currents.toml");
+        } catch (const InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    const std::string range = refused("[sim]\nseed = 1\n[currents]\ndecay_time = -3.0\n");
+    CHECK(range.find("bad_currents.toml:4") != std::string::npos);
+    CHECK(range.find("decay_time") != std::string::npos);
+    const std::string unknown = refused("[currents]\nspeed_of_river = 1.0\n");
+    CHECK(unknown.find("bad_currents.toml:2") != std::string::npos);
+    CHECK(unknown.find("speed_of_river") != std::string::npos);
+    const std::string source = refused("[[currents.sources]]\ncenter = [0.0, 0.0]\nradius = 0.0\n");
+    CHECK(source.find("bad_currents.toml:3") != std::string::npos);
+    CHECK(source.find("radius") != std::string::npos);
+    const std::string nan = refused("[currents]\nuniform = [nan, 0.0]\n");
+    CHECK(nan.find("uniform") != std::string::npos);
+    CHECK(game::checkLiveSet("currents.speed", 12.0f).find("[0, 10]") != std::string::npos);
 }

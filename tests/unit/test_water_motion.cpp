@@ -195,4 +195,7 @@ TEST_CASE("water query cost: a probe's sample with and without its velocity", "[
     const double height = time([&](glm::vec3 p) { return w.sample(p.x, p.z, sea).height; });
     const double both = time([&](glm::vec3 p) { const water::WaterSample s = w.sampleBelow(p, sea); return s.height + s.velocity.x; });
     WARN("sample " << height << " ns, sampleBelow " << both << " ns: " << both / height << "x");
+    for (int c = 0; c < sandbox.world().resource<game::OceanState>()->cpu->cascadeCount(); ++c)
+        WARN("cascade " << c << ": tile " << sandbox.world().resource<game::OceanState>()->cpu->patchSize(c) << " m, k_c "
+                        << w.cascadeWavenumber(c) << " rad/m (a wave of " << 2.0 * M_PI / w.cascadeWavenumber(c) << " m)");
 }
