@@ -71,11 +71,12 @@ Worst watchStorm(const game::SceneDef& scene, double seconds) {
             fastest = std::max(fastest, glm::length(s.velocity));
             if (body.submergedFraction > 0.0f && w.wetSince < 0.0) w.wetSince = t;
             if (w.wetSince < 0.0) continue;
-            // The surface under the body: the highest sheet over its footprint (where the
-            // surface folds, one point has several heights and the query returns one of them).
+            // The local surface: the highest water within a metre of the body's footprint (where
+            // the surface folds, one point has several heights and the query returns one of
+            // them; a steep crest passing leaves a floating body over its back slope for a moment).
             float surface = s.height;
             for (int k = 0; k < 16; ++k) {
-                const float r = (k < 8 ? 0.5f : 1.0f) * w.size, a = float(k) * float(M_PI) / 4.0f;
+                const float r = k < 8 ? w.size : w.size + 1.0f, a = float(k) * float(M_PI) / 4.0f;
                 surface = std::max(surface, ocean->water->sample(x.x + r * std::cos(a), x.z + r * std::sin(a), rides).height);
             }
             const float above = x.y - surface - w.size;
