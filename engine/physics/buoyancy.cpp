@@ -47,6 +47,8 @@ ProbeForce probeForce(const PhysicsDef& def, const ProbeState& p) {
     const float bound = accelerationBound(def);
     glm::vec3 accel = p.waterAcceleration;
     if (const float a = glm::length(accel); a > bound) accel *= bound / a;
+    accel.x *= p.horizontalInertia;
+    accel.z *= p.horizontalInertia;
     const glm::vec3 up = def.buoyancy_along_normal ? glm::normalize(p.surfaceNormal) : glm::vec3(0.0f, 1.0f, 0.0f);
     out.force += def.water_density * volume * (def.gravity * up + (1.0f + def.added_mass) * accel);
     out.addedMass = def.water_density * def.added_mass * volume;

@@ -23,6 +23,9 @@ struct ProbeState {
     glm::vec3 waterVelocity{0.0f};      ///< the water's velocity at the centre (WaterQuery::velocityAt), m/s
     glm::vec3 waterAcceleration{0.0f};  ///< its rate Du/Dt along the probe, m/s² (bounded by g: accelerationBound)
     glm::vec3 wind{0.0f};               ///< the air's velocity at the probe, m/s
+    /// How much of the accelerating water's horizontal push the probe takes, [0, 1] (a ship's
+    /// probes: 0, its hull model stands for its horizontal hydrodynamics; 1 otherwise).
+    float horizontalInertia = 1.0f;
     /// The probe's share of the body's mass (kg, > 0 makes the drag implicit: it can slow the
     /// relative motion within a step but never reverse it, whatever the coefficients); 0 = explicit.
     float massShare = 0.0f;

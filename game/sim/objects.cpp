@@ -212,8 +212,8 @@ void physicsSystem(ecs::World& world, const ecs::Tick& tick) {
 
     // --- water and air forces, per probe (Morison: buoyancy.h), then the behaviours' forces;
     // the added mass taken implicitly: with m_a = Σ ρ·C_a·V the body moves as if of mass
-    // m + m_a under every force (m·dv/dt = F − m_a·dv/dt), so every applied force is scaled by
-    // s = m/(m + m_a) and (1 − s)·m·g lifts it (Bullet pulls m·g; m_a is weightless water). Bullet keeps m.
+    // m + m_a under every force (m·dv/dt = F − m_a·dv/dt), so its acceleration is s = m/(m + m_a)
+    // of the forces' and (1 − s)·m·g lifts it (Bullet pulls m·g; m_a is weightless water). Bullet keeps m.
     // A light body (a ball of 1 kg/m³) then rises at (ρ/ρ_body − 1)·g/(1 + ρ·C_a/ρ_body) ≈ 2g,
     // not at 1000 g.
     auto& bodies = world.pool<Body>();
@@ -225,6 +225,9 @@ void physicsSystem(ecs::World& world, const ecs::Tick& tick) {
         const float reach = spheres && !spheres->spheres.empty() ? spheres->spheres[0].radius : 0.0f;
         const float mass = world.get<ecs::Motion>(entity).mass;
         physics::BodyState s = physicsWorld->state(body.id);
+        const bool fresh = body.probeWater.size() != body.probes.size();  // a new body: no rate yet
+        const Obstacle* obstacle = world.find<Obstacle>(entity);
+        const bool displaces = obstacle && obstacle->shape == Obstacle::Shape::Hull;  // a hull (a displacer of the current layer)
         body.probeWater.resize(body.probes.size(), glm::vec3(0.0f));
         float probeVolume = 0.0f;
         for (const Probe& probe : body.probes) probeVolume += probe.radius * probe.radius * probe.radius;
@@ -245,7 +248,9 @@ void physicsSystem(ecs::World& world, const ecs::Tick& tick) {
             p.surfaceNormal = w.normal;
             const glm::vec3 waves = w.velocity;  // the waves' orbits at the centre: what a hull's model adds its current to
             p.waterVelocity = waves;
-            if (layer) {
+            // A hull reads the current through its hull model, ahead of its bow (ship.cpp): under it
+            // the layer holds the flow its own forces make, which is no flow it sits in.
+            if (layer && !displaces) {
                 const glm::vec2 u = layer->velocityAt({p.centre.x, p.centre.z});
                 p.waterVelocity += glm::vec3(u.x, 0.0f, u.y);
             }
@@ -260,11 +265,12 @@ void physicsSystem(ecs::World& world, const ecs::Tick& tick) {
             }
             const glm::vec3 before = body.probeWater[k];
             body.probeWater[k] = p.waterVelocity;
-            if (tick.step > 0 && dt > 0.0f) p.waterAcceleration = (p.waterVelocity - before) / dt;
+            if (!fresh && dt > 0.0f) p.waterAcceleration = (p.waterVelocity - before) / dt;
             // The drag sees this much of the horizontal motion through the water (ships: none,
             // their hull model resists it).
             p.velocity.x = p.waterVelocity.x + body.horizontalDrag * (p.velocity.x - p.waterVelocity.x);
             p.velocity.z = p.waterVelocity.z + body.horizontalDrag * (p.velocity.z - p.waterVelocity.z);
+            p.horizontalInertia = body.horizontalDrag;
             p.wind = wind10 * windProfile(p.centre.y + p.radius - p.surfaceHeight);
             const float share = probe.radius * probe.radius * probe.radius / std::max(probeVolume, 1e-12f);
             p.massShare = mass * share;
@@ -288,21 +294,27 @@ void physicsSystem(ecs::World& world, const ecs::Tick& tick) {
         // all; their hull model, tuned on the hull's own surge and sway, stands in for it).
         const glm::vec3 scale(mass / (mass + body.horizontalDrag * addedMass), mass / (mass + addedMass),
                               mass / (mass + body.horizontalDrag * addedMass));
-        glm::vec3 outside(0.0f);  // the forces from outside the water: air, hands, moorings
+        // The forces act whole at their points (their moments unscaled: the probes' added mass
+        // is the water heaving and surging with the body, not turning with it); the translation
+        // takes the scale through one force at the centre, (s − 1)·ΣF.
+        glm::vec3 outside(0.0f), total(0.0f);  // outside: the forces from outside the water (air, hands, moorings)
         for (size_t k = 0; k < forces.size(); ++k) {
             const physics::ProbeForce& f = forces[k];
-            physicsWorld->applyForce(body.id, scale * f.force, f.point);
+            physicsWorld->applyForce(body.id, f.force, f.point);
+            total += f.force;
             if (impulses) impulses->react(scale * (f.force - f.airForce), f.point, dt, body.probes[k].radius);
             outside += f.airForce;
         }
         for (const AppliedForce& f : body.forces) {
-            physicsWorld->applyForce(body.id, scale * f.force, f.point);
+            physicsWorld->applyForce(body.id, f.force, f.point);
+            total += f.force;
             if (!f.water) outside += f.force;
             else if (impulses) impulses->react(scale * f.force, f.point, dt, std::max(reach, 0.5f));
         }
         body.forces.clear();
         if (addedMass > 0.0f) {
-            physicsWorld->applyForce(body.id, glm::vec3(0.0f, (1.0f - scale.y) * mass * gravity, 0.0f), s.position);
+            physicsWorld->applyForce(body.id, (scale - 1.0f) * total + glm::vec3(0.0f, (1.0f - scale.y) * mass * gravity, 0.0f),
+                                     s.position);
             // The added mass's reaction: the water the body drags along took (1 − s) of the outside forces.
             if (impulses) impulses->react((scale - 1.0f) * outside, s.position, dt, std::max(reach, 0.5f));
         }

@@ -19,7 +19,7 @@ namespace {
 
 // The scenes with a test below; the last test checks the folder holds no other.
 const std::set<std::string> SCENES{"default", "spectrum_only", "cannon", "fish", "ship", "all", "fish_swarm", "drop", "wake",
-                                 "sandbox", "targets", "race", "herd", "harbour"};
+                                 "sandbox", "targets", "race", "herd", "harbour", "tide"};
 
 struct Run {
     int exitCode = -1;
@@ -75,6 +75,7 @@ TEST_CASE("scene sandbox.toml: 300 headless frames without error, the same state
 TEST_CASE("scene targets.toml: 300 headless frames without error, the same state hash twice", "[scenes][long]") { checkScene("targets"); }
 TEST_CASE("scene race.toml: 300 headless frames without error, the same state hash twice", "[scenes][long]") { checkScene("race"); }
 TEST_CASE("scene herd.toml: 300 headless frames without error, the same state hash twice", "[scenes][long]") { checkScene("herd"); }
+TEST_CASE("scene tide.toml: 300 headless frames without error, the same state hash twice", "[scenes][long]") { checkScene("tide"); }
 TEST_CASE("scene harbour.toml: 300 headless frames without error, the same state hash twice", "[scenes][long]") { checkScene("harbour"); }
 
 TEST_CASE("every scene in config/scenes has a determinism test", "[scenes]") {
