@@ -191,6 +191,130 @@ static float windProfile(float height) {
     return std::log(std::max(height, 0.1f) / Z0) / std::log(10.0f / Z0);
 }
 
+namespace {
+
+// What every body's water forces read this step.
+struct WaterContext {
+    const physics::PhysicsDef& def;
+    const water::WaterQuery& water;
+    const interaction::RipplePatch* patch;
+    const currents::CurrentLayer* layer;
+    glm::vec3 wind10;  // the wind 10 m up, m/s
+    float dt;
+};
+
+// Morison's forces on each of a body's probes (buoyancy.h) into `forces`; sets the body's
+// submerged fraction, the waves' velocity round it and each probe's water velocity (for the
+// next step's Du/Dt). Returns the probes' added mass, kg.
+float probeForces(const WaterContext& c, ecs::World& world, ecs::Entity entity, Body& body, const physics::BodyState& s,
+                  float reach, std::vector<physics::ProbeForce>& forces) {
+    const float mass = world.get<ecs::Motion>(entity).mass;
+    const bool fresh = body.probeWater.size() != body.probes.size();  // a new body: no rate yet
+    const Obstacle* obstacle = world.find<Obstacle>(entity);
+    const bool displaces = obstacle && obstacle->shape == Obstacle::Shape::Hull;  // a hull (a displacer of the current layer)
+    body.probeWater.resize(body.probes.size(), glm::vec3(0.0f));
+    float probeVolume = 0.0f;
+    for (const Probe& probe : body.probes) probeVolume += probe.radius * probe.radius * probe.radius;
+    forces.clear();
+    float submerged = 0.0f, addedMass = 0.0f, wet = 0.0f;
+    glm::vec3 waterSum(0.0f);
+    for (size_t k = 0; k < body.probes.size(); ++k) {
+        const Probe& probe = body.probes[k];
+        physics::ProbeState p;
+        p.centre = s.position + s.rotation * probe.offset;
+        p.radius = probe.radius;
+        p.velocity = s.linearVelocity + glm::cross(s.angularVelocity, p.centre - s.position);
+        // The ocean and current without the ripples: their level and motion come from round
+        // the body (below), not from the crater it stamps itself.
+        const water::WaterLayers sea{.ripples = false, .currents = false, .orbital = true};
+        const water::WaterSample w = c.water.sampleBelow(p.centre, sea);
+        p.surfaceHeight = w.height;
+        p.surfaceNormal = w.normal;
+        const glm::vec3 waves = w.velocity;  // the waves' orbits at the centre: what a hull's model adds its current to
+        p.waterVelocity = waves;
+        // A hull reads the current through its hull model, ahead of its bow (ship.cpp): under it
+        // the layer holds the flow its own forces make, which is no flow it sits in.
+        if (c.layer && !displaces) {
+            const glm::vec2 u = c.layer->velocityAt({p.centre.x, p.centre.z});
+            p.waterVelocity += glm::vec3(u.x, 0.0f, u.y);
+        }
+        if (c.patch) {
+            const RippleRing ripples = rippleAround(*c.patch, {p.centre.x, p.centre.z}, reach);
+            p.surfaceHeight += ripples.level;
+            // e^{kz}, z from the level the ripples ride on (an Eulerian layer: CompositeWater::velocityAt)
+            const glm::vec2 u = ripples.velocity *
+                                std::exp(c.patch->velocityWavenumber() * std::min(p.centre.y - w.height, ripples.level));
+            p.waterVelocity += glm::vec3(u.x, 0.0f, u.y);
+        }
+        const glm::vec3 before = std::exchange(body.probeWater[k], p.waterVelocity);
+        if (!fresh && c.dt > 0.0f) p.waterAcceleration = (p.waterVelocity - before) / c.dt;
+        // The drag sees this much of the horizontal motion through the water (ships: none,
+        // their hull model resists it), and the water's horizontal push likewise.
+        p.velocity.x = p.waterVelocity.x + body.horizontalDrag * (p.velocity.x - p.waterVelocity.x);
+        p.velocity.z = p.waterVelocity.z + body.horizontalDrag * (p.velocity.z - p.waterVelocity.z);
+        p.horizontalInertia = body.horizontalDrag;
+        p.wind = c.wind10 * windProfile(p.centre.y + p.radius - p.surfaceHeight);
+        const float v = probe.radius * probe.radius * probe.radius;
+        p.massShare = mass * v / std::max(probeVolume, 1e-12f);
+        p.dt = c.dt;
+        const physics::ProbeForce f = physics::probeForce(c.def, p);
+        forces.push_back(f);
+        submerged += f.submergedFraction * v;
+        addedMass += f.addedMass;
+        if (f.submergedFraction > 0.0f) {
+            waterSum += waves * f.submergedFraction;
+            wet += f.submergedFraction;
+        }
+    }
+    body.submergedFraction = probeVolume > 0.0f ? submerged / probeVolume : 0.0f;
+    if (body.submergedFraction == 0.0f)  // in flight: a ballistic body (windage is leeway, the drift of what floats)
+        for (physics::ProbeForce& f : forces) f.force -= std::exchange(f.airForce, glm::vec3(0.0f));
+    body.waveVelocity = wet > 0.0f ? waterSum / wet : glm::vec3(0.0f);
+    return addedMass;
+}
+
+// Applies the probes' and the behaviours' forces to a body with its added mass taken
+// implicitly: with m_a = Σ ρ·C_a·V the body moves as if of mass m + m_a under every force
+// (m·dv/dt = F − m_a·dv/dt), so its acceleration is s = m/(m + m_a) of the forces' and
+// (1 − s)·m·g lifts it (Bullet pulls m·g; m_a is weightless water; Bullet keeps m). A light body
+// (a ball of 1 kg/m³) then rises at (ρ/ρ_body − 1)·g/(1 + ρ·C_a/ρ_body) ≈ 2g, not at 1000 g.
+// Every horizontal water force's reaction goes to the current layer's impulses.
+void applyForces(const WaterContext& c, physics::PhysicsWorld& physicsWorld, Body& body, float mass, const physics::BodyState& s,
+                 float reach, float addedMass, std::span<const physics::ProbeForce> forces, WaterImpulses* impulses) {
+    // Horizontally the added mass counts as much as the probes' drag does (ships: not at
+    // all; their hull model, tuned on the hull's own surge and sway, stands in for it).
+    const glm::vec3 scale(mass / (mass + body.horizontalDrag * addedMass), mass / (mass + addedMass),
+                          mass / (mass + body.horizontalDrag * addedMass));
+    // The forces act whole at their points (their moments unscaled: the probes' added mass
+    // is the water heaving and surging with the body, not turning with it); the translation
+    // takes the scale through one force at the centre, (s − 1)·ΣF.
+    glm::vec3 outside(0.0f), total(0.0f);  // outside: the forces from outside the water (air, hands, moorings)
+    for (size_t k = 0; k < forces.size(); ++k) {
+        const physics::ProbeForce& f = forces[k];
+        physicsWorld.applyForce(body.id, f.force, f.point);
+        total += f.force;
+        if (impulses) impulses->react(scale * (f.force - f.airForce), f.point, c.dt, body.probes[k].radius);
+        outside += f.airForce;
+    }
+    for (const AppliedForce& f : body.forces) {
+        physicsWorld.applyForce(body.id, f.force, f.point);
+        total += f.force;
+        if (!f.water) outside += f.force;
+        else if (impulses) impulses->react(scale * f.force, f.point, c.dt, std::max(reach, 0.5f));
+    }
+    body.forces.clear();
+    if (addedMass > 0.0f) {
+        physicsWorld.applyForce(body.id, (scale - 1.0f) * total + glm::vec3(0.0f, (1.0f - scale.y) * mass * c.def.gravity, 0.0f),
+                                s.position);
+        // The added mass's reaction: the water the body drags along took (1 − s) of the outside forces.
+        if (impulses) impulses->react((scale - 1.0f) * outside, s.position, c.dt, std::max(reach, 0.5f));
+    }
+    if (body.submergedFraction > 0.0f)
+        physicsWorld.dampAngular(body.id, std::pow(1.0f - c.def.angular_damping, c.dt * body.submergedFraction));
+}
+
+} // namespace
+
 void physicsSystem(ecs::World& world, const ecs::Tick& tick) {
     auto* physicsWorld = world.resource<physics::PhysicsWorld>();
     const physics::PhysicsDef* def = findPhysicsDef(world);
@@ -205,17 +329,11 @@ void physicsSystem(ecs::World& world, const ecs::Tick& tick) {
     const water::FlatWater flat(0.0f);
     if (!water) water = &flat;
     const float dt = float(tick.dt);
-    const auto* patch = world.resource<interaction::RipplePatch>();
+    const WaterContext context{*def, *water, world.resource<interaction::RipplePatch>(), world.resource<currents::CurrentLayer>(),
+                               wind10, dt};
     auto* impulses = world.resource<WaterImpulses>();
-    const auto* layer = world.resource<currents::CurrentLayer>();
-    const float gravity = def->gravity;
 
-    // --- water and air forces, per probe (Morison: buoyancy.h), then the behaviours' forces;
-    // the added mass taken implicitly: with m_a = Σ ρ·C_a·V the body moves as if of mass
-    // m + m_a under every force (m·dv/dt = F − m_a·dv/dt), so its acceleration is s = m/(m + m_a)
-    // of the forces' and (1 − s)·m·g lifts it (Bullet pulls m·g; m_a is weightless water). Bullet keeps m.
-    // A light body (a ball of 1 kg/m³) then rises at (ρ/ρ_body − 1)·g/(1 + ρ·C_a/ρ_body) ≈ 2g,
-    // not at 1000 g.
+    // --- water and air forces per probe (Morison: buoyancy.h), then the behaviours' forces
     auto& bodies = world.pool<Body>();
     std::vector<physics::ProbeForce> forces;
     for (size_t b = 0; b < bodies.size(); ++b) {
@@ -223,103 +341,9 @@ void physicsSystem(ecs::World& world, const ecs::Tick& tick) {
         const ecs::Entity entity = bodies.entities()[b];
         const auto* spheres = world.find<interaction::SphereSet>(entity);
         const float reach = spheres && !spheres->spheres.empty() ? spheres->spheres[0].radius : 0.0f;
-        const float mass = world.get<ecs::Motion>(entity).mass;
-        physics::BodyState s = physicsWorld->state(body.id);
-        const bool fresh = body.probeWater.size() != body.probes.size();  // a new body: no rate yet
-        const Obstacle* obstacle = world.find<Obstacle>(entity);
-        const bool displaces = obstacle && obstacle->shape == Obstacle::Shape::Hull;  // a hull (a displacer of the current layer)
-        body.probeWater.resize(body.probes.size(), glm::vec3(0.0f));
-        float probeVolume = 0.0f;
-        for (const Probe& probe : body.probes) probeVolume += probe.radius * probe.radius * probe.radius;
-        forces.clear();
-        float submerged = 0.0f, addedMass = 0.0f, wet = 0.0f;
-        glm::vec3 waterSum(0.0f);
-        for (size_t k = 0; k < body.probes.size(); ++k) {
-            const Probe& probe = body.probes[k];
-            physics::ProbeState p;
-            p.centre = s.position + s.rotation * probe.offset;
-            p.radius = probe.radius;
-            p.velocity = s.linearVelocity + glm::cross(s.angularVelocity, p.centre - s.position);
-            // The ocean and current without the ripples: their level and motion come from round
-            // the body (above), not from the crater it stamps itself.
-            const water::WaterLayers sea{.ripples = false, .currents = false, .orbital = true};
-            const water::WaterSample w = water->sampleBelow(p.centre, sea);
-            p.surfaceHeight = w.height;
-            p.surfaceNormal = w.normal;
-            const glm::vec3 waves = w.velocity;  // the waves' orbits at the centre: what a hull's model adds its current to
-            p.waterVelocity = waves;
-            // A hull reads the current through its hull model, ahead of its bow (ship.cpp): under it
-            // the layer holds the flow its own forces make, which is no flow it sits in.
-            if (layer && !displaces) {
-                const glm::vec2 u = layer->velocityAt({p.centre.x, p.centre.z});
-                p.waterVelocity += glm::vec3(u.x, 0.0f, u.y);
-            }
-            if (patch) {
-                const glm::vec2 xz(p.centre.x, p.centre.z);
-                const RippleRing ripples = rippleAround(*patch, xz, reach);
-                p.surfaceHeight += ripples.level;
-                // e^{kz}, z from the level the ripples ride on (an Eulerian layer: CompositeWater::velocityAt)
-                const glm::vec2 u = ripples.velocity *
-                                    std::exp(patch->velocityWavenumber() * std::min(p.centre.y - w.height, ripples.level));
-                p.waterVelocity += glm::vec3(u.x, 0.0f, u.y);
-            }
-            const glm::vec3 before = body.probeWater[k];
-            body.probeWater[k] = p.waterVelocity;
-            if (!fresh && dt > 0.0f) p.waterAcceleration = (p.waterVelocity - before) / dt;
-            // The drag sees this much of the horizontal motion through the water (ships: none,
-            // their hull model resists it).
-            p.velocity.x = p.waterVelocity.x + body.horizontalDrag * (p.velocity.x - p.waterVelocity.x);
-            p.velocity.z = p.waterVelocity.z + body.horizontalDrag * (p.velocity.z - p.waterVelocity.z);
-            p.horizontalInertia = body.horizontalDrag;
-            p.wind = wind10 * windProfile(p.centre.y + p.radius - p.surfaceHeight);
-            const float share = probe.radius * probe.radius * probe.radius / std::max(probeVolume, 1e-12f);
-            p.massShare = mass * share;
-            p.dt = dt;
-            physics::ProbeForce f = physics::probeForce(*def, p);
-            forces.push_back(f);
-            const float v = probe.radius * probe.radius * probe.radius;
-            submerged += f.submergedFraction * v;
-            addedMass += f.addedMass;
-            if (f.submergedFraction > 0.0f) {
-                waterSum += waves * f.submergedFraction;
-                wet += f.submergedFraction;
-            }
-        }
-        body.submergedFraction = probeVolume > 0.0f ? submerged / probeVolume : 0.0f;
-        if (body.submergedFraction == 0.0f)  // in flight: a ballistic body (windage is leeway, the drift of what floats)
-            for (physics::ProbeForce& f : forces) f.force -= std::exchange(f.airForce, glm::vec3(0.0f));
-        body.waveVelocity = wet > 0.0f ? waterSum / wet : glm::vec3(0.0f);
-
-        // Horizontally the added mass counts as much as the probes' drag does (ships: not at
-        // all; their hull model, tuned on the hull's own surge and sway, stands in for it).
-        const glm::vec3 scale(mass / (mass + body.horizontalDrag * addedMass), mass / (mass + addedMass),
-                              mass / (mass + body.horizontalDrag * addedMass));
-        // The forces act whole at their points (their moments unscaled: the probes' added mass
-        // is the water heaving and surging with the body, not turning with it); the translation
-        // takes the scale through one force at the centre, (s − 1)·ΣF.
-        glm::vec3 outside(0.0f), total(0.0f);  // outside: the forces from outside the water (air, hands, moorings)
-        for (size_t k = 0; k < forces.size(); ++k) {
-            const physics::ProbeForce& f = forces[k];
-            physicsWorld->applyForce(body.id, f.force, f.point);
-            total += f.force;
-            if (impulses) impulses->react(scale * (f.force - f.airForce), f.point, dt, body.probes[k].radius);
-            outside += f.airForce;
-        }
-        for (const AppliedForce& f : body.forces) {
-            physicsWorld->applyForce(body.id, f.force, f.point);
-            total += f.force;
-            if (!f.water) outside += f.force;
-            else if (impulses) impulses->react(scale * f.force, f.point, dt, std::max(reach, 0.5f));
-        }
-        body.forces.clear();
-        if (addedMass > 0.0f) {
-            physicsWorld->applyForce(body.id, (scale - 1.0f) * total + glm::vec3(0.0f, (1.0f - scale.y) * mass * gravity, 0.0f),
-                                     s.position);
-            // The added mass's reaction: the water the body drags along took (1 − s) of the outside forces.
-            if (impulses) impulses->react((scale - 1.0f) * outside, s.position, dt, std::max(reach, 0.5f));
-        }
-        if (body.submergedFraction > 0.0f)
-            physicsWorld->dampAngular(body.id, std::pow(1.0f - def->angular_damping, dt * body.submergedFraction));
+        const physics::BodyState s = physicsWorld->state(body.id);
+        const float addedMass = probeForces(context, world, entity, body, s, reach, forces);
+        applyForces(context, *physicsWorld, body, world.get<ecs::Motion>(entity).mass, s, reach, addedMass, forces, impulses);
     }
 
     // --- rigid-body step
