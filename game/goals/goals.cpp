@@ -154,7 +154,7 @@ GameResult judgeHerd(ecs::World& world, GameState& game) {
         game.score += in ? 1 : 0;
     }
     if (game.score >= game.needed) {
-        game.reason = std::to_string(game.score) + " crates in the ring";
+        game.reason = std::to_string(game.score) + " " + game.def.herd.herd_prefix + "s in the ring";
         return GameResult::Won;
     }
     return GameResult::Running;

@@ -152,7 +152,8 @@ static void gameHud(const GameState& game) {
         break;
     }
     case GameMode::Herd:
-        ImGui::Text("HERD   crates in the ring %d / %d   time %s", game.score, game.needed, clock.c_str());
+        ImGui::Text("HERD   %ss in the ring %d / %d   time %s", game.def.herd.herd_prefix.c_str(), game.score, game.needed,
+                    clock.c_str());  // the herded objects by their name: crates, balls
         break;
     }
     ImGui::End();
