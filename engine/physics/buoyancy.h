@@ -4,6 +4,8 @@
 #pragma once
 #include "physics/physics_def.h"
 
+#include <glm/gtc/quaternion.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <span>
 
@@ -26,6 +28,9 @@ struct ProbeState {
     /// How much of the accelerating water's horizontal push the probe takes, [0, 1] (a ship's
     /// probes: 0, its hull model stands for its horizontal hydrodynamics; 1 otherwise).
     float horizontalInertia = 1.0f;
+    /// How much of the hydrostatic buoyancy ρ·V·g the probe carries, [0, 1] (a hull's probes:
+    /// 0, hullBuoyancy stands for it from the hull's own shape; 1 otherwise).
+    float hydrostatic = 1.0f;
     /// The probe's share of the body's mass (kg, > 0 makes the drag implicit: it can slow the
     /// relative motion within a step but never reverse it, whatever the coefficients); 0 = explicit.
     float massShare = 0.0f;
@@ -53,5 +58,30 @@ inline float accelerationBound(const PhysicsDef& def) { return def.gravity; }
 /// The added mass's other half, −ρ·V·C_a·dv/dt, depends on the body's own acceleration: the
 /// caller adds `addedMass` to the body's inertia (implicitly, see sim/objects.cpp).
 ProbeForce probeForce(const PhysicsDef& def, const ProbeState& probe);
+
+/// A box hull (beam x, depth y, length z, m) cut into cells.x × cells.y columns running keel to
+/// deck; its nodes are the cells' corners on the hull's plan, (cells.x + 1)·(cells.y + 1) of them.
+struct HullGrid {
+    glm::vec3 size{3.0f, 1.5f, 10.0f};
+    glm::ivec2 cells{4, 8};
+    int nodeCount() const { return (cells.x + 1) * (cells.y + 1); }
+    /// Node n's plan position (x across, z along), hull frame, m; nodes run along x fastest.
+    glm::vec2 node(int n) const;
+};
+
+/// The hull's hydrostatic buoyancy and where it acts.
+struct HullBuoyancy {
+    glm::vec3 force{0.0f};   ///< N, ρ·g·V straight up
+    glm::vec3 point{0.0f};   ///< the centre of buoyancy, world, m
+    float volume = 0.0f;     ///< submerged volume V, m³
+};
+
+/// The buoyancy of a box hull at a pose over water whose height above each node is
+/// nodeHeights[n] (m): each column is wet from its keel (its deck, capsized) to where the water
+/// plane through the nodes crosses it, integrated with 2 × 2 Gauss points per cell — exact for a
+/// plane surface, so the hull's centre of buoyancy moves with heel as the box's own waterplane
+/// makes it: GM = KB + BM − KG with BM = I/V, I = L·B³/12 (not the probe spheres' lattice).
+HullBuoyancy hullBuoyancy(const PhysicsDef& def, const HullGrid& hull, glm::vec3 position, const glm::quat& rotation,
+                          std::span<const float> nodeHeights);
 
 } // namespace ob::physics

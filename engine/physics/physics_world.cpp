@@ -81,6 +81,18 @@ void PhysicsWorld::setLinearVelocity(BodyId id, const glm::vec3& velocity) {
     if (btRigidBody* body = m_impl->get(id)) body->setLinearVelocity(bt(velocity));
 }
 
+void PhysicsWorld::setState(BodyId id, const BodyState& s) {
+    btRigidBody* body = m_impl->get(id);
+    if (!body) return;
+    btTransform t;
+    t.setOrigin(bt(s.position));
+    t.setRotation(btQuaternion(s.rotation.x, s.rotation.y, s.rotation.z, s.rotation.w));
+    body->setWorldTransform(t);
+    body->getMotionState()->setWorldTransform(t);
+    body->setLinearVelocity(bt(s.linearVelocity));
+    body->setAngularVelocity(bt(s.angularVelocity));
+}
+
 std::optional<RayHit> PhysicsWorld::rayCast(const glm::vec3& from, const glm::vec3& to) const {
     btCollisionWorld::ClosestRayResultCallback closest(bt(from), bt(to));
     m_impl->world.rayTest(bt(from), bt(to), closest);

@@ -68,7 +68,10 @@ ecs::Entity spawnShip(ecs::World& world, const ObjectDef& o) {
     // A model is in metres (the hull box is its hull); the built-in unit box is scaled to the hull.
     Renderable look{gfx::MeshKind::Box, o.model.empty() ? o.ship.hull * 0.5f : o.ship.hull / ShipDef{}.hull, o.color, o.model};
     ecs::Entity e = spawnBody(world, ObjectType::Ship, o.name, id, latticeProbes(o.ship.hull, PROBES), volume, mass, start, look);
-    world.get<Body>(e).horizontalDrag = 0.0f;  // the hull model below resists horizontal motion
+    Body& body = world.get<Body>(e);
+    body.horizontalDrag = 0.0f;  // the hull model below resists horizontal motion
+    body.hull = physics::HullGrid{o.ship.hull};  // its buoyancy and righting moment from the hull's own waterplane
+    body.massCentre = glm::vec3(0.0f, (o.ship.cg_height - 0.5f) * o.ship.hull.y, 0.0f);  // its ballast
     // Six spheres on the keel line at the still-water line (draft = hull depth · density ratio),
     // so they always cross the surface ([Kang2008]: "always in contact").
     const float draft = o.ship.hull.y * std::min(o.ship.density / physicsDef(world).water_density, 1.0f);

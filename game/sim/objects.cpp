@@ -203,6 +203,27 @@ struct WaterContext {
     float dt;
 };
 
+// A hull's hydrostatic buoyancy from its columns (buoyancy.h), over the water at its nodes: the
+// sea without the ripples, read at the hull's still-water line, plus the ripples round each node
+// (as for the probes: not the hull's own crater).
+physics::ProbeForce hullForce(const WaterContext& c, const physics::HullGrid& hull, const physics::BodyState& s, float mass,
+                              float reach) {
+    const float draft = hull.size.y * std::clamp(mass / (c.def.water_density * hull.size.x * hull.size.y * hull.size.z), 0.0f, 1.0f);
+    const water::WaterLayers sea{.ripples = false, .currents = false, .orbital = true};
+    std::vector<float> heights(size_t(hull.nodeCount()));
+    for (int n = 0; n < hull.nodeCount(); ++n) {
+        const glm::vec2 q = hull.node(n);
+        const glm::vec3 at = s.position + s.rotation * glm::vec3(q.x, draft - 0.5f * hull.size.y, q.y);
+        heights[size_t(n)] = c.water.sample(at.x, at.z, sea).height;
+        if (c.patch) heights[size_t(n)] += rippleAround(*c.patch, {at.x, at.z}, reach).level;
+    }
+    const physics::HullBuoyancy b = physics::hullBuoyancy(c.def, hull, s.position, s.rotation, heights);
+    physics::ProbeForce f;
+    f.force = b.force;
+    f.point = b.point;
+    return f;
+}
+
 // Morison's forces on each of a body's probes (buoyancy.h) into `forces`; sets the body's
 // submerged fraction, the waves' velocity round it and each probe's water velocity (for the
 // next step's Du/Dt). Returns the probes' added mass, kg.
@@ -253,6 +274,7 @@ float probeForces(const WaterContext& c, ecs::World& world, ecs::Entity entity, 
         p.velocity.x = p.waterVelocity.x + body.horizontalDrag * (p.velocity.x - p.waterVelocity.x);
         p.velocity.z = p.waterVelocity.z + body.horizontalDrag * (p.velocity.z - p.waterVelocity.z);
         p.horizontalInertia = body.horizontalDrag;
+        p.hydrostatic = body.hull ? 0.0f : 1.0f;
         p.wind = c.wind10 * windProfile(p.centre.y + p.radius - p.surfaceHeight);
         const float v = probe.radius * probe.radius * probe.radius;
         p.massShare = mass * v / std::max(probeVolume, 1e-12f);
@@ -270,6 +292,7 @@ float probeForces(const WaterContext& c, ecs::World& world, ecs::Entity entity, 
     if (body.submergedFraction == 0.0f)  // in flight: a ballistic body (windage is leeway, the drift of what floats)
         for (physics::ProbeForce& f : forces) f.force -= std::exchange(f.airForce, glm::vec3(0.0f));
     body.waveVelocity = wet > 0.0f ? waterSum / wet : glm::vec3(0.0f);
+    if (body.hull) forces.push_back(hullForce(c, *body.hull, s, mass, reach));
     return addedMass;
 }
 
@@ -293,7 +316,8 @@ void applyForces(const WaterContext& c, physics::PhysicsWorld& physicsWorld, Bod
         const physics::ProbeForce& f = forces[k];
         physicsWorld.applyForce(body.id, f.force, f.point);
         total += f.force;
-        if (impulses) impulses->react(scale * (f.force - f.airForce), f.point, c.dt, body.probes[k].radius);
+        const float radius = k < body.probes.size() ? body.probes[k].radius : std::max(reach, 0.5f);  // past the probes: the hull's
+        if (impulses) impulses->react(scale * (f.force - f.airForce), f.point, c.dt, radius);
         outside += f.airForce;
     }
     for (const AppliedForce& f : body.forces) {
@@ -303,6 +327,11 @@ void applyForces(const WaterContext& c, physics::PhysicsWorld& physicsWorld, Bod
         else if (impulses) impulses->react(scale * f.force, f.point, c.dt, std::max(reach, 0.5f));
     }
     body.forces.clear();
+    if (body.massCentre != glm::vec3(0.0f)) {  // gravity's moment about the box's centre: a couple, no net force
+        const glm::vec3 weight(0.0f, -mass * c.def.gravity, 0.0f);
+        physicsWorld.applyForce(body.id, weight, s.position + s.rotation * body.massCentre);
+        physicsWorld.applyForce(body.id, -weight, s.position);
+    }
     if (addedMass > 0.0f) {
         physicsWorld.applyForce(body.id, (scale - 1.0f) * total + glm::vec3(0.0f, (1.0f - scale.y) * mass * c.def.gravity, 0.0f),
                                 s.position);

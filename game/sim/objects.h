@@ -10,6 +10,7 @@
 #include "physics/physics_world.h"
 
 #include <string>
+#include <optional>
 #include <vector>
 
 namespace ob::game {
@@ -66,6 +67,9 @@ struct ShipDef {
     glm::vec3 velocity{0.0f};           ///< start velocity, m/s
     float density = 500.0f;             ///< kg/m³ of the hull box, [1, 100000]: its draft is depth × density / water's
     glm::vec3 hull{3.0f, 1.5f, 10.0f};  ///< hull box: beam x, depth y, length z (bow +z), m, [0.1, 1000]; a model is scaled from this default
+    /// The centre of mass's height above the keel, a fraction of the depth, [0, 1]: 0.5 a uniform
+    /// box; 0.2 (KG = 0.3 m) a ballasted hull, whose righting arm stays positive to about 125°.
+    float cg_height = 0.2f;
     bool player = false;                ///< steered with W/S (throttle) A/D (rudder)
     float yaw_deg = 0.0f;               ///< start heading, deg about +y, 0 faces +z, 90 faces +x, [-360, 360]
     float speed = 5.0f;                 ///< cruise (scripted) or top (player) speed, m/s, [0, 100]
@@ -76,6 +80,7 @@ template <class V> void describe(V& v, ShipDef& d) {
     v.field("velocity", d.velocity, any(), "start velocity, m/s");
     v.field("density", d.density, range(1, 100000), "hull density, kg/m³ (draft = depth × density / water's)");
     v.field("hull", d.hull, range(0.1, 1000), "hull beam, depth, length, m (a model is scaled from 3 × 1.5 × 10)");
+    v.field("cg_height", d.cg_height, range(0, 1), "centre of mass above the keel, fraction of the depth (ballast)");
     v.field("player", d.player, "W/S throttle, A/D rudder");
     v.field("yaw_deg", d.yaw_deg, range(-360, 360), "heading, deg about +y (0 faces +z)");
     v.field("speed", d.speed, range(0, 100), "cruise or top speed, m/s");
@@ -226,6 +231,12 @@ struct Body {  // what it is: the entity's ObjectTag
     glm::vec3 waveVelocity{0.0f};    ///< the waves' orbital velocity averaged over the wet probes, last step, m/s (no
                                      ///< current, no ripples: a hull model adds the current it sails in, see ship.cpp)
     std::vector<glm::vec3> probeWater;  ///< each probe's water velocity last step, m/s (its rate is the water's Du/Dt)
+    /// A hull's box: its buoyancy from its columns (physics::hullBuoyancy), its probes carrying
+    /// the rest (drag, the water's acceleration, added mass); none: the probes carry it all.
+    std::optional<physics::HullGrid> hull;
+    /// Where its mass's centre is in its frame, m (a ship's ballast: below the hull box's centre);
+    /// Bullet turns the body about the box's centre, so gravity there makes the couple it lacks.
+    glm::vec3 massCentre{0.0f};
     glm::vec3 angularVelocity{0.0f}; ///< rad/s, world, after the last step
     std::vector<AppliedForce> forces;  ///< behaviour forces for the next step (cleared by the step)
 };

@@ -1,11 +1,15 @@
 // Seakeeping: a hull much shorter than the dominant waves follows the slope of the sea it
 // spans, so its RMS pitch (roll) is the RMS slope along (across) its keel of the waves
 // longer than about twice its length (Lewis, "Principles of Naval Architecture" III §8:
-// the "wave slope" limit of the response operator, |RAO| → 1 for λ ≫ L). Roll goes beyond it:
-// the 3 m × 1.5 m × 10 m box at density 450 has GM ≈ 0.72 m (BM = L·B³/12 / V = 1.14 m, KG − KB
-// = 0.42 m) and a natural roll frequency ≈ 2.75 rad/s (period 2.3 s) inside the band of those
-// waves (ω = sqrt(g·k) ≤ 1.75 rad/s at the cut: ω/ωn ≤ 0.64, a static response amplified up to
-// 1/(1 − 0.64²) ≈ 1.7 undamped), so roll is checked to lie between 1 and 2 times the slope.
+// the "wave slope" limit of the response operator, |RAO| → 1 for λ ≫ L). Roll follows the
+// slope across its beam likewise: the 3 m × 1.5 m × 10 m box at density 450 with its ballast
+// (KG = 0.3 m) has GM = KB + BM − KG = 0.33 + 1.14 − 0.30 = 1.17 m from its hull's own
+// waterplane and a natural roll frequency ≈ 3.5 rad/s, above the band of those waves
+// (ω = sqrt(g·k) ≤ 1.75 rad/s at the cut): the response is quasi-static, amplified by at most
+// 1/(1 − 0.5²) = 1.33 at the cut, and reduced by the water's motion fading with depth over
+// its draft (the Smith effect, e^{−k·T} = 0.81 at the cut, 0.94 at the sea's peak). So roll is
+// checked to lie between 0.8 and 2 times the slope (a uniform box, GM 0.72 m, rolls 1.4–1.7 times it:
+// its 2.3 s period meets the 8 m waves the reference leaves out).
 #include "ecs/components.h"
 #include "behaviours/ship.h"
 #include "sim/objects.h"
@@ -92,7 +96,7 @@ std::vector<Motion> measure(float wind, float seconds, float settle) {
 
 } // namespace
 
-TEST_CASE("in a 22 m/s storm a 10 m ship pitches as the slope of the waves longer than twice its length (within 35%), rolls 1-2x it, upright",
+TEST_CASE("in a 22 m/s storm a 10 m ship pitches as the slope of the waves longer than twice its length (within 35%), rolls 0.8-2x it, upright",
           "[ship][seakeeping][long]") {
     const std::vector<Motion> motions = measure(22.0f, 60.0f, 5.0f);
     REQUIRE(motions.size() >= 2);
@@ -101,7 +105,7 @@ TEST_CASE("in a 22 m/s storm a 10 m ship pitches as the slope of the waves longe
                           << glm::degrees(m.rollRms) << " deg (reference " << glm::degrees(m.rollRef) << "), max roll " << m.maxRoll
                           << " deg, min submerged " << m.minWet);
         CHECK(m.pitchRms == Approx(m.pitchRef).epsilon(0.35));
-        CHECK(m.rollRms > m.rollRef);
+        CHECK(m.rollRms > 0.8 * m.rollRef);
         CHECK(m.rollRms < 2.0 * m.rollRef);
         CHECK(m.maxRoll < 45.0f);  // upright: no capsize
         CHECK(m.minWet > 0.0f);    // never thrown clear of the water (off a crest a hull is down to ~3% wetted)
