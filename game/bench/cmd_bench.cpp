@@ -45,10 +45,12 @@ std::string resolveScene(const std::string& nameOrPath) {
     return file;
 }
 
-void checkOutputs(const BenchOutput& o) {
+void checkOutputs(const BenchOutput& o, const std::vector<std::string>& scenes) {
     if (!o.out.empty()) checkWritable(o.out, "CSV");
     if (!o.chart.empty()) checkWritable(o.chart, "chart");
-    checkOutputsApart({}, {{"--out", o.out}, {"--chart", o.chart}});
+    std::vector<NamedPath> inputs;
+    for (const std::string& scene : scenes) inputs.push_back({"the scene file", scene});
+    checkOutputsApart(inputs, {{"--out", o.out}, {"--chart", o.chart}});
 }
 
 void checkRange(const char* flag, long v, long lo, long hi) {

@@ -18,7 +18,8 @@ int runCli(int argc, char** argv) {
     app.require_subcommand(1);
     app.footer("Outputs (--stats, --screenshot, --out) are written whole to a regular file at the path given: a device, "
                "a named pipe, a folder or a symbolic link there (/dev/null, /dev/stdout) is refused with exit 2 before the "
-               "run. Inputs must be regular files.");
+               "run, and so is an output that names one of the run's inputs (the scene, its models, --input) or another output. "
+               "Inputs must be regular files. A scene's screenshot events write only in its own folder or below.");
     app.fallthrough(false);
     CommandAction action;
     std::string commandLine = "oceanbox";

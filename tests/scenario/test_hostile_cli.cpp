@@ -251,6 +251,7 @@ TEST_CASE("an output never replaces an input: the scene, the input script, and t
     ob::writeNpy(field, {4, 4}, h.data());
     const std::string fieldBytes = bytesOf(field);
     expectRefused(oceanbox("ripple --in " + field + " --steps 1 --damping 0.9 --out " + field), "--out '" + field + "' is --in");
+    expectRefused(oceanbox("bench fields --scenes " + scene + " --out " + scene), "--out '" + scene + "' is the scene file");
     const std::string twice = tempPath("twice.out");
     expectRefused(oceanbox("run " + scene + RUN_FLAGS + " --stats " + twice + " --screenshot " + twice), "name one file");
     CHECK(!fs::exists(twice));
