@@ -20,7 +20,7 @@ std::string resolvedPath(const std::string& path) {
     return (ec ? absolute.lexically_normal() : resolved).string();
 }
 
-std::string named(const NamedPath& p) { return p.what + " " + quotedValue(p.path); }
+std::string namedPathText(const NamedPath& p) { return p.what + " " + quotedValue(p.path); }
 
 } // namespace
 
@@ -49,11 +49,11 @@ void checkOutputsApart(const std::vector<NamedPath>& inputs, const std::vector<N
         if (out.path.empty()) continue;
         for (const NamedPath& in : inputs)
             if (!in.path.empty() && sameFile(out.path, in.path))
-                throw InputError(named(out) + " is " + named(in) +
+                throw InputError(namedPathText(out) + " is " + namedPathText(in) +
                                  ": an output never replaces one of the run's inputs (choose another path)");
         for (size_t k = 0; k < o; ++k)
             if (!outputs[k].path.empty() && sameFile(out.path, outputs[k].path))
-                throw InputError(named(out) + " and " + named(outputs[k]) +
+                throw InputError(namedPathText(out) + " and " + namedPathText(outputs[k]) +
                                  " name one file: one would be lost (give each output its own path)");
     }
 }
