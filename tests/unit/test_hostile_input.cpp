@@ -322,7 +322,7 @@ TEST_CASE("a corrupt far twin (X.lod1.gltf) fails when the scene loads, at the m
 
 // --- text from files is inert --------------------------------------------------------------
 
-TEST_CASE("control characters become printable escapes; other text, UTF-8 included, is left as it is", "[hostile][text]") {
+TEST_CASE("control characters become printable escapes, other text, UTF-8 included, is left as it is", "[hostile][text]") {
     // ESC [2J clears the screen, OSC 52 sets the clipboard, U+009B is the one-character CSI,
     // U+202E reverses what follows; 0xff is no UTF-8 at all.
     const std::string hostile = "a\x1b[2J\x1b]52;c;ZXZpbA==\x07" "b\x7f\xc2\x9b" "c\xe2\x80\xae" "d\xff\n";
@@ -516,7 +516,7 @@ TEST_CASE("a scene's grids are weighed at load: more than the process may hold i
     CHECK(game::processMemoryLimit() > 0.0);
 }
 
-TEST_CASE("legal-but-huge splash maxima warn with their cost; a frame over 10 s names its largest phase", "[hostile][cost]") {
+TEST_CASE("legal-but-huge splash maxima warn with their cost, and a frame over 10 s names its largest phase", "[hostile][cost]") {
     game::SceneDef scene = game::parseScene("[splash]\nmax_particles = 10000000\nspray_per_step = 100000\n", "splash.toml");
     const std::vector<std::string> warnings = game::costWarnings(scene);
     REQUIRE(warnings.size() == 1);
