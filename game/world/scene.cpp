@@ -127,7 +127,8 @@ static void confineEventFiles(SceneDef& scene, const TomlDocument& doc, const st
     for (size_t k = 0; k < scene.events.size(); ++k) {
         EventDef& e = scene.events[k];
         const std::string key = "events[" + std::to_string(k) + "].file";
-        const std::string at = doc.where(key, "");
+        // The default file ("event.png") is the scene's too: named at the event's action.
+        const std::string at = doc.where(key, doc.where("events[" + std::to_string(k) + "].action", ""));
         if (e.action != EventAction::Screenshot || e.file.empty() || at.empty() || at.rfind("--set", 0) == 0) continue;
         const std::string head = at + ": " + key + ": " + quotedValue(e.file) + " ";
         const fs::path file(e.file);

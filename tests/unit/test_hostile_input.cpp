@@ -409,6 +409,9 @@ TEST_CASE("a screenshot event's file stays in the scene's folder: absolute, '..'
     CHECK(load("shots/a.png").empty());
     const game::SceneDef scene = game::loadScene(folder + "/s.toml");
     CHECK(scene.events[0].file == (fs::absolute(folder) / "shots/a.png").lexically_normal().string());
+    // The default file, event.png, goes there too.
+    writeFile(folder + "/d.toml", "[[events]]\nat = 1.0\naction = \"screenshot\"\n");
+    CHECK(game::loadScene(folder + "/d.toml").events[0].file == (fs::absolute(folder) / "event.png").lexically_normal().string());
     // A file given on the command line (--set) is the user's own: kept as typed.
     const game::SceneDef typed = game::loadScene(folder + "/s.toml", {"events[0].file=\"/tmp/typed.png\""});
     CHECK(typed.events[0].file == "/tmp/typed.png");
