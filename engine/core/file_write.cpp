@@ -3,6 +3,7 @@
 #include "core/file_write.h"
 
 #include "core/error.h"
+#include "core/printable.h"
 
 #include <cerrno>
 #include <chrono>
@@ -12,6 +13,7 @@
 #include <dirent.h>
 #include <fcntl.h>
 #include <filesystem>
+#include <climits>
 #include <fstream>
 #include <random>
 #include <streambuf>
@@ -123,17 +125,24 @@ private:
     char m_buffer[1 << 16];
 };
 
+// The random characters that end a temporary's name.
+constexpr int TEMPORARY_RANDOM_CHARS = 6;
+
+// A temporary's name beside `path` up to its random characters: ".NAME.oceanbox-PID-".
+std::string temporaryStem(const std::string& path) {
+    return "." + std::filesystem::path(path).filename().string() + TEMPORARY_MARK + std::to_string(::getpid()) + "-";
+}
+
 // A new temporary beside `path`, created with O_EXCL | O_NOFOLLOW under a fresh name; its
 // name in `tmp`. -1 and errno when none can be made.
 int createTemporary(const std::string& path, std::string& tmp) {
-    const std::filesystem::path p(path);
-    const std::string stem = folderOf(path) + "/." + p.filename().string() + TEMPORARY_MARK + std::to_string(::getpid()) + "-";
+    const std::string stem = folderOf(path) + "/" + temporaryStem(path);
     static const char LETTERS[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789";
     std::random_device device;
     std::mt19937_64 random((uint64_t(device()) << 32) ^ device() ^ uint64_t(std::chrono::steady_clock::now().time_since_epoch().count()));
     for (int attempt = 0; attempt < 100; ++attempt) {
         tmp = stem;
-        for (int i = 0; i < 6; ++i) tmp += LETTERS[random() % (sizeof LETTERS - 1)];
+        for (int i = 0; i < TEMPORARY_RANDOM_CHARS; ++i) tmp += LETTERS[random() % (sizeof LETTERS - 1)];
         const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0600);
         if (fd >= 0 || errno != EEXIST) return fd;
     }
@@ -144,7 +153,7 @@ int createTemporary(const std::string& path, std::string& tmp) {
 } // namespace
 
 void checkWritable(const std::string& path, const char* what) {
-    const std::string head = std::string("cannot write ") + what + " '" + path + "': ";
+    const std::string head = std::string("cannot write ") + what + " " + quotedValue(path) + ": ";
     if (path.empty()) throw InputError(std::string("cannot write ") + what + ": the path is empty (give a file name)");
     struct stat st {};
     if (::lstat(path.c_str(), &st) == 0) {
@@ -164,9 +173,21 @@ void checkWritable(const std::string& path, const char* what) {
     }
     const std::string dir = folderOf(path);
     if (!std::filesystem::is_directory(dir))
-        throw InputError(head + "folder '" + dir + "' does not exist (create it or choose another path)");
+        throw InputError(head + "folder " + quotedValue(dir) + " does not exist (create it or choose another path)");
     if (::access(dir.c_str(), W_OK) != 0)
-        throw InputError(head + "folder '" + dir + "' is not writable (choose another path)");
+        throw InputError(head + "folder " + quotedValue(dir) + " is not writable (choose another path)");
+    // The temporary's name is longer than the output's: a name near the folder's limit
+    // would fail only after the run.
+    const long nameMax = ::pathconf(dir.c_str(), _PC_NAME_MAX);
+    const size_t limit = nameMax > 0 ? size_t(nameMax) : size_t(NAME_MAX);
+    const size_t temporary = temporaryStem(path).size() + TEMPORARY_RANDOM_CHARS;
+    if (temporary > limit) {
+        const size_t name = std::filesystem::path(path).filename().string().size();
+        throw InputError(head + "its name has " + std::to_string(name) + " characters and the temporary written beside it "
+                         "first (.NAME" + TEMPORARY_MARK + "PID-XXXXXX) would have " + std::to_string(temporary) +
+                         ", over the folder's limit of " + std::to_string(limit) + " (give a name of at most " +
+                         std::to_string(name - (temporary - limit)) + " characters)");
+    }
 }
 
 void writeFileWhole(const std::string& path, const std::string& what, const std::function<void(std::ostream&)>& write) {

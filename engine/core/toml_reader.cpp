@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "core/file_read.h"
+#include "core/printable.h"
 
 #include <algorithm>
 #include <charconv>
@@ -29,7 +30,7 @@ TomlDocument& TomlDocument::operator=(TomlDocument&&) noexcept = default;
 // "file:line:column", or the --set assignment a value came from.
 static std::string where(const toml::source_region& r) {
     if (!r.path) return "--set";
-    const std::string& p = *r.path;
+    const std::string p = printable(*r.path);
     if (p.rfind("--set", 0) == 0) return p;
     return p + ":" + std::to_string(r.begin.line) + ":" + std::to_string(r.begin.column);
 }
@@ -249,7 +250,7 @@ struct TomlReader::State {
             if (f.seen.count(name)) continue;
             toml::source_region r = k.source().path ? k.source() : v.source();
             const char* what = v.is_table() ? "unknown section" : "unknown key";
-            errors.push_back(where(r) + ": " + f.prefix + name + ": " + what);
+            errors.push_back(where(r) + ": " + f.prefix + clipped(name) + ": " + what);
         }
     }
 };
@@ -447,8 +448,10 @@ static const toml::value<std::string>* readString(auto& s, const char* key) {
     return str;
 }
 
+// A string is read inert: its control characters become printable escapes (core/printable.h),
+// so a scene's names, notes and paths print and draw as text wherever they go.
 void TomlReader::field(const char* key, std::string& value, const char*, Change) {
-    if (auto str = readString(*m_state, key)) value = str->get();
+    if (auto str = readString(*m_state, key)) value = printable(str->get());
 }
 
 void TomlReader::refuse(const char* key, const std::string& why) {
@@ -466,7 +469,7 @@ void TomlReader::choice(const char* key, Words words, std::size_t& index) {
         }
         list += std::string(list.empty() ? "" : ", ") + "\"" + words[i] + "\"";
     }
-    m_state->error(*str, key, "must be one of " + list + ", got \"" + str->get() + "\"");
+    m_state->error(*str, key, "must be one of " + list + ", got " + quotedValue(str->get(), MESSAGE_VALUE_CHARS, '"'));
 }
 
 void TomlReader::field(const char* key, std::vector<glm::vec2>& points, Limits limits, const char*, Change) {

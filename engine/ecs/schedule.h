@@ -17,6 +17,9 @@ class Clock;
 
 namespace ob::ecs {
 
+/// The fastest fixed simulation rate a scene may ask for (Hz): sim.step_hz's maximum.
+constexpr double MAX_STEP_HZ = 1000.0;
+
 /// Simulation timing, section [sim].
 struct SimDef {
     float step_hz = 60.0f;          ///< fixed simulation rate (Hz), [1, 1000]
@@ -27,7 +30,7 @@ struct SimDef {
 };
 
 template <class V> void describe(V& v, SimDef& d) {
-    v.field("step_hz", d.step_hz, range(1, 1000), "fixed simulation rate (Hz)");
+    v.field("step_hz", d.step_hz, range(1, MAX_STEP_HZ), "fixed simulation rate (Hz)");
     v.field("max_steps_per_frame", d.max_steps_per_frame, range(1, 64), "catch-up limit when a frame is slow");
     v.field("seed", d.seed, "seed for every random choice of the scene");
     v.field("end_time", d.end_time, range(0, 1e6), "simulated seconds a run lasts; play then shows the result (0: none)");

@@ -4,6 +4,12 @@
 
 namespace ob::platform {
 
+/// A framebuffer's side, px: the range of [window] width and height, --size and a
+/// recording's size (a GL 4.5 implementation guarantees at least 16384; 8192 keeps the
+/// targets of one frame within a few GiB).
+constexpr int MIN_FRAMEBUFFER_PX = 16;
+constexpr int MAX_FRAMEBUFFER_PX = 8192;
+
 /// Window and context settings, section [window].
 struct WindowDef {
     int width = 1280;       ///< framebuffer width (px), [16, 8192]
@@ -12,8 +18,8 @@ struct WindowDef {
 };
 
 template <class V> void describe(V& v, WindowDef& d) {
-    v.field("width", d.width, range(16, 8192), "framebuffer width (px)");
-    v.field("height", d.height, range(16, 8192), "framebuffer height (px)");
+    v.field("width", d.width, range(MIN_FRAMEBUFFER_PX, MAX_FRAMEBUFFER_PX), "framebuffer width (px)");
+    v.field("height", d.height, range(MIN_FRAMEBUFFER_PX, MAX_FRAMEBUFFER_PX), "framebuffer height (px)");
     v.field("vsync", d.vsync, "wait for the display's refresh (window only)");
 }
 

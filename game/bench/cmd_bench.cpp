@@ -1,6 +1,7 @@
 // `oceanbox bench`: the subcommands' flags, and the spheres bench ([Kang2008] Table 5).
 #include "bench/cmd_bench.h"
 #include "cli/cli_checks.h"
+#include "core/file_identity.h"
 #include "cli/commands.h"
 
 #include "core/file_write.h"
@@ -44,9 +45,12 @@ std::string resolveScene(const std::string& nameOrPath) {
     return file;
 }
 
-void checkOutputs(const BenchOutput& o) {
+void checkOutputs(const BenchOutput& o, const std::vector<std::string>& scenes) {
     if (!o.out.empty()) checkWritable(o.out, "CSV");
     if (!o.chart.empty()) checkWritable(o.chart, "chart");
+    std::vector<NamedPath> inputs;
+    for (const std::string& scene : scenes) inputs.push_back({"the scene file", scene});
+    checkOutputsApart(inputs, {{"--out", o.out}, {"--chart", o.chart}});
 }
 
 void checkRange(const char* flag, long v, long lo, long hi) {
@@ -229,7 +233,7 @@ void addBenchCommand(CLI::App& app, CommandAction& action, const std::string& co
     s->add_option("--warmup", spheres->warmup, "frames run before measuring (default 20)");
     s->add_option("--stamping", spheres->stamping, "batched (default) or sequential (stepSphere per fish, the reference)")
         ->check(CLI::IsMember({"batched", "sequential"}));
-    s->add_option("--seed", spheres->seed, "swarm seed (default 1)");
+    s->add_option("--seed", spheres->seed, "swarm seed (default 1)")->check(SEED);
     s->add_option("--workers", spheres->workers, "worker threads (default 0: every core)");
     addOutputFlags(s, spheres->output);
     s->callback([&action, spheres] { action = [spheres] { return benchSpheres(*spheres); }; });

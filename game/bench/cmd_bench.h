@@ -100,8 +100,9 @@ std::pair<int, int> parseSize(const std::string& flag, const std::string& text);
 
 /// Throws ob::InputError unless lo <= v <= hi, naming the flag.
 void checkRange(const char* flag, long v, long lo, long hi);
-/// Throws ob::InputError unless the --out and --chart paths can be written.
-void checkOutputs(const BenchOutput& output);
+/// Throws ob::InputError unless the --out and --chart paths can be written, are not one
+/// file, and are none of `scenes` (the scene files the bench reads).
+void checkOutputs(const BenchOutput& output, const std::vector<std::string>& scenes = {});
 
 /// Resolves a scene name ("fish" → config/scenes/fish.toml beside the default scene) or a
 /// path; throws ob::InputError when there is no such file.

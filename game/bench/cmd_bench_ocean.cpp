@@ -196,7 +196,7 @@ int benchOcean(const OceanBenchArgs& a) {
     const auto [w, h] = parseSize("--size", a.size);
     const std::string path = a.scene.empty() ? defaultScenePath() : resolveScene(a.scene);
     loadScene(path, a.sets);
-    checkOutputs(a.output);
+    checkOutputs(a.output, {path});
 
     // One headless context serves the GPU backend and the rendered frames.
     auto platform = platform::createHeadlessPlatform({w, h});

@@ -104,7 +104,7 @@ int benchFields(const FieldsBenchArgs& a) {
         paths.push_back(resolveScene(s));
         loadScene(paths.back(), a.sets);  // bad scene files and overrides stop here, before any run
     }
-    checkOutputs(a.output);
+    checkOutputs(a.output, paths);
 
     std::unique_ptr<platform::Platform> platform;
     if (!a.noRender) platform = platform::createHeadlessPlatform({w, h});

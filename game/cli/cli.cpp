@@ -4,6 +4,7 @@
 
 #include "cli/commands.h"
 #include "core/error.h"
+#include "core/printable.h"
 
 #include <CLI/CLI.hpp>
 #include <cstdio>
@@ -17,7 +18,8 @@ int runCli(int argc, char** argv) {
     app.require_subcommand(1);
     app.footer("Outputs (--stats, --screenshot, --out) are written whole to a regular file at the path given: a device, "
                "a named pipe, a folder or a symbolic link there (/dev/null, /dev/stdout) is refused with exit 2 before the "
-               "run. Inputs must be regular files.");
+               "run, and so is an output that names one of the run's inputs (the scene, its models, --input) or another output. "
+               "Inputs must be regular files. A scene's screenshot events write only in its own folder or below.");
     app.fallthrough(false);
     CommandAction action;
     std::string commandLine = "oceanbox";
@@ -43,22 +45,28 @@ int runCli(int argc, char** argv) {
             std::string names;
             for (const CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; }))
                 names += (names.empty() ? "" : ", ") + sub->get_name();
-            what = "unknown subcommand '" + std::string(argv[1]) + "' (the subcommands: " + names + ")";
+            what = "unknown subcommand " + quotedValue(argv[1]) + " (the subcommands: " + names + ")";
         }
-        std::fprintf(stderr, "oceanbox: %s\nRun 'oceanbox --help' (or 'oceanbox SUBCOMMAND --help') for usage.\n", what.c_str());
+        std::fprintf(stderr, "oceanbox: %s\nRun 'oceanbox --help' (or 'oceanbox SUBCOMMAND --help') for usage.\n",
+                     printableMessage(what).c_str());
         return EXIT_BAD_INPUT;
     }
 
+    // Every message is printed inert and cut (core/printable.h): it may repeat a file's text.
     try {
         return action ? action() : EXIT_BAD_INPUT;
     } catch (const InputError& e) {
-        std::fprintf(stderr, "oceanbox: error: %s\n", e.what());
+        std::fprintf(stderr, "oceanbox: error: %s\n", printableMessage(e.what()).c_str());
         return EXIT_BAD_INPUT;
     } catch (const RuntimeError& e) {
-        std::fprintf(stderr, "oceanbox: failed: %s\n", e.what());
+        std::fprintf(stderr, "oceanbox: failed: %s\n", printableMessage(e.what()).c_str());
+        return EXIT_FAILURE_RUNTIME;
+    } catch (const std::bad_alloc&) {
+        std::fprintf(stderr, "oceanbox: failed: out of memory (std::bad_alloc): the scene's grids, bodies or particles "
+                             "need more memory than this machine gives the process (lower their sizes)\n");
         return EXIT_FAILURE_RUNTIME;
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "oceanbox: failed: %s\n", e.what());
+        std::fprintf(stderr, "oceanbox: failed: %s\n", printableMessage(e.what()).c_str());
         return EXIT_FAILURE_RUNTIME;
     }
 }

@@ -1,8 +1,12 @@
 // Checks of command-line values that several subcommands share (CLI11 validators).
 #pragma once
+#include "core/printable.h"
+
 #include <CLI/CLI.hpp>
 
 #include <cerrno>
+#include <charconv>
+#include <climits>
 #include <cfloat>
 #include <cmath>
 #include <cstdlib>
@@ -36,6 +40,27 @@ inline const CLI::Validator NON_NEGATIVE(
         return "";
     },
     "NONNEGATIVE");
+
+/// A whole number in [lo, hi], read as the integer it is: a value beyond the flag's type (a
+/// seed of 23 digits) is refused naming the flag, never wrapped, saturated or rounded.
+inline CLI::Validator integerIn(long long lo, long long hi) {
+    const std::string range = hi == LLONG_MAX ? ">= " + std::to_string(lo) : "in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+    return CLI::Validator(
+        [lo, hi, range](std::string& text) -> std::string {
+            long long v = 0;
+            const char* end = text.data() + text.size();
+            const auto [stop, error] = std::from_chars(text.data(), end, v);
+            if (error == std::errc::result_out_of_range)
+                return "must be an integer " + range + ", got " + clipped(text) + " (beyond a 64-bit integer)";
+            if (error != std::errc() || stop != end) return "must be an integer " + range + ", got " + quotedValue(text);
+            if (v < lo || v > hi) return "must be " + range + ", got " + text;
+            return "";
+        },
+        "INT " + range);
+}
+
+/// A seed: sim.seed's range, a TOML integer >= 0.
+inline const CLI::Validator SEED = integerIn(0, LLONG_MAX);
 
 /// An output or input path given on the command line: an empty one is an error, not "none".
 inline const CLI::Validator NON_EMPTY_PATH(

@@ -27,6 +27,9 @@ struct DumpArgs {
 int dump(const DumpArgs& a) {
     SceneDef scene = a.scene.load();
     checkWritable(a.out, "output");
+    std::vector<NamedPath> inputs = sceneInputs(scene, a.scene.scene);
+    inputs.push_back({"--points", a.points});
+    checkOutputsApart(inputs, {{"--out", a.out}});
     if (a.layer == "ocean") return dumpOcean(scene.ocean, a.time, a.out);
     if (a.layer == "ripples") {
         if (a.frames < 0) throw InputError("dump ripples needs --frames K");
@@ -45,7 +48,7 @@ int dump(const DumpArgs& a) {
     std::vector<ocean::GerstnerWave> waves = ocean::resolveWaves(scene.gerstner, scene.ocean);
     water::CompositeWater surface(waves, scene.ocean.gravity, &fft);
     water::primeAt(&fft, surface, a.time);
-    return dumpSurface(surface, a.points, a.out);
+    return dumpSurface(surface, a.points, a.out, largestWavenumber(waves, &fft));
 }
 
 } // namespace
@@ -68,7 +71,7 @@ void addDumpCommand(CLI::App& app, CommandAction& action) {
     cmd->add_option("--points", a->points, "surface: float32 .npy [K, 2] of world (x, z)")->check(NON_EMPTY_PATH);
     cmd->add_option("--frames", a->frames, "ripples, foam: frames (simulation steps) to run first")->check(NON_NEGATIVE);
     cmd->add_option("--set", a->scene.sets, "override a scene key: key.path=value (repeatable)");
-    cmd->add_option("--seed", a->scene.seed, "scene seed (same as --set sim.seed=N)")->check(NON_NEGATIVE);
+    cmd->add_option("--seed", a->scene.seed, "scene seed (same as --set sim.seed=N)")->check(SEED);
     cmd->callback([&action, a] { action = [a] { return dump(*a); }; });
 }
 

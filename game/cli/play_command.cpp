@@ -39,13 +39,14 @@ void addPlayCommand(CLI::App& app, CommandAction& action) {
     CLI::App* cmd = app.add_subcommand("play", "open a scene in a window (headless with a screenshot where there is no display)");
     cmd->add_option("scene", play->scene, "scene file (default: config/scenes/default.toml)");
     play->addTo(cmd, 0);
-    cmd->add_option("--record", play->record, "write every input the simulation consumed to this TOML file (run --input replays it)");
+    cmd->add_option("--record", play->record, "write every input the simulation consumed to this TOML file (run --input replays it)")
+        ->check(NON_EMPTY_PATH);
     cmd->footer(PLAY_KEYS);
     cmd->callback([&action, play] {
         action = [play] {
             SceneDef scene = play->load();
             if (scene.info.purpose == ScenePurpose::Benchmark)
-                logInfo("%s is a benchmark scene: %s", play->scene.c_str(),
+                logInfo("%s is a benchmark scene: %s", printable(play->scene).c_str(),
                         scene.info.note.empty() ? "it measures, it is not meant to look like the sea" : scene.info.note.c_str());
             else if (!scene.info.note.empty())
                 logInfo("%s", scene.info.note.c_str());

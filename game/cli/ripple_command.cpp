@@ -1,6 +1,7 @@
 // oceanbox ripple: a bare ripple solver on .npy fields, no scene (docs/references.md#contracts).
 #include "cli/cli_checks.h"
 #include "cli/commands.h"
+#include "core/file_identity.h"
 #include "core/file_write.h"
 #include "tools/cmd_ripple.h"
 
@@ -29,6 +30,7 @@ void addRippleCommand(CLI::App& app, CommandAction& action) {
     cmd->callback([&action, ripple] {
         action = [ripple] {
             checkWritable(ripple->out, "output");
+            checkOutputsApart({{"--in", ripple->in}, {"--prev", ripple->prev}, {"--vel", ripple->vel}}, {{"--out", ripple->out}});
             return rippleCommand(*ripple);
         };
     });

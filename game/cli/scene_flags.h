@@ -2,8 +2,12 @@
 #pragma once
 #include "cli/cli_checks.h"
 #include "core/error.h"
+#include "core/log.h"
+#include "core/printable.h"
+#include "platform/window_def.h"
 #include "tools/app.h"
 #include "world/scene.h"
+#include "world/scene_budget.h"
 
 #include <CLI/CLI.hpp>
 #include <regex>
@@ -32,7 +36,7 @@ struct SceneFlags {
         cmd->add_flag("--headless", headless, "render off-screen with OSMesa (no window)");
         cmd->add_option("--size", size, "framebuffer size WxH in pixels (default: the scene's [window])");
         cmd->add_option("--frames", frames, "frames to run")->check(CLI::Range(1L, 100000000L));
-        cmd->add_option("--seed", seed, "scene seed (same as --set sim.seed=N)")->check(NON_NEGATIVE);
+        cmd->add_option("--seed", seed, "scene seed (same as --set sim.seed=N)")->check(SEED);
         cmd->add_option("--screenshot", screenshot, "write the last frame to this PNG")->check(NON_EMPTY_PATH);
         cmd->add_option("--stats", stats, "write a JSON summary (frames, per-phase ms, entities, state hash)")
             ->check(NON_EMPTY_PATH);
@@ -46,7 +50,9 @@ struct SceneFlags {
     SceneDef load() const {
         std::vector<std::string> overrides = sets;
         if (seed >= 0) overrides.push_back("sim.seed=" + std::to_string(seed));
-        return loadScene(scene, overrides);
+        SceneDef def = loadScene(scene, overrides);
+        for (const std::string& warning : costWarnings(def)) logWarn("%s: %s", printable(scene).c_str(), warning.c_str());
+        return def;
     }
 
     RunOptions options() const {
@@ -61,9 +67,11 @@ struct SceneFlags {
         if (!size.empty()) {
             std::smatch m;
             static const std::regex WXH(R"((\d{1,5})x(\d{1,5}))");
-            if (!std::regex_match(size, m, WXH) || std::stoi(m[1]) < 16 || std::stoi(m[2]) < 16 ||
-                std::stoi(m[1]) > 8192 || std::stoi(m[2]) > 8192)
-                throw InputError("--size '" + size + "': expected WxH with 16 <= W, H <= 8192, e.g. 1280x720");
+            using platform::MAX_FRAMEBUFFER_PX, platform::MIN_FRAMEBUFFER_PX;
+            if (!std::regex_match(size, m, WXH) || std::stoi(m[1]) < MIN_FRAMEBUFFER_PX || std::stoi(m[2]) < MIN_FRAMEBUFFER_PX ||
+                std::stoi(m[1]) > MAX_FRAMEBUFFER_PX || std::stoi(m[2]) > MAX_FRAMEBUFFER_PX)
+                throw InputError("--size " + quotedValue(size) + ": expected WxH with " + std::to_string(MIN_FRAMEBUFFER_PX) +
+                                 " <= W, H <= " + std::to_string(MAX_FRAMEBUFFER_PX) + ", e.g. 1280x720");
             o.size = {std::stoi(m[1]), std::stoi(m[2])};
         }
         return o;

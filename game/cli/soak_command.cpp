@@ -24,8 +24,14 @@ void addSoakCommand(CLI::App& app, CommandAction& action) {
         ->check(CLI::Range(1, 1000000));
     cmd->add_option("--stats", a->options.stats, "write a JSON summary (steps/s, maxima, RSS, state hash)")->check(NON_EMPTY_PATH);
     cmd->add_option("--set", a->scene.sets, "override a scene key: key.path=value (repeatable)");
-    cmd->add_option("--seed", a->scene.seed, "scene seed (same as --set sim.seed=N)")->check(NON_NEGATIVE);
-    cmd->callback([&action, a] { action = [a] { return soakCommand(a->scene.load(), a->scene.scene, a->options); }; });
+    cmd->add_option("--seed", a->scene.seed, "scene seed (same as --set sim.seed=N)")->check(SEED);
+    cmd->callback([&action, a] {
+        action = [a] {
+            const SceneDef scene = a->scene.load();
+            checkOutputsApart(sceneInputs(scene, a->scene.scene), {{"--stats", a->options.stats}});
+            return soakCommand(scene, a->scene.scene, a->options);
+        };
+    });
 }
 
 } // namespace ob::game

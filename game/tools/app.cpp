@@ -5,6 +5,7 @@
 
 #include "core/clock.h"
 #include "core/error.h"
+#include "core/file_identity.h"
 #include "core/file_write.h"
 #include "core/log.h"
 #include "core/toml_writer.h"
@@ -21,6 +22,7 @@
 #include "sim/objects.h"
 #include "view/sandbox_view.h"
 #include "world/sandbox.h"
+#include "world/scene_budget.h"
 #include "world/script.h"
 
 #include <algorithm>
@@ -148,13 +150,28 @@ static void writeStats(const std::string& path, Sandbox& sandbox, const std::str
     writeTextFile(path, j.dump(2) + "\n", "stats");
 }
 
-// Every file the run will write can be written (before any work is done).
-static void checkOutputs(const SceneDef& scene, const RunOptions& options) {
+// Every file the run will write can be written, and none is one of its inputs or another
+// output (before any work is done).
+static void checkOutputs(const SceneDef& scene, const std::string& scenePath, const RunOptions& options) {
     if (!options.screenshot.empty()) checkWritable(options.screenshot, "screenshot");
     if (!options.stats.empty()) checkWritable(options.stats, "stats");
     if (!options.record.empty()) checkWritable(options.record, "recording");
     for (const EventDef& e : scene.events)
         if (e.action == EventAction::Screenshot) checkWritable(e.file, "event screenshot");
+    std::vector<NamedPath> inputs = sceneInputs(scene, scenePath);
+    inputs.push_back({"--input", options.input});
+    std::vector<NamedPath> outputs{{"--screenshot", options.screenshot}, {"--stats", options.stats}, {"--record", options.record}};
+    for (const NamedPath& o : sceneOutputs(scene)) outputs.push_back(o);
+    checkOutputsApart(inputs, outputs);
+}
+
+// Says once why a frame took over SLOW_FRAME_MS (world/scene_budget.h).
+static void reportSlowFrame(const ecs::FrameTimer& timer, bool& reported) {
+    if (reported) return;
+    const std::string note = slowFrameNote(timer, SLOW_FRAME_MS);
+    if (note.empty()) return;
+    reported = true;
+    logWarn("%s", note.c_str());
 }
 
 // A window where one is asked for and a display exists, else a headless context.
@@ -175,7 +192,7 @@ static std::unique_ptr<platform::Platform> openPlatform(const SceneDef& scene, c
 }
 
 int runScene(const SceneDef& scene, const std::string& scenePath, const RunOptions& options) {
-    checkOutputs(scene, options);
+    checkOutputs(scene, scenePath, options);
     // Scripted input goes through the same queue as the window's events.
     // A script's [[set]] entries join the first world's timeline as `set` events.
     std::vector<platform::InputEvent> scripted;
@@ -232,9 +249,11 @@ int runScene(const SceneDef& scene, const std::string& scenePath, const RunOptio
     auto lastProgress = std::chrono::steady_clock::now();
     const long expected = options.frames > 0 ? options.frames
                                              : long(std::ceil(options.endTime * scene.sim.step_hz / options.stepsPerFrame - 1e-6));
+    bool slowReported = false;
     for (long f = 0; bounded || !sandbox->quitRequested(); ++f) {
         const double now = clock->now();
         sandbox->frame(now);
+        reportSlowFrame(sandbox->schedule().timer(), slowReported);
         // The wall clock starts once the first frame is drawn (shaders compiled, maps made):
         // the simulation does not make up for the loading time with a burst of steps.
         if (options.realTime && sandbox->schedule().frames() == 1) clock = makeClock(sandbox->scene());
@@ -284,6 +303,7 @@ int runScene(const SceneDef& scene, const std::string& scenePath, const RunOptio
     }
     sandbox->present();
     sandbox->schedule().finish();
+    reportSlowFrame(sandbox->schedule().timer(), slowReported);
     if (!bounded && !options.screenshot.empty())
         logWarn("--screenshot needs --frames N (or [sim] end_time); no screenshot written");
 

@@ -5,9 +5,13 @@
 #include "core/error.h"
 #include "core/log.h"
 #include "core/npy.h"
+#include "core/printable.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <limits>
+#include <numbers>
 #include <span>
 #include <vector>
 
@@ -25,7 +29,36 @@ std::string surfaceShapeText(const std::vector<size_t>& shape) {
     return s + "]";
 }
 
+// A coordinate as a message shows it (%g: 1e+12).
+std::string coordinateText(double x) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", x);
+    return buf;
+}
+
+// "2.7e+04 m" and why, for a message.
+std::string exactCoordinateText(double kMax) {
+    char buf[200];
+    std::snprintf(buf, sizeof buf,
+                  "%.3g m: beyond it a float coordinate (exact to 2^-24 of itself) holds the shortest wave's phase "
+                  "(k = %.3g rad/m) only to %g rad or worse",
+                  largestExactCoordinate(kMax), kMax, DUMP_PHASE_TOLERANCE_RAD);
+    return buf;
+}
+
 } // namespace
+
+double largestExactCoordinate(double kMax) {
+    return kMax > 0.0 ? DUMP_PHASE_TOLERANCE_RAD / (kMax * 0x1p-24) : std::numeric_limits<double>::infinity();
+}
+
+double largestWavenumber(const std::vector<ocean::GerstnerWave>& waves, const ocean::OceanFftCpu* fft) {
+    double k = 0.0;
+    for (const ocean::GerstnerWave& w : waves) k = std::max(k, std::hypot(double(w.kx), double(w.kz)));
+    if (fft)
+        for (int c = 0; c < fft->cascadeCount(); ++c) k = std::max(k, std::numbers::pi * fft->resolution() / fft->patchSize(c));
+    return k;
+}
 
 int dumpGerstner(const ob::ocean::GerstnerDef& def, float gravity, double time, int grid, float extent,
                  const std::string& out, const ob::ocean::OceanDef* ocean) {
@@ -45,6 +78,10 @@ int dumpGerstner(const ob::ocean::GerstnerDef& def, float gravity, double time, 
     }
 
     const std::vector<ocean::GerstnerWave> waves = ocean ? ocean::resolveWaves(def, *ocean) : def.waves;
+    const double kMax = largestWavenumber(waves, nullptr);
+    if (double(extent) > largestExactCoordinate(kMax))
+        throw InputError("--extent " + coordinateText(extent) + ": the rest points reach |x| = " + coordinateText(extent) +
+                         " m, and at most " + exactCoordinateText(kMax) + " (give a smaller extent)");
     ocean::GerstnerField field(waves, gravity);
     field.setTime(time);
     const size_t n = size_t(grid);
@@ -68,7 +105,7 @@ int dumpGerstner(const ob::ocean::GerstnerDef& def, float gravity, double time, 
     return EXIT_OK;
 }
 
-int dumpSurface(const ob::water::WaterQuery& water, const std::string& pointsNpy, const std::string& out) {
+int dumpSurface(const ob::water::WaterQuery& water, const std::string& pointsNpy, const std::string& out, double kMax) {
     const NpyArray points = readNpy(pointsNpy);
     if (points.shape.size() != 2 || points.shape[1] != 2)
         throw InputError(pointsNpy + ": expected float32 points of shape [K, 2] (world x, z), got shape " +
@@ -79,6 +116,9 @@ int dumpSurface(const ob::water::WaterQuery& water, const std::string& pointsNpy
         xz[i] = {points.data[2 * i], points.data[2 * i + 1]};
         if (!std::isfinite(xz[i].x) || !std::isfinite(xz[i].y))
             throw InputError(pointsNpy + ": point " + std::to_string(i) + " is not a finite (x, z)");
+        if (std::max(std::fabs(double(xz[i].x)), std::fabs(double(xz[i].y))) > largestExactCoordinate(kMax))
+            throw InputError(pointsNpy + ": point " + std::to_string(i) + " (" + coordinateText(xz[i].x) + ", " +
+                             coordinateText(xz[i].y) + ") lies beyond |x|, |z| <= " + exactCoordinateText(kMax));
     }
     std::vector<water::WaterSample> samples(k);
     water.sampleBatch(xz, samples);

@@ -17,6 +17,9 @@ InputScriptDef loadInputScript(const std::string& path) {
         TomlReader reader(doc, errors);
         describe(reader, script);
         reader.finish();
+        if (script.steps > MAX_RECORDED_STEPS)
+            errors.push_back(doc.where("steps", path) + ": steps: at most " + std::to_string(MAX_RECORDED_STEPS) +
+                             " (a day of play at the fastest step rate, " + rangeNumber(ecs::MAX_STEP_HZ) + " Hz), got " + std::to_string(script.steps));
     }
     if (!errors.empty()) {
         std::string message;

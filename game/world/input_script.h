@@ -3,7 +3,9 @@
 // input path is tested headless and deterministically.
 #pragma once
 #include "core/schema.h"
+#include "ecs/schedule.h"
 #include "platform/input.h"
+#include "platform/window_def.h"
 #include "world/script.h"
 
 #include <string>
@@ -77,11 +79,16 @@ template <class V> void describe(V& v, SetDef& d) {
     v.field("value", d.value, any(), "its new value");
 }
 
+/// The most steps a recording may say it ran: a day of play at the fastest step rate
+/// (86,400 s × sim.step_hz's maximum, 1000 Hz: 86.4 million). More is no session anyone
+/// recorded, and `run` of it would not end within a day (an int64's maximum: never).
+constexpr uint64_t MAX_RECORDED_STEPS = uint64_t(86400.0 * ecs::MAX_STEP_HZ);
+
 /// An input script file; a recording (`play --record`) also says how long the session ran
 /// and in what framebuffer.
 struct InputScriptDef {
-    uint64_t steps = 0;          ///< simulation steps the recorded session ran (0: not a recording); `run` runs as many
-    glm::vec2 size{0.0f};        ///< the recorded framebuffer (px; 0: none): `run` renders at it, so the cursor's rays are the same
+    uint64_t steps = 0;          ///< simulation steps the recorded session ran (0: not a recording), at most MAX_RECORDED_STEPS; `run` runs as many
+    glm::vec2 size{0.0f};        ///< the recorded framebuffer (px; 0: none, else --size's range [16, 8192]): `run` renders at it, so the cursor's rays are the same
     std::vector<PressDef> press;
     std::vector<MouseDef> mouse;
     std::vector<MoveDef> move;
@@ -90,7 +97,8 @@ struct InputScriptDef {
 
 template <class V> void describe(V& v, InputScriptDef& d) {
     v.field("steps", d.steps, "simulation steps the recorded session ran (run runs as many)");
-    v.field("size", d.size, range(0, 16384), "the recorded framebuffer, px (run renders at it)");
+    v.field("size", d.size, autoOrRange(platform::MIN_FRAMEBUFFER_PX, platform::MAX_FRAMEBUFFER_PX),
+            "the recorded framebuffer, px (run renders at it)");
     v.list("press", d.press, "key presses");
     v.list("mouse", d.mouse, "mouse actions");
     v.list("move", d.move, "cursor motions");

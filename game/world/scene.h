@@ -16,6 +16,7 @@
 #include "world/script.h"
 #include "world/tools.h"
 #include "splash/splash_def.h"
+#include "core/file_identity.h"
 
 #include <string>
 #include <vector>
@@ -87,11 +88,23 @@ void applyEnvironment(SceneDef& scene);
 /// Loads a scene file and applies `--set key.path=value` overrides (in order). Each
 /// objects[i].model is resolved (absolute as is; relative: next to the scene file, then the
 /// current folder, then the source tree), stored back as an absolute path, and loaded once
-/// to check it. Throws ob::InputError listing every problem (file:line:column: key: message).
+/// to check it. A screenshot event's `file` must be relative, stay in the scene's folder or
+/// below and not be the scene; it is stored absolute (a `--set` file is kept as typed). Names
+/// (camera.follow, event targets, goal objects, ripples.follow's ship) must resolve. Throws
+/// ob::InputError listing every problem (file:line:column: key: message).
 SceneDef loadScene(const std::string& path, const std::vector<std::string>& overrides = {});
 
+/// The files a run of the scene reads: the scene file, every model and its far twin (the
+/// keys that name them in messages; core/file_identity.h compares them with the outputs).
+std::vector<NamedPath> sceneInputs(const SceneDef& scene, const std::string& scenePath);
+
+/// The files the scene writes of its own accord: its screenshot events' (loadScene keeps
+/// those of a scene file in its folder or below: docs/reliability.md#hostile-input).
+std::vector<NamedPath> sceneOutputs(const SceneDef& scene);
+
 /// As loadScene, from text (`sourceName` names it in messages; relative model paths start
-/// at the current folder).
+/// at the current folder; event files are kept as given: the text is the program's own, the
+/// editor's, or a test's).
 SceneDef parseScene(const std::string& text, const std::string& sourceName, const std::vector<std::string>& overrides = {});
 
 /// The ship the drop tool drops: the scene's first ship (its model and hull), else one with

@@ -7,6 +7,7 @@
 #include "world/camera.h"
 #include "behaviours/cannon.h"
 #include "core/log.h"
+#include "core/printable.h"
 #include "core/toml_reader.h"
 #include "ecs/components.h"
 #include "behaviours/fish.h"
@@ -122,7 +123,7 @@ std::vector<std::string> validateEvents(SceneDef& scene, const std::string& sour
             if (std::string m = checkLiveSet(e.key, e.value); !m.empty()) errors.push_back(at(m.substr(0, m.find(':'))) + m);
         const bool named = e.action == EventAction::Fire || e.action == EventAction::SetSpeed || e.action == EventAction::Camera;
         if (named && !e.target.empty() && !names.count(e.target))
-            errors.push_back(at("target") + "target: no object is named '" + e.target + "'");
+            errors.push_back(at("target") + "target: no object is named " + quotedValue(e.target));
         if (e.action == EventAction::SetSpeed && !(e.value >= 0.0f && e.value <= 100.0f))
             errors.push_back(at("value") + "value: a speed in [0, 100] m/s, got " + std::to_string(e.value));
         if (e.action == EventAction::Screenshot && e.file.empty()) errors.push_back(at("file") + "file: a screenshot needs a file name");

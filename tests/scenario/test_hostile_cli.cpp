@@ -221,3 +221,137 @@ TEST_CASE("a scene that is a symlink loop says so", "[hostile][cli]") {
     fs::create_symlink(a, b);
     expectRefused(oceanbox("run " + a + RUN_FLAGS), a + ": cannot open file (symlink loop)");
 }
+
+// === Second round (docs/reliability.md#hostile-input) ======================================
+
+namespace {
+
+// A file's bytes, to show a victim is left as it was.
+std::string bytesOf(const std::string& path) { return readText(path); }
+
+const std::string PLAY_FLAGS = " --headless --frames 1 --size 32x32";
+
+} // namespace
+
+TEST_CASE("an output never replaces an input: the scene, the input script, and two outputs at one path exit 2 untouched",
+          "[hostile][cli][outputs]") {
+    const std::string scene = tinyScene("victim_scene.toml");
+    const std::string input = writeFile(tempPath("victim_input.toml"), "[[press]]\nat = 0.0\nkey = \"space\"\n");
+    const std::string sceneBytes = bytesOf(scene), inputBytes = bytesOf(input);
+    fs::create_hard_link(scene, scene + ".link");
+    expectRefused(oceanbox("run " + scene + RUN_FLAGS + " --stats " + scene), "--stats '" + scene + "' is the scene file '" + scene + "'");
+    expectRefused(oceanbox("run " + scene + RUN_FLAGS + " --screenshot " + scene + ".link"), "is the scene file");
+    expectRefused(oceanbox("dump ocean " + scene + " --out " + scene), "--out '" + scene + "' is the scene file");
+    expectRefused(oceanbox("soak " + scene + " --seconds 0.1 --stats " + scene), "--stats '" + scene + "' is the scene file");
+    expectRefused(oceanbox("play " + scene + PLAY_FLAGS + " --input " + input + " --record " + input),
+                  "--record '" + input + "' is --input '" + input + "'");
+    expectRefused(oceanbox("run " + scene + RUN_FLAGS + " --input " + input + " --screenshot " + input), "is --input");
+    const std::string field = tempPath("field.npy");
+    const std::vector<float> h(16, 0.5f);
+    ob::writeNpy(field, {4, 4}, h.data());
+    const std::string fieldBytes = bytesOf(field);
+    expectRefused(oceanbox("ripple --in " + field + " --steps 1 --damping 0.9 --out " + field), "--out '" + field + "' is --in");
+    expectRefused(oceanbox("bench fields --scenes " + scene + " --out " + scene), "--out '" + scene + "' is the scene file");
+    const std::string twice = tempPath("twice.out");
+    expectRefused(oceanbox("run " + scene + RUN_FLAGS + " --stats " + twice + " --screenshot " + twice), "name one file");
+    CHECK(!fs::exists(twice));
+    CHECK(bytesOf(scene) == sceneBytes);
+    CHECK(bytesOf(input) == inputBytes);
+    CHECK(bytesOf(field) == fieldBytes);
+}
+
+TEST_CASE("a scene's screenshot event writes only in its folder: an absolute path or the scene itself exit 2 at load",
+          "[hostile][cli][outputs]") {
+    const std::string victim = writeFile(tempPath("victim.rc"), "precious");
+    const std::string folder = tempPath("shared_scene");
+    fs::create_directories(folder);
+    auto scene = [&](const std::string& file) {
+        return writeFile(folder + "/s.toml", "[ocean]\nresolution = 16\n[gerstner]\ncount = 0\n[ripples]\nresolution = 32\n"
+                                             "[[events]]\nat = 0.0\naction = \"screenshot\"\nfile = \"" + file + "\"\n");
+    };
+    expectRefused(oceanbox("run " + scene(victim) + RUN_FLAGS), folder + "/s.toml:10:8: events[0].file: '" + victim + "' must be a path relative");
+    expectRefused(oceanbox("run " + scene("../" + fs::path(victim).filename().string()) + RUN_FLAGS), "without '..'");
+    const std::string self = scene("s.toml"), selfBytes = bytesOf(self);
+    expectRefused(oceanbox("soak " + self + " --seconds 0.1"), "events[0].file: 's.toml' is the scene file itself");
+    CHECK(bytesOf(self) == selfBytes);
+    CHECK(bytesOf(victim) == "precious");
+    // Inside its folder it writes there, wherever the program runs from.
+    const ProcessResult r = oceanbox("run " + scene("shot.png") + RUN_FLAGS);
+    INFO(r.output);
+    CHECK(r.exitCode == 0);
+    CHECK(fs::is_regular_file(folder + "/shot.png"));
+}
+
+TEST_CASE("a scene's text reaches the terminal inert and a megabyte value is cut in its message", "[hostile][cli][text]") {
+    const std::string scene = tinyScene("note.toml", "[scene]\nnote = \"\\u001b[2J\\u001b]52;c;ZXZpbA==\\u0007 boo\"\n");
+    ProcessResult r = oceanbox(ob::test::withoutLeakCheck() + "play " + scene + PLAY_FLAGS);
+    INFO(r.output);
+    CHECK(r.exitCode == 0);
+    CHECK(r.output.find('\x1b') == std::string::npos);
+    CHECK(r.output.find("\\x1b[2J\\x1b]52;c;ZXZpbA==\\x07 boo") != std::string::npos);
+    const std::string big = tinyScene("big_value.toml", "[render]\nfresnel = \"" + std::string(1 << 20, 'x') + "\"\n");
+    r = oceanbox("run " + big + RUN_FLAGS);
+    expectRefused(r, "(1048576 characters)");
+    CHECK(r.output.size() < 1000);
+}
+
+TEST_CASE("names resolve at load: a camera following a ghost, ripples under a ship that is not there", "[hostile][cli][names]") {
+    expectRefused(oceanbox("run " + tinyScene("ghost.toml", "[camera]\nfollow = \"ghost\"\n") + RUN_FLAGS),
+                  "camera.follow: no object is named 'ghost'");
+    expectRefused(oceanbox("soak " + tinyScene("noship.toml", "follow = \"ship\"\n") + " --seconds 0.1"),
+                  ":7:10: ripples.follow: \"ship\"");
+}
+
+TEST_CASE("runaway inputs are bounded before the run: a recording's steps and size, --record '', a 23-digit seed, a long name",
+          "[hostile][cli][runaway]") {
+    const std::string scene = tinyScene("runaway.toml");
+    const std::string steps = writeFile(tempPath("steps.toml"), "steps = 9223372036854775807\n");
+    expectRefused(oceanbox("run " + scene + RUN_FLAGS + " --input " + steps), "steps: at most 86400000 (a day of play");
+    const std::string size = writeFile(tempPath("size.toml"), "size = [16384.0, 16384.0]\n");
+    expectRefused(oceanbox("run " + scene + " --headless --frames 1 --input " + size), "size: must be 0 (auto) or in [16, 8192]");
+    expectRefused(oceanbox("play " + scene + PLAY_FLAGS + " --record ''"), "--record: the path is empty");
+    for (const char* command : {"run ", "soak ", "dump ocean "}) {
+        const std::string tail = std::string(command) == "soak " ? " --seconds 0.1" : std::string(command) == "run " ? RUN_FLAGS : " --out x.npy";
+        expectRefused(oceanbox(command + scene + tail + " --seed 11111111111111111111111"),
+                      "--seed: must be an integer >= 0, got 11111111111111111111111 (beyond a 64-bit integer)");
+    }
+    // A 250-character name: the file itself would do, its temporary beside it would not.
+    const std::string folder = tempPath("long_names");
+    fs::create_directories(folder);
+    const std::string stats = folder + "/" + std::string(250, 's');
+    expectRefused(oceanbox("run " + scene + RUN_FLAGS + " --stats " + stats), "(give a name of at most");
+    CHECK(fs::is_empty(folder));
+}
+
+TEST_CASE("a scene whose grids cannot fit exits 2 naming them in run, soak and dump alike", "[hostile][cli][memory]") {
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+    SUCCEED("a sanitizer's shadow memory needs more address space than the limit: skipped");
+    return;
+#endif
+    // Every grid near its maximum (9 GiB) under a 2 GB address-space limit (ulimit -v).
+    const std::string scene = tinyScene("huge_grids.toml", "levels = 4\n");
+    const std::string big = "--set ocean.resolution=2048 --set ocean.cascades=4 --set ripples.resolution=4096";
+    for (const std::string& command : {"run " + scene + RUN_FLAGS, "soak " + scene + " --seconds 0.1",
+                                       "dump ocean " + scene + " --out " + tempPath("huge.npy")}) {
+        const ProcessResult r = ob::test::runShell("ulimit -v 2000000 && timeout -k 2 20 \"$OCEANBOX\" " + command + " " + big);
+        expectRefused(r, "the scene's grids need at least 9.1 GiB (ripples.resolution 4096² × ripples.levels 4: 7.0 GiB; "
+                         "ocean.resolution 2048² × ocean.cascades 4: 2.0 GiB");
+        CHECK(r.output.find("bad_alloc") == std::string::npos);
+    }
+}
+
+TEST_CASE("dumps refuse points where a float loses the answer, and huge splash maxima warn of their cost", "[hostile][cli][dump]") {
+    const std::string scene = tinyScene("far.toml", "[[gerstner.waves]]\nkx = 0.5\nkz = 0.0\namplitude = 0.2\n");
+    const std::string out = tempPath("far_out.npy");
+    expectRefused(oceanbox("dump gerstner " + scene + " --grid 4 --extent 1e12 --out " + out), "--extent 1e+12: the rest points reach");
+    const std::string points = tempPath("far_points.npy");
+    const std::vector<float> xz = {0.0f, 0.0f, 1e12f, 5.0f};
+    ob::writeNpy(points, {2, 2}, xz.data());
+    expectRefused(oceanbox("dump surface " + scene + " --points " + points + " --out " + out), "point 1 (1e+12, 5) lies beyond |x|, |z| <= ");
+    CHECK(!fs::exists(out));
+    const ProcessResult r = oceanbox("soak " + tinyScene("splash.toml", "[splash]\nmax_particles = 10000000\n") + " --seconds 0.05");
+    INFO(r.output);
+    CHECK(r.exitCode == 0);
+    CHECK(r.output.find("warning: ") != std::string::npos);
+    CHECK(r.output.find("splash.max_particles = 10000000: at that many live drops a step takes about 1.5 s") != std::string::npos);
+}

@@ -4,10 +4,15 @@
 #include "core/error.h"
 #include "core/file_read.h"
 #include "core/file_write.h"
+#include "core/file_identity.h"
 #include "core/npy.h"
+#include "core/printable.h"
 #include "core/toml_reader.h"
+#include "ecs/schedule.h"
+#include "tools/cmd_dump_surface.h"
 #include "world/input_script.h"
 #include "world/scene.h"
+#include "world/scene_budget.h"
 #include "support/test_support.h"
 
 #include <atomic>
@@ -311,4 +316,245 @@ TEST_CASE("a corrupt far twin (X.lod1.gltf) fails when the scene loads, at the m
     const std::string scene = writeFile(folder + "/s.toml", "[[objects]]\ntype = \"sphere\"\nmodel = \"ball.gltf\"\n");
     const std::string e = errorWithin5s([&] { game::loadScene(scene, {}); });
     CHECK(e.find(scene + ":3:9: objects[0].model: " + folder + "/ball.lod1.gltf: not a valid glTF 2.0 file") == 0);
+}
+
+// === Second round (docs/reliability.md#hostile-input) ======================================
+
+// --- text from files is inert --------------------------------------------------------------
+
+TEST_CASE("control characters become printable escapes, other text, UTF-8 included, is left as it is", "[hostile][text]") {
+    // ESC [2J clears the screen, OSC 52 sets the clipboard, U+009B is the one-character CSI,
+    // U+202E reverses what follows; 0xff is no UTF-8 at all.
+    const std::string hostile = "a\x1b[2J\x1b]52;c;ZXZpbA==\x07" "b\x7f\xc2\x9b" "c\xe2\x80\xae" "d\xff\n";
+    const std::string shown = printable(hostile);
+    CHECK(shown == "a\\x1b[2J\\x1b]52;c;ZXZpbA==\\x07b\\x7f\\u009bc\\u202ed\\xff\\x0a");
+    CHECK(isPrintable(shown));
+    CHECK(!isPrintable(hostile));
+    CHECK(printable(shown) == shown);  // read twice, the same
+    const std::string plain = "ship 2 — 12 m² × 3, é, \\x1b as text";
+    CHECK(printable(plain) == plain);
+    // A value repeated in a message: cut, its size said, still one line.
+    const std::string big(1 << 20, 'v');
+    const std::string q = quotedValue(big);
+    CHECK(q.size() < 2 * MESSAGE_VALUE_CHARS);
+    CHECK(q.find("(1048576 characters)") != std::string::npos);
+    CHECK(quotedValue("x\x1by") == "'x\\x1by'");
+    const std::string message = printableMessage("one\n" + std::string(5000, 'w') + "\x1b" + "\nthree");
+    CHECK(message.find("one\n") == 0);
+    CHECK(message.find("(a line of 5001 characters, cut)\nthree") != std::string::npos);
+    CHECK(message.find('\x1b') == std::string::npos);
+}
+
+TEST_CASE("a scene's strings are read inert: a note with terminal escapes holds their printable form", "[hostile][text]") {
+    const game::SceneDef scene = game::parseScene(
+        "[scene]\nnote = \"\\u001b[2J\\u001b]52;c;ZXZpbA==\\u0007 hello\\u009b\"\n"
+        "[[objects]]\ntype = \"sphere\"\nname = \"ball\\u001b[31m\"\n"
+        "[[events]]\nat = 1.0\naction = \"camera\"\nmode = \"follow\"\ntarget = \"ball\\u001b[31m\"\n",
+        "inert.toml");
+    CHECK(scene.info.note == "\\x1b[2J\\x1b]52;c;ZXZpbA==\\x07 hello\\u009b");
+    CHECK(isPrintable(scene.objects[0].name));
+    CHECK(scene.events[0].target == scene.objects[0].name);  // names still match one another
+    // A bad value of a megabyte is named by its start and its size, in a short line.
+    const std::string e = sceneError("[render]\nfresnel = \"" + std::string(1 << 20, 'f') + "\"\n");
+    CHECK(e.find("render.fresnel: must be one of") != std::string::npos);
+    CHECK(e.find("(1048576 characters)") != std::string::npos);
+    CHECK(e.size() < 400);
+    const std::string key = sceneError("[sim]\n\"" + std::string(100000, 'k') + "\\u001b\" = 1\n");
+    CHECK(key.find("(100001 characters): unknown key") != std::string::npos);
+    CHECK(key.size() < 400);
+}
+
+// --- names resolve at load -----------------------------------------------------------------
+
+TEST_CASE("camera.follow, ripples.follow's ship and a follow camera resolve at load, or fail naming file, line and key",
+          "[hostile][names]") {
+    std::string e = sceneError("[camera]\nfollow = \"ghost\"\n");
+    CHECK(e.find("hostile.toml:2:10: camera.follow: no object is named 'ghost'") != std::string::npos);
+    e = sceneError("[ripples]\nfollow = \"ship\"\n");
+    CHECK(e.find("hostile.toml:2:10: ripples.follow: \"ship\"") != std::string::npos);
+    CHECK(e.find("the scene has no ship") != std::string::npos);
+    e = sceneError("[camera]\nmode = \"follow\"\n");
+    CHECK(e.find("hostile.toml:2:8: camera.mode: \"follow\"") != std::string::npos);
+    // What resolves loads: a named object, a ship, a ship an event spawns.
+    CHECK(sceneError("[camera]\nmode = \"follow\"\nfollow = \"b\"\n[[objects]]\ntype = \"sphere\"\nname = \"b\"\n").empty());
+    CHECK(sceneError("[ripples]\nfollow = \"ship\"\n[[objects]]\ntype = \"ship\"\n").empty());
+    CHECK(sceneError("[camera]\nmode = \"follow\"\n[[events]]\nat = 1.0\naction = \"spawn\"\nobject = { type = \"ship\" }\n").empty());
+    // Every shipped scene still loads.
+    for (const auto& entry : fs::directory_iterator(fs::path(OCEANBOX_SOURCE_DIR) / "config/scenes")) {
+        INFO(entry.path().string());
+        CHECK(errorWithin5s([&] { game::loadScene(entry.path().string()); }).empty());
+    }
+}
+
+// --- a scene writes only beside itself -----------------------------------------------------
+
+TEST_CASE("a screenshot event's file stays in the scene's folder: absolute, '..', a link out or the scene itself fail at load",
+          "[hostile][outputs]") {
+    const std::string folder = tempPath("confined");
+    fs::create_directories(folder + "/shots");
+    const std::string outside = tempPath("outside");
+    fs::create_directories(outside);
+    fs::create_directory_symlink(outside, folder + "/out");
+    auto load = [&](const std::string& file, const std::vector<std::string>& sets = {}) {
+        const std::string scene = writeFile(folder + "/s.toml", "[[events]]\nat = 1.0\naction = \"screenshot\"\nfile = \"" + file + "\"\n");
+        return errorWithin5s([&] { game::loadScene(scene, sets); });
+    };
+    const std::string where = folder + "/s.toml:4:8: events[0].file: ";
+    CHECK(load("/tmp/victim.png").find(where + "'/tmp/victim.png' must be a path relative to the scene's folder") == 0);
+    CHECK(load("shots/../../x.png").find(where + "'shots/../../x.png' must be a path relative") == 0);
+    CHECK(load("out/x.png").find(where + "'out/x.png' leads outside the scene's folder") == 0);
+    CHECK(load("s.toml").find(where + "'s.toml' is the scene file itself") == 0);
+    CHECK(load("./shots/../s.toml").find("must be a path relative") != std::string::npos);
+    // Inside: stored absolute, in the scene's folder, whatever the current folder.
+    CHECK(load("shots/a.png").empty());
+    const game::SceneDef scene = game::loadScene(folder + "/s.toml");
+    CHECK(scene.events[0].file == (fs::absolute(folder) / "shots/a.png").lexically_normal().string());
+    // The default file, event.png, goes there too.
+    writeFile(folder + "/d.toml", "[[events]]\nat = 1.0\naction = \"screenshot\"\n");
+    CHECK(game::loadScene(folder + "/d.toml").events[0].file == (fs::absolute(folder) / "event.png").lexically_normal().string());
+    // A file given on the command line (--set) is the user's own: kept as typed.
+    const game::SceneDef typed = game::loadScene(folder + "/s.toml", {"events[0].file=\"/tmp/typed.png\""});
+    CHECK(typed.events[0].file == "/tmp/typed.png");
+}
+
+TEST_CASE("outputs are compared with inputs and with each other by identity: links, hard links, other spellings",
+          "[hostile][outputs]") {
+    const std::string folder = tempPath("identity");
+    fs::create_directories(folder + "/sub");
+    const std::string scene = writeFile(folder + "/s.toml", "[sim]\nseed = 1\n");
+    fs::create_hard_link(scene, folder + "/hard.toml");
+    fs::create_symlink(scene, folder + "/soft.toml");
+    CHECK(sameFile(scene, folder + "/hard.toml"));
+    CHECK(sameFile(scene, folder + "/soft.toml"));
+    CHECK(sameFile(scene, folder + "/sub/../s.toml"));
+    CHECK(sameFile(folder + "/new.json", folder + "/sub/../new.json"));  // neither exists yet
+    CHECK(!sameFile(folder + "/new.json", folder + "/other.json"));
+    CHECK(!sameFile(scene, folder + "/s.toml.json"));
+    CHECK(isInsideFolder(folder + "/sub/x.png", folder));
+    CHECK(!isInsideFolder(folder + "/../x.png", folder));
+    CHECK(!isInsideFolder(folder + "x/y.png", folder));  // a sibling sharing the prefix
+    auto refused = [](const std::vector<NamedPath>& in, const std::vector<NamedPath>& out) {
+        try {
+            checkOutputsApart(in, out);
+        } catch (const InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    CHECK(refused({{"the scene file", scene}}, {{"--stats", folder + "/hard.toml"}})
+              .find("--stats '" + folder + "/hard.toml' is the scene file '" + scene + "'") == 0);
+    CHECK(refused({}, {{"--stats", folder + "/x"}, {"--screenshot", folder + "/sub/../x"}})
+              .find("--screenshot '" + folder + "/sub/../x' and --stats '" + folder + "/x' name one file") == 0);
+    CHECK(refused({{"the scene file", scene}}, {{"--stats", folder + "/a.json"}, {"--screenshot", folder + "/b.png"}, {"--record", ""}}).empty());
+}
+
+TEST_CASE("an output name whose temporary would pass the folder's name limit is refused before any write", "[hostile][outputs]") {
+    const std::string folder = tempPath("names");
+    fs::create_directories(folder);
+    const long limit = ::pathconf(folder.c_str(), _PC_NAME_MAX);
+    REQUIRE(limit > 40);
+    // The temporary: "." + name + ".oceanbox-" + pid + "-" + 6 characters.
+    const size_t overhead = 1 + std::string(TEMPORARY_MARK).size() + std::to_string(::getpid()).size() + 1 + 6;
+    const std::string longest = folder + "/" + std::string(size_t(limit) - overhead, 'n');
+    CHECK_NOTHROW(checkWritable(longest, "stats"));
+    writeTextFile(longest, "whole", "stats");
+    CHECK(readText(longest) == "whole");
+    const std::string over = longest + "n";
+    std::string e;
+    try {
+        checkWritable(over, "stats");
+    } catch (const InputError& error) {
+        e = error.what();
+    }
+    CHECK(e.find("and the temporary written beside it first") != std::string::npos);
+    CHECK(e.find("give a name of at most " + std::to_string(size_t(limit) - overhead) + " characters") != std::string::npos);
+    CHECK(!fs::exists(over));
+}
+
+// --- bounded runaway inputs ----------------------------------------------------------------
+
+TEST_CASE("an input file's steps stop at a day of play at the fastest step rate, its size at --size's range", "[hostile][input]") {
+    auto error = [](const std::string& text) {
+        const std::string path = writeFile(tempPath("steps.toml"), text);
+        return errorWithin5s([&] { game::loadInputScript(path); });
+    };
+    CHECK(game::MAX_RECORDED_STEPS == uint64_t(24 * 3600) * 1000u);
+    CHECK(error("steps = 86400000\n").empty());
+    std::string e = error("steps = 86400001\n");
+    CHECK(e.find(":1:9: steps: at most 86400000 (a day of play at the fastest step rate, 1000 Hz), got 86400001") != std::string::npos);
+    CHECK(!error("steps = 9223372036854775807\n").empty());
+    CHECK(error("size = [8192.0, 16.0]\n").empty());
+    e = error("size = [16384.0, 720.0]\n");
+    CHECK(e.find("size: must be 0 (auto) or in [16, 8192], got 16384") != std::string::npos);
+}
+
+TEST_CASE("a scene's grids are weighed at load: more than the process may hold is named grid by grid", "[hostile][memory]") {
+    game::SceneDef big = game::parseScene("[ocean]\nresolution = 2048\ncascades = 4\n[ripples]\nresolution = 4096\nlevels = 4\n"
+                                          "[foam]\nresolution = 4096\nflow_resolution = 4096\n[currents]\nresolution = 1024\n",
+                                          "big.toml");
+    const std::string e = game::checkSceneMemory(big, double(1ull << 30));
+    INFO(e);
+    CHECK(e.find("the scene's grids need at least") == 0);
+    CHECK(e.find("ripples.resolution 4096² × ripples.levels 4: ") != std::string::npos);
+    CHECK(e.find("ocean.resolution 2048² × ocean.cascades 4: ") != std::string::npos);
+    CHECK(e.find("foam.resolution 4096²") != std::string::npos);
+    CHECK(e.find("currents.resolution 1024²") != std::string::npos);
+    CHECK(e.find("may hold 1.0 GiB") != std::string::npos);
+    // The kang2008 field is two float levels, Vh(t) and Vh(t-1): 8 bytes a cell.
+    game::SceneDef kang = game::parseScene("[ripples]\nmodel = \"kang2008\"\nresolution = 2048\n", "kang.toml");
+    bool found = false;
+    for (const game::MemoryNeed& n : game::sceneMemory(kang))
+        if (n.what == "ripples.resolution 2048²") {
+            found = true;
+            CHECK(n.bytes == 2.0 * 4.0 * 2048.0 * 2048.0);
+        }
+    CHECK(found);
+    // Every shipped scene fits in a gigabyte, and says nothing of its cost.
+    for (const auto& entry : fs::directory_iterator(fs::path(OCEANBOX_SOURCE_DIR) / "config/scenes")) {
+        const game::SceneDef scene = game::loadScene(entry.path().string());
+        INFO(entry.path().string());
+        CHECK(game::checkSceneMemory(scene, double(1ull << 30)).empty());
+        CHECK(game::costWarnings(scene).empty());
+    }
+    CHECK(game::processMemoryLimit() > 0.0);
+}
+
+TEST_CASE("legal-but-huge splash maxima warn with their cost, and a frame over 10 s names its largest phase", "[hostile][cost]") {
+    game::SceneDef scene = game::parseScene("[splash]\nmax_particles = 10000000\nspray_per_step = 100000\n", "splash.toml");
+    const std::vector<std::string> warnings = game::costWarnings(scene);
+    REQUIRE(warnings.size() == 1);
+    CHECK(warnings[0].find("splash.max_particles = 10000000: ") == 0);
+    CHECK(warnings[0].find("90-fold") != std::string::npos);  // 10⁷ × 150 ns = 1.5 s against 1/60 s
+    scene.splash.max_particles = 100000;  // the default keeps up: 15 ms a step of 16.7
+    CHECK(game::costWarnings(scene).empty());
+
+    ecs::FrameTimer timer;
+    timer.beginFrame();
+    timer.addCpu(ecs::Phase::Physics, 2000.0);
+    timer.addCpu(ecs::Phase::Interaction, 9500.0);
+    timer.endFrame(11600.0);
+    const std::string note = game::slowFrameNote(timer, game::SLOW_FRAME_MS);
+    CHECK(note.find("a frame took 11.6 s (more than 10 s), 9.5 s of it in the interaction phase") == 0);
+    timer.beginFrame();
+    timer.addCpu(ecs::Phase::Render, 9000.0);
+    timer.endFrame(9900.0);
+    CHECK(game::slowFrameNote(timer, game::SLOW_FRAME_MS).empty());
+}
+
+TEST_CASE("dumps refuse coordinates where a float no longer holds the shortest wave's phase", "[hostile][dump]") {
+    // k = 2π rad/m (a 1 m wave): 0.01 rad / (2π · 2^-24) = 26.7 km.
+    CHECK(game::largestExactCoordinate(2.0 * std::numbers::pi) == Approx(0.01 * 16777216.0 / (2.0 * std::numbers::pi)));
+    CHECK(std::isinf(game::largestExactCoordinate(0.0)));
+    ocean::GerstnerDef def;
+    def.waves = {{0.5f, 0.0f, 0.2f, 0.0f}};  // k = 0.5 rad/m: 335 km
+    const std::string out = tempPath("far.npy");
+    std::string e;
+    try {
+        game::dumpGerstner(def, 9.81f, 0.0, 4, 1e12f, out);
+    } catch (const InputError& error) {
+        e = error.what();
+    }
+    CHECK(e.find("--extent 1e+12: the rest points reach |x| = 1e+12 m, and at most 3.36e+05 m") == 0);
+    CHECK(!fs::exists(out));
+    CHECK_NOTHROW(game::dumpGerstner(def, 9.81f, 0.0, 4, 3e5f, out));
 }
