@@ -342,6 +342,7 @@ void CurrentLayer::addUniform(glm::dvec2 du) {
 
 // --- queries
 glm::vec2 CurrentLayer::flowAt(glm::vec2 world) const {
+    if (!std::isfinite(world.x) || !std::isfinite(world.y)) return glm::vec2(0.0f);  // no point: no flow (never an index)
     const glm::vec2 g = m_grid.toGrid(world);
     const int n = m_grid.n;
     return {samplePadded(m_u.data(), n, g + glm::vec2(0.5f, 1.0f)), samplePadded(m_v.data(), n, g + glm::vec2(1.0f, 0.5f))};

@@ -5,6 +5,7 @@
 #include "physics/physics_def.h"
 
 #include <glm/gtc/quaternion.hpp>
+#include <glm/mat3x3.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <span>
@@ -31,20 +32,41 @@ struct ProbeState {
     /// How much of the hydrostatic buoyancy ρ·V·g the probe carries, [0, 1] (a hull's probes:
     /// 0, hullBuoyancy stands for it from the hull's own shape; 1 otherwise).
     float hydrostatic = 1.0f;
-    /// The probe's share of the body's mass (kg, > 0 makes the drag implicit: it can slow the
-    /// relative motion within a step but never reverse it, whatever the coefficients); 0 = explicit.
-    float massShare = 0.0f;
-    float dt = 0.0f;                    ///< the step the force acts over, s (with massShare)
+    float dt = 0.0f;                    ///< the step, s (the buoyancy's stiffness is taken as k·dt)
 };
 
-/// The forces on one probe, applied at `point`.
+/// The forces on one probe, applied at `point`: the explicit part `force`, and the damping
+/// D = −C·v' + b (C = diag(damping)) the body's implicit solve takes at the end of the step.
 struct ProbeForce {
-    glm::vec3 force{0.0f};        ///< N: the water's (buoyancy, inertia, drag) + the air's
-    glm::vec3 airForce{0.0f};     ///< N: the air's part of `force` (windage)
+    glm::vec3 force{0.0f};        ///< N: the water's buoyancy and inertia (explicit); after implicitDamping, + D
+    glm::vec3 airForce{0.0f};     ///< N: the air's part of `force` (windage), after implicitDamping
     glm::vec3 point{0.0f};        ///< world point of application (the probe centre), m
     float submergedFraction = 0.0f;  ///< 0..1 of the probe's volume under the surface
     float addedMass = 0.0f;          ///< ρ·C_a·V_submerged, kg: the water the probe drags along (PhysicsDef::added_mass)
+    glm::vec3 damping{0.0f};      ///< C, N·s/m per axis: water drag + air drag + the buoyancy's stiffness k·dt (vertical)
+    glm::vec3 dampingTarget{0.0f};  ///< b, N: Σ c·(the velocity each drag pulls toward), the water's, the wind's
+    glm::vec3 airDamping{0.0f};   ///< the air's part of C and b: c_a, and c_a·wind
+    glm::vec3 airTarget{0.0f};
 };
+
+/// A rigid body's response over a step, for implicitDamping: its effective mass per world axis
+/// (with the added mass where it applies), its effective inertia tensor (world), its centre
+/// and velocities.
+struct BodyResponse {
+    glm::vec3 mass{1.0f};          ///< kg per world axis
+    glm::mat3 inertia{1.0f};       ///< kg·m², world
+    glm::vec3 centre{0.0f};        ///< m
+    glm::vec3 velocity{0.0f};      ///< m/s
+    glm::vec3 angularVelocity{0.0f};  ///< rad/s
+};
+
+/// Backward Euler of the body's damping: solves the 6 × 6 system for the step's change of
+/// velocity and angular velocity with every probe's damping D_i = −C_i·v_i' + b_i taken at the
+/// end of the step (v_i' the probe point's velocity then), under the explicit force and torque
+/// (gravity included), and adds each D_i to its probe's force (its air part to airForce too).
+/// Stable for any coefficients and step: the drags cannot reverse a relative motion, the
+/// buoyancy's stiffness cannot pump the heave, whatever a body's density, size or the step rate.
+void implicitDamping(const BodyResponse& body, glm::vec3 force, glm::vec3 torque, float dt, std::span<ProbeForce> probes);
 
 /// A wave's particle acceleration cannot exceed g before it breaks (a·ω² ≤ g): the bound on
 /// Du/Dt the caller's estimate is clamped to, m/s².

@@ -81,6 +81,20 @@ void PhysicsWorld::setLinearVelocity(BodyId id, const glm::vec3& velocity) {
     if (btRigidBody* body = m_impl->get(id)) body->setLinearVelocity(bt(velocity));
 }
 
+void PhysicsWorld::applyTorque(BodyId id, const glm::vec3& torque) {
+    if (btRigidBody* body = m_impl->get(id)) body->applyTorque(bt(torque));
+}
+
+glm::mat3 PhysicsWorld::inertiaTensor(BodyId id) const {
+    const btRigidBody* body = m_impl->get(id);
+    if (!body || body->getInvMass() == 0.0f) return glm::mat3(0.0f);
+    const btMatrix3x3 inv = body->getInvInertiaTensorWorld().inverse();
+    glm::mat3 m;
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) m[c][r] = float(inv[r][c]);
+    return m;
+}
+
 void PhysicsWorld::setState(BodyId id, const BodyState& s) {
     btRigidBody* body = m_impl->get(id);
     if (!body) return;

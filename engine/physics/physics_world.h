@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <glm/gtc/quaternion.hpp>
+#include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
 #include <memory>
 #include <optional>
@@ -52,6 +53,10 @@ public:
     void setState(BodyId id, const BodyState& state);
     /// The first body the segment from `from` to `to` (world m) meets, if any.
     std::optional<RayHit> rayCast(const glm::vec3& from, const glm::vec3& to) const;
+    /// Adds a torque (N·m, world axes) for the next step.
+    void applyTorque(BodyId id, const glm::vec3& torque);
+    /// The body's inertia tensor in world axes, kg·m² (0: static).
+    glm::mat3 inertiaTensor(BodyId id) const;
     /// Multiplies the angular velocity by `factor` (water damping).
     void dampAngular(BodyId id, float factor);
     /// Advances by dt seconds (def.substeps fixed sub-steps); forces are cleared after.

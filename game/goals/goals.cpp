@@ -160,16 +160,19 @@ GameResult judgeHerd(ecs::World& world, GameState& game) {
     return GameResult::Running;
 }
 
-// Moorings: a critically damped horizontal spring to the anchor, for the next physics step.
-void pullMoorings(ecs::World& world, const GameState& game) {
+// Moorings: a critically damped horizontal spring to the anchor, for the next physics step,
+// taken implicitly (backward Euler of x'' = −ω²x − 2ωx' over dt): stable at any period, so
+// the stiffest legal mooring (1 ms) holds its body rather than throwing it.
+void pullMoorings(ecs::World& world, const GameState& game, float dt) {
     if (game.def.mooring_period <= 0.0f) return;
     const float omega = 2.0f * float(M_PI) / game.def.mooring_period;
+    const float implicit = 1.0f + 2.0f * omega * dt + omega * omega * dt * dt;
     for (const Mooring& m : game.moorings) {
         Body* body = world.find<Body>(m.entity);
         if (!body) continue;
         const glm::vec3 p = world.get<ecs::Transform>(m.entity).position;
         const ecs::Motion& motion = world.get<ecs::Motion>(m.entity);
-        glm::vec3 force = -motion.mass * (omega * omega * (p - m.anchor) + 2.0f * omega * motion.velocity);
+        glm::vec3 force = -motion.mass * (omega * omega * (p - m.anchor) + (2.0f * omega + omega * omega * dt) * motion.velocity) / implicit;
         force.y = 0.0f;
         body->forces.push_back({force, p});
     }
@@ -328,7 +331,7 @@ void gameSystem(ecs::World& world, const ecs::Tick& tick) {
     game->time = tick.end;
 
     // --- moorings pull (this step's physics), the zone's floats ride the waves
-    pullMoorings(world, *game);
+    pullMoorings(world, *game, float(tick.dt));
     floatMarkers(world, *game);
 
     // --- the mode's judge, on the poses of the last physics step

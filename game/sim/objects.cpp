@@ -14,6 +14,7 @@
 #include <stdexcept>
 #include <utility>
 #include <glm/gtc/matrix_transform.hpp>
+#include <glm/matrix.hpp>
 
 namespace ob::game {
 
@@ -193,6 +194,9 @@ static float windProfile(float height) {
 
 namespace {
 
+constexpr double MIN_FORCE_HZ = 60.0;  // the water's forces on bodies are recomputed at least this often
+constexpr int MAX_SUBSTEPS = 64;       // and at most this many times a step
+
 // What every body's water forces read this step.
 struct WaterContext {
     const physics::PhysicsDef& def;
@@ -207,7 +211,7 @@ struct WaterContext {
 // sea without the ripples, read at the hull's still-water line, plus the ripples round each node
 // (as for the probes: not the hull's own crater).
 physics::ProbeForce hullForce(const WaterContext& c, const physics::HullGrid& hull, const physics::BodyState& s, float mass,
-                              float reach) {
+                              float reach, glm::vec3 waves) {
     const float draft = hull.size.y * std::clamp(mass / (c.def.water_density * hull.size.x * hull.size.y * hull.size.z), 0.0f, 1.0f);
     const water::WaterLayers sea{.ripples = false, .currents = false, .orbital = true};
     std::vector<float> heights(size_t(hull.nodeCount()));
@@ -221,13 +225,34 @@ physics::ProbeForce hullForce(const WaterContext& c, const physics::HullGrid& hu
     physics::ProbeForce f;
     f.force = b.force;
     f.point = b.point;
+    // Its heave stiffness ρ·g·(waterplane) while the waterline is on its sides, taken implicitly
+    // toward the waves' vertical motion (buoyancy.h: implicitDamping).
+    if (b.volume > 0.0f && b.volume < hull.size.x * hull.size.y * hull.size.z) {
+        const float k = c.def.water_density * c.def.gravity * hull.size.x * hull.size.z;
+        f.damping = glm::vec3(0.0f, k * c.dt, 0.0f);
+        f.dampingTarget = glm::vec3(0.0f, k * c.dt * waves.y, 0.0f);
+    }
     return f;
+}
+
+// The water a body drags along: its probes' added mass (kg) and its inertia tensor about the
+// body's centre (kg·m², world: Σ m_a·(|r|²·1 − r·rᵀ) for the motion the probes' drag sees; a
+// ship's probes see only the vertical, so its yaw keeps its hull model's inertia).
+struct AddedInertia {
+    float mass = 0.0f;
+    glm::mat3 moment{0.0f};
+};
+
+glm::mat3 addedMoment(glm::vec3 r, float mass, float horizontal) {
+    const glm::mat3 all = glm::dot(r, r) * glm::mat3(1.0f) - glm::outerProduct(r, r);
+    const glm::mat3 vertical(r.z * r.z, 0.0f, -r.x * r.z, 0.0f, 0.0f, 0.0f, -r.x * r.z, 0.0f, r.x * r.x);  // (ω × r)·ŷ's share
+    return mass * (horizontal * all + (1.0f - horizontal) * vertical);
 }
 
 // Morison's forces on each of a body's probes (buoyancy.h) into `forces`; sets the body's
 // submerged fraction, the waves' velocity round it and each probe's water velocity (for the
-// next step's Du/Dt). Returns the probes' added mass, kg.
-float probeForces(const WaterContext& c, ecs::World& world, ecs::Entity entity, Body& body, const physics::BodyState& s,
+// next step's Du/Dt). Returns the probes' added inertia.
+AddedInertia probeForces(const WaterContext& c, ecs::World& world, ecs::Entity entity, Body& body, const physics::BodyState& s,
                   float reach, std::vector<physics::ProbeForce>& forces) {
     const float mass = world.get<ecs::Motion>(entity).mass;
     const bool fresh = body.probeWater.size() != body.probes.size();  // a new body: no rate yet
@@ -237,7 +262,8 @@ float probeForces(const WaterContext& c, ecs::World& world, ecs::Entity entity, 
     float probeVolume = 0.0f;
     for (const Probe& probe : body.probes) probeVolume += probe.radius * probe.radius * probe.radius;
     forces.clear();
-    float submerged = 0.0f, addedMass = 0.0f, wet = 0.0f;
+    float submerged = 0.0f, wet = 0.0f;
+    AddedInertia added;
     glm::vec3 waterSum(0.0f);
     for (size_t k = 0; k < body.probes.size(); ++k) {
         const Probe& probe = body.probes[k];
@@ -277,12 +303,12 @@ float probeForces(const WaterContext& c, ecs::World& world, ecs::Entity entity, 
         p.hydrostatic = body.hull ? 0.0f : 1.0f;
         p.wind = c.wind10 * windProfile(p.centre.y + p.radius - p.surfaceHeight);
         const float v = probe.radius * probe.radius * probe.radius;
-        p.massShare = mass * v / std::max(probeVolume, 1e-12f);
         p.dt = c.dt;
         const physics::ProbeForce f = physics::probeForce(c.def, p);
         forces.push_back(f);
         submerged += f.submergedFraction * v;
-        addedMass += f.addedMass;
+        added.mass += f.addedMass;
+        added.moment += addedMoment(p.centre - s.position, f.addedMass, body.horizontalDrag);
         if (f.submergedFraction > 0.0f) {
             waterSum += waves * f.submergedFraction;
             wet += f.submergedFraction;
@@ -290,10 +316,26 @@ float probeForces(const WaterContext& c, ecs::World& world, ecs::Entity entity, 
     }
     body.submergedFraction = probeVolume > 0.0f ? submerged / probeVolume : 0.0f;
     if (body.submergedFraction == 0.0f)  // in flight: a ballistic body (windage is leeway, the drift of what floats)
-        for (physics::ProbeForce& f : forces) f.force -= std::exchange(f.airForce, glm::vec3(0.0f));
+        for (physics::ProbeForce& f : forces) {
+            f.damping -= std::exchange(f.airDamping, glm::vec3(0.0f));
+            f.dampingTarget -= std::exchange(f.airTarget, glm::vec3(0.0f));
+        }
     body.waveVelocity = wet > 0.0f ? waterSum / wet : glm::vec3(0.0f);
-    if (body.hull) forces.push_back(hullForce(c, *body.hull, s, mass, reach));
-    return addedMass;
+    if (body.hull) forces.push_back(hullForce(c, *body.hull, s, mass, reach, body.waveVelocity));
+    return added;
+}
+
+// A reaction on the current layer bounded implicitly, as the drag is on the body: within a step
+// it can bring the layer's water under the probe (ρ·depth·π·r²) to the probe's own velocity, not
+// past it (an extreme drag would otherwise throw the layer and the body against each other).
+glm::vec3 layerBound(const WaterContext& c, const physics::BodyState& s, glm::vec3 point, float radius, glm::vec3 force) {
+    if (!c.layer || c.dt <= 0.0f) return force;
+    const glm::vec3 v = s.linearVelocity + glm::cross(s.angularVelocity, point - s.position);
+    const glm::vec2 u = c.layer->velocityAt({point.x, point.z});
+    const float mass = c.def.water_density * c.layer->def().depth * float(M_PI) * radius * radius;
+    const float most = mass * glm::length(glm::vec2(v.x, v.z) - u) / c.dt;
+    const float horizontal = glm::length(glm::vec2(force.x, force.z));
+    return horizontal > most ? force * glm::vec3(most / horizontal, 1.0f, most / horizontal) : force;
 }
 
 // Applies the probes' and the behaviours' forces to a body with its added mass taken
@@ -303,26 +345,42 @@ float probeForces(const WaterContext& c, ecs::World& world, ecs::Entity entity, 
 // (a ball of 1 kg/m³) then rises at (ρ/ρ_body − 1)·g/(1 + ρ·C_a/ρ_body) ≈ 2g, not at 1000 g.
 // Every horizontal water force's reaction goes to the current layer's impulses.
 void applyForces(const WaterContext& c, physics::PhysicsWorld& physicsWorld, Body& body, float mass, const physics::BodyState& s,
-                 float reach, float addedMass, std::span<const physics::ProbeForce> forces, WaterImpulses* impulses) {
+                 float reach, AddedInertia added, std::span<physics::ProbeForce> forces, WaterImpulses* impulses) {
+    const float addedMass = added.mass;
     // Horizontally the added mass counts as much as the probes' drag does (ships: not at
     // all; their hull model, tuned on the hull's own surge and sway, stands in for it).
     const glm::vec3 scale(mass / (mass + body.horizontalDrag * addedMass), mass / (mass + addedMass),
                           mass / (mass + body.horizontalDrag * addedMass));
-    // The forces act whole at their points (their moments unscaled: the probes' added mass
-    // is the water heaving and surging with the body, not turning with it); the translation
-    // takes the scale through one force at the centre, (s − 1)·ΣF.
-    glm::vec3 outside(0.0f), total(0.0f);  // outside: the forces from outside the water (air, hands, moorings)
+    // The water turning with the body resists every torque: its moment of inertia adds to the
+    // body's (a light body's hydrostatic moments would otherwise turn it faster than any step
+    // resolves); Bullet turns the body with its own, so the torque is scaled by I·(I + I_a)⁻¹.
+    const glm::mat3 inertia = physicsWorld.inertiaTensor(body.id), effective = inertia + added.moment;
+    const glm::mat3 turn = glm::determinant(effective) > 0.0f ? inertia * glm::inverse(effective) : glm::mat3(1.0f);
+    if (mass > 0.0f && !forces.empty()) {
+        // The drags and the buoyancy's stiffness at the end of the step (buoyancy.h: implicitDamping),
+        // under every explicit force and torque of the step, gravity and the ballast's included.
+        glm::vec3 force(0.0f, -mass * c.def.gravity, 0.0f), torque = glm::cross(s.rotation * body.massCentre, force);
+        for (const physics::ProbeForce& f : forces) force += f.force, torque += glm::cross(f.point - s.position, f.force);
+        for (const AppliedForce& f : body.forces) force += f.force, torque += glm::cross(f.point - s.position, f.force);
+        const physics::BodyResponse response{mass / scale, effective, s.position, s.linearVelocity, s.angularVelocity};
+        physics::implicitDamping(response, force, torque, c.dt, forces);
+    }
+    // The forces act whole at their points; the translation takes the scale through one force
+    // at the centre, (s − 1)·ΣF, the rotation through one torque (below).
+    glm::vec3 outside(0.0f), total(0.0f), torque(0.0f);  // outside: the forces from outside the water (air, hands, moorings)
     for (size_t k = 0; k < forces.size(); ++k) {
         const physics::ProbeForce& f = forces[k];
         physicsWorld.applyForce(body.id, f.force, f.point);
         total += f.force;
+        torque += glm::cross(f.point - s.position, f.force);
         const float radius = k < body.probes.size() ? body.probes[k].radius : std::max(reach, 0.5f);  // past the probes: the hull's
-        if (impulses) impulses->react(scale * (f.force - f.airForce), f.point, c.dt, radius);
+        if (impulses) impulses->react(layerBound(c, s, f.point, radius, scale * (f.force - f.airForce)), f.point, c.dt, radius);
         outside += f.airForce;
     }
     for (const AppliedForce& f : body.forces) {
         physicsWorld.applyForce(body.id, f.force, f.point);
         total += f.force;
+        torque += glm::cross(f.point - s.position, f.force);
         if (!f.water) outside += f.force;
         else if (impulses) impulses->react(scale * f.force, f.point, c.dt, std::max(reach, 0.5f));
     }
@@ -331,7 +389,9 @@ void applyForces(const WaterContext& c, physics::PhysicsWorld& physicsWorld, Bod
         const glm::vec3 weight(0.0f, -mass * c.def.gravity, 0.0f);
         physicsWorld.applyForce(body.id, weight, s.position + s.rotation * body.massCentre);
         physicsWorld.applyForce(body.id, -weight, s.position);
+        torque += glm::cross(s.rotation * body.massCentre, weight);
     }
+    if (added.moment != glm::mat3(0.0f)) physicsWorld.applyTorque(body.id, turn * torque - torque);
     if (addedMass > 0.0f) {
         physicsWorld.applyForce(body.id, (scale - 1.0f) * total + glm::vec3(0.0f, (1.0f - scale.y) * mass * c.def.gravity, 0.0f),
                                 s.position);
@@ -343,6 +403,27 @@ void applyForces(const WaterContext& c, physics::PhysicsWorld& physicsWorld, Bod
 }
 
 } // namespace
+
+// A body that reaches the surface this step faster than it crosses its own size in one step
+// (a drop, a throw, a strong gravity) enters it over as many substeps as that takes: its probes
+// feel the water on the way in rather than being found deep under it at the end of the step.
+static int entrySubsteps(ecs::World& world, const water::WaterQuery& water, float dt) {
+    int n = 1;
+    auto& bodies = world.pool<Body>();
+    for (size_t i = 0; i < bodies.size(); ++i) {
+        const Body& body = bodies.components()[i];
+        if (body.probes.empty()) continue;
+        float size = 0.0f;
+        for (const Probe& p : body.probes) size = std::max(size, glm::length(p.offset) + p.radius);
+        const ecs::Entity e = bodies.entities()[i];
+        const glm::vec3 x = world.get<ecs::Transform>(e).position, v = world.get<ecs::Motion>(e).velocity;
+        const float travel = glm::length(v) * dt;
+        if (travel <= size) continue;
+        const float gap = std::abs(x.y - water.sample(x.x, x.z, {.ripples = false, .orbital = true}).height);
+        if (gap < size + travel) n = std::max(n, int(std::ceil(travel / size)));
+    }
+    return n;
+}
 
 void physicsSystem(ecs::World& world, const ecs::Tick& tick) {
     auto* physicsWorld = world.resource<physics::PhysicsWorld>();
@@ -357,26 +438,34 @@ void physicsSystem(ecs::World& world, const ecs::Tick& tick) {
     }
     const water::FlatWater flat(0.0f);
     if (!water) water = &flat;
-    const float dt = float(tick.dt);
+    // The water's forces are resolved at 60 Hz at least: a slower step (sim.step_hz down to 1) is
+    // cut into substeps, each with its own probe forces, so a body cannot fall through the
+    // surface or out of its wave within one step.
+    const int substeps = std::clamp(std::max(int(std::ceil(tick.dt * MIN_FORCE_HZ - 1e-6)), entrySubsteps(world, *water, float(tick.dt))),
+                                    1, MAX_SUBSTEPS);
+    const float dt = float(tick.dt) / float(substeps);
     const WaterContext context{*def, *water, world.resource<interaction::RipplePatch>(), world.resource<currents::CurrentLayer>(),
                                wind10, dt};
     auto* impulses = world.resource<WaterImpulses>();
-
-    // --- water and air forces per probe (Morison: buoyancy.h), then the behaviours' forces
     auto& bodies = world.pool<Body>();
     std::vector<physics::ProbeForce> forces;
-    for (size_t b = 0; b < bodies.size(); ++b) {
-        Body& body = bodies.components()[b];
-        const ecs::Entity entity = bodies.entities()[b];
-        const auto* spheres = world.find<interaction::SphereSet>(entity);
-        const float reach = spheres && !spheres->spheres.empty() ? spheres->spheres[0].radius : 0.0f;
-        const physics::BodyState s = physicsWorld->state(body.id);
-        const float addedMass = probeForces(context, world, entity, body, s, reach, forces);
-        applyForces(context, *physicsWorld, body, world.get<ecs::Motion>(entity).mass, s, reach, addedMass, forces, impulses);
+    std::vector<std::vector<AppliedForce>> behaviours(substeps > 1 ? bodies.size() : 0);  // each substep's again
+    for (size_t b = 0; b < behaviours.size(); ++b) behaviours[b] = bodies.components()[b].forces;
+    for (int sub = 0; sub < substeps; ++sub) {
+        // --- water and air forces per probe (Morison: buoyancy.h), then the behaviours' forces
+        for (size_t b = 0; b < bodies.size(); ++b) {
+            Body& body = bodies.components()[b];
+            const ecs::Entity entity = bodies.entities()[b];
+            if (sub > 0) body.forces = behaviours[b];
+            const auto* spheres = world.find<interaction::SphereSet>(entity);
+            const float reach = spheres && !spheres->spheres.empty() ? spheres->spheres[0].radius : 0.0f;
+            const physics::BodyState s = physicsWorld->state(body.id);
+            const AddedInertia added = probeForces(context, world, entity, body, s, reach, forces);
+            applyForces(context, *physicsWorld, body, world.get<ecs::Motion>(entity).mass, s, reach, added, forces, impulses);
+        }
+        // --- rigid-body step
+        physicsWorld->step(dt);
     }
-
-    // --- rigid-body step
-    physicsWorld->step(dt);
 
     // --- poses back to the entities
     for (size_t i = 0; i < bodies.size(); ++i) {

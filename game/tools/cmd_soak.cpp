@@ -242,10 +242,13 @@ static void checkBodies(Sandbox& sandbox, const SoakBounds& bounds, SoakReport& 
         if (body.probes.empty()) continue;                                // fixed (a wall, a pillar): it does not float
         if (bodyDensity(world, i) >= physics->water_density) continue;  // meant to sink (a cannonball)
         const float depth = p.y - surface;
-        const float limit = BODY_EXTENTS * bodyExtent(body) + bounds.seaHs;
+        // A body near the water's density dives the deeper the less it floats: falling in from its
+        // own size it stops after ρ_b/(ρ − ρ_b) sizes (its entry energy over its net buoyancy).
+        const float density = bodyDensity(world, i);
+        const float limit = (BODY_EXTENTS + density / (physics->water_density - density)) * bodyExtent(body) + bounds.seaHs;
         if (depth < -limit)
             fail(sandbox, "body " + std::to_string(i) + " (" + objectTypeName(world, bodies.entities()[i]) + ", lighter than water) has sunk: its centre is " +
-                              fmt(-depth) + " m under the surface, more than " + fmt(limit) + " m (2 extents + Hs)");
+                              fmt(-depth) + " m under the surface, more than " + fmt(limit) + " m ((2 + ρ_b/(ρ − ρ_b)) extents + Hs)");
         report.minFloatingDepth = std::min(report.minFloatingDepth, depth);
     }
 }

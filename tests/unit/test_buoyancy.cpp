@@ -33,9 +33,12 @@ TEST_CASE("a probe at rest feels rho g V up, drag opposes motion relative to the
     const float volume = 4.0f / 3.0f * float(M_PI) * 0.125f;
     CHECK(f.force.y == Approx(def.water_density * def.gravity * volume).epsilon(1e-5));
     CHECK(f.submergedFraction == Approx(1.0f));
+    // The drag is the damping D = b − C·v the body's implicit solve takes (implicitDamping).
+    const auto drag = [&](const physics::ProbeForce& g) { return g.dampingTarget - g.damping * p.velocity; };
     p.velocity = glm::vec3(0.0f, -1.0f, 0.0f);
-    CHECK(physics::probeForce(def, p).force.y > f.force.y);  // sinking: drag pushes up
-    p.waterVelocity = glm::vec3(0.0f, -1.0f, 0.0f);           // moving with the water: no drag
+    CHECK(drag(physics::probeForce(def, p)).y > 0.0f);  // sinking: drag pushes up
+    p.waterVelocity = glm::vec3(0.0f, -1.0f, 0.0f);     // moving with the water: no drag
+    CHECK(drag(physics::probeForce(def, p)).y == Approx(0.0f).margin(1e-4));
     CHECK(physics::probeForce(def, p).force.y == Approx(f.force.y).epsilon(1e-5));
 }
 
