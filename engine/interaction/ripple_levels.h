@@ -78,6 +78,8 @@ public:
     /// phase held in [0, 1]: a level whose step is still running shows its last finished state).
     /// Reads only what publish() wrote: safe while step() runs on another thread.
     LevelDraw draw(int L, int64_t frame) const;
+    /// Whether the levels step on a GPU twin (then on the thread that holds the GL context).
+    bool onGpu() const { return !m_levels.empty() && m_levels.front().solver->onGpu(); }
     /// Whether the next step() steps some level (else it only moves the frame on).
     bool stepDue() const {
         for (const Level& lv : m_levels)

@@ -92,7 +92,7 @@ void RipplePatch::step(float dt) {
     ++m_frames;
     if (!m_levels) return;
     joinLevels();
-    if (!m_pipelined || !m_levels->stepDue()) {
+    if (!m_pipelined || m_levels->onGpu() || !m_levels->stepDue()) {  // a GPU twin steps where its GL context is
         m_levels->step(dt, m_obstacles);
         return;
     }

@@ -28,8 +28,10 @@ void attachWaterGpu(ecs::World& world) {
         // on an H200 in the default scene).
         // The same switch for every model: its moveToGpu warns, and leaves it on the CPU, where
         // its GPU twin cannot run it.
+        // Levels: each on its own twin when asked ("gpu"); auto keeps them on the CPU, where the
+        // pipelined steps run them beside the frame.
         const bool gpu = backend == Backend::Gpu || (backend == Backend::Auto && !gfx::isSoftwareRenderer() && patch->def().resolution >= 2048 &&
-                                                   patch->def().levels == 1);  // levels: CPU only
+                                                   patch->def().levels == 1);
         if (gpu) interaction::attachGpu(*patch);
         logInfo("ripples: %s, %s backend, %d² cells of %g m", enumName(patch->def().model), patch->solver().backendName(),
                 patch->def().resolution, double(patch->def().cell_size));

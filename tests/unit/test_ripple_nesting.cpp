@@ -130,7 +130,7 @@ TEST_CASE("a model the table does not list runs nested in levels: the composite 
         patch.step(DT);
         if (frame < 36) continue;
         const double t = double(frame) * double(DT);
-        for (float x = -118.0f; x <= 118.0f; x += 0.73f) {
+        for (float x = -110.0f; x <= 110.0f; x += 0.73f) {  // level 2's cell centres: −128 m to 112 m
             const glm::vec2 w(x, 3.1f + 0.21f * x);
             worstH = std::max(worstH, std::abs(double(patch.heightAt(w)) - waveHeight(w, t)));
             worstV = std::max(worstV, std::abs(double(patch.velocityAt(w, DT)) - waveRate(w, t)));
@@ -141,6 +141,13 @@ TEST_CASE("a model the table does not list runs nested in levels: the composite 
     CHECK(worstV < 0.03 * AMPLITUDE * OMEGA);
     CHECK(patch.horizontalVelocityAt({90.0f, 10.0f}) == glm::vec2(0.0f));  // no ξ, u: none
     CHECK(patch.heightAt({300.0f, 0.0f}) == 0.0f);                         // off every level
+    // What the renderer gets of level 2: its two states and the cubic's weights at this frame
+    // (shaders/ripple_levels.comp evaluates them), the heights the composite reads.
+    const LevelDraw draw = patch.levelDraw(2);
+    const glm::vec4 w = draw.weights;
+    const size_t cell = size_t(5 * N + 7);
+    CHECK(w.x * draw.h0[cell] + w.y * draw.h1[cell] + w.z * draw.v0[cell] + w.w * draw.v1[cell] ==
+          Approx(patch.levels()->height(2)[cell]).margin(1e-6));
 }
 
 TEST_CASE("a model that cannot be nested is refused with its own reason", "[ripple][levels][solver]") {

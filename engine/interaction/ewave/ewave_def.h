@@ -39,7 +39,7 @@ struct EWaveModel {
     static constexpr RippleKnob<Def> KNOB{"ripples.decay_time", &Def::decay_time, "ripple decay s", 0.0f, 60.0f, "%.1f",
                                           "extra e-folding time of the ripples' amplitude (0 = none: the water's own "
                                           "viscosity only; rings leave by spreading and through the border)"};
-    /// Checks across keys this model adds: levels > 1 runs on the CPU only (backend "gpu" refused).
+    /// Checks across keys this model adds (none: every key is checked by its range).
     static std::vector<RippleDefError> validate(const RippleDef& def);
     /// The CPU solver (EWaveField, FFTW) of a checked Def (ewave_solver.cpp).
     static std::unique_ptr<RippleSolver> make(const RippleDef& def);
