@@ -30,8 +30,7 @@ void addOcean(ecs::World& world, const ocean::OceanDef& def, const ocean::Gerstn
 }
 
 void pipelineWater(ecs::World& world) {
-    if (OceanState* ocean = world.resource<OceanState>(); ocean && !ocean->cpuNext)
-        ocean->cpuNext = std::make_unique<ocean::OceanFftCpu>(ocean->def);
+    if (OceanState* ocean = world.resource<OceanState>()) ocean->pipelined = true;
     if (auto* patch = world.resource<interaction::RipplePatch>()) patch->setPipelined(true);
 }
 
@@ -88,6 +87,12 @@ void oceanSystem(ecs::World& world, const ecs::Tick& tick) {
         ocean->cpu->update(ocean->mapsTime);
     }
     ocean->water->update(ocean->mapsTime);
+    if (ocean->pipelined && !ocean->cpuNext) {
+        // The second buffer from the sea as the first step has it (a spectrum written since the
+        // world was made, by a test or a tool, included): the next steps' maps are its maps.
+        ocean->cpuNext = std::make_unique<ocean::OceanFftCpu>(ocean->def);
+        for (int c = 0; c < ocean->def.cascades; ++c) ocean->cpuNext->spectrum(c) = ocean->cpu->spectrum(c);
+    }
     if (ocean->cpuNext) {
         // The next step's end time as the schedule will compute it (step / rate + step length);
         // should the bits differ, the next step computes its maps itself.

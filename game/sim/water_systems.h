@@ -38,6 +38,7 @@ struct OceanState {
     /// another thread while this frame renders (the step times are known ahead); null otherwise.
     std::unique_ptr<ocean::OceanFftCpu> cpuNext;
     std::future<void> prefetch;                    ///< cpuNext->update(prefetchTime) in flight
+    bool pipelined = false;                        ///< [sim] pipelined: cpuNext made at the first step (pipelineWater)
     double prefetchTime = -1.0;
     std::unique_ptr<water::CompositeWater> water;  ///< the WaterQuery: Gerstner + cascades + ripples
     double mapsTime = -1.0;                        ///< time of the CPU maps (s)
@@ -56,7 +57,7 @@ void oceanSystem(ecs::World& world, const ecs::Tick& tick);
 void changeSea(ecs::World& world, const ocean::OceanDef& def, const ocean::GerstnerDef& gerstner,
                std::vector<ocean::GerstnerWave> waves, double now);
 /// [sim] pipelined: the ocean's maps of the next step computed on another thread while the frame
-/// goes on (a second map buffer, OceanState::cpuNext), and the ripple patch's coarse levels
+/// goes on (a second map buffer, OceanState::cpuNext, made at the first ocean step), and the ripple patch's coarse levels
 /// stepped on a worker (RipplePatch::setPipelined). The state is the same bits.
 void pipelineWater(ecs::World& world);
 /// Creates the ripple patch resource from the scene's [ripples] (nothing when disabled) and

@@ -19,13 +19,13 @@ uint64_t hashOf(bool pipelined, int perFrame, int steps) {
     game::SceneDef scene = game::loadScene(game::defaultScenePath(), {pipelined ? "sim.pipelined=true" : "sim.pipelined=false"});
     scene.sim.max_steps_per_frame = std::max(scene.sim.max_steps_per_frame, perFrame);
     game::Sandbox sandbox(scene);
-    const game::OceanState* ocean = sandbox.world().resource<game::OceanState>();
-    REQUIRE(ocean);
-    CHECK((ocean->cpuNext != nullptr) == pipelined);  // the second map buffer: the maps made ahead
     sandbox.schedule().setFirstFrameSeconds(perFrame / double(scene.sim.step_hz));
     FixedStepClock clock(perFrame / double(scene.sim.step_hz));
     while (sandbox.schedule().steps() < uint64_t(steps)) sandbox.frame(clock.now());
     REQUIRE(sandbox.schedule().steps() == uint64_t(steps));
+    const game::OceanState* ocean = sandbox.world().resource<game::OceanState>();
+    REQUIRE(ocean);
+    CHECK((ocean->cpuNext != nullptr) == pipelined);  // the second map buffer: the maps made ahead
     return sandbox.stateHash();
 }
 
