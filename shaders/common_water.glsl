@@ -22,7 +22,7 @@ layout(binding = RIPPLE_LEVEL_SLOPES_UNIT) uniform sampler2DArray u_rippleLevelS
 
 // The composite's weight of a level at grid position `cell` (centres at integers; the levels
 // share N): 0 within the fade band of its border, 1 from twice it inwards, a smoothstep per
-// axis between (EWaveLevels' levelWeight, docs/ewave.md#levels).
+// axis between (RippleLevels' levelWeight, docs/ewave.md#levels).
 float rippleLevelWeight(vec2 cell) {
     vec2 d = min(cell, water.rippleParams.w - 1.0 - cell);
     vec2 s = smoothstep(vec2(water.rippleFade.y), vec2(2.0 * water.rippleFade.y), d);

@@ -3,6 +3,8 @@
 // that wakes late never claims a chunk of another job; the caller claims chunks too.
 #include "core/parallel.h"
 
+#include "core/thread_cpu.h"
+
 #include <algorithm>
 #include <atomic>
 #include <condition_variable>
@@ -116,6 +118,7 @@ private:
                 if (m_stop) return;
                 seen = m_jobSeq;
             }
+            const WorkerCpuScope cpu;  // bench frame's workers row
             claimChunks(m_word.load(std::memory_order_acquire));
         }
     }

@@ -1,6 +1,8 @@
 // Fixed-step frame loop and per-phase timing.
 #include "ecs/schedule.h"
 
+#include "core/thread_cpu.h"
+
 #include <algorithm>
 #include <chrono>
 #include <numeric>
@@ -21,9 +23,11 @@ void FrameTimer::record(std::vector<double>& series, double ms) {
     series.push_back(ms);
 }
 
-void FrameTimer::endFrame(double frameMs) {
+void FrameTimer::endFrame(double frameMs, double mainCpuMs, double workerCpuMs) {
     for (int p = 0; p < PHASE_COUNT; ++p) record(m_cpu[size_t(p)], m_current[size_t(p)]);
     record(m_frames, frameMs);
+    record(m_mainCpu, mainCpuMs);
+    record(m_workerCpu, workerCpuMs);
 }
 
 double mean(const std::vector<double>& samples) {
@@ -68,6 +72,8 @@ void Schedule::runFrame(World& world, double now) {
     // presenting (vsync, the software rasteriser finishing) outside the phases.
     finish();
     m_frameStart = std::chrono::steady_clock::now();
+    m_frameCpuStart = threadCpuSeconds();
+    m_frameWorkerStart = workerCpuSeconds();
     m_frameOpen = true;
     m_timer.beginFrame();
     const double h = stepSeconds();
@@ -113,7 +119,8 @@ void Schedule::runFrame(World& world, double now) {
 
 void Schedule::finish() {
     if (!m_frameOpen) return;
-    m_timer.endFrame(Ms(std::chrono::steady_clock::now() - m_frameStart).count());
+    m_timer.endFrame(Ms(std::chrono::steady_clock::now() - m_frameStart).count(), 1e3 * (threadCpuSeconds() - m_frameCpuStart),
+                     1e3 * (workerCpuSeconds() - m_frameWorkerStart));
     m_frameOpen = false;
 }
 

@@ -27,6 +27,8 @@ struct SimDef {
     uint64_t seed = 1;              ///< seed for every random choice of the scene
     float end_time = 0.0f;          ///< simulated seconds a run lasts, [0, 1e6] (0: none): `run` without --frames stops there; a
                                     ///< goal still running is lost; `play` stops stepping and shows the result
+    bool pipelined = true;          ///< the ocean's maps of the next step and the ripples' coarse levels computed on worker
+                                    ///< threads while the frame goes on (docs/frame.md#pipelined); the state is the same bits
 };
 
 template <class V> void describe(V& v, SimDef& d) {
@@ -34,6 +36,8 @@ template <class V> void describe(V& v, SimDef& d) {
     v.field("max_steps_per_frame", d.max_steps_per_frame, range(1, 64), "catch-up limit when a frame is slow");
     v.field("seed", d.seed, "seed for every random choice of the scene");
     v.field("end_time", d.end_time, range(0, 1e6), "simulated seconds a run lasts; play then shows the result (0: none)");
+    v.field("pipelined", d.pipelined,
+            "the next step's ocean maps and the ripples' coarse levels on worker threads while the frame draws (same state bits)");
 }
 
 /// The phases of a frame, in execution order.
@@ -91,11 +95,17 @@ public:
     void setGpu(Phase p, double ms) { record(m_gpu[size_t(p)], ms); }
     /// GPU time of one render pass for the latest frame whose queries have resolved.
     void addGpuPass(const std::string& pass, double ms) { record(m_gpuPasses[pass], ms); }
-    void endFrame(double frameMs);
+    /// Closes the frame: its wall ms, the main thread's CPU ms over it and the simulation
+    /// workers' (core/thread_cpu.h).
+    void endFrame(double frameMs, double mainCpuMs = 0.0, double workerCpuMs = 0.0);
     /// Samples of the phase's CPU ms, one per frame.
     const std::vector<double>& cpuSamples(Phase p) const { return m_cpu[size_t(p)]; }
     const std::vector<double>& gpuSamples(Phase p) const { return m_gpu[size_t(p)]; }
     const std::vector<double>& frameSamples() const { return m_frames; }
+    /// Samples of the main thread's CPU ms per frame (frame start to the next frame's start).
+    const std::vector<double>& mainCpuSamples() const { return m_mainCpu; }
+    /// Samples of the simulation workers' CPU ms per frame, summed over them.
+    const std::vector<double>& workerCpuSamples() const { return m_workerCpu; }
     /// Samples of each render pass's GPU ms, by pass name.
     const std::map<std::string, std::vector<double>>& gpuPassSamples() const { return m_gpuPasses; }
     /// The latest frame's CPU ms of a phase (0 before the first frame).
@@ -109,6 +119,7 @@ private:
     std::array<std::vector<double>, PHASE_COUNT> m_cpu;
     std::array<std::vector<double>, PHASE_COUNT> m_gpu;
     std::vector<double> m_frames;
+    std::vector<double> m_mainCpu, m_workerCpu;
     std::map<std::string, std::vector<double>> m_gpuPasses;
 };
 
@@ -153,6 +164,8 @@ private:
     uint64_t m_frames = 0;
     double m_lastNow = -1;
     std::chrono::steady_clock::time_point m_frameStart;
+    double m_frameCpuStart = 0.0;     // the main thread's CPU clock at the frame's start, s
+    double m_frameWorkerStart = 0.0;  // the workers' CPU clock then, s
     bool m_frameOpen = false;
     double m_accumulator = 0;
     double m_firstFrameSeconds = 0;  // 0: one step

@@ -2,7 +2,10 @@
 #include "gfx/water_layers.h"
 
 #include "gfx/render_target.h"
+#include "gfx/shader.h"
 #include "gfx/water_pass.h"
+
+#include "ripple_levels_bindings.glsl"
 
 #include <algorithm>
 #include <tuple>
@@ -34,12 +37,12 @@ Texture borderedMap(const char* label, GLenum format, int cells) {
     glTextureParameterfv(texture.id(), GL_TEXTURE_BORDER_COLOR, zero);
     return texture;
 }
-// A 2D array of MAX_RIPPLE_LEVELS layers of cells², linear, clamped (to a zero border: `bordered`).
-Texture createLevelArray(const char* label, GLenum format, int cells, bool bordered) {
+// A 2D array of `layers` layers of cells², linear, clamped (to a zero border: `bordered`).
+Texture createLevelArray(const char* label, GLenum format, int cells, bool bordered, int layers = MAX_RIPPLE_LEVELS) {
     GLuint id;
     glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &id);
     glObjectLabel(GL_TEXTURE, id, -1, label);
-    glTextureStorage3D(id, 1, format, cells, cells, MAX_RIPPLE_LEVELS);
+    glTextureStorage3D(id, 1, format, cells, cells, layers);
     glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     const GLint wrap = bordered ? GL_CLAMP_TO_BORDER : GL_CLAMP_TO_EDGE;
@@ -98,8 +101,10 @@ void WaterLayers::upload(const WaterView& water, bool fft, bool foamOn, WaterUni
     glBindTextureUnit(RIPPLE_LEVEL_SLOPES_UNIT, levels ? m_levelSlopes.id() : 0);
 }
 
-// The coarse ewave levels as layers of two arrays (heights with a zero border, slopes with a
-// margin as level 0's), and their placement in rippleLevels / rippleFade.
+// The coarse ripple levels as layers of two arrays (heights with a zero border, slopes with a
+// margin as level 0's), made on the GPU from their two states (uploaded when a level stepped or
+// moved) and this frame's weights of the cubic in time (ripple_levels.comp); their placement in
+// rippleLevels / rippleFade.
 void WaterLayers::uploadLevels(const WaterView& water, WaterUniforms& u) {
     const int count = std::min(int(water.rippleLevels.size()), int(MAX_RIPPLE_LEVELS));
     u.rippleFade = glm::vec4(float(count), float(water.rippleFadeCells), 0.0f, 0.0f);
@@ -108,15 +113,33 @@ void WaterLayers::uploadLevels(const WaterView& water, WaterUniforms& u) {
     if (m_levelCells != n) {
         m_levels = createLevelArray("ripple level heights", GL_R32F, n, true);
         m_levelSlopes = createLevelArray("ripple level slopes", GL_RG32F, n + 2, false);
+        m_levelStates = createLevelArray("ripple level states", GL_R32F, n, true, 4 * MAX_RIPPLE_LEVELS);
+        m_levelVersions.fill(0);
         m_levelCells = n;
     }
+    if (!m_levelProgram.id()) m_levelProgram = loadProgram("ripple levels in time", {"ripple_levels.comp"});
+    glUseProgram(m_levelProgram.id());
+    glBindTextureUnit(RIPPLE_LEVEL_STATES_UNIT, m_levelStates.id());
+    glBindImageTexture(RIPPLE_LEVEL_HEIGHT_IMAGE, m_levels.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
+    glBindImageTexture(RIPPLE_LEVEL_SLOPE_IMAGE, m_levelSlopes.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RG32F);
+    glProgramUniform2f(m_levelProgram.id(), RIPPLE_LEVEL_GRID_LOCATION, float(n), 0.0f);
+    const GLuint groups = GLuint((n + 2 + RIPPLE_LEVEL_TILE - 1) / RIPPLE_LEVEL_TILE);
     for (int L = 0; L < count; ++L) {
         const WaterView::RippleLevel& level = water.rippleLevels[size_t(L)];
-        glTextureSubImage3D(m_levels.id(), 0, 0, 0, L, n, n, 1, GL_RED, GL_FLOAT, level.heights);
-        rippleSlopes(level.heights, n, level.cellSize, m_slopeTexels);
-        glTextureSubImage3D(m_levelSlopes.id(), 0, 0, 0, L, n + 2, n + 2, 1, GL_RG, GL_FLOAT, m_slopeTexels.data());
+        if (m_levelVersions[size_t(L)] != level.version || level.version == 0) {
+            for (int k = 0; k < 4; ++k)
+                glTextureSubImage3D(m_levelStates.id(), 0, 0, 0, 4 * L + k, n, n, 1, GL_RED, GL_FLOAT, level.states[size_t(k)]);
+            m_levelVersions[size_t(L)] = level.version;
+        }
+        glProgramUniform1i(m_levelProgram.id(), RIPPLE_LEVEL_LOCATION, L);
+        glProgramUniform4fv(m_levelProgram.id(), RIPPLE_LEVEL_WEIGHTS_LOCATION, 1, &level.weights.x);
+        glProgramUniform2f(m_levelProgram.id(), RIPPLE_LEVEL_GRID_LOCATION, float(n), level.cellSize);
+        glDispatchCompute(groups, groups, 1);
         u.rippleLevels[L] = glm::vec4(level.origin, level.cellSize, 0.0f);
     }
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    glBindTextureUnit(RIPPLE_LEVEL_STATES_UNIT, 0);
+    glUseProgram(0);
 }
 
 } // namespace ob::gfx

@@ -4,6 +4,8 @@
 #include "gfx/gpu_bindings.h"
 #include "gfx/handles.h"
 
+#include <array>
+#include <cstdint>
 #include <glm/vec2.hpp>
 #include <vector>
 
@@ -27,6 +29,9 @@ private:
     std::vector<glm::vec2> m_slopeTexels;  // their texels, (cells + 2)² row-major
     int m_rippleCells = 0;
     Texture m_levels, m_levelSlopes;  // the coarse levels' heights and slopes, 2D arrays of MAX_RIPPLE_LEVELS layers
+    Texture m_levelStates;            // their two states, 4 layers a level (h0, h1, v0, v1), uploaded when they change
+    std::array<uint64_t, MAX_RIPPLE_LEVELS> m_levelVersions{};  // the states' versions uploaded (0: none)
+    Program m_levelProgram;           // ripple_levels.comp: each level's cubic in time and slopes, per frame
     int m_levelCells = 0;             // their cells per side (0: not made)
     Texture m_foam;           // R32F foam coverage of the foam map, re-uploaded every frame
     int m_foamCells = 0;

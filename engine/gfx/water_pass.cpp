@@ -37,10 +37,15 @@ SurfaceBounds displacementBounds(const WaterView& water) {
     if (water.ripples && water.rippleCells > 0) {
         const auto [lo, hi] = std::minmax_element(water.ripples, water.ripples + size_t(water.rippleCells) * size_t(water.rippleCells));
         float top = *hi, bottom = *lo;
-        for (const WaterView::RippleLevel& level : water.rippleLevels) {
-            const auto [l, h] = std::minmax_element(level.heights, level.heights + size_t(water.rippleCells) * size_t(water.rippleCells));
-            top = std::max(top, *h);
-            bottom = std::min(bottom, *l);
+        for (const WaterView::RippleLevel& level : water.rippleLevels) {  // the cubic's bound from its states' extremes
+            float t = 0.0f, b = 0.0f;
+            for (int k = 0; k < 4; ++k) {
+                const float w = level.weights[k], lo = level.extremes[size_t(k)].x, hi = level.extremes[size_t(k)].y;
+                t += std::max(w * lo, w * hi);
+                b += std::min(w * lo, w * hi);
+            }
+            top = std::max(top, t);
+            bottom = std::min(bottom, b);
         }
         bounds += {std::max(top, 0.0f), std::max(-bottom, 0.0f), 0.0f};
     }

@@ -34,13 +34,18 @@ struct WaterView {
     glm::vec2 rippleOrigin{0.0f};           ///< world (x, z) of cell (0, 0)'s centre, m
     float rippleCellSize = 1.0f;            ///< m per cell
     /// A coarse ewave level (docs/ewave.md#levels): rippleCells² heights like `ripples`, placed by its own origin and cell.
+    /// Its height is evaluated on the GPU (shaders/ripple_levels.comp): the cubic in time of its
+    /// last two states, uploaded only when `version` changes, with this frame's weights.
     struct RippleLevel {
-        const float* heights = nullptr;     ///< rippleCells² row-major (z rows), m
+        std::array<const float*, 4> states{};  ///< h0, h1 (m), v0, v1 (m/s), each rippleCells² row-major (z rows)
+        uint64_t version = 0;               ///< changes whenever the states do
+        glm::vec4 weights{0.0f};            ///< height = weights · (h0, h1, v0, v1) this frame
+        std::array<glm::vec2, 4> extremes{};  ///< (min, max) of each state: the grid's reach without reading them
         glm::vec2 origin{0.0f};             ///< world (x, z) of cell (0, 0)'s centre, m
         float cellSize = 1.0f;              ///< m per cell
     };
     std::vector<RippleLevel> rippleLevels;  ///< levels 1.. of the patch, at most MAX_RIPPLE_LEVELS (none: one grid)
-    int rippleFadeCells = 0;                ///< the composite's fade band, cells of each level (EWaveLevels::sponge)
+    int rippleFadeCells = 0;                ///< the composite's fade band, cells of each level (RippleLevels::sponge)
     const float* foam = nullptr;            ///< persistent foam coverage [0, 1], foamCells² row-major (z rows)
     int foamCells = 0;                      ///< foam map cells per side (0: no foam map)
     glm::vec2 foamOrigin{0.0f};             ///< world (x, z) of foam cell (0, 0)'s centre, m

@@ -64,6 +64,9 @@ struct RippleDef : RippleModels::Defs {
                                              ///< hardware GPU from 2048² cells, else cpu
     int resolution = 256;                    ///< N, cells per side; power of two in [16, 4096]
     float cell_size = 0.25f;                 ///< Δ, metres per cell, [0.01, 100]
+    int levels = 1;                          ///< nested grids, [1, 4]: level L has the same N, cells 4^L × cell_size and steps every
+                                             ///< 4^L-th frame (interaction/ripple_levels.h, docs/ewave.md#levels); 1 = one grid. A
+                                             ///< model that cannot be nested (RippleSolver::levelRefusal: kang2008) refuses > 1
     RippleBoundary boundary = RippleBoundary::Absorbing;  ///< "fixed", "absorbing" or "periodic" (ewave only, for tests)
     int sponge_width = 32;                   ///< absorbing band width, cells, [1, 512]; 32 reflects ≤ 5% of a ring's amplitude
     RippleFollow follow = RippleFollow::Fixed;  ///< "fixed" at `center`, "camera", "target" or "ship"
@@ -84,6 +87,8 @@ template <class V> void describe(V& v, RippleDef& d) {
     // Each solver's keys, in the table's order, as fields of this table (not v.fields: they
     // are [ripples] keys like the others, for every visitor, the timeline's live set included).
     RippleModels::forEach([&]<class Model>() { describe(v, static_cast<typename Model::Def&>(d)); });
+    v.field("levels", d.levels, range(1, 4),
+            "ewave: nested grids of the same resolution, cells 4x coarser each (1 = one grid; docs/ewave.md#levels)");
     v.field("boundary", d.boundary, "border: fixed (reflects), absorbing (sponge) or periodic (ewave only)");
     v.field("sponge_width", d.sponge_width, range(1, 512), "absorbing band width (cells)");
     v.field("follow", d.follow, "patch stays at center, follows the camera, the point it looks at, or the ship the camera's follow names");

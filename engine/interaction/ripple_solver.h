@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <glm/vec2.hpp>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -19,6 +20,23 @@ struct RippleDef;
 struct RippleLevel {
     const char* name;               ///< "Vh(t)", "h", … as messages name it
     std::span<const float> values;  ///< rows·cols, row-major (z·cols + x)
+};
+
+/// A pressure source as the level stack (interaction/ripple_levels.h) carries it from one level
+/// to the next: centre and radius in the grid's cells, accel m/s² at the centre over one step.
+struct LevelSource {
+    float gx = 0.0f, gz = 0.0f;  ///< exact centre, cells (column x, row z)
+    float radiusCells = 0.0f;    ///< R, cells
+    float accel = 0.0f;          ///< m/s² at the centre, + lifts the water
+};
+
+/// A solver's state at the end of one of its steps as a coarse level of the stack keeps it: the
+/// two ends of the cubic in time that the stack reads between its steps. rows·cols row-major.
+struct LevelState {
+    std::vector<float> h;      ///< height, m
+    std::vector<float> v;      ///< its rate ∂h/∂t less its mean, m/s (the mean is no motion)
+    std::vector<float> xi[2];  ///< horizontal displacement per axis x, z, m; empty: the model has no horizontal velocity
+    std::vector<float> u[2];   ///< its rate, the horizontal surface velocity, m/s; empty with xi
 };
 
 /// A ripple solver on a rows × cols grid of square cells (row = z, column = x, row-major),
@@ -78,6 +96,28 @@ public:
     virtual bool onGpu() const = 0;
     /// Where it runs, for the log: "cpu", "cpu (FFTW)", "gpu (compute shaders)", ….
     virtual const char* backendName() const = 0;
+
+    // --- nesting: coarse levels of this model around the patch's grid (ripples.levels > 1; the
+    // stack, interaction/ripple_levels.h, asks a model only this). A model that cannot be nested
+    // keeps the defaults: levelRefusal() says why, and the Def's check refuses levels > 1.
+
+    /// Why this model cannot be a coarse level, or null when it can (the default: it cannot).
+    virtual const char* levelRefusal() const { return "this ripple model has no coarse levels (RippleSolver::makeLevel)"; }
+    /// A solver of this model and settings on the same grid size with cells `cellSize` metres,
+    /// still water: a coarse level (its keepLevelState full from its first step). Null where
+    /// levelRefusal() is not.
+    virtual std::unique_ptr<RippleSolver> makeLevel(float /*cellSize*/) const { return nullptr; }
+    /// The width of the absorbing band, cells, as the solver clamps it: the composite's fade band.
+    virtual int spongeCells() const { return 1; }
+    /// addSphere's decision and source without queuing it: true and `out` set when it stamps.
+    virtual bool planLevelSource(const BoundingSphere& /*sphere*/, SphereContact& /*contact*/, const SphereMotion& /*motion*/,
+                                 LevelSource& /*out*/) const {
+        return false;
+    }
+    /// Queues a source (planLevelSource's, or one carried from a finer level) for the next step.
+    virtual void addLevelSource(const LevelSource& /*source*/) {}
+    /// The state the last step left, into `out` (each vector rows·cols, or xi, u empty).
+    virtual void keepLevelState(LevelState& /*out*/) const {}
 };
 
 /// Bilinear sample of a row-major rows × cols level (float or double) at grid position g,

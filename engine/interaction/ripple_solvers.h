@@ -19,8 +19,8 @@ struct RippleDefError {
 
 /// A list of solver registrations. Each Model has: NAME (ripples.model's word), Def (its own
 /// keys of [ripples], with describe()), KNOB (the key a live panel offers), validate(const
-/// RippleDef&), make(const RippleDef&) (the CPU solver) and moveToGpu(RippleSolver&) (defined
-/// in its gpu/ folder, in the GL library).
+/// RippleDef&), make(const RippleDef&) (the CPU solver), moveToGpu(RippleSolver&) (defined
+/// in its gpu/ folder, in the GL library) and stepArrays(RippleArrays&) (the `ripple` tool).
 template <class... Models> struct RippleModelList {
     static constexpr std::size_t COUNT = sizeof...(Models);
     static constexpr std::array<const char*, COUNT> NAMES{Models::NAME...};

@@ -1,6 +1,7 @@
-// Bounding-sphere stamping of the ripple field: [Kang2008] eq. 3–7 and Table 2 (docs/references.md#ripple-layer).
-// An object is a set of spheres; each sphere, each step, decides by Table 2 whether to stamp
-// its footprint into Vh(t) (eq. 5) and rewrite Vh(t−1) over it (eq. 7).
+// Bounding spheres and their Table 2 decision, [Kang2008] eq. 3–7 (docs/references.md#ripple-layer),
+// shared by every ripple model: an object is a set of spheres; each sphere, each step, decides by
+// Table 2 whether it stamps, and the model makes of the stamp its own source (kang2008 writes the
+// footprint into its field, kang2008/footprint_stamp.h; ewave a pressure).
 #pragma once
 
 #include <algorithm>
@@ -13,8 +14,6 @@
 #include <glm/vec3.hpp>
 
 namespace ob::interaction {
-
-class RippleField;  // kang2008's field: stampFootprint and stepSphere write it
 
 /// SD of eq. 5: which half of the sphere shapes the water.
 enum class SphereDirection : int8_t {
@@ -142,13 +141,6 @@ inline bool updateContact(SphereContact& c, float centreY, float radius, float s
 }
 
 
-/// Eq. 5 then eq. 7 over the footprint centred on cell (cx, cz):
-///   Vh(t) = base + PH·heightScale,  Vh(t−1) = Vh(t) − Vh(t)·af,
-/// with base in m and heightScale = SD·SHR·cell size (m per cell of PH). Cells outside the
-/// field and on its outer ring (held at 0) are skipped.
-void stampFootprint(RippleField& field, const FootprintProfile& footprint, int cx, int cz, float base,
-                    float heightScale, float af);
-
 /// Where a sphere is and how it moves this step.
 struct SphereMotion {
     float gridX = 0.0f;     ///< centre x in field cells (column; cell centres at integers)
@@ -199,11 +191,6 @@ inline bool planStamp(int rows, int cols, float cellSize, const BoundingSphere& 
     out.heightScale = sd * def.heightRatio * cellSize;
     return true;
 }
-
-/// Table 2 steps 1–6 for one sphere: planStamp, then stampFootprint with the footprint of SR
-/// from the cache. Returns true if it stamped.
-bool stepSphere(RippleField& field, FootprintCache& cache, float cellSize, const BoundingSphere& def,
-                SphereContact& contact, const SphereMotion& motion);
 
 /// Table 2 for one sphere, as stepSphere decides it, without touching a field: updates the
 /// contact and, when the sphere stamps this step, fills `out` with the stamp stepSphere would

@@ -194,7 +194,10 @@ int benchFrame(const FrameBenchArgs& a) {
     table.setting("size", std::to_string(w) + "x" + std::to_string(h) + " headless");
     table.setting("frames", std::to_string(a.frames) + " measured after " + std::to_string(a.warmup) +
                                 " warm-up; medians; one simulation step per frame");
-    table.setting("passes", "frame: wall ms frame to frame; other names: CPU ms of a phase; gpu.NAME: GPU ms of a timed span");
+    table.setting("passes", "frame: wall ms frame to frame; main_cpu: the main thread's CPU ms per frame (CLOCK_THREAD_CPUTIME_ID: "
+                            "the simulation it ran or waited on and the render's submission, not the rasteriser's threads); "
+                            "workers_cpu: the simulation workers' CPU ms per frame, summed (the pool, the pipelined steps); other "
+                            "names: wall ms of a phase on the main thread; gpu.NAME: GPU ms of a timed span");
     for (const std::string& s : a.sets) table.setting("set", s);
     if (const auto* d = sandbox.world().resource<DynamicScale>(); dynamic && d && d->control) {
         const double frameMs = timings.empty() ? 0.0 : timings.front().second;

@@ -4,7 +4,7 @@
 #include "environment/environment_def.h"
 #include "interaction/kang2008/ripple_field.h"
 #include "interaction/sphere_stamp.h"
-#include "interaction/stamp_batch.h"
+#include "interaction/kang2008/stamp_batch.h"
 
 #include <cstdint>
 #include <utility>

@@ -34,10 +34,11 @@ struct OceanState {
     std::unique_ptr<ocean::SeaFade> fade;          ///< the cross-fade running (kept after its end: null only before the first change)
     std::uint64_t seaVersion = 0;                  ///< counts the steps a fade changed h̃0, λ or the waves (the GPU twin follows)
     std::unique_ptr<ocean::OceanFftCpu> cpu;       ///< FFTW maps (the CPU backend, and the query's data)
-    /// With the GPU backend the query's maps of the next step are computed on another thread
-    /// while this frame renders (the step times are known ahead); null otherwise.
+    /// With the GPU backend or [sim] pipelined the query's maps of the next step are computed on
+    /// another thread while this frame renders (the step times are known ahead); null otherwise.
     std::unique_ptr<ocean::OceanFftCpu> cpuNext;
     std::future<void> prefetch;                    ///< cpuNext->update(prefetchTime) in flight
+    bool pipelined = false;                        ///< [sim] pipelined: cpuNext made at the first step (pipelineWater)
     double prefetchTime = -1.0;
     std::unique_ptr<water::CompositeWater> water;  ///< the WaterQuery: Gerstner + cascades + ripples
     double mapsTime = -1.0;                        ///< time of the CPU maps (s)
@@ -55,6 +56,10 @@ void oceanSystem(ecs::World& world, const ecs::Tick& tick);
 /// `waves`: resolveWaves(gerstner, def), checked by the caller.
 void changeSea(ecs::World& world, const ocean::OceanDef& def, const ocean::GerstnerDef& gerstner,
                std::vector<ocean::GerstnerWave> waves, double now);
+/// [sim] pipelined: the ocean's maps of the next step computed on another thread while the frame
+/// goes on (a second map buffer, OceanState::cpuNext, made at the first ocean step), and the ripple patch's coarse levels
+/// stepped on a worker (RipplePatch::setPipelined). The state is the same bits.
+void pipelineWater(ecs::World& world);
 /// Creates the ripple patch resource from the scene's [ripples] (nothing when disabled) and
 /// adds it to the ocean's query; stepSeconds: the simulation step (s).
 void addRipples(ecs::World& world, const interaction::RippleDef& def, float stepSeconds);

@@ -1,11 +1,11 @@
 // `oceanbox ripple`: kang2008 loads Vh(t) and Vh(t−1), steps eq. 1–2 with the fixed boundary and
-// saves Vh(t); ewave loads h and v, steps them exactly per Fourier mode and saves h.
+// saves Vh(t); ewave loads h and v, steps them exactly per Fourier mode and saves h (each model's
+// stepArrays, through the registration table: interaction/ripple_arrays.h).
 #include "tools/cmd_ripple.h"
 
 #include "core/error.h"
 #include "core/npy.h"
-#include "interaction/ewave/ewave_field.h"
-#include "interaction/kang2008/ripple_field.h"
+#include "interaction/ripple_arrays.h"
 
 #include <algorithm>
 #include <climits>
@@ -98,18 +98,15 @@ int ewaveCommand(const RippleArgs& args) {
     NpyArray v;
     if (!args.vel.empty()) v = readSameShape(args.vel, "--vel", h, args.in);
 
-    // --- solve
-    interaction::EWaveField field(int(h.shape[0]), int(h.shape[1]), args.cellSize, boundary);
-    field.setDamping(args.damping, args.viscosity);
-    std::copy(h.data.begin(), h.data.end(), field.editHeight().begin());
-    if (!v.data.empty()) std::copy(v.data.begin(), v.data.end(), field.editVelocity().begin());
-    field.syncHeight();
-    for (int k = 0; k < args.steps; ++k) field.step(args.dt);
-    checkSolved(field.height().data(), h.shape, args,
+    // --- solve (the model's stepArrays, through the registration table)
+    interaction::RippleArrays field{int(h.shape[0]), int(h.shape[1]), h.data, v.data, args.cellSize, args.dt, boundary,
+                                    args.damping, args.viscosity, args.steps};
+    interaction::stepRippleArrays(args.model, field);
+    checkSolved(field.height.data(), h.shape, args,
                 (args.vel.empty() ? "" : ", --vel " + args.vel) + ", --cell-size " + numberText(args.cellSize) + ", --dt " +
                     numberText(args.dt));
 
-    writeNpy(args.out, h.shape, field.height().data());
+    writeNpy(args.out, h.shape, field.height.data());
     return 0;
 }
 
@@ -135,15 +132,13 @@ int rippleCommand(const RippleArgs& args) {
     NpyArray p;
     if (!args.prev.empty()) p = readSameShape(args.prev, "--prev", h, args.in);
 
-    // --- solve
-    interaction::RippleField field(int(h.shape[0]), int(h.shape[1]), interaction::RippleBoundary::Fixed);
-    std::copy(h.data.begin(), h.data.end(), field.current().begin());
-    const std::vector<float>& prevData = args.prev.empty() ? h.data : p.data;
-    std::copy(prevData.begin(), prevData.end(), field.previous().begin());
-    for (int k = 0; k < args.steps; ++k) field.step(args.damping);
-    checkSolved(field.current().data(), h.shape, args, args.prev.empty() ? "" : ", --prev " + args.prev);
+    // --- solve (the model's stepArrays, through the registration table)
+    interaction::RippleArrays field{int(h.shape[0]), int(h.shape[1]), h.data, p.data, 1.0f, 1.0f, interaction::RippleBoundary::Fixed,
+                                    args.damping, 0.0f, args.steps};
+    interaction::stepRippleArrays(args.model, field);
+    checkSolved(field.height.data(), h.shape, args, args.prev.empty() ? "" : ", --prev " + args.prev);
 
-    writeNpy(args.out, h.shape, field.current().data());
+    writeNpy(args.out, h.shape, field.height.data());
     return 0;
 }
 

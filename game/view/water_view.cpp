@@ -6,7 +6,6 @@
 #include "foam/foam_whitecaps.h"
 #include "gfx/gl.h"
 #include "interaction/gpu/attach_gpu.h"
-#include "interaction/ewave/ewave_levels.h"
 #include "interaction/ripple_patch.h"
 #include "ocean/gpu/ocean_fft_gpu.h"
 #include "ocean/gpu/ocean_textures.h"
@@ -27,10 +26,12 @@ void attachWaterGpu(ecs::World& world) {
         // Auto: the CPU up to 1024² even beside a GPU, where its step (0.1 ms at 256², 0.3 ms at
         // 1024²) costs less than the GPU's stamps, step and read-back stall (2.3 ms and 4.3 ms
         // on an H200 in the default scene).
-        // The same switch for every model: its moveToGpu (kang2008 RippleFieldGpu, ewave EWaveGpu)
-        // warns, and leaves it on the CPU, where its twin cannot run it.
+        // The same switch for every model: its moveToGpu warns, and leaves it on the CPU, where
+        // its GPU twin cannot run it.
+        // Levels: each on its own twin when asked ("gpu"); auto keeps them on the CPU, where the
+        // pipelined steps run them beside the frame.
         const bool gpu = backend == Backend::Gpu || (backend == Backend::Auto && !gfx::isSoftwareRenderer() && patch->def().resolution >= 2048 &&
-                                                   patch->def().levels == 1);  // levels: CPU only
+                                                   patch->def().levels == 1);
         if (gpu) interaction::attachGpu(*patch);
         logInfo("ripples: %s, %s backend, %d² cells of %g m", enumName(patch->def().model), patch->solver().backendName(),
                 patch->def().resolution, double(patch->def().cell_size));
@@ -44,7 +45,7 @@ void attachWaterGpu(ecs::World& world) {
     const bool gpu = ocean->def.backend == Backend::Gpu || (ocean->def.backend == Backend::Auto && !gfx::isSoftwareRenderer());
     if (gpu) {
         side.gpu = std::make_unique<ocean::OceanFftGpu>(ocean->def);
-        ocean->cpuNext = std::make_unique<ocean::OceanFftCpu>(ocean->def);
+        if (!ocean->cpuNext) ocean->cpuNext = std::make_unique<ocean::OceanFftCpu>(ocean->def);
     }
     logInfo("ocean: %s backend, %d² × %d cascade(s)", gpu ? "gpu (compute shaders)" : "cpu (FFTW)", ocean->def.resolution,
             ocean->def.cascades);
@@ -83,11 +84,11 @@ gfx::WaterView prepareWaterView(ecs::World& world, double time) {
         view.rippleCells = patch->def().resolution;
         view.rippleOrigin = patch->origin();
         view.rippleCellSize = patch->def().cell_size;
-        if (const interaction::EWaveLevels* levels = patch->levels()) {  // the composite (docs/ewave.md#levels)
-            for (int L = 1; L < levels->count(); ++L)
-                view.rippleLevels.push_back({levels->height(L).data(), levels->grid(L).origin(), levels->grid(L).cell});
-            view.rippleFadeCells = levels->sponge();
+        for (int L = 1; L < patch->levelCount(); ++L) {  // the composite (docs/ewave.md#levels), its cubic in time on the GPU
+            const interaction::LevelDraw d = patch->levelDraw(L);
+            view.rippleLevels.push_back({{d.h0.data(), d.h1.data(), d.v0.data(), d.v1.data()}, d.version, d.weights, d.extremes, d.origin, d.cellSize});
         }
+        view.rippleFadeCells = patch->fadeCells();
     }
     if (const foam::FoamMap* foam = foamMap(world)) {
         view.foam = foam->coverage().data();

@@ -77,6 +77,7 @@ Sandbox::Sandbox(const SceneDef& scene) : m_schedule(scene.sim) {
     spawnCamera(m_world, def.camera);
     addOcean(m_world, def.ocean, def.gerstner);
     addRipples(m_world, def.ripples, float(m_schedule.stepSeconds()));
+    if (def.sim.pipelined) pipelineWater(m_world);
     addCurrents(m_world, def.currents, def.physics.water_density);
     addSplashFoam(m_world, def.splash, def.foam, def.sim.seed);
     for (const StampSource& source : {bodySource(), cannonSource(), fishSource()}) addStampSource(m_world, source);
@@ -160,6 +161,8 @@ std::vector<std::pair<std::string, double>> Sandbox::timings(size_t skipFrames) 
     std::vector<std::pair<std::string, double>> out;
     if (timer.frameSamples().empty()) return out;
     out.emplace_back("frame", median(timer.frameSamples()));
+    out.emplace_back("main_cpu", median(timer.mainCpuSamples()));
+    out.emplace_back("workers_cpu", median(timer.workerCpuSamples()));
     for (int p = 0; p < ecs::PHASE_COUNT; ++p) out.emplace_back(ecs::phaseName(ecs::Phase(p)), median(timer.cpuSamples(ecs::Phase(p))));
     for (int p = 0; p < ecs::PHASE_COUNT; ++p)
         if (!timer.gpuSamples(ecs::Phase(p)).empty())

@@ -8,8 +8,9 @@
 #include "platform/platform.h"
 #include "sim/fish_swarm.h"
 #include "interaction/kang2008/ripple_field.h"
+#include "interaction/kang2008/footprint_stamp.h"
 #include "interaction/sphere_stamp.h"
-#include "interaction/stamp_batch.h"
+#include "interaction/kang2008/stamp_batch.h"
 
 #include <benchmark/benchmark.h>
 

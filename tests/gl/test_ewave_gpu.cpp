@@ -326,3 +326,47 @@ TEST_CASE("RipplePatch on the ewave GPU twin: the horizontal velocity and veloci
     }
     CHECK(gfx::glErrorCount() == errorsBefore);
 }
+
+TEST_CASE("ewave levels on the GPU twins (ripples.backend = gpu, levels = 3) step as their CPU twins", "[ewave_gpu][levels]") {
+    auto context = glContext();
+    const int errorsBefore = gfx::glErrorCount();
+    RippleDef def;
+    def.model = interaction::rippleModel("ewave");
+    def.resolution = 32;
+    def.cell_size = 0.25f;
+    def.levels = 3;
+    def.boundary = interaction::RippleBoundary::Absorbing;
+    def.sponge_width = 4;
+    RipplePatch cpu(def), gpu(def);
+    REQUIRE(attachGpu(gpu));
+    for (int L = 1; L < 3; ++L) {
+        CHECK(gpu.levels()->solver(L).onGpu());
+        CHECK_FALSE(cpu.levels()->solver(L).onGpu());
+    }
+    interaction::BoundingSphere sphere;
+    sphere.radius = 0.6f;
+    sphere.direction = interaction::SphereDirection::Down;
+    const float dt = 1.0f / 60.0f;
+    for (int k = 0; k < 40; ++k) {  // a sphere crossing level 0 into level 1, the patch following it
+        const glm::vec2 at(-2.0f + 4.0f * float(k) * dt, 0.3f);
+        for (RipplePatch* p : {&cpu, &gpu}) {
+            interaction::SphereContact contact;
+            p->centerOn(at);
+            p->stampSphere(sphere, contact, glm::vec3(at.x, 0.0f, at.y), glm::vec3(4.0f, 0.0f, 0.0f), 1000.0f, 0.0f);
+            p->step(dt);
+        }
+    }
+    // Every level against its CPU twin, with the tolerance of the one-grid twin above.
+    for (int L = 1; L < 3; ++L) {
+        INFO("level " << L);
+        const std::span<const double> c = dynamic_cast<const interaction::EWaveSolver&>(cpu.levels()->solver(L)).field().heightState();
+        const std::span<const double> g = dynamic_cast<const interaction::EWaveSolver&>(gpu.levels()->solver(L)).field().heightState();
+        double peak = 0.0;
+        for (double h : c) peak = std::max(peak, std::abs(h));
+        CHECK(peak > 0.0);  // the sphere's source reached the level
+        const double error = relativeError(g, c);
+        INFO("max |gpu - cpu| / max |cpu| " << error);
+        CHECK(error <= 1e-5 * std::log2(32.0));
+    }
+    CHECK(gfx::glErrorCount() == errorsBefore);
+}

@@ -6,6 +6,7 @@
 #include "gfx/gpu_bindings.h"
 #include "ewave_bindings.glsl"
 #include "kang2008_bindings.glsl"
+#include "ripple_levels_bindings.glsl"
 #include "gfx/renderer.h"
 #include <glm/gtc/matrix_transform.hpp>
 #include "gfx/shader.h"
@@ -269,4 +270,31 @@ TEST_CASE("the ripple solvers' compute programs use the numbers of their binding
                         {"Sponge", EWAVE_SPONGE_BUFFER}, {"Sum", EWAVE_SUM_BUFFER}},
                        EWAVE_TILE);
     CHECK(gfx::glErrorCount() == errorsBefore);
+}
+
+TEST_CASE("the ripple levels' compute program uses the numbers of its bindings file", "[gl][levels][bindings]") {
+    auto platform = platform::createHeadlessPlatform({64, 64});
+    const gfx::Program program = gfx::loadProgram("ripple_levels.comp", {"ripple_levels.comp"});
+    const GLuint id = program.id();
+    // Samplers and images by their unit, the rest by location, as water_layers.cpp binds them.
+    const std::map<std::string, int> expected = {
+        {"u_states", RIPPLE_LEVEL_STATES_UNIT},         {"u_heights", RIPPLE_LEVEL_HEIGHT_IMAGE},
+        {"u_levelSlopes", RIPPLE_LEVEL_SLOPE_IMAGE},    {"u_level", RIPPLE_LEVEL_LOCATION},
+        {"u_weights", RIPPLE_LEVEL_WEIGHTS_LOCATION},   {"u_grid", RIPPLE_LEVEL_GRID_LOCATION}};
+    std::set<std::string> seen;
+    for (GLuint i = 0; i < GLuint(activeCount(id, GL_UNIFORM)); ++i) {
+        const std::string name = resourceName(id, GL_UNIFORM, i);
+        INFO("uniform " << name);
+        REQUIRE(expected.count(name) == 1);
+        const GLint type = resourceValue(id, GL_UNIFORM, i, GL_TYPE), location = resourceValue(id, GL_UNIFORM, i, GL_LOCATION);
+        GLint actual = location;
+        if (isSampler(type) || isImage(type)) glGetUniformiv(id, location, &actual);
+        CHECK(actual == expected.at(name));
+        seen.insert(name);
+    }
+    CHECK(seen.size() == expected.size());
+    GLint local[3] = {0, 0, 0};
+    glGetProgramiv(id, GL_COMPUTE_WORK_GROUP_SIZE, local);
+    CHECK(local[0] == RIPPLE_LEVEL_TILE);
+    CHECK(local[1] == RIPPLE_LEVEL_TILE);
 }

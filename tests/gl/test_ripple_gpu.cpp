@@ -4,6 +4,7 @@
 #include "gfx/gl.h"
 #include "interaction/kang2008/ripple_field.h"
 #include "interaction/kang2008/gpu/ripple_gpu.h"
+#include "interaction/kang2008/footprint_stamp.h"
 #include "interaction/sphere_stamp.h"
 #include "platform/platform.h"
 

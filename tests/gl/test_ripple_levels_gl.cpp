@@ -1,12 +1,13 @@
 // The water shader's ripple composite (shaders/common_water.glsl rippleHeight: level 0's texture
-// and the coarse ewave levels' array layers, placed by WaterUniforms::rippleLevels and
+// and the coarse ewave levels' array layers, made on the GPU from each level's two states and
+// the cubic's weights by shaders/ripple_levels.comp, placed by WaterUniforms::rippleLevels and
 // cross-faded by rippleFade) against the CPU's RipplePatch::heightAt, docs/ewave.md#levels.
 #include "gfx/gl.h"
 #include "gfx/gpu_bindings.h"
 #include "gfx/shader.h"
 #include "gfx/water_layers.h"
 #include "gfx/water_pass.h"
-#include "interaction/ewave/ewave_levels.h"
+#include "interaction/ripple_levels.h"
 #include "interaction/ripple_patch.h"
 #include "platform/platform.h"
 #include "support/shader_probe.h"
@@ -52,15 +53,17 @@ TEST_CASE("the water shader's ripple composite equals RipplePatch::heightAt acro
         if (s % 20 == 0) patch.addCrater(ship + glm::vec2(-9.0f, 3.0f + 0.1f * float(s)), -0.01);
         patch.step(dt);
     }
-    const interaction::EWaveLevels& levels = *patch.levels();
+    const interaction::RippleLevels& levels = *patch.levels();
 
     gfx::WaterView view;
     view.ripples = patch.height().data();
     view.rippleCells = def.resolution;
     view.rippleOrigin = patch.origin();
     view.rippleCellSize = def.cell_size;
-    for (int L = 1; L < levels.count(); ++L)
-        view.rippleLevels.push_back({levels.height(L).data(), levels.grid(L).origin(), levels.grid(L).cell});
+    for (int L = 1; L < levels.count(); ++L) {  // the states and the cubic's weights: the heights made on the GPU
+        const interaction::LevelDraw d = patch.levelDraw(L);
+        view.rippleLevels.push_back({{d.h0.data(), d.h1.data(), d.v0.data(), d.v1.data()}, d.version, d.weights, d.extremes, d.origin, d.cellSize});
+    }
     view.rippleFadeCells = levels.sponge();
     gfx::WaterLayers layers;
     gfx::glsl::WaterUniforms u{};

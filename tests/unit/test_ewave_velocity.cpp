@@ -4,7 +4,7 @@
 // nested levels' composite cross-fades it as it does h and v; kang2008 has none.
 #include "core/parallel.h"
 #include "core/thread_choice.h"
-#include "interaction/ewave/ewave_levels.h"
+#include "interaction/ripple_levels.h"
 #include "interaction/ewave/ewave_solver.h"
 #include "interaction/ripple_patch.h"
 
@@ -158,13 +158,13 @@ TEST_CASE("ewave horizontal velocity: with levels the patch reads the levels' cr
     const int n = 64;
     const double cell0 = 0.25, cell1 = 1.0, a0 = 0.004, a1 = 0.02, dt = 1.0 / 60.0;
     RipplePatch patch(velocityDef(rippleModel("ewave"), n, float(cell0), 2));
-    EWaveLevels& levels = *patch.levels();
+    RippleLevels& levels = *patch.levels();
     REQUIRE(levels.grid(1).cell == float(cell1));
     const Mode fine{3, 0}, coarse{2, 1};
     EWaveSolver& solver0 = *patch.solverAs<EWaveSolver>();
     setTravelling(solver0.field(), fine, a0);
     solver0.fieldEdited();
-    setTravelling(levels.solver(1).field(), coarse, a1);
+    setTravelling(levels.solverAs<EWaveSolver>(1)->field(), coarse, a1);
     const glm::dvec2 k0 = fine.wavevector(n, cell0), k1 = coarse.wavevector(n, cell1);
     const double w0 = solver0.field().omega(glm::length(k0)), w1 = solver0.field().omega(glm::length(k1));
     // Theory at each level's cell centres (cell (x, z) at (x, z)·cell of that level's own wave), per axis.

@@ -6,6 +6,7 @@
 #include "core/npy.h"
 #include "interaction/kang2008/ripple_field.h"
 #include "interaction/ripple_patch.h"
+#include "interaction/kang2008/footprint_stamp.h"
 #include "interaction/sphere_stamp.h"
 #include "world/sandbox.h"
 #include "support/test_support.h"

@@ -1,6 +1,7 @@
 // Bounding spheres, [Kang2008] eq. 3–7 and Table 2 (docs/references.md#ripple-layer): footprints by hand, AF by
 // hand, the stamp/no-stamp decisions, and the remembered base height.
 #include "interaction/kang2008/ripple_field.h"
+#include "interaction/kang2008/footprint_stamp.h"
 #include "interaction/sphere_stamp.h"
 
 #include <catch2/catch.hpp>

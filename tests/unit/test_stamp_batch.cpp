@@ -5,7 +5,7 @@
 #include "sim/fish_swarm.h"
 #include "interaction/kang2008/ripple_field.h"
 #include "interaction/sphere_stamp.h"
-#include "interaction/stamp_batch.h"
+#include "interaction/kang2008/stamp_batch.h"
 
 #include <catch2/catch.hpp>
 

@@ -12,6 +12,7 @@ namespace ob::interaction {
 struct RippleDef;
 class RippleSolver;
 struct RippleDefError;
+struct RippleArrays;
 
 /// ewave's own keys of [ripples]. The water's own damping, its kinematic viscosity, comes from
 /// [environment] water_viscosity (EWaveMedium::of); these are gameplay extras, off by default, so
@@ -21,8 +22,6 @@ struct EWaveDef {
     float viscosity = 0.0f;   ///< extra viscosity on top of the water's, m²/s, [0, 10]: a wave of wavenumber k
                               ///< also decays as exp(−2νk²t) (short waves first); 0 = only the water's
     float depth = 0.0f;       ///< uniform water depth d, m, [0, 1e4]; 0 = deep (no bottom): ω² = (g·k + (σ/ρ)·k³)·tanh(k·d)
-    int levels = 1;           ///< nested grids, [1, 4]: level L has the same N, cells 4^L × cell_size and steps every 4^L-th
-                              ///< frame (docs/ewave.md#levels); 1 = one grid
 };
 
 template <class V> void describe(V& v, EWaveDef& d) {
@@ -30,8 +29,6 @@ template <class V> void describe(V& v, EWaveDef& d) {
     v.field("viscosity", d.viscosity, range(0, 10),
             "ewave: extra viscosity on top of environment.water_viscosity, damps short waves (m2/s; 0 = none)", LIVE);
     v.field("depth", d.depth, range(0, 1e4), "ewave: uniform water depth (m; 0 = deep water, no bottom)");
-    v.field("levels", d.levels, range(1, 4),
-            "ewave: nested grids of the same resolution, cells 4x coarser each (1 = one grid; docs/ewave.md#levels)");
 }
 
 /// The registration of ewave (interaction/ripple_solvers.h lists it).
@@ -42,13 +39,15 @@ struct EWaveModel {
     static constexpr RippleKnob<Def> KNOB{"ripples.decay_time", &Def::decay_time, "ripple decay s", 0.0f, 60.0f, "%.1f",
                                           "extra e-folding time of the ripples' amplitude (0 = none: the water's own "
                                           "viscosity only; rings leave by spreading and through the border)"};
-    /// Checks across keys this model adds: levels > 1 runs on the CPU only (backend "gpu" refused).
+    /// Checks across keys this model adds (none: every key is checked by its range).
     static std::vector<RippleDefError> validate(const RippleDef& def);
     /// The CPU solver (EWaveField, FFTW) of a checked Def (ewave_solver.cpp).
     static std::unique_ptr<RippleSolver> make(const RippleDef& def);
     /// Moves a solver `make` made onto EWaveGpu (ewave/gpu/, the GL library only); false, with
     /// a warning, above EWaveGpu::MAX_RESOLUTION.
     static bool moveToGpu(RippleSolver& solver);
+    /// The `ripple` tool's run of this model on plain arrays (interaction/ripple_arrays.h).
+    static void stepArrays(RippleArrays& arrays);
 };
 
 } // namespace ob::interaction

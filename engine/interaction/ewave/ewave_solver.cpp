@@ -1,17 +1,25 @@
 // The ewave solver: EWaveField and its pressure sources behind RippleSolver.
 #include "interaction/ewave/ewave_solver.h"
 
+#include "interaction/ripple_arrays.h"
 #include "interaction/ripple_def.h"
 
 #include <algorithm>
 
 namespace ob::interaction {
 
-std::vector<RippleDefError> EWaveModel::validate(const RippleDef& def) {
-    // The coarse levels (ewave_levels.h) step on the CPU; the GPU twin holds one grid.
-    if (def.levels > 1 && def.backend == Backend::Gpu)
-        return {{"levels", "levels > 1 runs on the CPU only: set ripples.backend = \"cpu\" (or \"auto\"), or levels = 1"}};
-    return {};
+// Every key of ewave's is checked by its range; the coarse levels (ripple_levels.h) run on the
+// GPU as level 0 does, each on its own twin (attachGpu).
+std::vector<RippleDefError> EWaveModel::validate(const RippleDef&) { return {}; }
+
+void EWaveModel::stepArrays(RippleArrays& a) {
+    EWaveField field(a.rows, a.cols, a.cellSize, a.boundary);
+    field.setDamping(a.damping, a.viscosity);
+    std::copy(a.height.begin(), a.height.end(), field.editHeight().begin());
+    if (!a.second.empty()) std::copy(a.second.begin(), a.second.end(), field.editVelocity().begin());
+    field.syncHeight();
+    for (int k = 0; k < a.steps; ++k) field.step(a.dt);
+    std::copy(field.height().begin(), field.height().end(), a.height.begin());
 }
 
 std::unique_ptr<RippleSolver> EWaveModel::make(const RippleDef& def) {
@@ -21,7 +29,7 @@ std::unique_ptr<RippleSolver> EWaveModel::make(const RippleDef& def) {
 
 EWaveSolver::EWaveSolver(int n, float cellSize, const EWaveDef& def, const EWaveMedium& medium, RippleBoundary boundary,
                          int spongeWidth)
-    : m_field(n, n, cellSize, boundary, spongeWidth), m_cellSize(cellSize) {
+    : m_field(n, n, cellSize, boundary, spongeWidth), m_cellSize(cellSize), m_def(def), m_spongeAsked(spongeWidth) {
     m_field.setMedium(medium);
     m_field.setDamping(def.decay_time, def.viscosity);
 }
@@ -42,6 +50,36 @@ bool EWaveSolver::planSource(const BoundingSphere& sphere, SphereContact& contac
         return false;
     out = ewaveSource(stamp, motion.gridX, motion.gridZ, m_cellSize, float(m_field.medium().gravity), motion.verticalVelocity);
     return true;
+}
+
+bool EWaveSolver::planLevelSource(const BoundingSphere& sphere, SphereContact& contact, const SphereMotion& motion,
+                                  LevelSource& out) const {
+    EWaveSource s;
+    if (!planSource(sphere, contact, motion, s)) return false;
+    out = {s.gx, s.gz, s.radiusCells, s.accel};
+    return true;
+}
+
+std::unique_ptr<RippleSolver> EWaveSolver::makeLevel(float cellSize) const {
+    auto level = std::make_unique<EWaveSolver>(m_field.rows(), cellSize, m_def, m_field.medium(), m_field.boundary(), m_spongeAsked);
+    level->m_field.keepHorizontalDisplacement(true);
+    return level;
+}
+
+void EWaveSolver::keepLevelState(LevelState& out) const {
+    const size_t cells = m_field.height().size();
+    const std::span<const float> h = m_field.height();
+    out.h.assign(h.begin(), h.end());
+    const std::span<const double> v = m_field.velocityState();
+    double mean = 0.0;
+    for (double x : v) mean += x;
+    mean /= double(v.size());
+    out.v.resize(cells);
+    std::transform(v.begin(), v.end(), out.v.begin(), [mean](double x) { return float(x - mean); });
+    for (int a = 0; a < 2; ++a) {
+        out.xi[a].assign(m_field.horizontalDisplacement(a).begin(), m_field.horizontalDisplacement(a).end());
+        out.u[a].assign(m_field.horizontalVelocity(a).begin(), m_field.horizontalVelocity(a).end());
+    }
 }
 
 void EWaveSolver::setObstruction(std::span<const ObstructionCell> cells) {
@@ -129,6 +167,9 @@ void EWaveSolver::hashState(StateHasher& h) const {
 }
 
 // The GPU twin takes the damping from the field at its next step (the medium, depth included, is set once).
-void EWaveSolver::retune(const RippleDef& def) { m_field.setDamping(def.decay_time, def.viscosity); }
+void EWaveSolver::retune(const RippleDef& def) {
+    m_def = def;
+    m_field.setDamping(def.decay_time, def.viscosity);
+}
 
 } // namespace ob::interaction

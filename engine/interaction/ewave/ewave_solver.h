@@ -49,7 +49,7 @@ public:
     /// that volume back as a uniform shift, so a crater moves water and makes none: the mean
     /// level, the k = 0 mode, is kept (its waves, every k > 0, are the crater's).
     void addHeight(int x, int z, double dh) override;
-    /// Queues a source (grid coordinates) for the next step, as addSphere does (the coarse levels, ewave_levels.h).
+    /// Queues a source (grid coordinates) for the next step, as addSphere does.
     void addSource(const EWaveSource& source) { m_sources.push_back(source); }
     /// The sources queued for the next step, in order (the last one addSphere's newest).
     std::span<const EWaveSource> queuedSources() const { return m_sources; }
@@ -76,11 +76,26 @@ public:
     bool onGpu() const override { return m_offload != nullptr; }
     const char* backendName() const override { return onGpu() ? "gpu (compute shaders, float FFT)" : "cpu (FFTW)"; }
 
+    // --- a coarse level of the stack (interaction/ripple_levels.h)
+    const char* levelRefusal() const override { return nullptr; }
+    /// The same medium, damping, border and sponge on cells of `cellSize` m; it keeps the
+    /// horizontal displacement too (the stack's cubic in time of u reads ξ).
+    std::unique_ptr<RippleSolver> makeLevel(float cellSize) const override;
+    int spongeCells() const override { return m_field.spongeWidth(); }
+    bool planLevelSource(const BoundingSphere& sphere, SphereContact& contact, const SphereMotion& motion,
+                         LevelSource& out) const override;
+    void addLevelSource(const LevelSource& s) override { m_sources.push_back({s.gx, s.gz, s.radiusCells, s.accel}); }
+    /// h's float copy, v less its mean (the sponge and a scroll leave some there: no motion, but
+    /// in the cubic's S·v terms it would move the level's mean between two states), ξ and u.
+    void keepLevelState(LevelState& out) const override;
+
 private:
     void obstruct();
 
     EWaveField m_field;
     float m_cellSize;                    // m
+    EWaveDef m_def;                      // the damping keys as last retuned (a coarse level's)
+    int m_spongeAsked;                   // the sponge width asked for, cells (a coarse level's)
     std::vector<EWaveSource> m_sources;  // this step's stamps, grid coordinates, applied over the step's dt
     std::unique_ptr<Offload> m_offload;
     double m_craterVolume = 0.0;         // Σ dh of addHeight since the last step, m (times the cell area), taken back by it

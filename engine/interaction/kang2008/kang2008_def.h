@@ -13,6 +13,7 @@ namespace ob::interaction {
 struct RippleDef;
 class RippleSolver;
 struct RippleDefError;
+struct RippleArrays;
 
 /// kang2008's own keys of [ripples].
 struct Kang2008Def {
@@ -37,6 +38,8 @@ struct Kang2008Model {
     /// Moves a solver `make` made onto its GPU twin (kang2008/gpu/, the GL library only: needs
     /// a current GL 4.3+ context). False leaves it on the CPU.
     static bool moveToGpu(RippleSolver& solver);
+    /// The `ripple` tool's run of this model on plain arrays (interaction/ripple_arrays.h).
+    static void stepArrays(RippleArrays& arrays);
 };
 
 } // namespace ob::interaction

@@ -1,16 +1,29 @@
 // The kang2008 solver: RippleField and Table 2 stamping behind RippleSolver.
 #include "interaction/kang2008/kang2008_solver.h"
 
+#include "interaction/kang2008/footprint_stamp.h"
+#include "interaction/ripple_arrays.h"
 #include "interaction/ripple_def.h"
+
+#include <algorithm>
 
 namespace ob::interaction {
 
 std::vector<RippleDefError> Kang2008Model::validate(const RippleDef& def) {
     if (def.boundary == RippleBoundary::Periodic)  // eq. 1–2 has no periodic form (ripple_field.h)
         return {{"boundary", "\"periodic\" needs ripples.model = \"ewave\" (kang2008 has \"fixed\" or \"absorbing\")"}};
-    if (def.levels > 1)  // nested grids are ewave's (docs/ewave.md#levels)
-        return {{"levels", "levels > 1 needs ripples.model = \"ewave\" (kang2008 runs on one grid: levels = 1)"}};
+    if (def.levels > 1)  // the solver's levelRefusal (docs/ewave.md#levels)
+        return {{"levels", std::string("levels > 1 needs ripples.model = \"ewave\" (") + Kang2008Solver::LEVEL_REFUSAL + ")"}};
     return {};
+}
+
+void Kang2008Model::stepArrays(RippleArrays& a) {
+    RippleField field(a.rows, a.cols, RippleBoundary::Fixed);
+    std::copy(a.height.begin(), a.height.end(), field.current().begin());
+    const std::vector<float>& previous = a.second.empty() ? a.height : a.second;
+    std::copy(previous.begin(), previous.end(), field.previous().begin());
+    for (int k = 0; k < a.steps; ++k) field.step(a.damping);
+    std::copy(field.current().begin(), field.current().end(), a.height.begin());
 }
 
 std::unique_ptr<RippleSolver> Kang2008Model::make(const RippleDef& def) {

@@ -68,6 +68,12 @@ public:
     void retune(const RippleDef& def) override;
     bool onGpu() const override { return m_offload != nullptr; }
     const char* backendName() const override { return onGpu() ? "gpu (compute shaders)" : "cpu"; }
+    /// Eq. 1–2 is a per-step scheme whose wave speed is one cell a step: a coarse level stepping
+    /// 4^L frames at once would be another model (LEVEL_REFUSAL).
+    const char* levelRefusal() const override { return LEVEL_REFUSAL; }
+
+    /// Why kang2008 has no coarse levels (levelRefusal, and the Def's check of ripples.levels).
+    static constexpr const char* LEVEL_REFUSAL = "kang2008 runs on one grid: levels = 1";
 
 private:
     RippleField m_field;

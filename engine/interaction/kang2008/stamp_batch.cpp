@@ -1,6 +1,6 @@
 // Batched bounding-sphere stamps ([Kang2008] eq. 5, 7 and Table 2; docs/references.md#ripple-layer): the list is
 // applied backwards, each cell written once by the last stamp that covers it.
-#include "interaction/stamp_batch.h"
+#include "interaction/kang2008/stamp_batch.h"
 
 #include "core/parallel.h"
 #include "core/simd.h"

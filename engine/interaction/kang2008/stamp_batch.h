@@ -2,7 +2,7 @@
 // stampFootprint called for each in list order, each cell written at most once ([Kang2008]
 // Table 2, docs/references.md#ripple-layer).
 #pragma once
-#include "interaction/kang2008/ripple_field.h"
+#include "interaction/kang2008/footprint_stamp.h"
 #include "interaction/sphere_stamp.h"
 
 #include <cstdint>
