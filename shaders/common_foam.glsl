@@ -16,6 +16,7 @@ const vec3 FOAM_ALBEDO_FRESH = vec3(0.82, 0.85, 0.86);  // fresh whitecap foam (
 const vec3 FOAM_ALBEDO_OLD = vec3(0.55, 0.60, 0.62);    // old foam: a thin film of bubbles over the water, greyer
 const vec3 FOAM_SUN = vec3(1.0, 0.92, 0.8) * 1.4;       // sunlight on a surface facing the sun (the objects' light, object_mesh.frag)
 const vec3 FOAM_SKY = vec3(0.30, 0.38, 0.48);           // skylight on an upward rough surface by day: about the day dome's mean radiance (common_sky.glsl)
+const vec3 FOAM_SKY_OVERCAST = vec3(0.30, 0.31, 0.33);  // ...under an overcast: its grey dome's mean (cloudRadiance)
 
 // ∫ clamp(u, 0, 1) du from −∞ to x.
 float foamRampIntegral(float x) { return x <= 0.0 ? 0.0 : (x < 1.0 ? 0.5 * x * x : x - 0.5); }
@@ -79,6 +80,6 @@ vec3 shadeFoam(vec3 color, vec2 world, vec3 n, vec3 sun, float jacobian, float r
     float alpha = laceAlpha * holes * (0.1 + 0.9 * density * density);
     // --- light: a rough white surface lying on the water (Lambert), greyer as it ages
     vec3 albedo = mix(FOAM_ALBEDO_OLD, FOAM_ALBEDO_FRESH, smoothstep(0.1, 0.9, density));
-    vec3 light = FOAM_SUN * sunTint(sun) * max(dot(n, sun), 0.0) + FOAM_SKY * daylight(sun);
+    vec3 light = FOAM_SUN * sunTint(sun) * max(dot(n, sun), 0.0) + mix(FOAM_SKY, FOAM_SKY_OVERCAST, cloudCover()) * daylight(sun);
     return mix(color, albedo * light, alpha);
 }

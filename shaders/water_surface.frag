@@ -102,7 +102,8 @@ void main() {
         o_color = finalColorUnderwater(seen, gl_FragCoord.xy);
         return;
     }
-    vec3 sky = skyRadiance(normalize(r), sun);
+    // Under clouds the baked cube holds their pattern (the formula only their mean).
+    vec3 sky = cloudCover() > 0.0 ? textureLod(u_sky, r, 0.0).rgb : skyRadiance(normalize(r), sun);
 
     // --- lookups into the targets, offset by the normal and the scrolling DU/DV map
     vec2 screen = gl_FragCoord.xy / frame.viewport.xy;
