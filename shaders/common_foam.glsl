@@ -16,7 +16,7 @@ const vec3 FOAM_ALBEDO_FRESH = vec3(0.82, 0.85, 0.86);  // fresh whitecap foam (
 const vec3 FOAM_ALBEDO_OLD = vec3(0.55, 0.60, 0.62);    // old foam: a thin film of bubbles over the water, greyer
 const vec3 FOAM_SUN = vec3(1.0, 0.92, 0.8) * 1.4;       // sunlight on a surface facing the sun (the objects' light, object_mesh.frag)
 const vec3 FOAM_SKY = vec3(0.30, 0.38, 0.48);           // skylight on an upward rough surface by day: about the day dome's mean radiance (common_sky.glsl)
-const vec3 FOAM_SKY_OVERCAST = vec3(0.30, 0.31, 0.33);  // ...under an overcast: its grey dome's mean (cloudRadiance)
+const vec3 FOAM_SKY_OVERCAST = vec3(0.21, 0.22, 0.24);  // ...under an overcast: its grey dome's mean (cloudRadiance)
 
 // ∫ clamp(u, 0, 1) du from −∞ to x.
 float foamRampIntegral(float x) { return x <= 0.0 ? 0.0 : (x < 1.0 ? 0.5 * x * x : x - 0.5); }

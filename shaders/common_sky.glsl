@@ -61,7 +61,7 @@ vec3 cloudRadiance(vec3 dir, vec3 sunDir) {
     float c = cloudCover();
     float up = clamp(dir.y, -1.0, 1.0);
     vec3 lit = vec3(1.0, 0.99, 0.97);
-    vec3 overcast = vec3(0.40, 0.42, 0.45) * (1.0 + 2.0 * max(up, 0.0)) / 3.0 * 1.5;
+    vec3 overcast = vec3(0.27, 0.28, 0.31) * (1.0 + 2.0 * max(up, 0.0)) / 3.0;  // a storm's dark overcast
     vec3 cloud = mix(lit, overcast, smoothstep(0.2, 1.0, c));
     float low = 1.0 - smoothstep(0.0, 0.25, sunDir.y);
     cloud *= mix(vec3(1.0), vec3(1.0, 0.6, 0.4), 0.6 * low) * daylight(sunDir);
