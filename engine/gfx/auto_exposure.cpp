@@ -17,7 +17,7 @@ constexpr float LONGEST_STEP_S = 0.25f;      // a stalled frame does not adapt i
 } // namespace
 
 float AutoExposureLaw::target(float logAverage) {
-    return std::clamp(KEY / std::max(logAverage, LUMINANCE_FLOOR), MIN_GAIN, MAX_GAIN);
+    return std::clamp(std::pow(KEY / std::max(logAverage, LUMINANCE_FLOOR), STRENGTH), MIN_GAIN, MAX_GAIN);
 }
 
 float AutoExposureLaw::adapt(float gain, float target, float dt) {

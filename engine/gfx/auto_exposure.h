@@ -15,11 +15,15 @@ namespace ob::gfx {
 struct AutoExposureLaw {
     /// The log-average linear luminance the gain brings a frame to: the default sea's by day
     /// (config/scenes/default.toml, the play camera), so a sunlit sea keeps about gain 1.
-    static constexpr float KEY = 0.14f;
+    static constexpr float KEY = 0.30f;
+    /// The share of a change in brightness (in stops) the gain takes back: an eye adapts
+    /// partly, so a storm stays darker than a sunny day and a view under water dimmer than one above.
+    static constexpr float STRENGTH = 2.0f / 3.0f;
     static constexpr float MIN_GAIN = 0.25f;  ///< −2 stops at most
     static constexpr float MAX_GAIN = 8.0f;   ///< +3 stops at most (a level view under water needs about 2–3)
     static constexpr float TIME_CONSTANT_S = 1.0f;
-    /// The gain a frame of log-average luminance `logAverage` (radiance × [render] exposure) asks for, clamped.
+    /// The gain a frame of log-average luminance `logAverage` (radiance × [render] exposure) asks
+    /// for: (KEY / logAverage)^STRENGTH, clamped.
     static float target(float logAverage);
     /// One step of the adaptation over dt seconds (in stops, so up and down take as long).
     static float adapt(float gain, float target, float dt);

@@ -108,13 +108,14 @@ TEST_CASE("an overcast sky (cloud_cover 1) is at least 30% darker than a clear o
     CHECK(overcast.disc < 1.1 * overcast.ring);  // none under the overcast: only a soft patch
 }
 
-TEST_CASE("auto exposure's gain relaxes toward its target with a time constant of 1 s, clamped to [1/4, 8]", "[gl][render][exposure]") {
+TEST_CASE("auto exposure's gain takes back 2/3 of a change in stops, relaxing with a time constant of 1 s, clamped to [1/4, 8]", "[gl][render][exposure]") {
     using Law = gfx::AutoExposureLaw;
     // In stops: after 1 s (four steps of 0.25 s) 1 − 1/e of the way.
     float gain = 1.0f;
     for (int s = 0; s < 4; ++s) gain = Law::adapt(gain, 4.0f, 0.25f);
     CHECK(std::log2(gain) == Approx(2.0 * (1.0 - std::exp(-1.0))).epsilon(1e-4));
     CHECK(Law::target(Law::KEY) == Approx(1.0f));
+    CHECK(Law::target(Law::KEY / 8.0f) == Approx(4.0f));  // two thirds of 3 stops
     CHECK(Law::target(Law::KEY * 1000.0f) == Approx(0.25f));
     CHECK(Law::target(Law::KEY / 1000.0f) == Approx(8.0f));
     // The inverse of the display curve is the test's own.
