@@ -148,7 +148,7 @@ void main() {
     // distance, stretched by the grazing view).
     float pixelAngle = 2.0 / (water.crest.z * frame.viewport.y);
     float footprint = dist * pixelAngle / sqrt(max(abs(v.y), 0.05));
-    color += SUN_COLOR * sunTint(sun) * frame.shading.z * glitterRadiance(n, v, sun, unresolved, exact) * glintFactor(v_world.xz, t, footprint);
+    color += SUN_COLOR * sunTint(sun) * frame.shading.z * glitterRadiance(n, v, sun, unresolved, exact) * glintFactor(v_world.xz, dist, t, footprint);
     // the mean level is y = 0; a pixel spans 2 / (projection[1][1] · viewport height) radians
     color += crestSubsurface(v_world.y, water.crest.x, water.crest.y, v, n, sun, dist, 2.0 / (water.crest.z * frame.viewport.y));
 
