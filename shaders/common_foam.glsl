@@ -68,12 +68,10 @@ vec3 shadeFoam(vec3 color, vec2 world, vec3 n, vec3 sun, float jacobian, float r
 #ifdef WATER_FULL_QUALITY
     vec3 lace = foamPattern(fuv);
     float bubbles = foamPattern(fuv * FOAM_BUBBLE_SCALE + FOAM_BUBBLE_OFFSET).z;
-    float fineBubbles = foamPattern((fuv * FOAM_FRESH_SCALE + FOAM_FRESH_OFFSET) * FOAM_BUBBLE_SCALE + FOAM_BUBBLE_OFFSET).z;
 #else
     vec4 baked = texture(u_foamPattern, fuv / FOAM_PATTERN_REPEAT);
     vec3 lace = decodeDetail(baked);
     float bubbles = baked.a;
-    float fineBubbles = texture(u_foamPattern, (fuv * FOAM_FRESH_SCALE + FOAM_FRESH_OFFSET) / FOAM_PATTERN_REPEAT).a;
 #endif
     if (WATER_FOAM_MAP) {
         // The map read at a point pushed up to FOAM_WARP cells by the pattern's DU/DV, so its
@@ -85,7 +83,15 @@ vec3 shadeFoam(vec3 color, vec2 world, vec3 n, vec3 sun, float jacobian, float r
     float repeats = max(span.x, span.y);
     float laceBlur = foamBlur(repeats), bubbleBlur = foamBlur(repeats * FOAM_BUBBLE_SCALE);
     float fineBlur = foamBlur(repeats * FOAM_BUBBLE_SCALE * FOAM_FRESH_SCALE);
+    vec2 fineUv = (fuv * FOAM_FRESH_SCALE + FOAM_FRESH_OFFSET) / FOAM_PATTERN_REPEAT;
+    vec2 fineDx = dFdx(fineUv), fineDy = dFdy(fineUv);
     if (density <= 0.0) return color;
+    // the fine bubbles only where there is foam (a lookup for every pixel of the sea costs)
+#ifdef WATER_FULL_QUALITY
+    float fineBubbles = foamPattern((fuv * FOAM_FRESH_SCALE + FOAM_FRESH_OFFSET) * FOAM_BUBBLE_SCALE + FOAM_BUBBLE_OFFSET).z;
+#else
+    float fineBubbles = textureGrad(u_foamPattern, fineUv, fineDx, fineDy).a;
+#endif
     // --- opacity: the lace's soft ramp (thinner as the density falls), the bubbles' holes,
     // both tending to their means where the pixel averages them; thin old foam lets water through
     float t = 1.0 - FOAM_DENSE * density;

@@ -60,8 +60,10 @@ float glintLevel(vec2 world, float t, float footprint, float level) {
     vec2 cellPos = world / size;
     ivec2 cell = ivec2(floor(cellPos));
     int lane = int(level) * 65536;  // each level its own draws
-    int moment = int(floor(t * GLINT_RATE_HZ + 8.0 * glintHash(cell, lane)));
-    float on = step(glintHash(cell, lane + 1 + moment), GLINT_SHARE);
+    // the cell's own moments: a cheap phase (its bias does not matter), the draw unbiased
+    float phase = fract(dot(vec2(cell), vec2(0.0671, 0.5831)) + 0.13 * level);
+    int moment = int(floor(t * GLINT_RATE_HZ + 8.0 * phase));
+    float on = step(glintHash(cell, lane + moment), GLINT_SHARE);
     vec2 at = (fract(cellPos) - 0.5) / GLINT_RADIUS;
     return mix(1.0, on * max(1.0 - dot(at, at), 0.0) / GLINT_MEAN_COVER, resolved);
 }

@@ -45,6 +45,7 @@ const float DETAIL_TILE = 24.0;            // m per repeat of the detail map
 const vec2 DETAIL_DRIFT = vec2(0.031, 0.017);  // detail map scroll (repeats per s)
 const vec3 SUN_COLOR = vec3(1.0, 0.9, 0.7);
 const float MIN_GLITTER_SLOPE_VARIANCE = 0.001;
+const float GLINT_VISIBLE = 0.002;  // glitter radiance of about one level of 255 over the water's own colour: fainter, no glints (their mean is the lobe's anyway)
 // A tilted surface shifts an image by an angle, so the shift grows with the distance of the
 // reflected or refracted object behind the surface: none where it touches it (a hull at the
 // waterline), the full offset from this many metres behind. Without the ramp the offset tears
@@ -107,8 +108,11 @@ void main() {
         o_color = finalColorUnderwater(seen, gl_FragCoord.xy);
         return;
     }
-    // Under clouds the baked cube holds their pattern (the formula only their mean).
-    vec3 sky = cloudCover() > 0.0 ? textureLod(u_sky, r, 0.0).rgb : skyRadiance(normalize(r), sun);
+    // Under clouds the baked cube holds their pattern (the formula only their mean). A branch,
+    // not a select: a software rasteriser would run both.
+    vec3 sky;
+    if (cloudCover() > 0.0) sky = textureLod(u_sky, r, 0.0).rgb;
+    else sky = skyRadiance(normalize(r), sun);
 
     // --- lookups into the targets, offset by the normal and the scrolling DU/DV map
     vec2 screen = gl_FragCoord.xy / frame.viewport.xy;
@@ -148,7 +152,10 @@ void main() {
     // distance, stretched by the grazing view).
     float pixelAngle = 2.0 / (water.crest.z * frame.viewport.y);
     float footprint = dist * pixelAngle / sqrt(max(abs(v.y), 0.05));
-    color += SUN_COLOR * sunTint(sun) * frame.shading.z * glitterRadiance(n, v, sun, unresolved, exact) * glintFactor(v_world.xz, dist, t, footprint);
+    // (only where the lobe shows at all: the glints cost, and far from the sun's path there are none)
+    float glitter = frame.shading.z * glitterRadiance(n, v, sun, unresolved, exact);
+    if (glitter > GLINT_VISIBLE) glitter *= glintFactor(v_world.xz, dist, t, footprint);
+    color += SUN_COLOR * sunTint(sun) * glitter;
     // the mean level is y = 0; a pixel spans 2 / (projection[1][1] · viewport height) radians
     color += crestSubsurface(v_world.y, water.crest.x, water.crest.y, v, n, sun, dist, 2.0 / (water.crest.z * frame.viewport.y));
 
