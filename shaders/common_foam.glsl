@@ -86,24 +86,26 @@ vec3 shadeFoam(vec3 color, vec2 world, vec3 n, vec3 sun, float jacobian, float r
     vec2 fineUv = (fuv * FOAM_FRESH_SCALE + FOAM_FRESH_OFFSET) / FOAM_PATTERN_REPEAT;
     vec2 fineDx = dFdx(fineUv), fineDy = dFdy(fineUv);
     if (density <= 0.0) return color;
-    // the fine bubbles only where there is foam (a lookup for every pixel of the sea costs)
-#ifdef WATER_FULL_QUALITY
-    float fineBubbles = foamPattern((fuv * FOAM_FRESH_SCALE + FOAM_FRESH_OFFSET) * FOAM_BUBBLE_SCALE + FOAM_BUBBLE_OFFSET).z;
-#else
-    float fineBubbles = textureGrad(u_foamPattern, fineUv, fineDx, fineDy).a;
-#endif
     // --- opacity: the lace's soft ramp (thinner as the density falls), the bubbles' holes,
     // both tending to their means where the pixel averages them; thin old foam lets water through
     float t = 1.0 - FOAM_DENSE * density;
     float laceAlpha = mix(foamRamp(lace.z, t), foamRampMean(t), laceBlur);
     float holes = mix(0.55 + 0.45 * bubbles, 0.775, bubbleBlur);
-    // fresh foam: holes where either bubble octave is low, soft-rimmed, each octave's toward its
-    // mean where the pixel averages it; the lace's soft ramp above carries the rim along the coverage
-    float open = mix(smoothstep(0.0, FOAM_HOLE_WIDTH, bubbles - FOAM_HOLE_BELOW), FOAM_HOLES_MEAN, bubbleBlur) *
-                 mix(smoothstep(0.0, FOAM_HOLE_WIDTH, fineBubbles - FOAM_HOLE_BELOW), FOAM_HOLES_MEAN, fineBlur);
-    float fresh = smoothstep(0.5, 1.0, density);
-    float thickness = (1.0 - exp(-FOAM_THICKNESS * density)) / (1.0 - exp(-FOAM_THICKNESS));
-    float alpha = laceAlpha * mix(holes * (0.1 + 0.9 * density * density), open * thickness, fresh);
+    float alpha = laceAlpha * holes * (0.1 + 0.9 * density * density);
+    // fresh foam (only there: the fine bubbles' lookup costs): holes where either bubble octave
+    // is low, soft-rimmed, each octave's toward its mean where the pixel averages it; the lace's
+    // soft ramp above carries the rim along the coverage
+    if (density > 0.5) {
+#ifdef WATER_FULL_QUALITY
+        float fineBubbles = foamPattern((fuv * FOAM_FRESH_SCALE + FOAM_FRESH_OFFSET) * FOAM_BUBBLE_SCALE + FOAM_BUBBLE_OFFSET).z;
+#else
+        float fineBubbles = textureGrad(u_foamPattern, fineUv, fineDx, fineDy).a;
+#endif
+        float open = mix(smoothstep(0.0, FOAM_HOLE_WIDTH, bubbles - FOAM_HOLE_BELOW), FOAM_HOLES_MEAN, bubbleBlur) *
+                     mix(smoothstep(0.0, FOAM_HOLE_WIDTH, fineBubbles - FOAM_HOLE_BELOW), FOAM_HOLES_MEAN, fineBlur);
+        float thickness = (1.0 - exp(-FOAM_THICKNESS * density)) / (1.0 - exp(-FOAM_THICKNESS));
+        alpha = mix(alpha, laceAlpha * open * thickness, smoothstep(0.5, 1.0, density));
+    }
     // --- light: a rough white surface lying on the water (Lambert), greyer as it ages
     vec3 albedo = mix(FOAM_ALBEDO_OLD, FOAM_ALBEDO_FRESH, smoothstep(0.1, 0.9, density));
     vec3 light = FOAM_SUN * sunTint(sun) * max(dot(n, sun), 0.0) + mix(FOAM_SKY, FOAM_SKY_OVERCAST, cloudCover()) * daylight(sun);

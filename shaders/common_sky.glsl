@@ -127,8 +127,8 @@ vec3 skyWithClouds(vec3 dir, vec3 sunDir) {
 vec3 sunDisk(vec3 dir, vec3 sunDir) {
     float cosAngle = dot(dir, sunDir);
     vec3 disk = vec3(60.0, 52.0, 40.0) * sunTint(sunDir) * smoothstep(0.99996, 0.99998, cosAngle);
-    // behind a cloud, no disc (only where the disc is: the noise costs)
-    if (cosAngle > 0.99996 && cloudCover() > 0.0) disk *= 1.0 - cloudDensity(dir);
+    // (dimmed by the clouds' mean cover through sunTint, gone under an overcast: the clouds'
+    // pattern per sky pixel would cost a software rasteriser the noise everywhere)
     return disk;
 }
 

@@ -11,7 +11,9 @@ FIXED="--set camera.mode=fixed"
 $R --size 1280x720 $S/spectrum_only.toml --frames 3 --set ocean.wind_speed=2 $FIXED --set "camera.position=[0,3,0]" \
   --set "camera.target=[0,1.9489,10]" --set "render.sun_direction=[0,0.57735,1]" --set render.foam=false --screenshot $OUT/glitter_calm.png
 # The default sea (16 m/s, the sun low) after 240 frames: glints where the lobe washed white.
-$R --size 1280x720 $S/default.toml --frames 240 --screenshot $OUT/sea_16.png
+$R --size 1280x720 $S/default.toml --frames 240 --screenshot $OUT/sea_16_full.png
+convert $OUT/sea_16_full.png -crop 640x360+0+360 +repage $OUT/sea_16.png  # its lower left quarter, pixel for pixel
+rm $OUT/sea_16_full.png
 # Fair weather (the breeze preset's cloud_cover 0.3) and a gale (the storm preset's keys).
 $R --size 640x360 $S/default.toml --frames 30 --set sky.cloud_cover=0.3 --set ocean.wind_speed=8 --set "camera.target=[0,12,-9]" --screenshot $OUT/clouds_03.png
 $R --size 640x360 $S/default.toml --frames 120 --set sky.cloud_cover=1 --set ocean.wind_speed=20 --set ocean.amplitude=0.002 \
@@ -21,5 +23,5 @@ for A in on off; do
   $R --size 640x360 $S/default.toml --frames 40 $FIXED --set "camera.position=[10,-3,-30]" --set "camera.target=[10,-3,0]" \
     --set render.auto_exposure=\"$A\" --screenshot $OUT/under_level_$A.png
 done
-# Fresh foam about half a second after a cannonball's hit (the hit at about 1.6 s).
-$R --size 640x360 $S/cannon.toml --frames 32 --steps-per-frame 4 --screenshot $OUT/foam_fresh.png
+# Fresh foam about a second after a cannonball's hit (the hit at about 1.6 s).
+$R --size 640x360 $S/cannon.toml --frames 40 --steps-per-frame 4 --screenshot $OUT/foam_fresh.png
