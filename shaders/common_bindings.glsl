@@ -83,6 +83,7 @@ UNIFORM_BLOCK(FrameUniforms, FRAME_BLOCK) {
     vec4 shading;              // DU/DV strength, normal distortion, the sun's irradiance for the glitter, light shafts under water
     vec4 switches;             // reflections, refractions, foam (1 on, 0 off), dither of the 8-bit outputs (LSB; 0 off)
     vec4 waterline;            // xyz: height (m) of a pixel's point on the near plane above the water's tangent plane at the eye = x·ndc.x + y·ndc.y + z (< 0: the pixel is under water); w the eye's depth under the surface (m, ≥ 0)
+    vec4 sky;                  // x [sky] cloud_cover, yz the clouds' drift with the wind aloft (m), w the cloud layer's height (m)
 } BLOCK_INSTANCE(frame);
 
 SHARED_CONST MAX_GERSTNER_WAVES = 32;

@@ -14,8 +14,20 @@ const float FOAM_SOFT = 0.45;           // width of the lace's opacity ramp, in 
 const float FOAM_WARP = 1.0;            // foam map cells the lookup is pushed by the DU/DV field, at most
 const vec3 FOAM_ALBEDO_FRESH = vec3(0.82, 0.85, 0.86);  // fresh whitecap foam (Koepke 1984: ~0.55 effective over a patch of which it is a part)
 const vec3 FOAM_ALBEDO_OLD = vec3(0.55, 0.60, 0.62);    // old foam: a thin film of bubbles over the water, greyer
+// Fresh foam (docs/look.md#fresh-foam): bubbles at a second, finer scale (this many times the
+// first, 0.4 m to 6 cm) open holes through it, where either octave is low, as wide as this
+// share of the pattern's range; its opacity grows with its coverage as a layer's of that
+// thickness, 1 − e^(−k·c) (normalised to 1 at c = 1), so thin foam shows the water through.
+const float FOAM_FRESH_SCALE = 2.3;
+const float FOAM_FRESH_OFFSET = 0.17;
+const float FOAM_HOLE_BELOW = 0.24;  // pattern values below this are open water
+const float FOAM_HOLE_WIDTH = 0.2;
+const float FOAM_THICKNESS = 2.5;
+// One octave's open share averaged over the pattern (its values uniform on [0, 1], as foamPattern is made).
+const float FOAM_HOLES_MEAN = 1.0 - FOAM_HOLE_BELOW - 0.5 * FOAM_HOLE_WIDTH;
 const vec3 FOAM_SUN = vec3(1.0, 0.92, 0.8) * 1.4;       // sunlight on a surface facing the sun (the objects' light, object_mesh.frag)
 const vec3 FOAM_SKY = vec3(0.30, 0.38, 0.48);           // skylight on an upward rough surface by day: about the day dome's mean radiance (common_sky.glsl)
+const vec3 FOAM_SKY_OVERCAST = vec3(0.21, 0.22, 0.24);  // ...under an overcast: its grey dome's mean (cloudRadiance)
 
 // ∫ clamp(u, 0, 1) du from −∞ to x.
 float foamRampIntegral(float x) { return x <= 0.0 ? 0.0 : (x < 1.0 ? 0.5 * x * x : x - 0.5); }
@@ -70,6 +82,9 @@ vec3 shadeFoam(vec3 color, vec2 world, vec3 n, vec3 sun, float jacobian, float r
     vec2 span = fwidth(fuv);
     float repeats = max(span.x, span.y);
     float laceBlur = foamBlur(repeats), bubbleBlur = foamBlur(repeats * FOAM_BUBBLE_SCALE);
+    float fineBlur = foamBlur(repeats * FOAM_BUBBLE_SCALE * FOAM_FRESH_SCALE);
+    vec2 fineUv = (fuv * FOAM_FRESH_SCALE + FOAM_FRESH_OFFSET) / FOAM_PATTERN_REPEAT;
+    vec2 fineDx = dFdx(fineUv), fineDy = dFdy(fineUv);
     if (density <= 0.0) return color;
     // --- opacity: the lace's soft ramp (thinner as the density falls), the bubbles' holes,
     // both tending to their means where the pixel averages them; thin old foam lets water through
@@ -77,8 +92,22 @@ vec3 shadeFoam(vec3 color, vec2 world, vec3 n, vec3 sun, float jacobian, float r
     float laceAlpha = mix(foamRamp(lace.z, t), foamRampMean(t), laceBlur);
     float holes = mix(0.55 + 0.45 * bubbles, 0.775, bubbleBlur);
     float alpha = laceAlpha * holes * (0.1 + 0.9 * density * density);
+    // fresh foam (only there: the fine bubbles' lookup costs): holes where either bubble octave
+    // is low, soft-rimmed, each octave's toward its mean where the pixel averages it; the lace's
+    // soft ramp above carries the rim along the coverage
+    if (density > 0.5) {
+#ifdef WATER_FULL_QUALITY
+        float fineBubbles = foamPattern((fuv * FOAM_FRESH_SCALE + FOAM_FRESH_OFFSET) * FOAM_BUBBLE_SCALE + FOAM_BUBBLE_OFFSET).z;
+#else
+        float fineBubbles = textureGrad(u_foamPattern, fineUv, fineDx, fineDy).a;
+#endif
+        float open = mix(smoothstep(0.0, FOAM_HOLE_WIDTH, bubbles - FOAM_HOLE_BELOW), FOAM_HOLES_MEAN, bubbleBlur) *
+                     mix(smoothstep(0.0, FOAM_HOLE_WIDTH, fineBubbles - FOAM_HOLE_BELOW), FOAM_HOLES_MEAN, fineBlur);
+        float thickness = (1.0 - exp(-FOAM_THICKNESS * density)) / (1.0 - exp(-FOAM_THICKNESS));
+        alpha = mix(alpha, laceAlpha * open * thickness, smoothstep(0.5, 1.0, density));
+    }
     // --- light: a rough white surface lying on the water (Lambert), greyer as it ages
     vec3 albedo = mix(FOAM_ALBEDO_OLD, FOAM_ALBEDO_FRESH, smoothstep(0.1, 0.9, density));
-    vec3 light = FOAM_SUN * sunTint(sun) * max(dot(n, sun), 0.0) + FOAM_SKY * daylight(sun);
+    vec3 light = FOAM_SUN * sunTint(sun) * max(dot(n, sun), 0.0) + mix(FOAM_SKY, FOAM_SKY_OVERCAST, cloudCover()) * daylight(sun);
     return mix(color, albedo * light, alpha);
 }

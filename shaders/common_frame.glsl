@@ -12,7 +12,9 @@ vec3 viewRay(vec2 ndc) {
 // sin e = −0.18, as common_sky.glsl's daylight()).
 vec3 waterBodyColor() {
     float night = mix(0.06, 1.0, smoothstep(-0.18, 0.10, frame.sunDirectionFresnel.y));
-    return frame.waterColorExposure.rgb * (0.35 + 0.65 * max(frame.sunDirectionFresnel.y, 0.0)) * night;
+    // under an overcast only the diffuse light reaches into the water (about half of it by day)
+    float overcast = mix(1.0, 0.55, frame.sky.x);
+    return frame.waterColorExposure.rgb * (0.35 + 0.65 * max(frame.sunDirectionFresnel.y, 0.0)) * night * overcast;
 }
 
 // Exposure, filmic tone curve (Narkowicz's ACES fit) and sRGB encoding; render targets keep

@@ -2,21 +2,37 @@
 // sun disk; twilight (sun below ~15°) reddens the sun and burns the horizon toward it orange,
 // night (sun below about −10°) leaves a dark blue dome. Radiance in arbitrary linear units
 // (1 ≈ bright horizon). With the sun above sin e = 0.25 the sky is the day sky unchanged.
+// Clouds ([sky] cloud_cover c, frame.sky): a layer at cloud_height drifting with the wind aloft;
+// the baked cube draws their pattern (skyWithClouds), every other reader the sky as the clouds
+// cover it on average (skyRadiance); they dim the sun's direct light (sunTint) to nothing at
+// c = 1 and grey the diffuse light (docs/look.md#weather).
 #ifndef COMMON_SKY_GLSL
 #define COMMON_SKY_GLSL
+#include "common_bindings.glsl"
+
+// Share of the sky the clouds cover, [0, 1].
+float cloudCover() { return frame.sky.x; }
+
+// The share of the sun's direct light the clouds let through, on average over the sky they
+// cover: the sun behind broken cloud half the time, and under an overcast none.
+float sunThroughClouds() {
+    float c = cloudCover();
+    return (1.0 - c) * (1.0 - 0.5 * c);
+}
 
 // Colour and strength of the sunlight reaching the sea, relative to a high sun: the longer
 // path through air near the horizon scatters blue away (reddening), none below it.
 vec3 sunTint(vec3 sunDir) {
     float low = 1.0 - smoothstep(0.0, 0.25, sunDir.y);
-    return mix(vec3(1.0), vec3(1.0, 0.45, 0.15), low) * smoothstep(-0.05, 0.02, sunDir.y);
+    return mix(vec3(1.0), vec3(1.0, 0.45, 0.15), low) * smoothstep(-0.05, 0.02, sunDir.y) * sunThroughClouds();
 }
 
 // Diffuse light by the sun's height, relative to the day: 1 from sin e = 0.1 up, a little
 // moon- and starlight at night.
 float daylight(vec3 sunDir) { return mix(0.06, 1.0, smoothstep(-0.18, 0.10, sunDir.y)); }
 
-vec3 skyRadiance(vec3 dir, vec3 sunDir) {
+// The cloudless sky.
+vec3 clearSkyRadiance(vec3 dir, vec3 sunDir) {
     float up = clamp(dir.y, -1.0, 1.0);
     float day = smoothstep(-0.18, 0.10, sunDir.y);
     // Twilight weight: 0 with a high sun, strongest with the sun at the horizon, gone at night.
@@ -38,10 +54,82 @@ vec3 skyRadiance(vec3 dir, vec3 sunDir) {
     return sky;
 }
 
+// A cloud's radiance seen along dir: a sunlit white cumulus under a few clouds, an overcast's
+// grey underside under many, brighter toward the zenith (the CIE overcast sky: L ∝ (1 + 2 sin h)/3),
+// a soft bright patch round the hidden sun; reddened with the sun at twilight, dark at night.
+vec3 cloudRadiance(vec3 dir, vec3 sunDir) {
+    float c = cloudCover();
+    float up = clamp(dir.y, -1.0, 1.0);
+    vec3 lit = vec3(1.0, 0.99, 0.97);
+    vec3 overcast = vec3(0.27, 0.28, 0.31) * (1.0 + 2.0 * max(up, 0.0)) / 3.0;  // a storm's dark overcast
+    vec3 cloud = mix(lit, overcast, smoothstep(0.2, 1.0, c));
+    float low = 1.0 - smoothstep(0.0, 0.25, sunDir.y);
+    cloud *= mix(vec3(1.0), vec3(1.0, 0.6, 0.4), 0.6 * low) * daylight(sunDir);
+    float mu = max(dot(dir, sunDir), 0.0);
+    cloud += vec3(0.35, 0.33, 0.30) * c * pow(mu, 12.0) * smoothstep(-0.05, 0.05, sunDir.y);
+    // below the horizon (reflections only): as the clear sky's hazy continuation
+    return mix(cloud, cloud * 0.75, smoothstep(0.0, -0.2, up));
+}
+
+// The sky as the clouds cover it on average (no pattern): what lights and hazes the scene.
+vec3 skyRadiance(vec3 dir, vec3 sunDir) {
+    vec3 clear = clearSkyRadiance(dir, sunDir);
+    float c = cloudCover();
+    if (c <= 0.0) return clear;
+    return mix(clear, cloudRadiance(dir, sunDir), c);
+}
+
+// Value noise in [0, 1] (a hash per lattice point, smooth between).
+float cloudHash(vec2 p) {
+    vec3 q = fract(vec3(p.xyx) * 0.1031);
+    q += dot(q, q.yzx + 33.33);
+    return fract((q.x + q.y) * q.z);
+}
+float cloudNoise(vec2 p) {
+    vec2 i = floor(p), f = fract(p);
+    f = f * f * (3.0 - 2.0 * f);
+    return mix(mix(cloudHash(i), cloudHash(i + vec2(1.0, 0.0)), f.x), mix(cloudHash(i + vec2(0.0, 1.0)), cloudHash(i + vec2(1.0)), f.x), f.y);
+}
+
+const float CLOUD_SCALE_M = 3000.0;  // the clouds' largest features (m on the layer)
+const int CLOUD_OCTAVES = 5;
+
+// The clouds' density along dir, [0, 1]: fractal noise on the layer at frame.sky.w metres, moved
+// by the drift frame.sky.yz (m), thresholded so that about c of the layer is cloud, with soft
+// edges; toward the horizon the pattern shrinks below what the cube resolves, so it fades to its mean c.
+float cloudDensity(vec3 dir) {
+    float c = cloudCover();
+    if (c <= 0.0) return 0.0;
+    float up = max(dir.y, 0.0);
+    vec2 p = (dir.xz / max(up, 0.02) * frame.sky.w + frame.sky.yz) / CLOUD_SCALE_M;
+    float n = 0.0, a = 0.5, total = 0.0;
+    for (int o = 0; o < CLOUD_OCTAVES; ++o) {
+        n += a * cloudNoise(p);
+        total += a;
+        p = mat2(1.6, 1.2, -1.2, 1.6) * p + 7.1;
+        a *= 0.5;
+    }
+    n /= total;
+    float threshold = mix(0.72, 0.28, c);
+    float d = smoothstep(threshold - 0.06, threshold + 0.10, n);
+    d = max(d, smoothstep(0.85, 1.0, c));
+    return mix(c, d, smoothstep(0.03, 0.25, up));
+}
+
+// The sky with the clouds' pattern (the cube bake): the clear sky behind them where they are thin.
+vec3 skyWithClouds(vec3 dir, vec3 sunDir) {
+    vec3 clear = clearSkyRadiance(dir, sunDir);
+    if (cloudCover() <= 0.0) return clear;
+    return mix(clear, cloudRadiance(dir, sunDir), 0.97 * cloudDensity(dir) + 0.03 * cloudCover());
+}
+
 // The sun disk alone (0.53° wide), for direct views and sharp reflections.
 vec3 sunDisk(vec3 dir, vec3 sunDir) {
     float cosAngle = dot(dir, sunDir);
-    return vec3(60.0, 52.0, 40.0) * sunTint(sunDir) * smoothstep(0.99996, 0.99998, cosAngle);
+    vec3 disk = vec3(60.0, 52.0, 40.0) * sunTint(sunDir) * smoothstep(0.99996, 0.99998, cosAngle);
+    // (dimmed by the clouds' mean cover through sunTint, gone under an overcast: the clouds'
+    // pattern per sky pixel would cost a software rasteriser the noise everywhere)
+    return disk;
 }
 
 #endif

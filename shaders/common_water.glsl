@@ -12,7 +12,7 @@
 #endif
 
 layout(binding = DISPLACEMENT_UNIT) uniform sampler2DArray u_displacement;  // layer c: (Dx, h, Dz, J)
-layout(binding = SLOPES_UNIT) uniform sampler2DArray u_slopes;        // layer c: (dh/dx, dh/dz, J, 0)
+layout(binding = SLOPES_UNIT) uniform sampler2DArray u_slopes;        // layer c: (dh/dx, dh/dz, J, |∇h|²)
 layout(binding = RIPPLES_UNIT) uniform sampler2D u_ripples;            // ripple heights Vh(t) (m), 0 outside
 layout(binding = FOAM_UNIT) uniform sampler2D u_foamMap;            // persistent foam coverage [0, 1], 0 outside
 layout(binding = RIPPLE_SLOPES_UNIT) uniform sampler2D u_rippleSlopes;       // ripple (dh/dx, dh/dz) per cell, one cell of margin round the patch

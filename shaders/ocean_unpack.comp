@@ -2,7 +2,7 @@
 #include "common_bindings.glsl"
 // Ocean maps from the four inverse-transformed packed spectra (docs/references.md#spectral-ocean eq. 9: f = Re,
 // g = Im) and the foam Jacobian ([CodingTower] "Future"), as OceanFftCpu's unpack:
-//   displacement = (Dx, h, Dz, J),   slopes = (∂h/∂x, ∂h/∂z, J, 0),
+//   displacement = (Dx, h, Dz, J),   slopes = (∂h/∂x, ∂h/∂z, J, |∇h|²),
 //   J = (1 + λ∂Dx/∂x)(1 + λ∂Dz/∂z) − (λ∂Dx/∂z)².
 // One invocation per texel: x along i, y along j, gl_WorkGroupID.z the cascade (= layer).
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -29,5 +29,7 @@ void main() {
     float dxz = u_lambda * heightDxz.y;
     float jacobian = (1.0 + u_lambda * dxxDzz.x) * (1.0 + u_lambda * dxxDzz.y) - dxz * dxz;
     imageStore(u_displacement, texel, vec4(dispXZ.x, heightDxz.x, dispXZ.y, jacobian));
-    imageStore(u_slopes, texel, vec4(slopeXZ, jacobian, 0.0));
+    // |∇h|² beside the slope: its mips' mean less the mean slope's square is the slope variance a
+    // filtered lookup loses (Bruneton, Neyret & Holzschuch 2010 §4; common_glitter.glsl)
+    imageStore(u_slopes, texel, vec4(slopeXZ, jacobian, dot(slopeXZ, slopeXZ)));
 }

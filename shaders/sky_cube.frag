@@ -1,5 +1,6 @@
 #version 450 core
-// Sky bake: one cube face of the analytic sky (linear radiance), drawn when the sun moves.
+// Sky bake: one cube face of the analytic sky with its clouds (linear radiance), drawn when the
+// sun moves or, under clouds, when they drift.
 #include "common_frame.glsl"
 #include "common_sky.glsl"
 
@@ -9,5 +10,5 @@ out vec4 o_color;
 
 void main() {
     vec3 dir = normalize(u_face * vec3(v_ndc, 1.0));
-    o_color = vec4(skyRadiance(dir, frame.sunDirectionFresnel.xyz), 1.0);
+    o_color = vec4(skyWithClouds(dir, frame.sunDirectionFresnel.xyz), 1.0);
 }

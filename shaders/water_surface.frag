@@ -45,6 +45,7 @@ const float DETAIL_TILE = 24.0;            // m per repeat of the detail map
 const vec2 DETAIL_DRIFT = vec2(0.031, 0.017);  // detail map scroll (repeats per s)
 const vec3 SUN_COLOR = vec3(1.0, 0.9, 0.7);
 const float MIN_GLITTER_SLOPE_VARIANCE = 0.001;
+const float GLINT_VISIBLE = 0.002;  // glitter radiance of about one level of 255 over the water's own colour: fainter, no glints (their mean is the lobe's anyway)
 // A tilted surface shifts an image by an angle, so the shift grows with the distance of the
 // reflected or refracted object behind the surface: none where it touches it (a hull at the
 // waterline), the full offset from this many metres behind. Without the ramp the offset tears
@@ -66,10 +67,11 @@ void main() {
     vec2 slope = v_gerstnerSlope + ripple;
     float jacobian = 1.0;
     float resolvedSlopes = 0.0;  // mean square slope the cascades draw here (faded ones less)
+    float filteredOut = 0.0;     // of it, what the maps' mip filtering averaged away within the pixel
     for (int c = 0; c < WATER_CASCADES; ++c) {
         vec3 uv = cascadeCoord(v_rest, c);
         // (dh/dx, dh/dz, J), faded out with distance as the vertex shader fades the displacement
-        vec3 s = texture(u_slopes, uv).xyz;
+        vec4 s = texture(u_slopes, uv);
 #ifdef WATER_FULL_QUALITY
         float weight = cascadeWeight(v_rest, c);
 #else
@@ -77,6 +79,7 @@ void main() {
 #endif
         slope += weight * s.xy;
         resolvedSlopes += weight * weight * water.cascadeSlopeVariance[c];
+        filteredOut += weight * weight * max(s.w - dot(s.xy, s.xy), 0.0);
         jacobian += weight * (s.z - 1.0);  // J − 1 adds over the cascades (first order)
     }
     vec3 n = normalize(vec3(-slope.x, 1.0, -slope.y));
@@ -91,7 +94,10 @@ void main() {
     r.y = abs(r.y);
     // The slopes no layer draws: the sea's whole variance less the cascades' (at least that
     // of capillary ripples on a glassy sea, so the sun never shrinks to a point).
-    float unresolved = max(water.glitterParams.x - resolvedSlopes, MIN_GLITTER_SLOPE_VARIANCE);
+    // With them the slopes the pixel's footprint averages away (Bruneton, Neyret & Holzschuch
+    // 2010 §4: the filtered |∇h|² less the filtered slope's square), so a pixel's mean
+    // brightness does not depend on the resolution.
+    float unresolved = max(water.glitterParams.x - resolvedSlopes, MIN_GLITTER_SLOPE_VARIANCE) + filteredOut;
 
     // The sky is the analytic one the cube is baked from: on llvmpipe a cube lookup costs more
     // than the formula. Seen from below (the eye under water, or this pixel under the
@@ -102,7 +108,11 @@ void main() {
         o_color = finalColorUnderwater(seen, gl_FragCoord.xy);
         return;
     }
-    vec3 sky = skyRadiance(normalize(r), sun);
+    // Under clouds the baked cube holds their pattern (the formula only their mean). A branch,
+    // not a select: a software rasteriser would run both.
+    vec3 sky;
+    if (cloudCover() > 0.0) sky = textureLod(u_sky, r, 0.0).rgb;
+    else sky = skyRadiance(normalize(r), sun);
 
     // --- lookups into the targets, offset by the normal and the scrolling DU/DV map
     vec2 screen = gl_FragCoord.xy / frame.viewport.xy;
@@ -138,7 +148,14 @@ void main() {
 
     float F = fresnel(cosV, exact);
     vec3 color = mix(refraction, reflection, F);
-    color += SUN_COLOR * sunTint(sun) * frame.shading.z * glitterRadiance(n, v, sun, unresolved, exact);
+    // Near the eye the lobe breaks into single glints (a pixel's footprint: its angle over the
+    // distance, stretched by the grazing view).
+    float pixelAngle = 2.0 / (water.crest.z * frame.viewport.y);
+    float footprint = dist * pixelAngle / sqrt(max(abs(v.y), 0.05));
+    // (only where the lobe shows at all: the glints cost, and far from the sun's path there are none)
+    float glitter = frame.shading.z * glitterRadiance(n, v, sun, unresolved, exact);
+    if (glitter > GLINT_VISIBLE) glitter *= glintFactor(v_world.xz, dist, t, footprint);
+    color += SUN_COLOR * sunTint(sun) * glitter;
     // the mean level is y = 0; a pixel spans 2 / (projection[1][1] · viewport height) radians
     color += crestSubsurface(v_world.y, water.crest.x, water.crest.y, v, n, sun, dist, 2.0 / (water.crest.z * frame.viewport.y));
 

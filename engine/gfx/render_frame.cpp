@@ -38,11 +38,12 @@ FrameViews::FrameViews()
 
 // The object shader cuts and mirrors at the composite surface under each vertex, so every
 // view's view-projection stays the camera's.
-void FrameViews::update(const RenderDef& def, const FrameState& frame, const CameraView& camera, double time,
+void FrameViews::update(const RenderDef& def, const SkyDef& sky, const FrameState& frame, const CameraView& camera, double time,
                         glm::ivec2 reflectionSize, glm::ivec2 refractionSize, int skyMips) {
     FrameUniforms u{};
     u.sunDirectionFresnel = glm::vec4(sunDirection(def), def.fresnel == Fresnel::Exact ? 1.0f : 0.0f);
-    u.waterColorExposure = glm::vec4(def.water_color, def.exposure);
+    u.waterColorExposure = glm::vec4(def.water_color, def.exposure * frame.exposureGain);
+    u.sky = glm::vec4(sky.cloud_cover, frame.cloudDrift, sky.cloud_height);
     u.depthParams = glm::vec4(camera.nearM, camera.farM, def.water_clarity, float(skyMips));
     u.shading = glm::vec4(def.dudv_strength, def.normal_distortion, def.glitter, def.light_shafts);
     u.switches = glm::vec4(def.reflections ? 1.0f : 0.0f, def.refractions ? 1.0f : 0.0f, def.foam ? 1.0f : 0.0f,

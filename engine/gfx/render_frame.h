@@ -5,6 +5,7 @@
 #include "gfx/gpu_timer.h"
 #include "gfx/handles.h"
 #include "view_data/render_def.h"
+#include "view_data/sky_def.h"
 #include "view_data/scene_view.h"
 
 #include <glm/vec2.hpp>
@@ -48,6 +49,8 @@ struct FrameState {
     glm::ivec2 internal{0};                  ///< the internal frame's size (px)
     glm::vec3 eye{0.0f};                     ///< the camera (m)
     float pixelsPerRadian[VIEW_COUNT] = {};  ///< per view: its target's pixels per radian of view at the centre
+    glm::vec2 cloudDrift{0.0f};              ///< how far the clouds drifted with the wind aloft (m, world x, z)
+    float exposureGain = 1.0f;               ///< auto exposure's factor on [render] exposure (1 when off; AutoExposure)
 };
 
 /// The FrameUniforms buffer of each view, bound at FRAME_BLOCK.
@@ -55,7 +58,7 @@ class FrameViews {
 public:
     FrameViews();
     /// Fills the three views' uniforms (`skyMips`: the sky cube's mip count).
-    void update(const RenderDef& def, const FrameState& frame, const CameraView& camera, double time, glm::ivec2 reflectionSize,
+    void update(const RenderDef& def, const SkyDef& sky, const FrameState& frame, const CameraView& camera, double time, glm::ivec2 reflectionSize,
                 glm::ivec2 refractionSize, int skyMips);
     /// Binds a view's uniforms for the draws that follow.
     void bind(View view) const;
@@ -80,6 +83,7 @@ private:
 struct FrameContext {
     explicit FrameContext(const RenderDef& d) : def(d) {}
     RenderDef def;
+    SkyDef sky;
     FrameState state;
     FrameViews views;
     PassTimers timers;

@@ -6,6 +6,7 @@
 #include "core/log.h"
 #include "gfx/gl.h"
 
+#include <cmath>
 #include <cstring>
 #include <glm/glm.hpp>
 #include <stb_image_write.h>
@@ -35,7 +36,12 @@ ProgramList Renderer::programs() const {
 }
 
 // The frame's facts (mode, sizes, the eye's side), the targets sized for them, the views' uniforms.
-void Renderer::beginFrame(const CameraView& camera, double time, glm::ivec2 size) {
+bool Renderer::autoExposureOn() const {
+    const AutoExposureMode mode = m_frame.def.auto_exposure;
+    return mode == AutoExposureMode::On || (mode == AutoExposureMode::Auto && m_autoExposureDefault);
+}
+
+void Renderer::beginFrame(const CameraView& camera, double time, glm::ivec2 size, float windAngle) {
     FrameState& state = m_frame.state;
     const RenderDef& def = m_frame.def;
     // The eye's side: the near plane's four corners against the water's tangent plane at the eye.
@@ -54,7 +60,11 @@ void Renderer::beginFrame(const CameraView& camera, double time, glm::ivec2 size
     state.internal = def.resolution_scale < 1.0f ? scaledSize(size, def.resolution_scale) : size;
     m_surfaces.resize(m_frame, state.internal);
     m_post.resize(m_frame, state.internal);
-    m_frame.views.update(def, state, camera, time, m_surfaces.reflection().size, m_surfaces.refraction().size, SkyPass::mipCount());
+    // The clouds drift downwind with the wind aloft; the exposure gain is the last frame's adaptation.
+    state.cloudDrift = float(time) * m_frame.sky.wind_aloft * glm::vec2(std::cos(windAngle), std::sin(windAngle));
+    if (!autoExposureOn()) m_exposure.reset();
+    state.exposureGain = m_exposure.gain();
+    m_frame.views.update(def, m_frame.sky, state, camera, time, m_surfaces.reflection().size, m_surfaces.refraction().size, SkyPass::mipCount());
     // Pixels per radian at the centre of each view's target (the far twins' choice).
     state.eye = camera.position;
     state.pixelsPerRadian[MAIN_VIEW] = 0.5f * float(state.internal.y) * camera.projection[1][1];
@@ -64,7 +74,7 @@ void Renderer::beginFrame(const CameraView& camera, double time, glm::ivec2 size
 
 void Renderer::render(const CameraView& camera, const WaterView& water, const std::vector<ObjectDraw>& objects, double time,
                       glm::ivec2 size, std::span<const SplashDrop> drops) {
-    beginFrame(camera, time, size);
+    beginFrame(camera, time, size, water.windAngle);
     const FrameState& state = m_frame.state;
     const RenderDef& def = m_frame.def;
 
@@ -87,6 +97,7 @@ void Renderer::render(const CameraView& camera, const WaterView& water, const st
     m_splash.splashPass(m_frame);        // after the sky: the sprites write no depth
     if (!m_post.direct(m_frame)) m_post.postPass(m_frame, size);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    if (autoExposureOn()) m_exposure.update(size, def.exposure, time);
     glBindVertexArray(0);
 }
 

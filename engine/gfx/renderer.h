@@ -10,8 +10,11 @@
 //                reflection pass draws them too, mirrored)                           (SplashPass)
 //   post       → the internal frame to the framebuffer: MSAA resolve, FXAA, upscale (when
 //                resolution_scale < 1); skipped when the frame was drawn into it directly (PostPass)
+//   exposure   → with auto exposure: the finished frame read back small, the next frame's
+//                exposure gain adapted to it                                          (AutoExposure)
 // Bindings, locations and the uniform blocks: shaders/common_bindings.glsl (gfx/gpu_bindings.h).
 #pragma once
+#include "gfx/auto_exposure.h"
 #include "gfx/object_pass.h"
 #include "gfx/post_pass.h"
 #include "gfx/render_frame.h"
@@ -41,6 +44,12 @@ public:
     /// GPU ms per pass of the latest frame whose timer queries resolved (empty until one does).
     PassTimes takePassTimes() { return m_frame.timers.take(); }
     RenderDef& def() { return m_frame.def; }
+    /// The sky's weather ([sky]).
+    SkyDef& sky() { return m_frame.sky; }
+    /// Whether render.auto_exposure's "auto" means on (play with a window) or off (run).
+    void setAutoExposureDefault(bool on) { m_autoExposureDefault = on; }
+    /// The exposure gain the next frame is drawn with (1 without auto exposure).
+    float exposureGain() const { return m_frame.state.exposureGain; }
     /// The reflection and refraction targets of the latest frame (for tests and debug views).
     const RenderTarget& reflectionTarget() const { return m_surfaces.reflection(); }
     const RenderTarget& refractionTarget() const { return m_surfaces.refraction(); }
@@ -51,7 +60,8 @@ public:
     ProgramList programs() const;
 
 private:
-    void beginFrame(const CameraView& camera, double time, glm::ivec2 size);
+    void beginFrame(const CameraView& camera, double time, glm::ivec2 size, float windAngle);
+    bool autoExposureOn() const;
 
     FrameContext m_frame;
     SkyPass m_sky;
@@ -60,6 +70,8 @@ private:
     SurfacePasses m_surfaces;
     SplashPass m_splash;
     PostPass m_post;
+    AutoExposure m_exposure;
+    bool m_autoExposureDefault = false;
 };
 
 /// Reads the default framebuffer (size px) and writes it as an RGB PNG, top row first.

@@ -50,9 +50,11 @@ void SkyPass::listPrograms(ProgramList& out) const {
 }
 
 void SkyPass::bakePass(FrameContext& frame) {
-    if (sunDirection(frame.def) == m_bakedSun) return;
+    const glm::vec4 clouds(frame.sky.cloud_cover, frame.state.cloudDrift, frame.sky.cloud_height);
+    if (sunDirection(frame.def) == m_bakedSun && (clouds == m_bakedClouds || (clouds.x == 0.0f && m_bakedClouds.x == 0.0f))) return;
     const PassScope scope(frame, SKY_BAKE_PASS);
     m_bakedSun = sunDirection(frame.def);
+    m_bakedClouds = clouds;
     frame.views.bind(MAIN_VIEW);
     glBindFramebuffer(GL_FRAMEBUFFER, m_bakeFramebuffer.id());
     glViewport(0, 0, SKY_CUBE_SIZE, SKY_CUBE_SIZE);

@@ -8,7 +8,8 @@ namespace ob::gfx {
 class SkyPass {
 public:
     SkyPass();
-    /// in: sun direction; out: the cube (linear radiance, mipmapped), re-baked only when the sun moved.
+    /// in: sun direction, clouds; out: the cube (linear radiance, mipmapped), re-baked only when
+    /// the sun moved or the clouds changed or drifted.
     void bakePass(FrameContext& frame);
     /// in: sky cube, depth; out: colour where nothing was drawn.
     void skyPass(FrameContext& frame);
@@ -24,6 +25,7 @@ private:
     Framebuffer m_bakeFramebuffer;
     VertexArray m_emptyVao;
     glm::vec3 m_bakedSun{0.0f};
+    glm::vec4 m_bakedClouds{0.0f};  // cover, drift (m), layer height of the baked cube
 };
 
 } // namespace ob::gfx

@@ -17,7 +17,7 @@ struct SplashDef {
     float max_life = 10.0f;       ///< a drop still airborne after this long is removed (expired), s, [0.1, 1000]
     float bow_speed = 3.0f;       ///< bow spray starts above this horizontal speed, m/s, [0.01, 100]
     float ripple_energy = 0.2f;   ///< ε, fraction of a landing drop's kinetic energy given to the ripple layer, [0, 1]
-    float spray_wind = 15.0f;     ///< breaking crests throw wind spray above this wind speed U10, m/s, [0, 100]
+    float spray_wind = 11.0f;     ///< breaking crests throw wind spray above this wind speed U10, m/s, [0, 100]; 11: Beaufort force 6, where its sea criteria first name spray
     int spray_per_step = 150;     ///< wind spray drops thrown per simulation step at most (the budget), [0, 100,000]
     environment::EnvironmentDef environment;  ///< g and ρ of the flight and the drops: the scene's [environment], set when it is built (not a key)
 };

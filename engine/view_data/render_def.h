@@ -17,6 +17,14 @@ enum class Antialias : uint8_t {
 };
 constexpr std::array<const char*, 4> names(Antialias) { return {"auto", "off", "fxaa", "msaa4"}; }
 
+/// Whether the exposure adapts to the frame (gfx/auto_exposure.h).
+enum class AutoExposureMode : uint8_t {
+    Auto,  ///< on in `play` with a window, off in `run` and headless runs (their pictures stay reproducible)
+    On,
+    Off,
+};
+constexpr std::array<const char*, 3> names(AutoExposureMode) { return {"auto", "on", "off"}; }
+
 /// Look of the sky and the water surface; every switch removes its pass or term.
 struct RenderDef {
     glm::vec3 sun_direction{0.35f, 0.30f, 0.88f};  ///< direction toward the sun (world, y up; normalised on use); unused when time_of_day is set
@@ -36,6 +44,7 @@ struct RenderDef {
     float splash_sprite_scale = 6.0f;               ///< sprite radius / drop radius: a simulated drop stands for a cluster of spray, [1, 100]
     float glitter = 6.0f;                           ///< the sun's irradiance on the water (× sun colour, relative to the sky's radiance), [0, 100]; its glitter spreads as the sea's slopes (Cox & Munk 1954)
     float exposure = 1.0f;                          ///< scene exposure multiplier before tone mapping, [0.01, 16]
+    AutoExposureMode auto_exposure = AutoExposureMode::Auto;  ///< exposure × a gain that adapts to the frame's log-average luminance (τ ≈ 1 s, gain in [1/4, 8]): "auto" (on in play, off in run), "on", "off"
     float resolution_scale = 1.0f;                  ///< internal render size / framebuffer size, [0.25, 1]; below 1 the frame is scaled up (bilinear)
     float target_fps = 30.0f;                       ///< dynamic resolution: the internal scale follows the frame time to hold this rate (play; run only when set on the command line), [0, 1000]; 0 = off (resolution_scale as set)
     Antialias antialias = Antialias::Auto;          ///< edge smoothing: "off", "fxaa" (one post pass), "msaa4" (4 samples a pixel), "auto" (msaa4 on a GPU, fxaa on a software rasteriser)
@@ -70,6 +79,7 @@ template <class V> void describe(V& v, RenderDef& d) {
     if constexpr (requires { v.refuse("", std::string()); })
         v.refuse("glitter_shininess", "removed: the glitter spreads as the sea's slopes (Cox & Munk 1954), set by ocean.wind_speed");
     v.field("exposure", d.exposure, range(0.01, 16), "exposure multiplier before tone mapping", LIVE);
+    v.field("auto_exposure", d.auto_exposure, "exposure adapts to the frame's brightness (τ 1 s, gain 1/4 to 8): auto (on in play, off in run), on, off", LIVE);
     v.field("resolution_scale", d.resolution_scale, range(0.25, 1), "internal render size / framebuffer size (scaled up below 1)", LIVE);
     v.field("target_fps", d.target_fps, range(0, 1000), "dynamic resolution holds this frame rate (play); 0 = off", LIVE);
     v.field("antialias", d.antialias, "edge smoothing: off, fxaa (post pass), msaa4 (4 samples), auto (msaa4 on a GPU, fxaa in software)", LIVE);

@@ -54,12 +54,14 @@ void addPlayCommand(CLI::App& app, CommandAction& action) {
             o.record = play->record;
             o.realTime = true;
             o.dynamicResolution = true;
+            o.autoExposure = true;
             if (o.frames == 0) o.frames = -1;
             if (!platform::displayAvailable() || play->headless) {
                 // No window to look at: run a fixed number of frames and keep a picture.
                 o.window = false;
                 o.realTime = false;
                 o.dynamicResolution = play->options().dynamicResolution;  // reproducible unless asked
+                o.autoExposure = false;
                 if (o.frames < 0) o.frames = 600;
                 if (o.screenshot.empty()) o.screenshot = "oceanbox.png";
             }

@@ -21,6 +21,8 @@
 #include "world/input_script.h"
 #include "sim/objects.h"
 #include "view/sandbox_view.h"
+#include "sim/splash_foam_system.h"
+#include "splash/splash_particles.h"
 #include "world/sandbox.h"
 #include "world/scene_budget.h"
 #include "world/script.h"
@@ -141,6 +143,8 @@ static void writeStats(const std::string& path, Sandbox& sandbox, const std::str
         j["fish_schools"].push_back({{"name", tag ? tag->name : ""}, {"fish", s.size()}, {"jumps", s.jumps},
                                      {"stamps", s.stamps}, {"airborne", airborne}});
     }
+    if (const splash::SplashParticles* drops = splashParticles(sandbox.world()))
+        j["splash"] = {{"emitted", drops->stats().emitted}, {"spray_emitted", drops->stats().spray}, {"landed", drops->stats().landed}};
     if (const auto* script = sandbox.world().resource<ScriptState>()) j["events_run"] = script->fired;
     if (const GameState* game = gameState(sandbox.world())) j["game"] = gameStats(*game);
     char hash[32];
@@ -226,6 +230,7 @@ int runScene(const SceneDef& scene, const std::string& scenePath, const RunOptio
         made->setScriptedInput(scripted);
         if (!options.record.empty()) made->world().setResource(std::make_unique<InputRecorder>());
         if (options.dynamicResolution) made->enableDynamicResolution();
+        if (options.autoExposure) made->world().setResource(std::make_unique<AutoExposureByDefault>());
         if (!options.realTime) made->schedule().setFirstFrameSeconds(options.stepsPerFrame / double(s.sim.step_hz));
         return made;
     };

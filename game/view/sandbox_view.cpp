@@ -24,7 +24,9 @@ SandboxView::SandboxView(platform::Platform& platform, bool withUi, ecs::World& 
                          std::optional<SceneDef>& restart)
     : m_platform(platform), m_timer(timer), m_restart(restart),
       m_renderer(std::make_unique<gfx::Renderer>(sceneSettings(world).def.render)),
-      m_renderSeen{sceneSettings(world).version(SceneSection::Render)} {
+      m_renderSeen{sceneSettings(world).version(SceneSection::Render)},
+      m_skySeen{sceneSettings(world).version(SceneSection::Sky)} {
+    m_renderer->sky() = sceneSettings(world).def.sky;
     if (withUi && platform.nativeWindow()) m_ui = std::make_unique<gfx::UiOverlay>(platform.nativeWindow());
 }
 
@@ -68,6 +70,8 @@ void SandboxView::render(ecs::World& world, const ecs::Tick& tick) {
     const gfx::RenderDef& render = settings.def.render;
     // The renderer keeps its [render]: it gets the section again when a live change moved it.
     if (m_renderSeen.moved(settings, SceneSection::Render)) m_renderer->def() = render;
+    if (m_skySeen.moved(settings, SceneSection::Sky)) m_renderer->sky() = settings.def.sky;
+    m_renderer->setAutoExposureDefault(world.resource<AutoExposureByDefault>() != nullptr);
     // Dynamic resolution: the last frame's time sets this frame's internal scale.
     if (auto* dynamic = world.resource<DynamicScale>(); dynamic && render.target_fps > 0.0f) {
         auto& control = dynamic->control;

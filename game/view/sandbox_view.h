@@ -21,6 +21,9 @@ struct DynamicScale {
     std::optional<gfx::DynamicResolution> control;
 };
 
+/// Present (a resource) where render.auto_exposure = "auto" means on: `play` in a window.
+struct AutoExposureByDefault {};
+
 class SandboxView final : public View {
 public:
     /// Draws `world` (its scene: world/scene_settings.h); `restart` is where the UI puts a
@@ -40,6 +43,7 @@ private:
     std::unique_ptr<gfx::UiOverlay> m_ui;
     bool m_presentPending = false;  // a frame is drawn and not yet presented
     SectionSeen m_renderSeen;       // the [render] version the renderer has
+    SectionSeen m_skySeen;          // the [sky] version the renderer has
 };
 
 } // namespace ob::game

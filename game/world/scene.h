@@ -9,6 +9,7 @@
 #include "environment/environment_def.h"
 #include "foam/foam_def.h"
 #include "view_data/render_def.h"
+#include "view_data/sky_def.h"
 #include "interaction/ripple_def.h"
 #include "ocean/gerstner.h"
 #include "ocean/ocean_def.h"
@@ -48,6 +49,7 @@ struct SceneDef {
     ControlsDef controls;         ///< [controls]
     ToolsDef tools;               ///< [tools]
     gfx::RenderDef render;        ///< [render]
+    gfx::SkyDef sky;              ///< [sky]: the weather of the sky
     ocean::OceanDef ocean;        ///< [ocean]
     ocean::GerstnerDef gerstner;  ///< [gerstner]
     interaction::RippleDef ripples; ///< [ripples]
@@ -69,6 +71,7 @@ template <class V> void describe(V& v, SceneDef& s) {
     v.section("controls", s.controls);
     v.section("tools", s.tools);
     v.section("render", s.render);
+    v.section("sky", s.sky);
     v.section("ocean", s.ocean);
     v.section("gerstner", s.gerstner);
     v.section("ripples", s.ripples);

@@ -27,7 +27,8 @@ struct PresetSet {
 };
 
 /// The keys a preset sets: ocean.wind_speed, ocean.amplitude, ocean.choppiness,
-/// gerstner.count (8: a scene without Gerstner waves gains the swell), gerstner.amplitude_scale.
+/// gerstner.count (8: a scene without Gerstner waves gains the swell), gerstner.amplitude_scale,
+/// sky.cloud_cover (calm 0, breeze 0.3, storm 1).
 std::vector<PresetSet> presetSets(SeaPreset preset);
 
 /// Requests every key of `preset` (requestLiveSet): applied together at the next step.

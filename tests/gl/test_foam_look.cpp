@@ -9,6 +9,7 @@
 #include "support/test_image.h"
 #include "world/sandbox.h"
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstring>
@@ -156,4 +157,31 @@ TEST_CASE("foam far away averages to its mean: a distant patch keeps the near on
     CHECK(near.mean > water.mean + 0.1);  // there is foam to average
     CHECK(far.mean == Approx(near.mean).epsilon(0.1));
     CHECK(far.variance < 0.5 * near.variance);
+}
+
+TEST_CASE("fresh foam is not paper: dense new foam has bubble holes at every 16×16 block and lets the water through", "[gl][render][foam][fresh]") {
+    // Coverage 1 (the map's fresh foam, as the stir or a splash leave it) over a 6 m square seen
+    // from 4 m (1.4 cm a pixel): no 16×16 block inside is flat (luma σ under 4 of 255), and the
+    // mean over the patch, linear, lies at least 15 % below its solid foam (the brightest
+    // percent of its pixels, where the bubbles leave no hole): the holes and the thin foam show
+    // the water.
+    const Image dense = renderFoam(4.0f, 50.0f, [](float x, float z) { return std::abs(x) < 3.0f && std::abs(z) < 3.0f ? 1.0f : 0.0f; });
+    const auto linear = [&](int x, int y) { return std::pow(double(luma(dense, x, y)), 2.2); };
+    int flat = 0, blocks = 0;
+    std::vector<double> inside;
+    for (int by = 50; by + 16 <= 130; by += 16)
+        for (int bx = 100; bx + 16 <= 220; bx += 16) {
+            const BoxStats s = boxStats(dense, bx, by, bx + 16, by + 16);
+            ++blocks;
+            flat += std::sqrt(s.variance) * 255.0 < 4.0;
+            for (int y = by; y < by + 16; ++y)
+                for (int x = bx; x < bx + 16; ++x) inside.push_back(linear(x, y));
+        }
+    std::sort(inside.begin(), inside.end());
+    double mean = 0.0;
+    for (double v : inside) mean += v / double(inside.size());
+    const double solid = inside[inside.size() * 99 / 100];
+    INFO(flat << " of " << blocks << " blocks flat; mean " << mean << " against solid foam " << solid << " (linear)");
+    CHECK(flat == 0);
+    CHECK(mean <= 0.85 * solid);
 }

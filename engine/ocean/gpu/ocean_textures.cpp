@@ -55,7 +55,7 @@ void OceanTextures::upload(const OceanFftCpu& fft) {
         }
     }
     glTextureSubImage3D(m_displacement.id(), 0, 0, 0, 0, m_n, m_n, m_cascades, GL_RGBA, GL_FLOAT, m_staging.data());
-    // --- slopes: (∂h/∂x, ∂h/∂z, J, 0); the driver has copied the staging array on return
+    // --- slopes: (∂h/∂x, ∂h/∂z, J, |∇h|²) (ocean_unpack.comp); the driver has copied the staging array on return
     for (int c = 0; c < m_cascades; ++c) {
         const float* sx = fft.channel(c, OceanChannel::SlopeX);
         const float* sz = fft.channel(c, OceanChannel::SlopeZ);
@@ -65,7 +65,7 @@ void OceanTextures::upload(const OceanFftCpu& fft) {
             out[4 * p] = sx[p];
             out[4 * p + 1] = sz[p];
             out[4 * p + 2] = jac[p];
-            out[4 * p + 3] = 0.0f;
+            out[4 * p + 3] = sx[p] * sx[p] + sz[p] * sz[p];
         }
     }
     glTextureSubImage3D(m_slopes.id(), 0, 0, 0, 0, m_n, m_n, m_cascades, GL_RGBA, GL_FLOAT, m_staging.data());

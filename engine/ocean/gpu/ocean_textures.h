@@ -13,7 +13,7 @@ class OceanFftCpu;
 /// (the tile is periodic), trilinear filtering with a full mip chain. Texel (i, j) of layer
 /// c is the point X = (i·L_c/N, j·L_c/N) of cascade c's tile (x along i, z along j):
 ///   displacement() = (Dx, h, Dz, J)  metres, metres, metres, dimensionless
-///   slopes()       = (∂h/∂x, ∂h/∂z, J, 0)   (J again: the surface shader reads one map per pixel)
+///   slopes()       = (∂h/∂x, ∂h/∂z, J, |∇h|²)   (J again: the surface shader reads one map per pixel; |∇h|²: its mips give the slope variance a filtered lookup loses)
 /// Dx and Dz are NOT multiplied by λ (the shader applies λ = −choppiness); J already is the
 /// Jacobian of X → X + λD (OceanChannel::Jacobian). Writers fill level 0 only: call
 /// generateMipmaps() after upload() / OceanFftGpu::update() before sampling minified.
