@@ -91,6 +91,12 @@ public:
     const char* name() const override { return "glfw"; }
     bool headless() const override { return false; }
     void* nativeWindow() override { return m_window; }
+    float contentScale() const override {
+        float x = 1.0f, y = 1.0f;
+        glfwGetWindowContentScale(m_window, &x, &y);
+        return std::max(x, y);
+    }
+    void setTitle(const std::string& title) override { glfwSetWindowTitle(m_window, title.c_str()); }
 
     glm::ivec2 framebufferSize() const override {
         int w, h;

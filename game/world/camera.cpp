@@ -188,7 +188,7 @@ void cameraSystem(ecs::World& world, const ecs::Tick& tick) {
 
 void pausedCameraSystem(ecs::World& world, const ecs::Tick& tick) {
     const auto* control = world.resource<ecs::SimControl>();
-    if (control && (control->paused || control->stopped)) steerCameras(world, world.resource<platform::InputState>(), float(tick.dt), tick.time);
+    if (control && (control->paused || control->held || control->stopped)) steerCameras(world, world.resource<platform::InputState>(), float(tick.dt), tick.time);
 }
 
 void cycleCameraMode(ecs::World& world) {

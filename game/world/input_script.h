@@ -82,6 +82,7 @@ template <class V> void describe(V& v, SetDef& d) {
 struct InputScriptDef {
     uint64_t steps = 0;          ///< simulation steps the recorded session ran (0: not a recording); `run` runs as many
     glm::vec2 size{0.0f};        ///< the recorded framebuffer (px; 0: none): `run` renders at it, so the cursor's rays are the same
+    bool goal_clock_waits = false;  ///< the goal clock waited for the first input acting in the world (a recording of play)
     std::vector<PressDef> press;
     std::vector<MouseDef> mouse;
     std::vector<MoveDef> move;
@@ -91,6 +92,7 @@ struct InputScriptDef {
 template <class V> void describe(V& v, InputScriptDef& d) {
     v.field("steps", d.steps, "simulation steps the recorded session ran (run runs as many)");
     v.field("size", d.size, range(0, 16384), "the recorded framebuffer, px (run renders at it)");
+    v.field("goal_clock_waits", d.goal_clock_waits, "the goal clock waited for the first input (a recording of play)");
     v.list("press", d.press, "key presses");
     v.list("mouse", d.mouse, "mouse actions");
     v.list("move", d.move, "cursor motions");

@@ -83,6 +83,7 @@ Sandbox::Sandbox(const SceneDef& scene) : m_schedule(scene.sim) {
     spawnObjects(m_world, def.physics, def.objects, def.sim.seed);
     addScript(m_world);
     addPlayerTools(m_world, def.tools, {def.window.width, def.window.height}, fishSchoolOf(def.controls), droppedShip(def));
+    allowTools(m_world, allowedTools(def.game));
     addGame(m_world, def);
 }
 

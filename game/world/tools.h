@@ -6,6 +6,7 @@
 #include "ecs/schedule.h"
 #include "view_data/scene_view.h"
 #include "sim/objects.h"
+#include "world/tool_kind.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -15,15 +16,6 @@
 
 namespace ob::game {
 
-/// What the left button does.
-enum class Tool : uint8_t {
-    Grab,    ///< 1: drag a body on a spring to the cursor; release throws it
-    Stir,    ///< 2: a sphere source follows the cursor's point on the water
-    Drop,    ///< 3: a click drops the palette's object 3 m above the water point (3 again: the next object)
-    Erase,   ///< 4: a click removes the body (ship, school as a whole) under the cursor
-    Cannon,  ///< 5: a click aims the player's cannon at the water point and fires
-};
-constexpr std::array<const char*, 5> names(Tool) { return {"grab", "stir", "drop", "erase", "cannon"}; }
 
 /// What the drop tool spawns.
 enum class DropKind : uint8_t { Ball, Crate, Barrel, Buoy, Raft, FishSchool, Ship };
@@ -74,6 +66,7 @@ struct PlayerTools {
     ecs::Entity stirrer = ecs::Entity::None;  ///< the moving source sphere while the button is held
     // --- what the drop tool makes of a school and a ship (the scene's [controls] fish, its ship model)
     ObjectDef fishTemplate, shipTemplate;
+    std::vector<Tool> allowed;              ///< the tools the scene allows (its [game] tools)
     // --- counts and what the overlay says
     int drops = 0, erased = 0, throws = 0, shots = 0;
     std::string message;                    ///< the latest note for the player ("" = none)
@@ -83,6 +76,9 @@ struct PlayerTools {
 /// fish school and ship are copies of the templates.
 void addPlayerTools(ecs::World& world, const ToolsDef& def, glm::ivec2 viewportSize, const ObjectDef& fishTemplate,
                     const ObjectDef& shipTemplate);
+/// Limits the player to `allowed` (a goal scene's [game] tools); a tool held at start that is
+/// not among them gives way to the first that is.
+void allowTools(ecs::World& world, const std::vector<Tool>& allowed);
 /// What the drop tool drops at `at` (on the water; the body starts drop_height above it),
 /// turned `yawDeg`: the palette's choice with its size, density and model.
 ObjectDef dropDef(const PlayerTools& tools, glm::vec3 at, float yawDeg);
