@@ -81,6 +81,16 @@ void PhysicsWorld::setLinearVelocity(BodyId id, const glm::vec3& velocity) {
     if (btRigidBody* body = m_impl->get(id)) body->setLinearVelocity(bt(velocity));
 }
 
+void PhysicsWorld::setPose(BodyId id, const glm::vec3& position, const glm::quat& rotation) {
+    btRigidBody* body = m_impl->get(id);
+    if (!body) return;
+    const btTransform t(btQuaternion(rotation.x, rotation.y, rotation.z, rotation.w), bt(position));
+    body->setWorldTransform(t);
+    if (body->getMotionState()) body->getMotionState()->setWorldTransform(t);
+    body->setAngularVelocity(btVector3(0, 0, 0));
+    body->activate(true);
+}
+
 std::optional<RayHit> PhysicsWorld::rayCast(const glm::vec3& from, const glm::vec3& to) const {
     btCollisionWorld::ClosestRayResultCallback closest(bt(from), bt(to));
     m_impl->world.rayTest(bt(from), bt(to), closest);

@@ -23,6 +23,8 @@
 #include "ui/hud.h"
 #include "world/sandbox.h"
 #include "world/script.h"
+#include "world/tools.h"
+#include "world/camera.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -159,6 +161,13 @@ static void writeStats(const std::string& path, Sandbox& sandbox, const std::str
                                      {"stamps", s.stamps}, {"airborne", airborne}});
     }
     if (const auto* script = sandbox.world().resource<ScriptState>()) j["events_run"] = script->fired;
+    // The camera as the last frame saw it (a test projects bodies into the screenshot with it).
+    const gfx::CameraView view = cameraView(sandbox.world(), platform.framebufferSize());
+    const glm::mat4 clip = view.projection * view.view;
+    j["camera"] = {{"position", {view.position.x, view.position.y, view.position.z}}, {"mode", cameraMode(sandbox.world())},
+                   {"view_projection", std::vector<float>(&clip[0][0], &clip[0][0] + 16)}};  // column-major
+    if (const auto* tools = sandbox.world().resource<PlayerTools>())
+        j["tools"] = {{"tool", enumName(tools->def.tool)}, {"message", tools->message}};
     if (const GameState* game = gameState(sandbox.world())) j["game"] = gameStats(*game);
     char hash[32];
     std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(sandbox.stateHash()));
