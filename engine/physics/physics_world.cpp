@@ -81,14 +81,16 @@ void PhysicsWorld::setLinearVelocity(BodyId id, const glm::vec3& velocity) {
     if (btRigidBody* body = m_impl->get(id)) body->setLinearVelocity(bt(velocity));
 }
 
-void PhysicsWorld::setPose(BodyId id, const glm::vec3& position, const glm::quat& rotation) {
+void PhysicsWorld::setState(BodyId id, const BodyState& s) {
     btRigidBody* body = m_impl->get(id);
     if (!body) return;
-    const btTransform t(btQuaternion(rotation.x, rotation.y, rotation.z, rotation.w), bt(position));
+    btTransform t;
+    t.setOrigin(bt(s.position));
+    t.setRotation(btQuaternion(s.rotation.x, s.rotation.y, s.rotation.z, s.rotation.w));
     body->setWorldTransform(t);
-    if (body->getMotionState()) body->getMotionState()->setWorldTransform(t);
-    body->setAngularVelocity(btVector3(0, 0, 0));
-    body->activate(true);
+    body->getMotionState()->setWorldTransform(t);
+    body->setLinearVelocity(bt(s.linearVelocity));
+    body->setAngularVelocity(bt(s.angularVelocity));
 }
 
 std::optional<RayHit> PhysicsWorld::rayCast(const glm::vec3& from, const glm::vec3& to) const {

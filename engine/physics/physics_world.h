@@ -48,8 +48,8 @@ public:
     void applyForce(BodyId id, const glm::vec3& force, const glm::vec3& worldPoint);
     /// Sets a body's linear velocity (m/s), as a throw does.
     void setLinearVelocity(BodyId id, const glm::vec3& velocity);
-    /// Puts a body at `position`, turned `rotation`, at rest in rotation (righting a capsized ship).
-    void setPose(BodyId id, const glm::vec3& position, const glm::quat& rotation);
+    /// Puts a body at a pose with the given motion (a righted ship, a test's start).
+    void setState(BodyId id, const BodyState& state);
     /// The first body the segment from `from` to `to` (world m) meets, if any.
     std::optional<RayHit> rayCast(const glm::vec3& from, const glm::vec3& to) const;
     /// Multiplies the angular velocity by `factor` (water damping).

@@ -24,7 +24,14 @@ void request(ecs::World& world, const char* key, float value) {
     uiState(world).seaStatus = requestLiveSet(world, key, value);
 }
 
-// A slider over the live key `key` whose value in the scene is `current`.
+float windHeadingDeg(const SceneDef& scene) {
+    const glm::vec2 w = scene.ocean.wind_direction;
+    float deg = float(std::atan2(double(w.y), double(w.x)) * 180.0 / std::numbers::pi);
+    return deg < 0.0f ? deg + 360.0f : deg;
+}
+
+} // namespace
+
 void liveSlider(ecs::World& world, const char* label, const char* key, float current, float lo, float hi, const char* format,
                 const char* tip) {
     // A value dragged but not yet seen back in the scene; dropped once it is (or after a
@@ -44,14 +51,6 @@ void liveSlider(ecs::World& world, const char* label, const char* key, float cur
         request(world, key, v);
     }
 }
-
-float windHeadingDeg(const SceneDef& scene) {
-    const glm::vec2 w = scene.ocean.wind_direction;
-    float deg = float(std::atan2(double(w.y), double(w.x)) * 180.0 / std::numbers::pi);
-    return deg < 0.0f ? deg + 360.0f : deg;
-}
-
-} // namespace
 
 void seaPanel(ecs::World& world, const SceneDef& scene) {
     if (!ImGui::CollapsingHeader("sea (live)", ImGuiTreeNodeFlags_DefaultOpen)) return;

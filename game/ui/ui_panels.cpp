@@ -201,16 +201,16 @@ static void toolsPanel(ecs::World& world, double now) {
         const std::string label = std::to_string(k + 1) + " " + enumNames<Tool>[k];
         if (ImGui::RadioButton(label.c_str(), tools->def.tool == Tool(k)) && tools->def.tool != Tool(k)) pressKey(world, KEYS[k], now);
     }
-    ToolsDef& def = tools->def;
+    const ToolsDef& def = tools->def;
     switch (def.tool) {
     case Tool::Grab:
         ImGui::TextDisabled("left drag a body; wheel: nearer/farther; release throws");
-        ImGui::SliderFloat("spring Hz", &def.grab_frequency_hz, 0.1f, 20.0f, "%.1f");
+        liveSlider(world, "spring Hz", "tools.grab_frequency_hz", def.grab_frequency_hz, 0.1f, 20.0f, "%.1f", nullptr);
         break;
     case Tool::Stir:
         ImGui::TextDisabled("hold left on the water; wheel: radius, Shift + wheel: depth");
-        ImGui::SliderFloat("radius m", &def.stir_radius, 0.05f, 10.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
-        ImGui::SliderFloat("depth m", &def.stir_depth, -10.0f, 10.0f, "%.2f");
+        liveSlider(world, "radius m", "tools.stir_radius", def.stir_radius, 0.05f, 10.0f, "%.2f", nullptr);
+        liveSlider(world, "depth m", "tools.stir_depth", def.stir_depth, -10.0f, 10.0f, "%.2f", nullptr);
         break;
     case Tool::Drop: {
         ImGui::TextDisabled("left click on the water drops it %.0f m above", double(def.drop_height));
@@ -221,8 +221,9 @@ static void toolsPanel(ecs::World& world, double now) {
                 for (size_t n = (k + count - size_t(def.drop)) % count; n > 0; --n) pressKey(world, platform::Key::Num3, now);
         }
         if (def.drop == DropKind::Ball) {
-            ImGui::SliderFloat("ball radius m", &def.ball_radius, 0.05f, 5.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
-            ImGui::SliderFloat("density kg/m3", &def.ball_density, 10.0f, 20000.0f, "%.0f", ImGuiSliderFlags_Logarithmic);
+            // Through the live path (recorded as tools.* sets): a session that used them replays.
+            liveSlider(world, "ball radius m", "tools.ball_radius", def.ball_radius, 0.05f, 5.0f, "%.2f", nullptr);
+            liveSlider(world, "density kg/m3", "tools.ball_density", def.ball_density, 10.0f, 20000.0f, "%.0f", nullptr);
             const float water = sceneSettings(world).def.environment.water_density;
             ImGui::TextDisabled("%s (water: %.0f kg/m3)", def.ball_density < water ? "floats" : "sinks", double(water));
         }

@@ -36,8 +36,10 @@ void rightingSystem(ecs::World& world, const ecs::Tick&) {
         ecs::Transform* t = world.find<ecs::Transform>(e);
         const Body* body = world.find<Body>(e);
         if (!t || !body || !capsized(t->rotation)) continue;
-        t->rotation = uprightOnHeading(t->rotation);
-        physicsWorld->setPose(body->id, t->position, t->rotation);
+        physics::BodyState state = physicsWorld->state(body->id);
+        state.rotation = t->rotation = uprightOnHeading(t->rotation);
+        state.angularVelocity = glm::vec3(0.0f);
+        physicsWorld->setState(body->id, state);
         ++righted;
     }
     logInfo("%s", righted > 0 ? "T: capsized ships righted" : "T: no ship is capsized");

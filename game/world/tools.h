@@ -36,12 +36,12 @@ struct ToolsDef {
 template <class V> void describe(V& v, ToolsDef& d) {
     v.field("tool", d.tool, "the tool at start: grab, stir, drop, erase or cannon (keys 1-5)");
     v.field("drop", d.drop, "what the drop tool spawns");
-    v.field("ball_radius", d.ball_radius, range(0.05, 5), "dropped ball radius, m");
-    v.field("ball_density", d.ball_density, range(10, 20000), "dropped ball density, kg/m³ (water 1025)");
-    v.field("drop_height", d.drop_height, range(0, 100), "drops start this far above the water, m");
-    v.field("stir_radius", d.stir_radius, range(0.05, 10), "stir: source sphere radius, m (wheel)");
-    v.field("stir_depth", d.stir_depth, range(-10, 10), "stir: depth of its centre under the surface, m (Shift + wheel)");
-    v.field("grab_frequency_hz", d.grab_frequency_hz, range(0.1, 20), "grab: spring frequency, Hz");
+    v.field("ball_radius", d.ball_radius, range(0.05, 5), "dropped ball radius, m", LIVE);
+    v.field("ball_density", d.ball_density, range(10, 20000), "dropped ball density, kg/m³ (water 1025)", LIVE);
+    v.field("drop_height", d.drop_height, range(0, 100), "drops start this far above the water, m", LIVE);
+    v.field("stir_radius", d.stir_radius, range(0.05, 10), "stir: source sphere radius, m (wheel)", LIVE);
+    v.field("stir_depth", d.stir_depth, range(-10, 10), "stir: depth of its centre under the surface, m (Shift + wheel)", LIVE);
+    v.field("grab_frequency_hz", d.grab_frequency_hz, range(0.1, 20), "grab: spring frequency, Hz", LIVE);
 }
 
 /// Where the viewport's framebuffer is (a resource): the cursor's pixels become rays in it.

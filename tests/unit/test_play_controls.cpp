@@ -13,6 +13,8 @@
 #include "world/righting.h"
 #include "world/sandbox.h"
 #include "world/scene.h"
+#include "world/script.h"
+#include "world/tools.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -99,7 +101,10 @@ yaw_deg = 30.0
     ecs::Transform& t = world.get<ecs::Transform>(ship);
     const glm::quat heading = t.rotation;
     const glm::quat rolled = heading * glm::angleAxis(glm::radians(170.0f), glm::vec3(0, 0, 1));
-    world.resource<physics::PhysicsWorld>()->setPose(world.get<Body>(ship).id, t.position, rolled);
+    auto& physicsWorld = *world.resource<physics::PhysicsWorld>();
+    physics::BodyState state = physicsWorld.state(world.get<Body>(ship).id);
+    state.rotation = rolled;
+    physicsWorld.setState(world.get<Body>(ship).id, state);
     t.rotation = rolled;
     REQUIRE(capsized(t.rotation));
     press(sandbox, platform::Key::T, 31.0 / 60.0);
@@ -130,4 +135,46 @@ TEST_CASE("storm: the camera of targets.toml (orbit at 0 deg/s) with the wind at
     }
     INFO("closest " << closest << " m above the water under it; lifted up to " << highestLift << " m");
     CHECK(closest >= CAMERA_CLEARANCE_M - 1e-3f);
+}
+
+TEST_CASE("a palette slider is a live set of a tools.* key: the recording's set replays to the same state hash", "[tools][record]") {
+    const std::string text = CALM + "[tools]\ntool = \"drop\"\n";
+    using T = platform::InputEvent::Type;
+    // A click at the view's centre at 1.0 s drops a ball where the camera looks.
+    const auto click = [](Sandbox& sandbox) {
+        auto& queue = *sandbox.world().resource<platform::InputQueue>();
+        queue.push({T::Move, 0.95, platform::Key::W, platform::MouseButton::Left, glm::vec2(0.0f), true, glm::vec2(640.0f, 360.0f)});
+        queue.push({T::ButtonDown, 1.0, platform::Key::W, platform::MouseButton::Left, glm::vec2(0.0f), true, glm::vec2(640.0f, 360.0f)});
+        queue.push({T::ButtonUp, 1.05, platform::Key::W, platform::MouseButton::Left, glm::vec2(0.0f), true, glm::vec2(640.0f, 360.0f)});
+    };
+    // The session: the slider released at 0.5 s (what the overlay does), then the click.
+    Sandbox played(parseScene(text, "slider.toml"));
+    click(played);
+    for (int f = 1; f <= 30; ++f) played.frame(f / 60.0);
+    REQUIRE(requestLiveSet(played.world(), "tools.ball_radius", 1.5f).empty());
+    for (int f = 31; f <= 120; ++f) played.frame(f / 60.0);
+    CHECK(played.world().resource<PlayerTools>()->def.ball_radius == 1.5f);
+    const auto& changes = played.world().resource<ScriptState>()->liveChanges;
+    REQUIRE(changes.size() == 1);  // what the recording writes as a [[set]]
+    CHECK(changes[0].key == "tools.ball_radius");
+
+    // The replay: the recorded set as a timeline `set` at its time, the same click.
+    SceneDef scene = parseScene(text, "slider.toml");
+    EventDef set;
+    set.at = float(changes[0].time);
+    set.action = EventAction::Set;
+    set.key = changes[0].key;
+    set.value = changes[0].value;
+    scene.events.push_back(set);
+    Sandbox replayed(scene);
+    click(replayed);
+    for (int f = 1; f <= 120; ++f) replayed.frame(f / 60.0);
+    CHECK(replayed.world().resource<PlayerTools>()->def.ball_radius == 1.5f);
+    CHECK(replayed.world().resource<PlayerTools>()->drops == 1);
+    CHECK(replayed.stateHash() == played.stateHash());
+    // Without the set, the ball is the default's: another state.
+    Sandbox plain(parseScene(text, "slider.toml"));
+    click(plain);
+    for (int f = 1; f <= 120; ++f) plain.frame(f / 60.0);
+    CHECK(plain.stateHash() != played.stateHash());
 }
