@@ -8,6 +8,7 @@ out=docs/openings
 for scene in config/scenes/*.toml; do
     name=$(basename "$scene" .toml)
     [ "$name" = fish_swarm ] && continue  # a benchmark, not a sight
+    [ -n "$KEEP" ] && [ -f "$out/${name}_after.png" ] && continue  # KEEP=1: only the missing ones
     if [ -n "$BEFORE" ]; then
         "$BEFORE" play "$(dirname "$BEFORE")/../../$scene" --size 960x540 --frames 30 --screenshot "$out/${name}_before.png" || true
     fi
