@@ -113,7 +113,7 @@ TEST_CASE("every scene at start: the folded overlay covers at most 15 % of the v
 TEST_CASE("the goal clock reads 0 until the player's first input and stands still while the game is paused", "[goals][input]") {
     // A recording of play: the clock waited for the player.
     const std::string waiting = writeFile(tempPath("clock_wait.toml"), "goal_clock_waits = true\n");
-    nlohmann::json j = runStats("config/scenes/targets.toml", "--frames 90 --input " + waiting);
+    nlohmann::json j = runStats("config/scenes/targets.toml", "--frames 90 --set ripples.enabled=false --input " + waiting);
     CHECK(j["game"]["time_s"].get<double>() == 0.0);
     CHECK(j["game"]["result"] == "running");
     CHECK(j["steps"].get<int>() == 90);  // the world ran; only the goal clock waited
@@ -124,7 +124,7 @@ TEST_CASE("the goal clock reads 0 until the player's first input and stands stil
                                                                       "[[press]]\nat = 1.0\nkey = \"left\"\nhold = 0.1\n"
                                                                       "[[press]]\nat = 1.5\nkey = \"p\"\nhold = 0.0\n"
                                                                       "[[press]]\nat = 2.0\nkey = \"p\"\nhold = 0.0\n");
-    j = runStats("config/scenes/targets.toml", "--frames 180 --input " + played);
+    j = runStats("config/scenes/targets.toml", "--frames 180 --set ripples.enabled=false --input " + played);
     CHECK(j["steps"].get<int>() == 150);
     CHECK(j["game"]["time_s"].get<double>() == Approx(1.5).margin(1.0 / 60.0 + 1e-6));
 }
