@@ -472,6 +472,34 @@ void TomlReader::choice(const char* key, Words words, std::size_t& index) {
     m_state->error(*str, key, "must be one of " + list + ", got " + quotedValue(str->get(), MESSAGE_VALUE_CHARS, '"'));
 }
 
+bool TomlReader::choices(const char* key, Words words, std::vector<std::size_t>& indices) {
+    State& s = *m_state;
+    const toml::node* node = s.lookup(key);
+    if (!node) return false;
+    auto arr = node->as_array();
+    std::string list;
+    for (const char* w : words) list += std::string(list.empty() ? "" : ", ") + "\"" + w + "\"";
+    if (!arr) {
+        s.error(*node, key, std::string("expected an array of words (") + list + "), got " + typeName(*node));
+        return false;
+    }
+    for (const toml::node& item : *arr) {
+        auto str = item.as_string();
+        const auto at = str ? std::find(words.begin(), words.end(), str->get()) : words.end();
+        if (at == words.end()) {
+            s.error(item, key, "each must be one of " + list + (str ? ", got \"" + str->get() + "\"" : ", got a " + std::string(typeName(item))));
+            return false;
+        }
+        const std::size_t index = std::size_t(at - words.begin());
+        if (std::find(indices.begin(), indices.end(), index) != indices.end()) {
+            s.error(item, key, "\"" + str->get() + "\" is listed twice");
+            return false;
+        }
+        indices.push_back(index);
+    }
+    return true;
+}
+
 void TomlReader::field(const char* key, std::vector<glm::vec2>& points, Limits limits, const char*, Change) {
     State& s = *m_state;
     const toml::node* node = s.lookup(key);

@@ -55,6 +55,15 @@ public:
     }
     /// One of `words` (an enum's), read as its index.
     void choice(const char* key, Words words, std::size_t& index);
+    /// A list of an enum's words (`["a", "b"]`), each once.
+    template <NamedEnum E> void field(const char* key, std::vector<E>& values, const char* /*doc*/, Change = {}) {
+        std::vector<std::size_t> indices;
+        if (!choices(key, enumNames<E>, indices)) return;
+        values.clear();
+        for (std::size_t i : indices) values.push_back(E(i));
+    }
+    /// A list of `words`, read as their indices; false when the key is absent or wrong.
+    bool choices(const char* key, Words words, std::vector<std::size_t>& indices);
     /// A key the Def does not read in its present state (another object type's): set in the
     /// file, it is the error `why`.
     void refuse(const char* key, const std::string& why);

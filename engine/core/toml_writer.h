@@ -59,6 +59,11 @@ public:
     void field(const char* key, std::string& v, const char*, Change = {}) { add(key, tomlValue(v)); }
     template <NamedEnum E> void field(const char* key, E& v, const char*, Change = {}) { add(key, tomlValue(std::string(enumName(v)))); }
     void field(const char* key, std::vector<glm::vec2>& v, Limits, const char*, Change = {}) { add(key, tomlValue(v)); }
+    template <NamedEnum E> void field(const char* key, std::vector<E>& v, const char*, Change = {}) {
+        std::string text = "[";
+        for (size_t i = 0; i < v.size(); ++i) text += (i ? ", " : "") + tomlValue(std::string(enumName(v[i])));
+        add(key, text + "]");
+    }
     /// Another Def's keys in this table, those that differ from its own defaults (its
     /// sections and lists too: [[game.gates]] of a race's settings).
     template <class Def> void fields(Def& def) {

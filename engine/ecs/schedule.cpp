@@ -95,7 +95,7 @@ void Schedule::runFrame(World& world, double now) {
         // Over: time stands still for good (a step of the frame may have stopped it).
         m_accumulator = 0;
         if (control) control->stepRequests = 0;
-    } else if (control && control->paused) {
+    } else if (control && (control->paused || control->held)) {
         // Paused: time stands still; each request runs exactly one step.
         m_accumulator = 0;
         for (; control->stepRequests > 0 && !stopped(); --control->stepRequests) runStep(world, now);

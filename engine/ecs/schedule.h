@@ -51,6 +51,7 @@ const char* phaseName(Phase p);
 /// system, checked before every step) no step runs again.
 struct SimControl {
     bool paused = false;   ///< no simulation steps while true
+    bool held = false;     ///< no steps either while a window holds the game (the scene picker is open)
     int stepRequests = 0;  ///< steps to run while paused (consumed by the schedule)
     bool stopped = false;  ///< the run is over (a goal's result, [sim] end_time): no more steps, not even asked for
 };

@@ -67,8 +67,9 @@ void ObjectPass::draw(FrameContext& frame, const std::vector<ObjectDraw>& object
         const bool perVertex = view != MAIN_VIEW && side == Side::Across && boundingRadius(o, mesh) > TANGENT_PLANE_RADIUS;
         const GLuint program = perVertex ? m_waterlineProgram.id() : m_program.id();
         const glm::vec3 plane(o.waterHeight, o.waterSlope);
-        // Models carry their own colours; a highlighted object is drawn brighter and warmer.
-        const glm::vec3 tint = (o.modelFile.empty() ? o.color : glm::vec3(1.0f)) * (o.highlight ? HIGHLIGHT_TINT : glm::vec3(1.0f));
+        // Models carry their own colours (times a goal's state tint); a highlighted object is
+        // drawn brighter and warmer.
+        const glm::vec3 tint = (o.modelFile.empty() ? o.color : o.modelTint) * (o.highlight ? HIGHLIGHT_TINT : glm::vec3(1.0f));
         glUseProgram(program);
         glProgramUniformMatrix4fv(program, OBJECT_MODEL_LOCATION, 1, GL_FALSE, &o.model[0][0]);
         glProgramUniform3fv(program, OBJECT_TINT_LOCATION, 1, &tint.x);

@@ -1,6 +1,8 @@
 // ImGui overlay and the Def editor.
 #include "gfx/ui_overlay.h"
 
+#include "gfx/ui_draw.h"
+
 #include <algorithm>
 #include <cmath>
 #include <imgui.h>
@@ -9,30 +11,57 @@
 
 namespace ob::gfx {
 
-UiOverlay::UiOverlay(void* glfwWindow) {
+UiOverlay::UiOverlay(void* glfwWindow) : m_window(glfwWindow != nullptr) {
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
     ImGui::GetIO().IniFilename = nullptr;
     ImGui::StyleColorsDark();
-    ImGui_ImplGlfw_InitForOpenGL(static_cast<GLFWwindow*>(glfwWindow), true);
-    ImGui_ImplOpenGL3_Init("#version 450 core");
+    if (m_window) {
+        ImGui_ImplGlfw_InitForOpenGL(static_cast<GLFWwindow*>(glfwWindow), true);
+        ImGui_ImplOpenGL3_Init("#version 450 core");
+    } else {
+        ImGui::GetIO().BackendFlags |= ImGuiBackendFlags_RendererHasVtxOffset;
+        m_draw = std::make_unique<UiDraw>();
+    }
 }
 
 UiOverlay::~UiOverlay() {
-    ImGui_ImplOpenGL3_Shutdown();
-    ImGui_ImplGlfw_Shutdown();
+    if (m_window) {
+        ImGui_ImplOpenGL3_Shutdown();
+        ImGui_ImplGlfw_Shutdown();
+    }
+    m_draw.reset();
     ImGui::DestroyContext();
 }
 
-void UiOverlay::begin() {
-    ImGui_ImplOpenGL3_NewFrame();
-    ImGui_ImplGlfw_NewFrame();
+void UiOverlay::begin(glm::ivec2 size, float scale) {
+    constexpr float HEADLESS_FRAME_S = 1.0f / 60.0f;  // a headless frame's UI time step
+    if (std::abs(scale - m_scale) > 1e-3f) {
+        // The style's sizes from the dark style's, never scaled twice.
+        ImGuiStyle style;
+        ImGui::StyleColorsDark(&style);
+        style.ScaleAllSizes(scale);
+        ImGui::GetStyle() = style;
+        ImGui::GetIO().FontGlobalScale = scale;
+        m_scale = scale;
+    }
+    m_size = size;
+    if (m_window) {
+        ImGui_ImplOpenGL3_NewFrame();
+        ImGui_ImplGlfw_NewFrame();
+    } else {
+        ImGuiIO& io = ImGui::GetIO();
+        io.DisplaySize = ImVec2(float(size.x), float(size.y));
+        io.DisplayFramebufferScale = ImVec2(1.0f, 1.0f);
+        io.DeltaTime = HEADLESS_FRAME_S;
+    }
     ImGui::NewFrame();
 }
 
 void UiOverlay::end() {
     ImGui::Render();
-    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    if (m_window) ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    else m_draw->draw(*ImGui::GetDrawData(), m_size);
 }
 
 void UiOverlay::captureFlags(bool& mouse, bool& keyboard) const {
@@ -42,6 +71,24 @@ void UiOverlay::captureFlags(bool& mouse, bool& keyboard) const {
 
 static void tooltip(const char* doc) {
     if (doc && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", doc);
+}
+
+bool UiEditor::checkboxes(const char* key, Words words, std::vector<bool>& on, const char* doc) {
+    bool changed = false;
+    ImGui::PushID(key);
+    ImGui::TextUnformatted(key);
+    tooltip(doc);
+    for (std::size_t i = 0; i < words.size(); ++i) {
+        ImGui::SameLine();
+        bool value = on[i];
+        if (ImGui::Checkbox(words[i], &value)) {
+            on[i] = value;
+            changed = true;
+        }
+    }
+    ImGui::PopID();
+    m_changed |= changed;
+    return changed;
 }
 
 // Slider bounds: the key's range where finite, else a span around the value.

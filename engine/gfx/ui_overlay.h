@@ -3,22 +3,35 @@
 #pragma once
 #include "core/schema.h"
 
+#include <glm/vec2.hpp>
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace ob::gfx {
 
-/// ImGui context bound to a GLFW window.
+class UiDraw;
+
+/// ImGui context bound to a GLFW window, or headless (no window: drawn, never given input),
+/// so a headless `play` draws what a window shows.
 class UiOverlay {
 public:
+    /// `glfwWindow`: null for a headless overlay.
     explicit UiOverlay(void* glfwWindow);
     ~UiOverlay();
-    /// Starts a UI frame (call between the scene's passes and present).
-    void begin();
+    /// Starts a UI frame on a framebuffer of `size` px (call between the scene's passes and
+    /// present); `scale` multiplies the fonts and the style's sizes (1: ImGui's own).
+    void begin(glm::ivec2 size, float scale);
     /// Draws the UI over the frame.
     void end();
     /// Whether the UI wants the mouse and keyboard this frame.
     void captureFlags(bool& mouse, bool& keyboard) const;
+
+private:
+    bool m_window = false;   // the GLFW backend feeds input, size and time; ImGui's OpenGL 3 backend draws
+    float m_scale = 1.0f;    // the scale the style holds now
+    glm::ivec2 m_size{0};    // headless: the framebuffer
+    std::unique_ptr<UiDraw> m_draw;  // headless: the engine's own renderer of the draw data
 };
 
 /// Edits a Def's fields with ImGui widgets: `UiEditor e; describe(e, def);`
@@ -42,6 +55,18 @@ public:
         choice(key, enumNames<E>, index, doc);
         value = E(index);
     }
+    /// A list of an enum's words: a checkbox per word.
+    template <NamedEnum E> void field(const char* key, std::vector<E>& values, const char* doc, Change change = {}) {
+        if (hidden(change)) return;
+        std::vector<bool> on(enumNames<E>.size(), false);
+        for (E v : values) on[std::size_t(v)] = true;
+        if (!checkboxes(key, enumNames<E>, on, doc)) return;
+        values.clear();
+        for (std::size_t i = 0; i < on.size(); ++i)
+            if (on[i]) values.push_back(E(i));
+    }
+    /// A checkbox per word on one line; true when one changed.
+    bool checkboxes(const char* key, Words words, std::vector<bool>& on, const char* doc);
     /// A combo box over `words` (an enum's).
     void choice(const char* key, Words words, std::size_t& index, const char* doc);
     void field(const char* key, std::vector<glm::vec2>& points, Limits limits, const char* doc, Change = {});

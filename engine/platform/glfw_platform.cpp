@@ -24,7 +24,7 @@ constexpr int KEY_CODES[size_t(Key::Count)] = {
     GLFW_KEY_W, GLFW_KEY_A, GLFW_KEY_S, GLFW_KEY_D, GLFW_KEY_Q, GLFW_KEY_E, GLFW_KEY_SPACE,
     GLFW_KEY_LEFT_SHIFT, GLFW_KEY_ESCAPE, GLFW_KEY_UP, GLFW_KEY_DOWN, GLFW_KEY_LEFT, GLFW_KEY_RIGHT, GLFW_KEY_F1,
     GLFW_KEY_P, GLFW_KEY_N, GLFW_KEY_F, GLFW_KEY_F12, GLFW_KEY_H, GLFW_KEY_C, GLFW_KEY_R,
-    GLFW_KEY_1, GLFW_KEY_2, GLFW_KEY_3, GLFW_KEY_4, GLFW_KEY_5, GLFW_KEY_6, GLFW_KEY_7, GLFW_KEY_8, GLFW_KEY_9};
+    GLFW_KEY_1, GLFW_KEY_2, GLFW_KEY_3, GLFW_KEY_4, GLFW_KEY_5, GLFW_KEY_6, GLFW_KEY_7, GLFW_KEY_8, GLFW_KEY_9, GLFW_KEY_T};
 
 class GlfwPlatform final : public Platform {
 public:
@@ -91,6 +91,12 @@ public:
     const char* name() const override { return "glfw"; }
     bool headless() const override { return false; }
     void* nativeWindow() override { return m_window; }
+    float contentScale() const override {
+        float x = 1.0f, y = 1.0f;
+        glfwGetWindowContentScale(m_window, &x, &y);
+        return std::max(x, y);
+    }
+    void setTitle(const std::string& title) override { glfwSetWindowTitle(m_window, title.c_str()); }
 
     glm::ivec2 framebufferSize() const override {
         int w, h;

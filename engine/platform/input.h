@@ -15,13 +15,13 @@ namespace ob::platform {
 /// Keys the game reads.
 enum class Key : uint8_t {
     W, A, S, D, Q, E, Space, Shift, Escape, Up, Down, Left, Right, F1, P, N, F, F12, H, C, R,
-    Num1, Num2, Num3, Num4, Num5, Num6, Num7, Num8, Num9, Count
+    Num1, Num2, Num3, Num4, Num5, Num6, Num7, Num8, Num9, T, Count
 };
 constexpr size_t KEY_COUNT = size_t(Key::Count);
 /// Lower-case key names as scripts write them (enumName(Key::Space) is "space").
 constexpr std::array<const char*, KEY_COUNT> names(Key) {
     return {"w", "a", "s", "d", "q", "e", "space", "shift", "escape", "up", "down", "left", "right", "f1", "p",
-            "n", "f", "f12", "h", "c", "r", "1", "2", "3", "4", "5", "6", "7", "8", "9"};
+            "n", "f", "f12", "h", "c", "r", "1", "2", "3", "4", "5", "6", "7", "8", "9", "t"};
 }
 
 enum class MouseButton : uint8_t { Left, Right, Count };

@@ -25,6 +25,10 @@ public:
     virtual void present() = 0;
     /// The GLFWwindow* for the UI backend (null when headless).
     virtual void* nativeWindow() { return nullptr; }
+    /// The display's content scale (DPI / 96; 1 headless).
+    virtual float contentScale() const { return 1.0f; }
+    /// Names the window (headless: nothing).
+    virtual void setTitle(const std::string& /*title*/) {}
 };
 
 /// True when a window can be opened (an X11 or Wayland display is named).

@@ -32,6 +32,7 @@ struct ObjectDraw {
     glm::mat4 model{1.0f};          ///< unit mesh → world (scale, rotation, position)
     glm::vec3 color{0.8f};          ///< base colour (linear RGB)
     std::string modelFile;          ///< glTF file drawn instead of `mesh` ("" = built-in)
+    glm::vec3 modelTint{1.0f};      ///< multiplies the model's own colours (a goal's state colour)
     float waterHeight = 0.0f;       ///< the water surface's height under the object's origin (m)
     glm::vec2 waterSlope{0.0f};     ///< and its slope there (dh/dx, dh/dz)
     bool highlight = false;         ///< lit up (the body under the player's cursor)

@@ -53,6 +53,7 @@ void addPlayCommand(CLI::App& app, CommandAction& action) {
             RunOptions o = play->options();
             o.record = play->record;
             o.realTime = true;
+            o.overlay = true;  // what the player sees, in its pictures too (headless as well)
             o.dynamicResolution = true;
             o.autoExposure = true;
             if (o.frames == 0) o.frames = -1;

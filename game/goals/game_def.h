@@ -2,6 +2,7 @@
 // crates into a ring), its time limit, and what each mode needs. Rules: docs/games.md.
 #pragma once
 #include "core/schema.h"
+#include "world/tool_kind.h"
 
 #include <glm/vec2.hpp>
 #include <string>
@@ -82,11 +83,16 @@ struct GameDef {
     float time_limit = 60.0f;        ///< s of simulated time to reach the goal, [0, 1e6] (0: none); lost when it runs out
     float mooring_period = 3.0f;     ///< targets and gate buoys are moored where they start: a horizontal spring of this
                                      ///< period, critically damped (s, [0, 1000]; 0: they drift free)
-    // The tool the player holds at start is [tools] tool (world/tools.h).
+    std::vector<Tool> tools;         ///< the tools the player may take (empty: every tool; a goal scene: all but grab and drop)
+    std::string intro;               ///< the start card's line: the goal or what to try ("" = the scene file's first comment)
+    // The tool the player holds at start is [tools] tool (world/tools.h), else the first allowed.
     TargetsGameDef targets;
     RaceGameDef race;
     HerdGameDef herd;
 };
+
+/// The tools a scene with this [game] allows (its `tools`, else the default for its mode).
+std::vector<Tool> allowedTools(const GameDef& game);
 
 /// The keys of the modes other than `mode` that `mode` does not read, each with its error.
 std::vector<std::pair<std::string, std::string>> gameKeysNotReadBy(GameMode mode);
@@ -95,6 +101,8 @@ template <class V> void describe(V& v, GameDef& d) {
     v.field("mode", d.mode, "the goal: none, targets, race or herd");
     v.field("time_limit", d.time_limit, range(0, 1e6), "seconds to reach the goal (0: none)");
     v.field("mooring_period", d.mooring_period, range(0, 1000), "targets and gate buoys held where they start (s; 0: free)");
+    v.field("tools", d.tools, "the tools the player may take (default: all; in a goal scene all but grab and drop)");
+    v.field("intro", d.intro, "the start card's line: the goal or what to try (default: the scene file's first comment)");
     switch (d.mode) {  // a reader has read `mode` by now
     case GameMode::None: break;
     case GameMode::Targets: v.fields(d.targets); break;

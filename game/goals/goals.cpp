@@ -8,6 +8,7 @@
 #include "ecs/components.h"
 #include "goals/goal_geometry.h"
 #include "sim/objects.h"
+#include "world/controls.h"
 #include "sim/water_systems.h"
 #include "water/composite_water.h"
 #include "world/scene.h"
@@ -20,11 +21,18 @@ namespace ob::game {
 
 namespace {
 
-constexpr glm::vec3 HIT_COLOR{0.25f, 0.25f, 0.25f};     // a target that has been hit: spent, grey
-constexpr glm::vec3 NEXT_GATE_COLOR{1.0f, 0.75f, 0.05f}; // the gate to pass next: bright yellow
-constexpr glm::vec3 PASSED_COLOR{0.1f, 0.6f, 0.15f};    // a gate passed, a crate in the zone: green
-constexpr glm::vec3 MISSED_COLOR{0.8f, 0.05f, 0.05f};   // a gate missed: red
+// A goal state's look: `color` for a built-in mesh, `tint` over a model's own colours (bright
+// multipliers, so a red-and-white buoy turns yellow, green or red where it is white).
+struct StateLook {
+    glm::vec3 color, tint;
+};
+constexpr StateLook HIT_LOOK{{0.25f, 0.25f, 0.25f}, {0.22f, 0.22f, 0.25f}};    // a target hit: spent, dark grey
+constexpr StateLook NEXT_LOOK{{1.0f, 0.75f, 0.05f}, {1.7f, 1.3f, 0.1f}};      // the gate to pass next: bright yellow
+constexpr StateLook PASSED_LOOK{{0.1f, 0.6f, 0.15f}, {0.2f, 1.4f, 0.3f}};     // a gate passed, a crate in the zone: green
+constexpr StateLook MISSED_LOOK{{0.8f, 0.05f, 0.05f}, {1.7f, 0.12f, 0.08f}};  // a gate missed: red
+constexpr glm::vec3 OUTSIDE_TINT{0.5f, 0.8f, 1.7f};                         // a herded crate outside the zone: blue
 constexpr glm::vec3 MARKER_COLOR{1.0f, 0.45f, 0.05f};   // the herd zone's edge: orange
+constexpr size_t EVENTS_KEPT = 32;                      // goal events the view keeps for its cues
 constexpr float MARKER_RADIUS = 0.5f;                   // m
 constexpr float TOUCH_SLACK = 0.05f;                    // m a ball may stay off a target and still touch it (Bullet's contact margin)
 
@@ -46,8 +54,19 @@ template <class Def> std::vector<std::string> keysOf() {
     return lister.keys;
 }
 
-void setColor(ecs::World& world, ecs::Entity e, glm::vec3 color) {
-    if (Renderable* r = world.find<Renderable>(e)) r->color = color;
+void show(ecs::World& world, ecs::Entity e, const StateLook& look) {
+    if (Renderable* r = world.find<Renderable>(e)) {
+        r->color = look.color;
+        r->modelTint = look.tint;
+    }
+}
+
+// An event the view marks on the water (a ring where it happened).
+void addEvent(ecs::World& world, GameState& game, ecs::Entity e, glm::vec3 color, double now) {
+    const ecs::Transform* t = world.find<ecs::Transform>(e);
+    if (!t) return;
+    game.events.push_back({t->position, now, color});
+    if (game.events.size() > EVENTS_KEPT) game.events.erase(game.events.begin());
 }
 
 glm::vec2 xz(glm::vec3 p) { return {p.x, p.z}; }
@@ -75,7 +94,8 @@ GameResult judgeTargets(ecs::World& world, GameState& game, double now) {
             target.hit = true;
             target.hitTime = now;
             ++game.score;
-            setColor(world, target.entity, HIT_COLOR);
+            show(world, target.entity, HIT_LOOK);
+            addEvent(world, game, target.entity, HIT_LOOK.color, now);
         }
         trace->last = position;
     }
@@ -88,8 +108,8 @@ GameResult judgeTargets(ecs::World& world, GameState& game, double now) {
 
 void showNextGate(ecs::World& world, const GameState& game) {
     if (game.nextGate >= game.gates.size()) return;
-    setColor(world, game.gates[game.nextGate].port, NEXT_GATE_COLOR);
-    setColor(world, game.gates[game.nextGate].starboard, NEXT_GATE_COLOR);
+    show(world, game.gates[game.nextGate].port, NEXT_LOOK);
+    show(world, game.gates[game.nextGate].starboard, NEXT_LOOK);
 }
 
 GameResult judgeRace(ecs::World& world, GameState& game, double now) {
@@ -108,16 +128,18 @@ GameResult judgeRace(ecs::World& world, GameState& game, double now) {
             game.gates[m].state = GateState::Missed;
             game.gates[m].time = now;
             ++game.missed;
-            setColor(world, game.gates[m].port, MISSED_COLOR);
-            setColor(world, game.gates[m].starboard, MISSED_COLOR);
+            show(world, game.gates[m].port, MISSED_LOOK);
+            show(world, game.gates[m].starboard, MISSED_LOOK);
+            addEvent(world, game, game.gates[m].port, MISSED_LOOK.color, now);
             game.lastMissed = "gate " + std::to_string(m + 1) + " missed";
             game.lastMissedTime = now;
         }
         gate.state = GateState::Passed;
         gate.time = now;
         ++game.score;
-        setColor(world, gate.port, PASSED_COLOR);
-        setColor(world, gate.starboard, PASSED_COLOR);
+        show(world, gate.port, PASSED_LOOK);
+        show(world, gate.starboard, PASSED_LOOK);
+        addEvent(world, game, game.racer, PASSED_LOOK.color, now);
         game.nextGate = g + 1;
         showNextGate(world, game);
         break;
@@ -139,7 +161,7 @@ GameResult judgeRace(ecs::World& world, GameState& game, double now) {
     return GameResult::Won;
 }
 
-GameResult judgeHerd(ecs::World& world, GameState& game) {
+GameResult judgeHerd(ecs::World& world, GameState& game, double now) {
     const glm::vec2 centre = game.def.herd.zone_center;
     const float radius = game.def.herd.zone_radius;
     game.score = 0;
@@ -147,8 +169,9 @@ GameResult judgeHerd(ecs::World& world, GameState& game) {
         const ecs::Transform* t = world.find<ecs::Transform>(game.crates[i]);
         const bool in = t && glm::dot(xz(t->position) - centre, xz(t->position) - centre) <= radius * radius;
         if (in != game.inside[i]) {
-            // Green inside, its own colour again outside.
-            if (Renderable* r = world.find<Renderable>(game.crates[i])) std::swap(r->color, game.crateColors[i]);
+            // Green inside, its own colour (a model: blue) again outside.
+            show(world, game.crates[i], in ? PASSED_LOOK : StateLook{game.crateColors[i], OUTSIDE_TINT});
+            addEvent(world, game, game.crates[i], in ? PASSED_LOOK.color : OUTSIDE_TINT, now);
             game.inside[i] = in;
         }
         game.score += in ? 1 : 0;
@@ -188,10 +211,34 @@ void floatMarkers(ecs::World& world, const GameState& game) {
     }
 }
 
+// The goal clock: it runs from the first step, or from the player's first input acting in the
+// world (the ship's racer position is kept fresh while it waits, so no crossing is seen later).
+bool runClock(ecs::World& world, GameState& game, const ecs::Tick& tick) {
+    if (!game.started) {
+        const auto* input = world.resource<StepInput>();
+        game.started = !game.waitsForPlayer || (input && actsInWorld(*input));
+        game.startedAt = tick.time;
+        if (!game.started) {
+            if (const ecs::Transform* ship = world.find<ecs::Transform>(game.racer)) game.racerLast = xz(ship->position);
+            return false;
+        }
+    }
+    game.time = tick.end - game.startedAt;
+    return true;
+}
+
 } // namespace
 
 double GameState::raceTime() const {
     return time + (def.race.missed_gate == MissedGate::Penalty ? double(missed) * double(def.race.miss_penalty) : 0.0);
+}
+
+std::vector<Tool> allowedTools(const GameDef& game) {
+    if (!game.tools.empty()) return game.tools;
+    std::vector<Tool> all;
+    for (size_t t = 0; t < enumNames<Tool>.size(); ++t)
+        if (game.mode == GameMode::None || (Tool(t) != Tool::Grab && Tool(t) != Tool::Drop)) all.push_back(Tool(t));
+    return all;
 }
 
 std::vector<std::pair<std::string, std::string>> gameKeysNotReadBy(GameMode mode) {
@@ -307,7 +354,8 @@ void addGame(ecs::World& world, const SceneDef& scene) {
         for (const ObjectDef& o : scene.objects)
             if (startsWith(o.name, def.herd.herd_prefix)) {
                 game.crates.push_back(findObject(world, o.name));
-                game.crateColors.push_back(PASSED_COLOR);
+                game.crateColors.push_back(o.color);
+                show(world, game.crates.back(), {o.color, OUTSIDE_TINT});
             }
         game.inside.assign(game.crates.size(), false);
         game.needed = def.herd.herd_count > 0 ? def.herd.herd_count : int(game.crates.size());
@@ -328,25 +376,25 @@ void addGame(ecs::World& world, const SceneDef& scene) {
 void gameSystem(ecs::World& world, const ecs::Tick& tick) {
     auto* game = world.resource<GameState>();
     if (!game || game->over()) return;
-    game->time = tick.end;
 
     // --- moorings pull (this step's physics), the zone's floats ride the waves
     pullMoorings(world, *game, float(tick.dt));
     floatMarkers(world, *game);
 
-    // --- the mode's judge, on the poses of the last physics step
+    // --- the mode's judge, on the poses of the last physics step, once the goal clock runs
     GameResult result = GameResult::Running;
-    switch (game->def.mode) {
-    case GameMode::None: break;
-    case GameMode::Targets: result = judgeTargets(world, *game, tick.end); break;
-    case GameMode::Race: result = judgeRace(world, *game, tick.end); break;
-    case GameMode::Herd: result = judgeHerd(world, *game); break;
-    }
+    const bool running = runClock(world, *game, tick);
+    if (running) switch (game->def.mode) {
+        case GameMode::None: break;
+        case GameMode::Targets: result = judgeTargets(world, *game, game->time); break;
+        case GameMode::Race: result = judgeRace(world, *game, game->time); break;
+        case GameMode::Herd: result = judgeHerd(world, *game, game->time); break;
+        }
 
     // --- the clock: the time limit, then [sim] end_time end what is undecided
     const double eps = 1e-9;
-    if (result == GameResult::Running && game->def.mode != GameMode::None && game->def.time_limit > 0.0f &&
-        tick.end >= double(game->def.time_limit) - eps) {
+    if (running && result == GameResult::Running && game->def.mode != GameMode::None && game->def.time_limit > 0.0f &&
+        game->time >= double(game->def.time_limit) - eps) {
         result = GameResult::Lost;
         game->reason = "time is up";
     }
@@ -360,5 +408,9 @@ void gameSystem(ecs::World& world, const ecs::Tick& tick) {
 }
 
 const GameState* gameState(ecs::World& world) { return world.resource<GameState>(); }
+
+void goalClockWaitsForPlayer(ecs::World& world) {
+    if (auto* game = world.resource<GameState>(); game && !game->started) game->waitsForPlayer = true;
+}
 
 } // namespace ob::game

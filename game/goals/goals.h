@@ -47,13 +47,23 @@ struct Mooring {
     glm::vec3 anchor{0.0f};  ///< start position, world m (its y is not held)
 };
 
+/// Something the goal saw happen (a hit, a gate, a crate in or out): the view marks it.
+struct GoalEvent {
+    glm::vec3 at{0.0f};       ///< where, world m
+    double time = 0.0;        ///< goal-clock s
+    glm::vec3 color{1.0f};    ///< the state's colour (linear RGB)
+};
+
 /// The goal's state (a resource of every sandbox; mode "none" keeps the time and end_time).
 struct GameState {
     GameDef def;
     float endTime = 0.0f;          ///< [sim] end_time, s (0: none)
     GameResult result = GameResult::Running;
     std::string reason;            ///< why it ended ("all 5 targets hit", "time is up", ...)
-    double time = 0.0;             ///< simulated s since the start, held at the end
+    double time = 0.0;             ///< the goal clock: simulated s since it started, held at the end
+    bool waitsForPlayer = false;   ///< the clock starts at the first step with input acting in the world (play)
+    bool started = false;          ///< the clock runs (from the first step, or the player's first input)
+    double startedAt = 0.0;        ///< simulated s when it started
     int score = 0;                 ///< targets: hits; race: gates passed; herd: crates in the zone
     // --- targets
     std::vector<GameTarget> targets;
@@ -68,10 +78,11 @@ struct GameState {
     // --- herd
     std::vector<ecs::Entity> crates;
     std::vector<bool> inside;      ///< per crate: its centre is in the zone now
-    std::vector<glm::vec3> crateColors;  ///< per crate: the colour it does not show now (swapped as it enters or leaves)
+    std::vector<glm::vec3> crateColors;  ///< per crate: its own colour (shown outside the zone)
     int needed = 0;                ///< crates in the zone at once that win
     std::vector<ecs::Entity> markers;  ///< the zone's edge floats (drawn only)
     std::vector<Mooring> moorings;
+    std::vector<GoalEvent> events;  ///< the latest events, oldest first (the view's cues)
 
     /// The race's time: the time plus the missed gates' penalty (s).
     double raceTime() const;
@@ -94,5 +105,8 @@ void addGame(ecs::World& world, const SceneDef& scene);
 void gameSystem(ecs::World& world, const ecs::Tick& tick);
 /// The goal's state (null in a world without one).
 const GameState* gameState(ecs::World& world);
+/// The goal clock waits for the player's first input acting in the world (play; a recording
+/// of play replays with it).
+void goalClockWaitsForPlayer(ecs::World& world);
 
 } // namespace ob::game

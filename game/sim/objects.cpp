@@ -489,6 +489,7 @@ std::vector<gfx::ObjectDraw> objectDraws(ecs::World& world, ecs::Entity highligh
         glm::mat4 model = glm::translate(glm::mat4(1.0f), t->position) * glm::mat4_cast(t->rotation) * glm::scale(glm::mat4(1.0f), r.scale);
         gfx::ObjectDraw& d = draws.emplace_back(gfx::ObjectDraw{r.mesh, model, r.color, r.model});
         d.highlight = renderables.entities()[i] == highlighted;
+        d.modelTint = r.modelTint;
         const Obstacle* obstacle = world.find<Obstacle>(renderables.entities()[i]);
         d.hull = obstacle && obstacle->shape == Obstacle::Shape::Hull;
     }

@@ -23,9 +23,12 @@
 #include "view/sandbox_view.h"
 #include "sim/splash_foam_system.h"
 #include "splash/splash_particles.h"
+#include "ui/hud.h"
 #include "world/sandbox.h"
 #include "world/scene_budget.h"
 #include "world/script.h"
+#include "world/tools.h"
+#include "world/camera.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -39,6 +42,24 @@
 #include <unistd.h>
 
 namespace ob::game {
+
+// The input the world's steps consumed, as a script that replays them (`play --record`).
+static InputScriptDef recordingOf(Sandbox& sandbox, const platform::Platform& platform, bool clockWaits) {
+    const auto* recorder = sandbox.world().resource<InputRecorder>();
+    const auto* viewport = sandbox.world().resource<Viewport>();
+    const auto* script = sandbox.world().resource<ScriptState>();
+    InputScriptDef recording = recordedScript(recorder ? recorder->events : std::vector<platform::InputEvent>{},
+                                              script ? script->liveChanges : std::vector<LiveChange>{}, sandbox.schedule().steps(),
+                                              sandbox.schedule().stepSeconds(), viewport ? viewport->size : platform.framebufferSize());
+    recording.goal_clock_waits = clockWaits;
+    return recording;
+}
+
+// The overlay's level in a world (H's choice).
+static OverlayLevel overlayLevel(Sandbox& sandbox) {
+    const auto* controls = sandbox.world().resource<WindowControls>();
+    return controls ? controls->overlay : OverlayLevel::Folded;
+}
 
 // Whether two [camera] sections say the same (compared as the TOML they write).
 static bool sameCamera(const CameraDef& a, const CameraDef& b) {
@@ -146,6 +167,13 @@ static void writeStats(const std::string& path, Sandbox& sandbox, const std::str
     if (const splash::SplashParticles* drops = splashParticles(sandbox.world()))
         j["splash"] = {{"emitted", drops->stats().emitted}, {"spray_emitted", drops->stats().spray}, {"landed", drops->stats().landed}};
     if (const auto* script = sandbox.world().resource<ScriptState>()) j["events_run"] = script->fired;
+    // The camera as the last frame saw it (a test projects bodies into the screenshot with it).
+    const gfx::CameraView view = cameraView(sandbox.world(), platform.framebufferSize());
+    const glm::mat4 clip = view.projection * view.view;
+    j["camera"] = {{"position", {view.position.x, view.position.y, view.position.z}}, {"mode", cameraMode(sandbox.world())},
+                   {"view_projection", std::vector<float>(&clip[0][0], &clip[0][0] + 16)}};  // column-major
+    if (const auto* tools = sandbox.world().resource<PlayerTools>())
+        j["tools"] = {{"tool", enumName(tools->def.tool)}, {"message", tools->message}};
     if (const GameState* game = gameState(sandbox.world())) j["game"] = gameStats(*game);
     char hash[32];
     std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(sandbox.stateHash()));
@@ -201,8 +229,10 @@ int runScene(const SceneDef& scene, const std::string& scenePath, const RunOptio
     // A script's [[set]] entries join the first world's timeline as `set` events.
     std::vector<platform::InputEvent> scripted;
     SceneDef first = scene;
+    bool clockWaits = options.overlay;  // play's goal clock waits for the player; a recording of it too
     if (!options.input.empty()) {
         const InputScriptDef input = loadInputScript(options.input);
+        clockWaits = clockWaits || input.goal_clock_waits;
         scripted = scriptEvents(input);
         for (size_t i = 0; i < input.set.size(); ++i) {
             const SetDef& set = input.set[i];
@@ -226,7 +256,8 @@ int runScene(const SceneDef& scene, const std::string& scenePath, const RunOptio
     };
     auto makeSandbox = [&](const SceneDef& s) {
         auto made = std::make_unique<Sandbox>(withSteps(s));
-        made->attachPlatform(*platform, !platform->headless());
+        made->attachPlatform(*platform, options.overlay);
+        if (clockWaits) goalClockWaitsForPlayer(made->world());
         made->setScriptedInput(scripted);
         if (!options.record.empty()) made->world().setResource(std::make_unique<InputRecorder>());
         if (options.dynamicResolution) made->enableDynamicResolution();
@@ -238,11 +269,19 @@ int runScene(const SceneDef& scene, const std::string& scenePath, const RunOptio
         if (options.realTime) return std::make_unique<SteadyClock>();
         return std::make_unique<FixedStepClock>(options.stepsPerFrame / double(s.sim.step_hz), double(options.steps) / double(s.sim.step_hz));
     };
+    // The overlay's level (H) carries over to the next world; each world opens on its card.
+    const auto opened = [&](Sandbox& made, const SceneDef& s, const std::string& path) {
+        if (options.overlay) made.showStartCard(startCardText(s, path));
+    };
     auto sandbox = makeSandbox(first);
+    opened(*sandbox, first, scenePath);
     std::unique_ptr<Clock> clock = makeClock(scene);
     // What R restarts (the scene this world started from) and the file it came from.
     SceneDef started = scene;
     std::string runningPath = scenePath;
+    const std::string recordedPath = scenePath;
+    std::optional<InputScriptDef> recording;  // the first world's, once it restarted
+    int restarts = 0;
     // A window in real time stays open on the result panel; any other run ends with the goal.
     const bool staysOpen = options.realTime && !platform->headless();
 
@@ -298,8 +337,15 @@ int runScene(const SceneDef& scene, const std::string& scenePath, const RunOptio
             const std::optional<CameraPose> pose = picked.empty() ? sandbox->cameraPose() : std::nullopt;
             const bool cameraEdited = !sameCamera(sandbox->scene().camera, next->camera);
             scripted = sandbox->remainingScriptedInput(now);
+            const OverlayLevel level = overlayLevel(*sandbox);
+            // A recording replays one world: the first, up to its restart.
+            if (!options.record.empty() && !recording) recording = recordingOf(*sandbox, *platform, clockWaits);
+            ++restarts;
             sandbox.reset();
             sandbox = makeSandbox(*next);
+            if (auto* controls = sandbox->world().resource<WindowControls>()) controls->overlay = level;
+            if (!picked.empty()) platform->setTitle("oceanbox — " + picked);
+            opened(*sandbox, *next, picked.empty() ? runningPath : picked);
             if (pose) sandbox->setCameraPose(*pose, !cameraEdited);
             clock = makeClock(*next);
             started = *next;
@@ -314,17 +360,15 @@ int runScene(const SceneDef& scene, const std::string& scenePath, const RunOptio
 
     if (!options.stats.empty()) writeStats(options.stats, *sandbox, runningPath, *platform);
     if (!options.record.empty()) {
-        const auto* recorder = sandbox->world().resource<InputRecorder>();
-        const auto* viewport = sandbox->world().resource<Viewport>();
-        const auto* script = sandbox->world().resource<ScriptState>();
-        InputScriptDef recording = recordedScript(recorder->events, script ? script->liveChanges : std::vector<LiveChange>{},
-                                                  sandbox->schedule().steps(), sandbox->schedule().stepSeconds(),
-                                                  viewport ? viewport->size : platform->framebufferSize());
+        if (!recording) recording = recordingOf(*sandbox, *platform, clockWaits);
         writeTextFile(options.record,
-                      "# oceanbox input recorded from " + runningPath + ": `oceanbox run SCENE --input FILE` replays it\n" +
-                          writeToml(recording),
+                      "# oceanbox input recorded from " + recordedPath + ": `oceanbox run SCENE --input FILE` replays it\n" +
+                          writeToml(*recording),
                       "recording");
-        logInfo("input recorded to %s (%llu steps)", options.record.c_str(), static_cast<unsigned long long>(recording.steps));
+        logInfo("input recorded to %s (%llu steps)", options.record.c_str(), static_cast<unsigned long long>(recording->steps));
+        if (restarts > 0)
+            logWarn("the recording holds the first world, up to its restart at step %llu; the %d restart(s) after it are not recorded",
+                    static_cast<unsigned long long>(recording->steps), restarts);
     }
     if (!options.screenshot.empty() && bounded) logInfo("screenshot written to %s", options.screenshot.c_str());
     if (gfx::glErrorCount() > 0) {

@@ -24,6 +24,8 @@ struct RunOptions {
     uint64_t steps = 0;          ///< fixed clock: the run ends after exactly this many steps (a recording's; 0: frames decide)
     bool dynamicResolution = false;  ///< the internal scale holds [render] target_fps
     bool autoExposure = false;       ///< render.auto_exposure = "auto" means on (play in a window)
+    bool overlay = false;        ///< the player's overlay and start card (play; headless too, so its pictures show them);
+                                 ///< the goal clock then waits for the first input
 };
 
 /// Runs the scene; returns the process exit code. Throws ob::InputError / ob::RuntimeError.

@@ -6,6 +6,7 @@
 #include "sim/water_systems.h"
 #include "world/script.h"
 #include "world/sea_presets.h"
+#include "ui/ui_state.h"
 
 #include <cmath>
 #include <map>
@@ -17,38 +18,10 @@ namespace ob::game {
 
 namespace {
 
-// A value dragged but not yet seen back in the scene; dropped once it is (or after a while,
-// should the step have refused it).
-struct Draft {
-    float value = 0.0f;
-    int framesLeft = 0;
-};
-std::map<std::string, Draft> g_drafts;
-std::string g_status;
-
 constexpr int DRAFT_FRAMES = 30;
 
 void request(ecs::World& world, const char* key, float value) {
-    const std::string m = requestLiveSet(world, key, value);
-    g_status = m.empty() ? "" : m;
-}
-
-// A slider over the live key `key` whose value in the scene is `current`.
-void liveSlider(ecs::World& world, const char* label, const char* key, float current, float lo, float hi, const char* format,
-                const char* tip) {
-    auto it = g_drafts.find(key);
-    if (it != g_drafts.end() && (std::abs(it->second.value - current) <= 1e-4f * std::max(1.0f, std::abs(current)) || --it->second.framesLeft <= 0)) {
-        g_drafts.erase(it);
-        it = g_drafts.end();
-    }
-    float v = it != g_drafts.end() ? it->second.value : current;
-    ImGui::SliderFloat(label, &v, lo, hi, format);
-    if (tip && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tip);
-    if (ImGui::IsItemActive()) g_drafts[key] = {v, DRAFT_FRAMES};
-    if (ImGui::IsItemDeactivatedAfterEdit()) {
-        g_drafts[key] = {v, DRAFT_FRAMES};
-        request(world, key, v);
-    }
+    uiState(world).seaStatus = requestLiveSet(world, key, value);
 }
 
 float windHeadingDeg(const SceneDef& scene) {
@@ -59,11 +32,31 @@ float windHeadingDeg(const SceneDef& scene) {
 
 } // namespace
 
+void liveSlider(ecs::World& world, const char* label, const char* key, float current, float lo, float hi, const char* format,
+                const char* tip) {
+    // A value dragged but not yet seen back in the scene; dropped once it is (or after a
+    // while, should the step have refused it).
+    auto& drafts = uiState(world).drafts;
+    auto it = drafts.find(key);
+    if (it != drafts.end() && (std::abs(it->second.value - current) <= 1e-4f * std::max(1.0f, std::abs(current)) || --it->second.framesLeft <= 0)) {
+        drafts.erase(it);
+        it = drafts.end();
+    }
+    float v = it != drafts.end() ? it->second.value : current;
+    ImGui::SliderFloat(label, &v, lo, hi, format);
+    if (tip && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tip);
+    if (ImGui::IsItemActive()) drafts[key] = {v, DRAFT_FRAMES};
+    if (ImGui::IsItemDeactivatedAfterEdit()) {
+        drafts[key] = {v, DRAFT_FRAMES};
+        request(world, key, v);
+    }
+}
+
 void seaPanel(ecs::World& world, const SceneDef& scene) {
     if (!ImGui::CollapsingHeader("sea (live)", ImGuiTreeNodeFlags_DefaultOpen)) return;
     for (SeaPreset p : {SeaPreset::Calm, SeaPreset::Breeze, SeaPreset::Storm}) {
         if (p != SeaPreset::Calm) ImGui::SameLine();
-        if (ImGui::Button(enumName(p))) g_status = requestPreset(world, p);
+        if (ImGui::Button(enumName(p))) uiState(world).seaStatus = requestPreset(world, p);
     }
     liveSlider(world, "wind m/s", "ocean.wind_speed", scene.ocean.wind_speed, 0.0f, 30.0f, "%.1f", "wind speed 10 m above the sea");
     liveSlider(world, "wind toward deg", "ocean.wind_direction_deg", windHeadingDeg(scene), 0.0f, 360.0f, "%.0f",
@@ -101,7 +94,7 @@ void seaPanel(ecs::World& world, const SceneDef& scene) {
         const double s = ocean->fade->weight(ocean->mapsTime);
         if (s < 1.0) ImGui::Text("sea changing: %.0f%%", 100.0 * s);
     }
-    if (!g_status.empty()) ImGui::TextWrapped("%s", g_status.c_str());
+    if (!uiState(world).seaStatus.empty()) ImGui::TextWrapped("%s", uiState(world).seaStatus.c_str());
 }
 
 } // namespace ob::game

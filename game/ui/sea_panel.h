@@ -7,6 +7,11 @@
 
 namespace ob::game {
 
+/// A slider over the live key `key` whose value in the scene is `current`: the value is
+/// requested (requestLiveSet) when the slider is released, and shown until the step applied it.
+void liveSlider(ecs::World& world, const char* label, const char* key, float current, float lo, float hi, const char* format,
+                const char* tip);
+
 /// Draws the panel (inside an ImGui window) for the live scene.
 void seaPanel(ecs::World& world, const SceneDef& scene);
 

@@ -15,12 +15,15 @@
 #include "world/tools.h"
 #include "behaviours/ship.h"
 #include "ui/sea_panel.h"
+#include "ui/hud.h"
+#include "ui/ui_state.h"
 #include "goals/goals.h"
 
 #include <cfloat>
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <cstdio>
 #include <imgui.h>
 
 namespace ob::game {
@@ -39,19 +42,12 @@ static void timingGraph(const ecs::FrameTimer& timer) {
     for (int p = 0; p < ecs::PHASE_COUNT; ++p) plot(ecs::phaseName(ecs::Phase(p)), timer.cpuSamples(ecs::Phase(p)));
 }
 
-// Every other section, edited on a copy; applied by rebuilding the world from it. Returns
-// the copy as the panel shows it (with the live [render] keys).
-static SceneDef sceneEditor(const SceneDef& scene, std::optional<SceneDef>& restart) {
-    static SceneDef edited;
-    static const SceneDef* source = nullptr;
-    static std::string problem;
-    if (source != &scene) {
-        edited = scene;
-        source = &scene;
-        problem.clear();
-    }
-    edited.render = scene.render;  // the live [render] keys carry over
-    if (!ImGui::CollapsingHeader("scene (applied on restart)")) return edited;
+// Every other section, edited on the world's copy (UiState); applied by rebuilding the world
+// from it.
+static void sceneEditor(ecs::World& world, std::optional<SceneDef>& restart) {
+    UiState& ui = uiState(world);
+    if (!ImGui::CollapsingHeader("scene (applied on restart)")) return;
+    SceneDef& edited = ui.edited;
     gfx::UiEditor editor;
     editor.section("sim", edited.sim);
     editor.section("environment", edited.environment);
@@ -66,16 +62,29 @@ static SceneDef sceneEditor(const SceneDef& scene, std::optional<SceneDef>& rest
     editor.list("objects", edited.objects, "");
     editor.list("events", edited.events, "");
     if (ImGui::Button("restart with these settings")) {
-        problem = checkEditedScene(edited);
-        if (problem.empty()) restart = edited;
+        edited.render = sceneSettings(world).def.render;  // the live [render] keys carry over
+        ui.editProblem = checkEditedScene(edited);
+        if (ui.editProblem.empty()) restart = edited;
     }
     ImGui::SameLine();
     if (ImGui::Button("revert")) {
-        edited = scene;
-        problem.clear();
+        edited = sceneSettings(world).def;
+        ui.editProblem.clear();
     }
-    if (!problem.empty()) ImGui::TextWrapped("%s", problem.c_str());
-    return edited;
+    if (!ui.editProblem.empty()) ImGui::TextWrapped("%s", ui.editProblem.c_str());
+}
+
+UiState& uiState(ecs::World& world) {
+    if (auto* ui = world.resource<UiState>()) return *ui;
+    auto& ui = world.setResource(std::make_unique<UiState>());
+    ui.edited = sceneSettings(world).def;
+    return ui;
+}
+
+SceneDef sceneToSave(ecs::World& world) {
+    SceneDef scene = uiState(world).edited;
+    scene.render = sceneSettings(world).def.render;
+    return scene;
 }
 
 std::vector<std::string> keyHelp(ecs::World& world) {
@@ -113,88 +122,7 @@ static void playerPanel(ecs::World& world) {
     for (const std::string& line : keyHelp(world)) ImGui::TextDisabled("%s", line.c_str());
 }
 
-// --- the goal: the HUD (top right) while it runs, the result panel (over the sky) once it is over
-
-static const ImVec4 WON_COLOR{0.3f, 1.0f, 0.4f, 1.0f}, LOST_COLOR{1.0f, 0.35f, 0.3f, 1.0f}, MISSED_COLOR{1.0f, 0.4f, 0.3f, 1.0f};
-constexpr double MISSED_SHOWN_S = 4.0;  // how long "gate N missed" stays on the HUD
-
-// "12.3 s" or "12.3 / 60 s".
-static std::string clockText(double time, float limit) {
-    char text[64];
-    if (limit > 0.0f) std::snprintf(text, sizeof text, "%.1f / %.0f s", time, double(limit));
-    else std::snprintf(text, sizeof text, "%.1f s", time);
-    return text;
-}
-
-// Top right: the overlay's panel holds the top left.
-static void gameHud(const GameState& game) {
-    if (game.def.mode == GameMode::None || game.over()) return;
-    const ImVec2 screen = ImGui::GetIO().DisplaySize;
-    ImGui::SetNextWindowPos(ImVec2(screen.x - 10.0f, 10.0f), ImGuiCond_Always, ImVec2(1.0f, 0.0f));
-    ImGui::SetNextWindowBgAlpha(0.55f);
-    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoInputs |
-                                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav;
-    ImGui::Begin("goal", nullptr, flags);
-    ImGui::SetWindowFontScale(1.5f);
-    const std::string clock = clockText(game.time, game.def.time_limit);
-    switch (game.def.mode) {
-    case GameMode::None: break;
-    case GameMode::Targets:
-        ImGui::Text("TARGETS   hits %d / %zu   time %s", game.score, game.targets.size(), clock.c_str());
-        break;
-    case GameMode::Race: {
-        const size_t shown = std::min(game.nextGate + 1, game.gates.size());
-        ImGui::Text("RACE   gate %zu / %zu   time %s", shown, game.gates.size(), clock.c_str());
-        if (game.missed > 0 && game.def.race.missed_gate == MissedGate::Penalty)
-            ImGui::Text("%d missed: +%.0f s   race time %.1f s", game.missed, double(game.missed) * double(game.def.race.miss_penalty),
-                        game.raceTime());
-        if (game.time - game.lastMissedTime < MISSED_SHOWN_S) ImGui::TextColored(MISSED_COLOR, "%s", game.lastMissed.c_str());
-        break;
-    }
-    case GameMode::Herd:
-        ImGui::Text("HERD   %ss in the ring %d / %d   time %s", game.def.herd.herd_prefix.c_str(), game.score, game.needed,
-                    clock.c_str());  // the herded objects by their name: crates, balls
-        break;
-    }
-    ImGui::End();
-}
-
-static void resultPanel(const GameState& game) {
-    if (!game.over()) return;
-    const ImVec2 screen = ImGui::GetIO().DisplaySize;
-    ImGui::SetNextWindowPos(ImVec2(screen.x * 0.5f, screen.y * 0.08f), ImGuiCond_Always, ImVec2(0.5f, 0.0f));  // over the sky
-    ImGui::SetNextWindowBgAlpha(0.75f);
-    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
-                                   ImGuiWindowFlags_NoNav;
-    ImGui::Begin("result", nullptr, flags);
-    ImGui::SetWindowFontScale(2.5f);
-    switch (game.result) {
-    case GameResult::Won: ImGui::TextColored(WON_COLOR, "YOU WON"); break;
-    case GameResult::Lost: ImGui::TextColored(LOST_COLOR, "%s", game.reason == "time is up" ? "TIME IS UP" : "LOST"); break;
-    default: ImGui::TextUnformatted("THE END"); break;
-    }
-    ImGui::SetWindowFontScale(1.5f);
-    if (!game.reason.empty() && game.reason != "time is up") ImGui::TextUnformatted(game.reason.c_str());
-    switch (game.def.mode) {
-    case GameMode::None: break;
-    case GameMode::Targets: ImGui::Text("score: %d of %zu targets hit", game.score, game.targets.size()); break;
-    case GameMode::Race:
-        ImGui::Text("score: %d of %zu gates passed, %d missed", game.score, game.gates.size(), game.missed);
-        ImGui::Text("race time %.1f s", game.raceTime());
-        break;
-    case GameMode::Herd: ImGui::Text("score: %d in the ring, %d needed", game.score, game.needed); break;
-    }
-    ImGui::Text("time %s", clockText(game.time, game.def.time_limit).c_str());
-    ImGui::Separator();
-    ImGui::TextUnformatted("R restarts, Esc quits");
-    ImGui::End();
-}
-
 // --- the scene picker: config/scenes/*.toml, each with its first comment line
-
-struct SceneEntry {
-    std::string path, name, line;
-};
 
 static std::vector<SceneEntry> sceneFiles() {
     namespace fs = std::filesystem;
@@ -204,47 +132,48 @@ static std::vector<SceneEntry> sceneFiles() {
         if (entry.path().extension() != ".toml") continue;
         SceneEntry scene{entry.path().string(), entry.path().stem().string(), ""};
         std::ifstream in(entry.path());
-        for (std::string text; std::getline(in, text);)
-            if (text.rfind('#', 0) == 0) {
-                scene.line = text.substr(text.find_first_not_of("# ") == std::string::npos ? text.size() : text.find_first_not_of("# "));
-                break;
-            }
+        for (std::string text; std::getline(in, text) && text.rfind('#', 0) == 0;) {
+            const size_t from = text.find_first_not_of("# ");
+            if (from != std::string::npos) scene.description += (scene.description.empty() ? "" : " ") + text.substr(from);
+        }
         scenes.push_back(scene);
     }
     std::sort(scenes.begin(), scenes.end(), [](const SceneEntry& a, const SceneEntry& b) { return a.name < b.name; });
     return scenes;
 }
 
-// Its own window at the bottom left, folded at first. Choosing a scene loads it (a file that
-// does not load says why and nothing restarts) and asks for a restart with it.
+// Its own window at the bottom left, folded at first; open, it holds the game (no steps, the
+// goal clock stops). Each scene with its whole opening comment, wrapped. Choosing a scene
+// loads it (a file that does not load says why and nothing restarts) and asks for a restart.
 static void scenePicker(ecs::World& world, std::optional<SceneDef>& restart) {
-    static std::vector<SceneEntry> scenes;
-    static std::string problem;
+    UiState& ui = uiState(world);
+    auto* controls = world.resource<WindowControls>();
     const ImVec2 screen = ImGui::GetIO().DisplaySize;
     ImGui::SetNextWindowPos(ImVec2(10.0f, screen.y - 10.0f), ImGuiCond_Always, ImVec2(0.0f, 1.0f));
     ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);
-    const bool open = ImGui::Begin("scenes: click one to open it", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings);
+    ImGui::SetNextWindowSizeConstraints(ImVec2(screen.x * 0.3f, 0.0f), ImVec2(screen.x * 0.6f, screen.y * 0.7f));
+    const bool open = ImGui::Begin("scenes: click one to open it (the game waits)", nullptr, ImGuiWindowFlags_NoSavedSettings);
+    if (controls) controls->pickerOpen = open;
     if (!open) {
         ImGui::End();
         return;
     }
-    if (scenes.empty() || ImGui::SmallButton("refresh")) scenes = sceneFiles();
-    for (const SceneEntry& s : scenes) {
+    if (ui.scenes.empty() || ImGui::SmallButton("refresh")) ui.scenes = sceneFiles();
+    ImGui::PushTextWrapPos(0.0f);
+    for (const SceneEntry& s : ui.scenes) {
         if (ImGui::Selectable(s.name.c_str())) {
             try {
                 restart = loadScene(s.path);
-                if (auto* controls = world.resource<WindowControls>()) controls->sceneSwitch = s.path;
-                problem.clear();
+                if (controls) controls->sceneSwitch = s.path;
+                ui.pickProblem.clear();
             } catch (const std::exception& e) {
-                problem = e.what();
+                ui.pickProblem = e.what();
             }
         }
-        if (!s.line.empty()) {
-            ImGui::SameLine(140.0f);
-            ImGui::TextDisabled("%s", s.line.c_str());
-        }
+        if (!s.description.empty()) ImGui::TextDisabled("%s", s.description.c_str());
     }
-    if (!problem.empty()) ImGui::TextWrapped("%s", problem.c_str());
+    ImGui::PopTextWrapPos();
+    if (!ui.pickProblem.empty()) ImGui::TextWrapped("%s", ui.pickProblem.c_str());
     ImGui::End();
 }
 
@@ -272,16 +201,16 @@ static void toolsPanel(ecs::World& world, double now) {
         const std::string label = std::to_string(k + 1) + " " + enumNames<Tool>[k];
         if (ImGui::RadioButton(label.c_str(), tools->def.tool == Tool(k)) && tools->def.tool != Tool(k)) pressKey(world, KEYS[k], now);
     }
-    ToolsDef& def = tools->def;
+    const ToolsDef& def = tools->def;
     switch (def.tool) {
     case Tool::Grab:
         ImGui::TextDisabled("left drag a body; wheel: nearer/farther; release throws");
-        ImGui::SliderFloat("spring Hz", &def.grab_frequency_hz, 0.1f, 20.0f, "%.1f");
+        liveSlider(world, "spring Hz", "tools.grab_frequency_hz", def.grab_frequency_hz, 0.1f, 20.0f, "%.1f", nullptr);
         break;
     case Tool::Stir:
         ImGui::TextDisabled("hold left on the water; wheel: radius, Shift + wheel: depth");
-        ImGui::SliderFloat("radius m", &def.stir_radius, 0.05f, 10.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
-        ImGui::SliderFloat("depth m", &def.stir_depth, -10.0f, 10.0f, "%.2f");
+        liveSlider(world, "radius m", "tools.stir_radius", def.stir_radius, 0.05f, 10.0f, "%.2f", nullptr);
+        liveSlider(world, "depth m", "tools.stir_depth", def.stir_depth, -10.0f, 10.0f, "%.2f", nullptr);
         break;
     case Tool::Drop: {
         ImGui::TextDisabled("left click on the water drops it %.0f m above", double(def.drop_height));
@@ -292,8 +221,9 @@ static void toolsPanel(ecs::World& world, double now) {
                 for (size_t n = (k + count - size_t(def.drop)) % count; n > 0; --n) pressKey(world, platform::Key::Num3, now);
         }
         if (def.drop == DropKind::Ball) {
-            ImGui::SliderFloat("ball radius m", &def.ball_radius, 0.05f, 5.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
-            ImGui::SliderFloat("density kg/m3", &def.ball_density, 10.0f, 20000.0f, "%.0f", ImGuiSliderFlags_Logarithmic);
+            // Through the live path (recorded as tools.* sets): a session that used them replays.
+            liveSlider(world, "ball radius m", "tools.ball_radius", def.ball_radius, 0.05f, 5.0f, "%.2f", nullptr);
+            liveSlider(world, "density kg/m3", "tools.ball_density", def.ball_density, 10.0f, 20000.0f, "%.0f", nullptr);
             const float water = sceneSettings(world).def.environment.water_density;
             ImGui::TextDisabled("%s (water: %.0f kg/m3)", def.ball_density < water ? "floats" : "sinks", double(water));
         }
@@ -342,69 +272,83 @@ static void currentArrows(ecs::World& world) {
         }
 }
 
-void drawPanels(ecs::World& world, SceneSettings& settings, const ecs::FrameTimer& timer, std::optional<float> dynamicScale,
-                std::optional<SceneDef>& restart, double now) {
+// The full panel (H): timings, the player's keys, the Sea, the live [render] keys, the scene
+// editor and "save scene as".
+static void mainPanel(ecs::World& world, SceneSettings& settings, const ecs::FrameTimer& timer, std::optional<float> dynamicScale,
+                      std::optional<SceneDef>& restart) {
     const SceneDef& scene = settings.def;
-    currentArrows(world);
-    // The goal's windows come last, in front; the panel never comes before them.
-    const auto goal = [&world] {
-        if (const GameState* game = gameState(world)) {
-            gameHud(*game);
-            resultPanel(*game);
-        }
-    };
-    if (const auto* controls = world.resource<WindowControls>(); controls && !controls->showOverlay) return goal();
-    toolsPanel(world, now);
+    const ImVec2 screen = ImGui::GetIO().DisplaySize;
     ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
-    ImGui::Begin("oceanbox", nullptr, ImGuiWindowFlags_NoBringToFrontOnFocus);
-    const auto& frames = timer.frameSamples();
-    double frameMs = frames.empty() ? 0.0 : frames.back();
-    ImGui::Text("frame %.2f ms (%.0f fps)", frameMs, frameMs > 0 ? 1000.0 / frameMs : 0.0);
+    ImGui::SetNextWindowSizeConstraints(ImVec2(0.0f, 0.0f), ImVec2(screen.x * 0.5f, screen.y * 0.8f));
+    ImGui::Begin("oceanbox (H folds)", nullptr, ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_AlwaysAutoResize);
     if (dynamicScale)
         ImGui::Text("resolution scale %.2f (dynamic, holding %.0f fps)", double(*dynamicScale), double(scene.render.target_fps));
     else
         ImGui::Text("resolution scale %.2f", double(scene.render.resolution_scale));
-    if (ImGui::BeginTable("phases", 3)) {
-        ImGui::TableSetupColumn("phase");
-        ImGui::TableSetupColumn("cpu ms");
-        ImGui::TableSetupColumn("gpu ms");
-        ImGui::TableHeadersRow();
-        for (int p = 0; p < ecs::PHASE_COUNT; ++p) {
-            auto phase = ecs::Phase(p);
-            ImGui::TableNextRow();
-            ImGui::TableNextColumn();
-            ImGui::TextUnformatted(ecs::phaseName(phase));
-            ImGui::TableNextColumn();
-            ImGui::Text("%.3f", timer.lastCpu(phase));
-            ImGui::TableNextColumn();
-            const auto& gpu = timer.gpuSamples(phase);
-            if (gpu.empty()) ImGui::TextUnformatted("-");
-            else ImGui::Text("%.3f", gpu.back());
+    if (ImGui::CollapsingHeader("timings")) {
+        if (ImGui::BeginTable("phases", 3)) {
+            ImGui::TableSetupColumn("phase");
+            ImGui::TableSetupColumn("cpu ms");
+            ImGui::TableSetupColumn("gpu ms");
+            ImGui::TableHeadersRow();
+            for (int p = 0; p < ecs::PHASE_COUNT; ++p) {
+                auto phase = ecs::Phase(p);
+                ImGui::TableNextRow();
+                ImGui::TableNextColumn();
+                ImGui::TextUnformatted(ecs::phaseName(phase));
+                ImGui::TableNextColumn();
+                ImGui::Text("%.3f", timer.lastCpu(phase));
+                ImGui::TableNextColumn();
+                const auto& gpu = timer.gpuSamples(phase);
+                if (gpu.empty()) ImGui::TextUnformatted("-");
+                else ImGui::Text("%.3f", gpu.back());
+            }
+            ImGui::EndTable();
         }
-        ImGui::EndTable();
+        timingGraph(timer);
     }
-    if (ImGui::CollapsingHeader("timing graph")) timingGraph(timer);
     playerPanel(world);
     seaPanel(world, scene);
     // The live settings: the [render] keys marked LIVE, applied from the next frame on.
-    gfx::UiEditor live(true);
-    live.section("render", settings.def.render);
-    if (live.changed()) settings.changed(SceneSection::Render);
-    const SceneDef shown = sceneEditor(scene, restart);
+    if (ImGui::CollapsingHeader("render (live)")) {
+        gfx::UiEditor live(true);
+        live.section("render", settings.def.render);
+        if (live.changed()) settings.changed(SceneSection::Render);
+    }
+    sceneEditor(world, restart);
 
-    // --- save scene as
-    static char path[256] = "saved_scene.toml";
-    static std::string status;
-    ImGui::InputText("##path", path, sizeof path);
+    // --- save scene as: this world's scene, as edited
+    UiState& ui = uiState(world);
+    char path[256];
+    std::snprintf(path, sizeof path, "%s", ui.savePath.c_str());
+    if (ImGui::InputText("##path", path, sizeof path)) ui.savePath = path;
     ImGui::SameLine();
     if (ImGui::Button("save scene as")) {
-        std::string error = saveScene(shown, path);
-        status = error.empty() ? std::string("saved ") + path : error;
+        const std::string error = saveScene(sceneToSave(world), ui.savePath);
+        ui.saveStatus = error.empty() ? "saved " + ui.savePath : error;
     }
-    if (!status.empty()) ImGui::TextUnformatted(status.c_str());
+    if (!ui.saveStatus.empty()) ImGui::TextUnformatted(ui.saveStatus.c_str());
     ImGui::End();
-    scenePicker(world, restart);
-    goal();
+}
+
+void drawPanels(ecs::World& world, SceneSettings& settings, const ecs::FrameTimer& timer, std::optional<float> dynamicScale,
+                std::optional<SceneDef>& restart, double now) {
+    const auto* controls = world.resource<WindowControls>();
+    const OverlayLevel level = controls ? controls->overlay : OverlayLevel::Full;
+    if (level == OverlayLevel::Hidden) return;
+    currentArrows(world);
+    goalCues(world);
+    if (level == OverlayLevel::Full) {
+        toolsPanel(world, now);
+        mainPanel(world, settings, timer, dynamicScale, restart);
+        scenePicker(world, restart);
+    } else if (auto* c = world.resource<WindowControls>()) {
+        c->pickerOpen = false;
+    }
+    // The HUD, the card and the result come last, in front.
+    compactHud(world, timer);
+    startCard(world);
+    resultPanel(world);
 }
 
 } // namespace ob::game

@@ -11,7 +11,9 @@
 #include "sim/splash_foam_system.h"
 #include "sim/water_systems.h"
 #include "splash/splash_particles.h"
+#include "ui/hud.h"
 #include "ui/ui_panels.h"
+#include "world/controls.h"
 #include "view/water_view.h"
 #include "water/composite_water.h"
 
@@ -27,7 +29,7 @@ SandboxView::SandboxView(platform::Platform& platform, bool withUi, ecs::World& 
       m_renderSeen{sceneSettings(world).version(SceneSection::Render)},
       m_skySeen{sceneSettings(world).version(SceneSection::Sky)} {
     m_renderer->sky() = sceneSettings(world).def.sky;
-    if (withUi && platform.nativeWindow()) m_ui = std::make_unique<gfx::UiOverlay>(platform.nativeWindow());
+    if (withUi) m_ui = std::make_unique<gfx::UiOverlay>(platform.nativeWindow());  // headless: drawn, no input
 }
 
 SandboxView::~SandboxView() = default;
@@ -111,7 +113,7 @@ void SandboxView::render(ecs::World& world, const ecs::Tick& tick) {
     }
     if (!passes.empty()) m_timer.setGpu(ecs::Phase::Render, gpuMs);
     if (m_ui) {
-        m_ui->begin();
+        m_ui->begin(size, overlayScale(settings.def.window, size, m_platform.contentScale()));
         std::optional<float> dynamicScale;
         if (const auto* dynamic = world.resource<DynamicScale>(); dynamic && dynamic->control && render.target_fps > 0.0f)
             dynamicScale = dynamic->control->scale();
@@ -126,6 +128,14 @@ void SandboxView::render(ecs::World& world, const ecs::Tick& tick) {
 void Sandbox::attachPlatform(platform::Platform& platform, bool withUi) {
     m_world.setResource(std::unique_ptr<View>(new SandboxView(platform, withUi, m_world, m_schedule.timer(), m_restart)));
     attachWaterGpu(m_world);
+}
+
+void Sandbox::showStartCard(const std::string& text) {
+    auto* controls = m_world.resource<WindowControls>();
+    if (!controls) return;
+    controls->card = true;
+    controls->cardText = text;
+    controls->cardKeys = startCardKeys(m_world);
 }
 
 void Sandbox::enableDynamicResolution() { m_world.setResource(std::make_unique<DynamicScale>()); }

@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <vector>
+#include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
 namespace ob::game {
@@ -75,6 +76,18 @@ float waterHeight(ecs::World& world, glm::vec3 p) {
     return ocean && ocean->water ? ocean->water->sample(p.x, p.z).height : 0.0f;
 }
 
+// The highest water within CREST_SEARCH_M of `p` (m): the eye's point and two rings of eight.
+float highestCrestNear(ecs::World& world, glm::vec3 p) {
+    constexpr int RING_POINTS = 8;
+    float highest = waterHeight(world, p);
+    for (float r : {0.5f * CREST_SEARCH_M, CREST_SEARCH_M})
+        for (int k = 0; k < RING_POINTS; ++k) {
+            const float a = 2.0f * float(M_PI) * float(k) / float(RING_POINTS);
+            highest = std::max(highest, waterHeight(world, p + glm::vec3(r * std::cos(a), 0.0f, r * std::sin(a))));
+        }
+    return highest;
+}
+
 // The arm from the point looked at to the eye, turned by `yaw` about the vertical, raised
 // by `lift` (elevation kept in [minElevation, MAX_ELEVATION]) and scaled by `zoom`.
 glm::vec3 steerArm(glm::vec3 arm, float yaw, float lift, float zoom, float minElevation = MIN_ELEVATION) {
@@ -86,6 +99,30 @@ glm::vec3 steerArm(glm::vec3 arm, float yaw, float lift, float zoom, float minEl
     const float elevation = glm::clamp(std::atan2(arm.y, horizontal) + lift, minElevation, MAX_ELEVATION);
     const glm::vec2 dir = horizontal > 1e-6f ? glm::vec2(arm.x, arm.z) / horizontal : glm::vec2(0.0f, -1.0f);
     return {dir.x * length * std::cos(elevation), length * std::sin(elevation), dir.y * length * std::cos(elevation)};
+}
+
+// Fixed and orbit: the eye on its path (turned by the orbit and the player), lifted over the
+// crests near it: the lift rises in LIFT_RISE_S and falls back in LIFT_FALL_S, and never
+// leaves the eye under the water right below it.
+void holdAboveCrests(ecs::World& world, CameraRig& rig, ecs::Transform& t, float angle, glm::vec2 drag, float zoom, float dt) {
+    constexpr float LIFT_RISE_S = 0.2f, LIFT_FALL_S = 2.0f;
+    if (!rig.pathKnown || glm::any(glm::greaterThan(glm::abs(t.position - rig.lastEye), glm::vec3(1e-4f)))) {
+        rig.pathEye = t.position;  // first use, or moved by an event or a restart
+        rig.lift = 0.0f;
+        rig.pathKnown = true;
+    }
+    rig.pathEye = rig.def.target + steerArm(rig.pathEye - rig.def.target, angle, drag.y * DRAG_RAD_PER_PX, zoom,
+                                            rig.underwater ? MIN_ELEVATION_UNDERWATER : MIN_ELEVATION);
+    glm::vec3 eye = rig.pathEye;
+    if (!rig.underwater) {
+        const float needed = std::max(0.0f, highestCrestNear(world, eye) + CREST_MARGIN_M - eye.y);
+        const float tau = needed > rig.lift ? LIFT_RISE_S : LIFT_FALL_S;
+        rig.lift += (needed - rig.lift) * (1.0f - std::exp(-dt / tau));
+        eye.y += rig.lift;
+        eye.y = std::max(eye.y, waterHeight(world, eye) + CAMERA_CLEARANCE_M);
+    }
+    t.position = eye;
+    rig.lastEye = eye;
 }
 
 // Fly mode: W/S/A/D/Q/E (Shift ×4), right drag looks, the wheel moves forward; 0.5 m above
@@ -143,18 +180,24 @@ static void steerCameras(ecs::World& world, const platform::InputState* input, f
             // and by the player's drag and wheel.
             const float angle = (rig.def.mode == CameraMode::Orbit ? glm::radians(rig.def.orbit_speed_deg_s) * simDt : 0.0f) -
                                 drag.x * DRAG_RAD_PER_PX;
-            t.position = rig.def.target + steerArm(t.position - rig.def.target, angle, drag.y * DRAG_RAD_PER_PX, zoom,
-                                                   rig.underwater ? MIN_ELEVATION_UNDERWATER : MIN_ELEVATION);
-            if (!rig.underwater) t.position.y = std::max(t.position.y, waterHeight(world, t.position) + CAMERA_CLEARANCE_M);
+            holdAboveCrests(world, rig, t, angle, drag, zoom, std::max(dt, simDt));
             lookAt(rig, t.position, rig.def.target);
             rig.focus = rig.def.target;
         } else if (rig.def.mode == CameraMode::Follow) {
             ecs::Entity target = followedObject(world, rig.def.follow);
             const ecs::Transform* object = target == ecs::Entity::None ? nullptr : world.find<ecs::Transform>(target);
             if (object) {
-                glm::vec3 bow = object->rotation * glm::vec3(0, 0, 1);
-                bow.y = 0.0f;
-                bow = glm::dot(bow, bow) > 1e-6f ? glm::normalize(bow) : glm::vec3(0, 0, 1);
+                // The heading the arm trails: the bow's on the water, eased over 0.5 s; kept while the
+                // hull stands on its bow or stern (its bow then points at the sky or the sea floor).
+                glm::vec3 bow3 = object->rotation * glm::vec3(0, 0, 1);
+                const glm::vec2 flat(bow3.x, bow3.z);
+                if (glm::length(flat) > 0.3f) {
+                    const glm::vec2 h = glm::normalize(flat);
+                    rig.heading = rig.headingKnown ? glm::normalize(rig.heading + (h - rig.heading) * (1.0f - std::exp(-dt / 0.5f)) + 1e-6f)
+                                                   : h;
+                    rig.headingKnown = true;
+                }
+                const glm::vec3 bow(rig.heading.x, 0.0f, rig.heading.y);
                 const float elevation = std::atan2(rig.def.follow_height_m, rig.def.follow_distance_m);
                 rig.followYaw -= drag.x * DRAG_RAD_PER_PX;
                 rig.followLift = glm::clamp(rig.followLift + drag.y * DRAG_RAD_PER_PX, MIN_ELEVATION - elevation,
@@ -188,7 +231,7 @@ void cameraSystem(ecs::World& world, const ecs::Tick& tick) {
 
 void pausedCameraSystem(ecs::World& world, const ecs::Tick& tick) {
     const auto* control = world.resource<ecs::SimControl>();
-    if (control && (control->paused || control->stopped)) steerCameras(world, world.resource<platform::InputState>(), float(tick.dt), tick.time);
+    if (control && (control->paused || control->held || control->stopped)) steerCameras(world, world.resource<platform::InputState>(), float(tick.dt), tick.time);
 }
 
 void cycleCameraMode(ecs::World& world) {

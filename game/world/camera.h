@@ -52,6 +52,9 @@ template <class V> void describe(V& v, CameraDef& d) {
 /// far above the surface below them, the fly camera FLY_CLEARANCE_M.
 constexpr float CAMERA_CLEARANCE_M = 1.0f;
 constexpr float FLY_CLEARANCE_M = 0.5f;
+/// Fixed and orbit eyes stay this far above the highest crest within CREST_SEARCH_M of them (m).
+constexpr float CREST_MARGIN_M = 1.5f;
+constexpr float CREST_SEARCH_M = 5.0f;
 /// Fly mode: seconds Q is held against the surface before the camera dives through it.
 constexpr float DIVE_HOLD_S = 0.6f;
 
@@ -71,6 +74,15 @@ struct CameraRig {
     bool underwater = false;   ///< the player dived (Q held at the surface)
     float diveHold = 0.0f;     ///< seconds Q has been held against the surface
     double lastSimTime = 0.0;  ///< simulated time at the last update (automatic motion follows it)
+    // Fixed and orbit: the eye on its own path (the orbit, the player's steering) and how far it
+    // is lifted above that path to clear the crests near it (eased).
+    glm::vec3 pathEye{0.0f};
+    float lift = 0.0f;         ///< m
+    glm::vec3 lastEye{0.0f};   ///< where the camera system left the eye (moved since: the path starts again there)
+    bool pathKnown = false;
+    // Follow: the heading the arm trails, eased; kept while the followed hull lies on its side.
+    glm::vec2 heading{0.0f, 1.0f};
+    bool headingKnown = false;
 };
 
 /// Creates the camera entity from its Def.

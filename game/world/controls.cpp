@@ -14,6 +14,27 @@
 
 namespace ob::game {
 
+bool isWindowKey(platform::Key key) {
+    using platform::Key;
+    return key == Key::Escape || key == Key::P || key == Key::N || key == Key::H || key == Key::F12 || key == Key::R;
+}
+
+bool actsInWorld(const platform::InputState& input) {
+    for (size_t k = 0; k < platform::KEY_COUNT; ++k)
+        if (input.presses[k] > 0 && !isWindowKey(platform::Key(k))) return true;
+    for (uint8_t c : input.clicks)
+        if (c > 0) return true;
+    return input.scroll != 0.0f;
+}
+
+bool anyPress(const platform::InputState& input) {
+    for (uint8_t p : input.presses)
+        if (p > 0) return true;
+    for (uint8_t c : input.clicks)
+        if (c > 0) return true;
+    return input.scroll != 0.0f;
+}
+
 void addControls(ecs::World& world, const ControlsDef& def) {
     world.setResource(std::make_unique<platform::InputQueue>());
     world.setResource(std::make_unique<platform::InputState>());
@@ -44,9 +65,12 @@ void controlsSystem(ecs::World& world, const ecs::Tick& tick) {
         logInfo("%s", sim->paused ? "paused (P resumes, N steps)" : "running");
     }
     if (sim->paused) sim->stepRequests += input->pressCount(Key::N);
-    if (input->wasPressed(Key::H)) controls->showOverlay = !controls->showOverlay;
+    if (input->wasPressed(Key::H))
+        controls->overlay = controls->overlay == OverlayLevel::Full ? OverlayLevel::Folded : OverlayLevel::Full;
     if (input->wasPressed(Key::R)) controls->restart = true;
-    if (sim->paused || sim->stopped) {
+    if (anyPress(*input)) controls->card = false;
+    sim->held = controls->pickerOpen;
+    if (sim->paused || sim->held || sim->stopped) {
         // The steps would see this frame's events after the pause (or never, once the goal is
         // decided): they are the frame's alone (held keys stay held), and C, a step's key, works here.
         for (int i = 0; i < input->pressCount(Key::C); ++i) cycleCameraMode(world);
@@ -78,8 +102,7 @@ void stepInputSystem(ecs::World& world, const ecs::Tick& tick) {
         using T = platform::InputEvent::Type;
         const auto windowKey = [](const platform::InputEvent& e) {
             const bool key = e.type == T::KeyDown || e.type == T::KeyUp;
-            return e.type == T::Close ||
-                   (key && (e.key == Key::Escape || e.key == Key::P || e.key == Key::N || e.key == Key::H || e.key == Key::F12));
+            return e.type == T::Close || (key && e.key != Key::R && isWindowKey(e.key));  // R restarts: recorded
         };
         auto& events = recorder->events;
         events.erase(std::remove_if(events.begin() + long(recorded), events.end(), windowKey), events.end());

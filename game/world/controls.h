@@ -48,15 +48,34 @@ struct InputRecorder {
     std::vector<platform::InputEvent> events;
 };
 
+/// How much of the overlay is drawn (H: folded <-> full).
+enum class OverlayLevel : uint8_t {
+    Folded,  ///< the compact HUD: fps, tool, the goal's state, the start card while it shows
+    Full,    ///< every panel
+    Hidden,  ///< nothing (a picture of the world alone)
+};
+
 /// Requests the frame's keys make of the simulation, and the overlay switch (a resource).
 struct WindowControls {
     ControlsDef def;          ///< the scene's [controls]
     int spawnFish = 0;        ///< fish schools to spawn at the camera's focus next step
     int screenshotCount = 0;  ///< screenshots taken so far (names oceanbox_shot_NNN.png)
-    bool showOverlay = true;  ///< H: the UI overlay is drawn
+    OverlayLevel overlay = OverlayLevel::Folded;  ///< H: folded <-> full (kept across R and a scene switch)
+    bool card = false;        ///< the start card shows (play), until the first input
+    std::string cardText;     ///< its line: the goal or what to try
+    std::string cardKeys;     ///< its keys
+    bool pickerOpen = false;  ///< the scene picker is open: no steps run (the goal clock holds)
     bool restart = false;     ///< R: the run loop rebuilds the world from the scene it started with (taken once)
     std::string sceneSwitch;  ///< the scene picker's file, whose scene the UI's restart request holds ("" = none)
 };
+
+/// The window's own keys (Esc, P, N, H, F12, R): they act on the run, not in the world.
+bool isWindowKey(platform::Key key);
+/// Whether the steps' input this step acts in the world: a key other than the window's, a
+/// button, the wheel (what starts a goal clock that waits for the player).
+bool actsInWorld(const platform::InputState& input);
+/// Whether the frame's input has any press, click or wheel turn (what dismisses the start card).
+bool anyPress(const platform::InputState& input);
 
 /// Creates the input queue, the frame's and the steps' input state, the controls and
 /// SimControl resources.
@@ -64,7 +83,8 @@ void addControls(ecs::World& world, const ControlsDef& def);
 /// Input phase: queues the scripted events due by this frame's clock, then gives the frame
 /// its events (call after the platform's events are queued).
 void frameInputSystem(ecs::World& world, const ecs::Tick& tick);
-/// Input phase, after frameInputSystem: P, N, F12, H, R (and C while paused).
+/// Input phase, after frameInputSystem: P, N, F12, H, R (and C while paused); any press
+/// dismisses the start card; the open picker holds the steps.
 void controlsSystem(ecs::World& world, const ecs::Tick& tick);
 /// Script phase, first: the events due by this step's clock time into StepInput; C cycles the
 /// camera's mode, F asks for a fish school.

@@ -89,6 +89,7 @@ constexpr uint64_t MAX_RECORDED_STEPS = uint64_t(86400.0 * ecs::MAX_STEP_HZ);
 struct InputScriptDef {
     uint64_t steps = 0;          ///< simulation steps the recorded session ran (0: not a recording), at most MAX_RECORDED_STEPS; `run` runs as many
     glm::vec2 size{0.0f};        ///< the recorded framebuffer (px; 0: none, else --size's range [16, 8192]): `run` renders at it, so the cursor's rays are the same
+    bool goal_clock_waits = false;  ///< the goal clock waited for the first input acting in the world (a recording of play)
     std::vector<PressDef> press;
     std::vector<MouseDef> mouse;
     std::vector<MoveDef> move;
@@ -99,6 +100,7 @@ template <class V> void describe(V& v, InputScriptDef& d) {
     v.field("steps", d.steps, "simulation steps the recorded session ran (run runs as many)");
     v.field("size", d.size, autoOrRange(platform::MIN_FRAMEBUFFER_PX, platform::MAX_FRAMEBUFFER_PX),
             "the recorded framebuffer, px (run renders at it)");
+    v.field("goal_clock_waits", d.goal_clock_waits, "the goal clock waited for the first input (a recording of play)");
     v.list("press", d.press, "key presses");
     v.list("mouse", d.mouse, "mouse actions");
     v.list("move", d.move, "cursor motions");

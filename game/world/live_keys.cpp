@@ -27,6 +27,7 @@ template <class Found> struct KeyWalk {
     void field(const char*, glm::vec3&, Limits, const char*, Change = {}) {}
     void field(const char*, std::string&, const char*, Change = {}) {}
     template <NamedEnum E> void field(const char*, E&, const char*, Change = {}) {}
+    template <NamedEnum E> void field(const char*, std::vector<E>&, const char*, Change = {}) {}
     void field(const char*, std::vector<glm::vec2>&, Limits, const char*, Change = {}) {}
     template <class Def> void section(const char* key, Def& def) {
         const std::string saved = prefix;

@@ -15,6 +15,7 @@
 #include "behaviours/spawning.h"
 #include "ocean/ocean_fft_cpu.h"
 #include "world/scene_settings.h"
+#include "world/righting.h"
 #include "world/script.h"
 #include "world/tools.h"
 #include "behaviours/ship.h"
@@ -48,6 +49,7 @@ const ecs::SystemEntry SYSTEMS[] = {
     {Phase::Input, Rate::Frame, "controls", controlsSystem},
     {Phase::Script, Rate::Step, "step input", stepInputSystem},
     {Phase::Script, Rate::Step, "tools", toolsSystem},
+    {Phase::Script, Rate::Step, "righting", rightingSystem},  // T: a capsized ship upright
     {Phase::Script, Rate::Step, "events", scriptSystem},
     {Phase::Script, Rate::Step, "settings", settingsSystem},  // after the timeline's and the UI's live changes
     {Phase::Script, Rate::Step, "spawn requests", spawnRequestsSystem},
@@ -84,6 +86,7 @@ Sandbox::Sandbox(const SceneDef& scene) : m_schedule(scene.sim) {
     spawnObjects(m_world, def.physics, def.objects, def.sim.seed);
     addScript(m_world);
     addPlayerTools(m_world, def.tools, {def.window.width, def.window.height}, fishSchoolOf(def.controls), droppedShip(def));
+    allowTools(m_world, allowedTools(def.game));
     addGame(m_world, def);
 }
 

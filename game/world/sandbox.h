@@ -77,6 +77,9 @@ public:
     std::vector<platform::InputEvent> remainingScriptedInput(double now);
     /// The goal is decided (or [sim] end_time reached): no more steps run.
     bool over();
+    /// Opens the world on the start card (`text`, and the keys that matter here) until the
+    /// first input. (Defined in view/.)
+    void showStartCard(const std::string& text);
     /// The internal scale follows the frame time to hold [render] target_fps (play; a `run`
     /// only when asked, so its frames stay reproducible). (Defined in view/.)
     void enableDynamicResolution();

@@ -4,6 +4,7 @@
 #include "currents/current_layer.h"
 #include "interaction/ripple_patch.h"
 #include "world/camera.h"
+#include "world/tools.h"
 
 #include <cassert>
 
@@ -16,7 +17,14 @@ struct SettingsSeen {
     SectionSeen camera;
     SectionSeen ripples;
     SectionSeen currents;
+    SectionSeen tools;
+    ToolsDef toolsTaken;  // [tools] as the palette last took it: a live set hands on the keys it changed
 };
+
+// The palette's live numbers ([tools] keys marked LIVE): the player's wheel changes some of them
+// in the palette too, so a live set hands on only the keys it changed.
+constexpr float ToolsDef::*LIVE_TOOL_KEYS[] = {&ToolsDef::ball_radius, &ToolsDef::ball_density, &ToolsDef::drop_height,
+                                               &ToolsDef::stir_radius, &ToolsDef::stir_depth, &ToolsDef::grab_frequency_hz};
 
 } // namespace
 
@@ -27,7 +35,7 @@ SceneSettings& sceneSettings(ecs::World& world) {
 }
 
 SceneSettings& addSceneSettings(ecs::World& world, const SceneDef& scene) {
-    world.setResource(std::make_unique<SettingsSeen>());
+    world.setResource(std::make_unique<SettingsSeen>()).toolsTaken = scene.tools;
     return world.setResource(std::make_unique<SceneSettings>(SceneSettings{scene, {}}));
 }
 
@@ -45,6 +53,12 @@ void settingsSystem(ecs::World& world, const ecs::Tick&) {
         if (auto* patch = world.resource<interaction::RipplePatch>()) patch->retune(settings->def.ripples);
     if (seen->currents.moved(*settings, SceneSection::Currents))
         if (auto* layer = world.resource<currents::CurrentLayer>()) layer->retune(settings->def.currents);
+    if (seen->tools.moved(*settings, SceneSection::Tools)) {
+        if (auto* tools = world.resource<PlayerTools>())
+            for (float ToolsDef::*key : LIVE_TOOL_KEYS)
+                if (settings->def.tools.*key != seen->toolsTaken.*key) tools->def.*key = settings->def.tools.*key;
+        seen->toolsTaken = settings->def.tools;
+    }
 }
 
 } // namespace ob::game

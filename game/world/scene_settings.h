@@ -11,9 +11,9 @@
 namespace ob::game {
 
 /// The sections with live keys (core/schema.h: LIVE), the unit a version counts changes of.
-enum class SceneSection : uint8_t { Camera, Render, Sky, Ocean, Gerstner, Ripples, Physics, Currents };
-constexpr std::array<const char*, 8> names(SceneSection) {
-    return {"camera", "render", "sky", "ocean", "gerstner", "ripples", "physics", "currents"};
+enum class SceneSection : uint8_t { Camera, Render, Sky, Ocean, Gerstner, Ripples, Physics, Currents, Tools };
+constexpr std::array<const char*, 9> names(SceneSection) {
+    return {"camera", "render", "sky", "ocean", "gerstner", "ripples", "physics", "currents", "tools"};
 }
 
 /// The scene as the world runs it (a resource, made first by the sandbox).

@@ -227,6 +227,13 @@ void chooseTool(ecs::World& world, PlayerTools& tools, const StepInput& input) {
     for (size_t k = 0; k < std::size(NUMBER_KEYS); ++k) {
         int presses = input.pressCount(NUMBER_KEYS[k]);
         if (presses == 0) continue;
+        if (std::find(tools.allowed.begin(), tools.allowed.end(), Tool(k)) == tools.allowed.end()) {
+            // Refused: the tool stays; the overlay says why.
+            std::string list;
+            for (Tool t : tools.allowed) list += std::string(list.empty() ? "" : ", ") + enumName(t);
+            tools.message = std::string(enumName(Tool(k))) + " is off in this scene (its goal allows " + list + ")";
+            continue;
+        }
         if (tools.def.tool != Tool(k)) {
             if (tools.grabbed != ecs::Entity::None) release(world, tools);
             stopStirring(world, tools);
@@ -257,9 +264,17 @@ void addPlayerTools(ecs::World& world, const ToolsDef& def, glm::ivec2 viewportS
                     const ObjectDef& shipTemplate) {
     auto& tools = world.setResource(std::make_unique<PlayerTools>());
     tools.def = def;
+    for (size_t t = 0; t < enumNames<Tool>.size(); ++t) tools.allowed.push_back(Tool(t));
     tools.fishTemplate = fishTemplate;
     tools.shipTemplate = shipTemplate;
     world.setResource(std::make_unique<Viewport>()).size = viewportSize;
+}
+
+void allowTools(ecs::World& world, const std::vector<Tool>& allowed) {
+    auto* tools = world.resource<PlayerTools>();
+    if (!tools || allowed.empty()) return;
+    tools->allowed = allowed;
+    if (std::find(allowed.begin(), allowed.end(), tools->def.tool) == allowed.end()) tools->def.tool = allowed.front();
 }
 
 void toolsSystem(ecs::World& world, const ecs::Tick& tick) {

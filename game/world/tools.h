@@ -6,6 +6,7 @@
 #include "ecs/schedule.h"
 #include "view_data/scene_view.h"
 #include "sim/objects.h"
+#include "world/tool_kind.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -15,15 +16,6 @@
 
 namespace ob::game {
 
-/// What the left button does.
-enum class Tool : uint8_t {
-    Grab,    ///< 1: drag a body on a spring to the cursor; release throws it
-    Stir,    ///< 2: a sphere source follows the cursor's point on the water
-    Drop,    ///< 3: a click drops the palette's object 3 m above the water point (3 again: the next object)
-    Erase,   ///< 4: a click removes the body (ship, school as a whole) under the cursor
-    Cannon,  ///< 5: a click aims the player's cannon at the water point and fires
-};
-constexpr std::array<const char*, 5> names(Tool) { return {"grab", "stir", "drop", "erase", "cannon"}; }
 
 /// What the drop tool spawns.
 enum class DropKind : uint8_t { Ball, Crate, Barrel, Buoy, Raft, FishSchool, Ship };
@@ -44,12 +36,12 @@ struct ToolsDef {
 template <class V> void describe(V& v, ToolsDef& d) {
     v.field("tool", d.tool, "the tool at start: grab, stir, drop, erase or cannon (keys 1-5)");
     v.field("drop", d.drop, "what the drop tool spawns");
-    v.field("ball_radius", d.ball_radius, range(0.05, 5), "dropped ball radius, m");
-    v.field("ball_density", d.ball_density, range(10, 20000), "dropped ball density, kg/m³ (water 1025)");
-    v.field("drop_height", d.drop_height, range(0, 100), "drops start this far above the water, m");
-    v.field("stir_radius", d.stir_radius, range(0.05, 10), "stir: source sphere radius, m (wheel)");
-    v.field("stir_depth", d.stir_depth, range(-10, 10), "stir: depth of its centre under the surface, m (Shift + wheel)");
-    v.field("grab_frequency_hz", d.grab_frequency_hz, range(0.1, 20), "grab: spring frequency, Hz");
+    v.field("ball_radius", d.ball_radius, range(0.05, 5), "dropped ball radius, m", LIVE);
+    v.field("ball_density", d.ball_density, range(10, 20000), "dropped ball density, kg/m³ (water 1025)", LIVE);
+    v.field("drop_height", d.drop_height, range(0, 100), "drops start this far above the water, m", LIVE);
+    v.field("stir_radius", d.stir_radius, range(0.05, 10), "stir: source sphere radius, m (wheel)", LIVE);
+    v.field("stir_depth", d.stir_depth, range(-10, 10), "stir: depth of its centre under the surface, m (Shift + wheel)", LIVE);
+    v.field("grab_frequency_hz", d.grab_frequency_hz, range(0.1, 20), "grab: spring frequency, Hz", LIVE);
 }
 
 /// Where the viewport's framebuffer is (a resource): the cursor's pixels become rays in it.
@@ -74,6 +66,7 @@ struct PlayerTools {
     ecs::Entity stirrer = ecs::Entity::None;  ///< the moving source sphere while the button is held
     // --- what the drop tool makes of a school and a ship (the scene's [controls] fish, its ship model)
     ObjectDef fishTemplate, shipTemplate;
+    std::vector<Tool> allowed;              ///< the tools the scene allows (its [game] tools)
     // --- counts and what the overlay says
     int drops = 0, erased = 0, throws = 0, shots = 0;
     std::string message;                    ///< the latest note for the player ("" = none)
@@ -83,6 +76,9 @@ struct PlayerTools {
 /// fish school and ship are copies of the templates.
 void addPlayerTools(ecs::World& world, const ToolsDef& def, glm::ivec2 viewportSize, const ObjectDef& fishTemplate,
                     const ObjectDef& shipTemplate);
+/// Limits the player to `allowed` (a goal scene's [game] tools); a tool held at start that is
+/// not among them gives way to the first that is.
+void allowTools(ecs::World& world, const std::vector<Tool>& allowed);
 /// What the drop tool drops at `at` (on the water; the body starts drop_height above it),
 /// turned `yawDeg`: the palette's choice with its size, density and model.
 ObjectDef dropDef(const PlayerTools& tools, glm::vec3 at, float yawDeg);

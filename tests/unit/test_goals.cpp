@@ -6,6 +6,7 @@
 #include "ecs/components.h"
 #include "goals/goal_geometry.h"
 #include "goals/goals.h"
+#include "sim/objects.h"
 #include "world/sandbox.h"
 #include "world/scene.h"
 
@@ -113,6 +114,12 @@ target = "gun"
     CHECK_FALSE(game.targets[1].hit);
     CHECK(game.targets[0].hitTime > 0.5);
     CHECK(game.targets[0].hitTime < 1.0);
+    // The hit target shows it (a built-in box's colour; a model's tint), the other does not.
+    const Renderable& shown = hit.world().get<Renderable>(game.targets[0].entity);
+    const Renderable& other = hit.world().get<Renderable>(game.targets[1].entity);
+    CHECK(shown.color != other.color);
+    CHECK(shown.modelTint != other.modelTint);
+    CHECK(game.events.size() == 1);  // the view marks it on the water
     runFrames(hit, 240);  // the ball bounces off, sinks past the target and is gone: still one hit
     CHECK(game.score == 1);
     CHECK(game.result == GameResult::Running);
