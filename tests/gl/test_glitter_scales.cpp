@@ -93,7 +93,7 @@ double coxMunk(glm::dvec3 view, glm::dvec3 sun, double sigma2) {
 
 } // namespace
 
-TEST_CASE("a calm sea's glitter near the eye: hundreds of separate glints at 1920×1080", "[gl][glitter][sparkle]") {
+TEST_CASE("a calm sea's glitter near the eye: hundreds of separate glints at 1920×1080", "[gl][glitter][sparkle][long]") {
     const glm::ivec2 size(1920, 1080);
     const Image img = render(SPECTRUM_ONLY, calmSea(6.0f), size, 3);
     const std::vector<double> l = lumaOf(img);

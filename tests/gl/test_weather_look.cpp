@@ -122,7 +122,7 @@ TEST_CASE("auto exposure's gain takes back 2/3 of a change in stops, relaxing wi
     for (float d : {0.05f, 0.2f, 0.5f, 0.8f}) CHECK(gfx::displayToExposed(d) == Approx(linearOf(d)).epsilon(1e-4));
 }
 
-TEST_CASE("under water: a level view at 3 m adapts to a median luma of 60 within 3 s; the radiance keeps level/zenith within 2–20%", "[gl][render][exposure][underwater]") {
+TEST_CASE("under water: a level view at 3 m adapts to a median luma of 60 within 3 s, the radiance keeps level/zenith within 2–20%", "[gl][render][exposure][underwater]") {
     gfx::requestDebugOutput(true);
     const glm::ivec2 size(192, 108);
     auto platform = platform::createHeadlessPlatform(size);

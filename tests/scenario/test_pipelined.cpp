@@ -31,7 +31,7 @@ uint64_t hashOf(bool pipelined, int perFrame, int steps) {
 
 } // namespace
 
-TEST_CASE("the default scene pipelined and not gives the same state hash at 1, 2 and 8 steps a frame", "[determinism][pipelined][threads]") {
+TEST_CASE("the default scene pipelined and not gives the same state hash at 1, 2 and 8 steps a frame", "[determinism][pipelined][threads][long]") {
     // 48 steps: every coarse level (levels = 3: steps every 4th and 16th frame) has stepped on a
     // worker at least twice, and the ocean's maps came from the other buffer 47 times.
     const int steps = 48;

@@ -9,7 +9,7 @@
 using ob::test::runOceanbox;
 using ob::test::tempPath;
 
-TEST_CASE("--stats counts splash.spray_emitted: above 0 at 18 m/s on the open sea, 0 at 6 m/s", "[cli][weather][spray]") {
+TEST_CASE("the stats of a run count splash.spray_emitted: above 0 at 18 m/s on the open sea, 0 at 6 m/s", "[cli][weather][spray][long]") {
     const auto spray = [](int wind) {
         const std::string stats = tempPath("spray_" + std::to_string(wind) + ".json");
         auto r = runOceanbox("run config/scenes/default.toml --headless --size 64x36 --frames 90 --set ocean.resolution=64 "

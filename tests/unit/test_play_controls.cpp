@@ -85,7 +85,7 @@ TEST_CASE("a goal clock that waits for the player reads 0 until the first input 
     CHECK(gameState(sandbox.world())->startedAt == Approx(0.9).margin(1.0 / 60.0 + 1e-6));
 }
 
-TEST_CASE("T rights a capsized ship upright on its heading; an upright ship is left alone", "[ship][input]") {
+TEST_CASE("T rights a capsized ship upright on its heading, an upright ship is left alone", "[ship][input]") {
     Sandbox sandbox(parseScene(CALM + R"(
 [[objects]]
 type = "ship"
