@@ -107,7 +107,7 @@ TEST_CASE("every scene at start: the folded overlay covers at most 15 % of the v
         // floor, 0.75): the small view is the tight one; the large one is checked on the scene
         // whose overlay is the largest (tide's) and in the targets test above.
         const bool large = entry.path().filename() == "tide.toml";
-        for (const std::string size : large ? std::vector<std::string>{"640x360", "1920x1080"} : std::vector<std::string>{"640x360"}) {
+        for (const std::string& size : large ? std::vector<std::string>{"640x360", "1920x1080"} : std::vector<std::string>{"640x360"}) {
             const double coverage = overlayCoverage(entry.path().string(), size);
             INFO(entry.path().filename().string() << " " << size << ": " << coverage);
             CHECK(coverage > 0.005);
