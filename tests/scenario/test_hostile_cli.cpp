@@ -284,7 +284,7 @@ TEST_CASE("a scene's screenshot event writes only in its folder: an absolute pat
 
 TEST_CASE("a scene's text reaches the terminal inert and a megabyte value is cut in its message", "[hostile][cli][text]") {
     const std::string scene = tinyScene("note.toml", "[scene]\nnote = \"\\u001b[2J\\u001b]52;c;ZXZpbA==\\u0007 boo\"\n");
-    ProcessResult r = oceanbox(ob::test::withoutLeakCheck() + "play " + scene + PLAY_FLAGS);
+    ProcessResult r = ob::test::runShell(ob::test::withoutLeakCheck() + "timeout -k 2 20 \"$OCEANBOX\" play " + scene + PLAY_FLAGS);
     INFO(r.output);
     CHECK(r.exitCode == 0);
     CHECK(r.output.find('\x1b') == std::string::npos);
