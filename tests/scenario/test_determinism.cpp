@@ -55,13 +55,14 @@ struct WorkerCountGuard {
 } // namespace
 
 TEST_CASE("the default scene stepped twice for 120 steps gives the same state hash", "[determinism][threads][long]") {
+    const int steps = test::THREAD_SANITIZER ? 30 : 120;
     game::SceneDef scene = game::loadScene(game::defaultScenePath());
-    uint64_t a = hashAfterSteps(scene, 120);
-    CHECK(a == hashAfterSteps(scene, 120));
+    uint64_t a = hashAfterSteps(scene, steps);
+    CHECK(a == hashAfterSteps(scene, steps));
     // The hash sees the state: another drag on the bodies (their poses, their ripples) changes it.
     game::SceneDef other = game::loadScene(game::defaultScenePath(), {"physics.linear_drag=900"});
-    CHECK(a != hashAfterSteps(other, 120));
-    CHECK(a != hashAfterSteps(scene, 119));
+    CHECK(a != hashAfterSteps(other, steps));
+    CHECK(a != hashAfterSteps(scene, steps - 1));
 }
 
 TEST_CASE("two headless runs of 120 frames report the same state hash", "[determinism][long]") {
@@ -73,8 +74,9 @@ TEST_CASE("two headless runs of 120 frames report the same state hash", "[determ
 TEST_CASE("the GPU ocean backend (whose query maps are computed a step ahead on another thread) gives the CPU backend's state hash", "[determinism][threads][long]") {
     // 40 frames: the GPU transforms on a software rasteriser are slow, and every frame's
     // maps enter the hash (the ships and the crate float on them from the first step).
+    const int frames = test::THREAD_SANITIZER ? 10 : 40;
     std::string gpuLog, cpuLog;
-    CHECK(cliHash("--set ocean.backend=gpu", 40, &gpuLog) == cliHash("--set ocean.backend=cpu", 40, &cpuLog));
+    CHECK(cliHash("--set ocean.backend=gpu", frames, &gpuLog) == cliHash("--set ocean.backend=cpu", frames, &cpuLog));
     // Each ran the backend it was asked for (a GPU run that fell back to the CPU maps would pass the hash).
     CHECK(gpuLog.find("ocean: gpu (compute shaders) backend") != std::string::npos);
     CHECK(cpuLog.find("ocean: cpu (FFTW) backend") != std::string::npos);
@@ -85,9 +87,12 @@ TEST_CASE("the state hash is the same with 1, 2, 3 and 8 workers (ripple rows an
     // 1024), so every worker count here really splits it; the 256² ocean runs on 2 threads
     // once 2 workers are set (measuring off: whatever this machine measured, the split runs).
     // The bodies fall in within the 150 steps and ring the patch.
+    // Under ThreadSanitizer a 512² patch of the same size: 510 rows in chunks of 64, still 8.
     WorkerCountGuard guard;
     setThreadMeasuring(false);
-    game::SceneDef scene = game::loadScene(game::defaultScenePath(), {"ripples.model=kang2008", "ripples.levels=1", "ripples.resolution=1024", "ripples.cell_size=0.05"});
+    const std::string grid = test::THREAD_SANITIZER ? "ripples.resolution=512" : "ripples.resolution=1024";
+    const std::string cell = test::THREAD_SANITIZER ? "ripples.cell_size=0.1" : "ripples.cell_size=0.05";
+    game::SceneDef scene = game::loadScene(game::defaultScenePath(), {"ripples.model=kang2008", "ripples.levels=1", grid, cell});
     std::vector<uint64_t> hashes;
     for (int workers : {1, 2, 3, 8}) {
         setWorkerCount(workers);
@@ -106,15 +111,16 @@ TEST_CASE("the state hash of the ewave default scene is the same on 1, 2 and 3 w
     // sources' row bands too, for a step with enough footprint: tests_unit "many sources");
     // measuring on: whatever this machine chose.
     WorkerCountGuard guard;
+    const int steps = test::THREAD_SANITIZER ? 16 : 40;
     game::SceneDef scene = game::loadScene(game::defaultScenePath());
     std::vector<uint64_t> hashes;
     setThreadMeasuring(false);
     for (int workers : {1, 2, 3}) {
         setWorkerCount(workers);
-        hashes.push_back(hashAfterSteps(scene, 40));
+        hashes.push_back(hashAfterSteps(scene, steps));
     }
     setThreadMeasuring(true);
-    hashes.push_back(hashAfterSteps(scene, 40));
+    hashes.push_back(hashAfterSteps(scene, steps));
     for (size_t i = 1; i < hashes.size(); ++i) CHECK(hashes[i] == hashes[0]);
 }
 

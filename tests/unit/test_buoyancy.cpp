@@ -44,10 +44,12 @@ TEST_CASE("a probe at rest feels rho g V up, drag opposes motion relative to the
 
 namespace {
 
-// Runs a scene of one body on calm water (no waves, no ripples) for `steps`; returns it.
+// Runs a scene of one body on calm water (no waves, no ripples) for `steps`; returns it. The
+// calm sea's grid is the smallest (its heights are 0 at any size) and it has no foam to draw.
 game::Body settle(const std::string& object, int steps, glm::vec3* position = nullptr) {
     game::SceneDef scene = game::parseScene(
-        "[ocean]\namplitude = 0.0\n[ripples]\nenabled = false\n[[objects]]\n" + object, "float.toml");
+        "[ocean]\namplitude = 0.0\nresolution = 16\n[foam]\nenabled = false\n[ripples]\nenabled = false\n[[objects]]\n" + object,
+        "float.toml");
     game::Sandbox sandbox(scene);
     for (int i = 0; i < steps; ++i) sandbox.step();
     auto& bodies = sandbox.world().pool<game::Body>();

@@ -41,7 +41,7 @@ void push(game::Sandbox& sandbox, InputEvent e) { sandbox.world().resource<platf
 } // namespace
 
 TEST_CASE("camera: right drag orbits the target at a constant radius, the wheel zooms by 0.9 a step", "[camera]") {
-    game::Sandbox sandbox(game::parseScene("[ocean]\namplitude = 0.0\n[gerstner]\ncount = 0\n[ripples]\nenabled = false\n"
+    game::Sandbox sandbox(game::parseScene("[ocean]\namplitude = 0.0\nresolution = 16\n[gerstner]\ncount = 0\n[ripples]\nenabled = false\n"
                                            "[camera]\nmode = \"orbit\"\norbit_speed_deg_s = 0.0\nposition = [0, 10, -30]\n"
                                            "target = [0, 0, 0]\n",
                                            "orbit.toml"));
@@ -107,7 +107,7 @@ TEST_CASE("camera: under water a right drag tilts the orbit camera up toward the
     // A drag of −400 px raises the view by 2 rad: above the water the eye stops 10° below the
     // point looked at (the view up by 10°); under water it may pass under it, to 89°.
     for (float depth : {-6.0f, 12.0f}) {
-        game::Sandbox sandbox(game::parseScene("[ocean]\namplitude = 0.0\n[gerstner]\ncount = 0\n[ripples]\nenabled = false\n"
+        game::Sandbox sandbox(game::parseScene("[ocean]\namplitude = 0.0\nresolution = 16\n[gerstner]\ncount = 0\n[ripples]\nenabled = false\n"
                                                "[camera]\nmode = \"orbit\"\norbit_speed_deg_s = 0.0\nposition = [0, " +
                                                    std::to_string(depth) + ", -30]\ntarget = [0, " + std::to_string(depth) + ", 0]\n",
                                                "orbit.toml"));

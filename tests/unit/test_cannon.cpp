@@ -20,6 +20,7 @@ namespace {
 const char* RING_SCENE = R"(
 [ocean]
 amplitude = 0.0
+resolution = 16
 [gerstner]
 count = 0
 [ripples]

@@ -174,7 +174,7 @@ TEST_CASE("environment.gravity scales a drop's ewave rings as Cauchy-Poisson: r 
 TEST_CASE("environment.gravity: a body falls y0 - g t^2/2 (symplectic Euler within g dt t/2)", "[environment][physics]") {
     for (float g : {9.81f, 3.7f}) {
         game::Sandbox sandbox(game::parseScene("[environment]\ngravity = " + std::to_string(g) +
-                                               "\n[ocean]\namplitude = 0.0\n[gerstner]\ncount = 0\n[ripples]\nenabled = false\n"
+                                               "\n[ocean]\namplitude = 0.0\nresolution = 16\n[gerstner]\ncount = 0\n[ripples]\nenabled = false\n"
                                                "[[objects]]\ntype = \"sphere\"\nposition = [0, 40, 0]\n",
                                                "fall.toml"));
         ecs::World& world = sandbox.world();
@@ -188,7 +188,7 @@ TEST_CASE("environment.gravity: a body falls y0 - g t^2/2 (symplectic Euler with
 
 TEST_CASE("environment.water_density sets a hull's draft: depth times rho_hull/rho_water (Archimedes)", "[environment][physics]") {
     // The [ship] Archimedes case in water of 1500 kg/m³: 3·400/1500 m under water (1025: 1.17 m).
-    game::Sandbox sandbox(game::parseScene("[environment]\nwater_density = 1500.0\n[ocean]\namplitude = 0.0\n[gerstner]\ncount = 0\n"
+    game::Sandbox sandbox(game::parseScene("[environment]\nwater_density = 1500.0\n[ocean]\namplitude = 0.0\nresolution = 16\n[gerstner]\ncount = 0\n"
                                            "[ripples]\nenabled = false\n[[objects]]\ntype = \"ship\"\nposition = [0, 0.5, 0]\n"
                                            "speed = 0.0\ndensity = 400.0\nhull = [6.0, 3.0, 20.0]\n",
                                            "dense_water.toml"));

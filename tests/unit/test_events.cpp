@@ -18,6 +18,7 @@ namespace {
 const char* TIMELINE = R"(
 [ocean]
 amplitude = 0.0
+resolution = 16
 [gerstner]
 count = 0
 [ripples]

@@ -23,7 +23,7 @@ struct Motion {
 // A ship along x = 0 towards +z at 6 m/s and a 2 × 1 × 2 m box of density 500 kg/m³ 15 m to
 // its side on calm water, no wind (windage would heel the box); the box's motion from the time the wake can reach it (10 s) to 20 s.
 Motion boxBesideWake(bool ripples) {
-    const std::string text = std::string("[ocean]\namplitude = 0.0\nwind_speed = 0.0\n[gerstner]\ncount = 0\n") +
+    const std::string text = std::string("[ocean]\namplitude = 0.0\nresolution = 16\nwind_speed = 0.0\n[gerstner]\ncount = 0\n") +
                              "[ripples]\nenabled = " + (ripples ? "true" : "false") +
                              "\nmodel = \"ewave\"\nresolution = 512\ncell_size = 0.25\ncenter = [0.0, 10.0]\n"
                              "[[objects]]\ntype = \"ship\"\nname = \"ship\"\nposition = [0, 0.1, -40]\ndensity = 450\n"
@@ -64,7 +64,7 @@ TEST_CASE("ewave coupling: a floating sphere's heave decays (no limit cycle), it
     // A sphere of radius 0.5 m at half the density of water, released 0.2 m above its floating
     // height on calm water; its own ripples carry energy away (radiation damping).
     auto run = [](bool ripples) {
-        const std::string text = std::string("[ocean]\namplitude = 0.0\nwind_speed = 0.0\n[gerstner]\ncount = 0\n") +
+        const std::string text = std::string("[ocean]\namplitude = 0.0\nresolution = 16\nwind_speed = 0.0\n[gerstner]\ncount = 0\n") +
                                  "[ripples]\nenabled = " + (ripples ? "true" : "false") +
                                  "\nmodel = \"ewave\"\nresolution = 256\ncell_size = 0.1\n"
                                  "[[objects]]\ntype = \"sphere\"\nname = \"ball\"\nposition = [0, 0.2, 0]\nradius = 0.5\n"

@@ -17,6 +17,7 @@ namespace {
 const char* FISH_SCENE = R"(
 [ocean]
 amplitude = 0.0
+resolution = 16
 [gerstner]
 count = 0
 [ripples]

@@ -57,7 +57,7 @@ TEST_CASE("hull hydrostatics: capsized, the box floats on its deck with the same
 }
 
 TEST_CASE("the default ship under a steady heeling moment heels to tan φ = M/(Δ·GM), GM the box's (within 5%)", "[ship][hull][long]") {
-    game::Sandbox sandbox(game::parseScene("[ocean]\namplitude = 0.0\nwind_speed = 0.0\n[gerstner]\ncount = 0\n[ripples]\nenabled = false\n"
+    game::Sandbox sandbox(game::parseScene("[ocean]\namplitude = 0.0\nresolution = 16\nwind_speed = 0.0\n[gerstner]\ncount = 0\n[ripples]\nenabled = false\n"
                                            "[[objects]]\ntype = \"ship\"\nposition = [0, 0.0, 0]\nspeed = 0.0\n",
                                            "heel.toml"));
     ecs::World& world = sandbox.world();
@@ -89,7 +89,7 @@ TEST_CASE("the default ship under a steady heeling moment heels to tan φ = M/(�
 TEST_CASE("the default ship, ballasted, heeled to 120° on calm water rights itself within 30 s", "[ship][hull][long]") {
     // Its righting arm GZ = (KB' − KG)-lever of its box stays positive to about 125° with
     // KG = 0.2·D (a uniform box's, KG = D/2, vanishes at 90°: it would turn turtle instead).
-    game::Sandbox sandbox(game::parseScene("[ocean]\namplitude = 0.0\nwind_speed = 0.0\n[gerstner]\ncount = 0\n[ripples]\nenabled = false\n"
+    game::Sandbox sandbox(game::parseScene("[ocean]\namplitude = 0.0\nresolution = 16\nwind_speed = 0.0\n[gerstner]\ncount = 0\n[ripples]\nenabled = false\n"
                                            "[[objects]]\ntype = \"ship\"\nposition = [0, 0.0, 0]\nspeed = 0.0\n",
                                            "capsize.toml"));
     ecs::World& world = sandbox.world();

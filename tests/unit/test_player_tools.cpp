@@ -33,7 +33,7 @@ using test::SIZE;
 using test::view;
 
 // A still sea (no swell, no FFT waves), a fixed camera 10 m up looking at the origin.
-const std::string CALM = "[window]\nwidth = 640\nheight = 360\n[ocean]\namplitude = 0.0\n[gerstner]\ncount = 0\n"
+const std::string CALM = "[window]\nwidth = 640\nheight = 360\n[ocean]\namplitude = 0.0\nresolution = 16\n[gerstner]\ncount = 0\n"
                          "[camera]\nmode = \"fixed\"\nposition = [0, 10, -20]\ntarget = [0, 0, 0]\n";
 
 void tap(game::Sandbox& sandbox, platform::Key key, double time) {

@@ -14,7 +14,7 @@
 
 using namespace ob;
 
-TEST_CASE("ships on the default sea stay afloat and upright (roll < 30 deg) for 60 simulated seconds", "[ship]") {
+TEST_CASE("ships on the default sea stay afloat and upright (roll < 30 deg) for 60 simulated seconds", "[ship][long]") {
     // The default scene's sea with a coarser spectrum grid (same patch, wind and swell) and
     // no ripple patch, so the minute runs in a few seconds.
     game::SceneDef scene = game::loadScene(game::defaultScenePath(), {"ocean.resolution=64", "ripples.enabled=false"});
@@ -56,7 +56,7 @@ struct Wake {
 
 Wake sail(float speed, float seconds) {
     const std::string text =
-        "[ocean]\namplitude = 0.0\nwind_speed = 0.0\n[gerstner]\ncount = 0\n[currents]\nenabled = false\n"
+        "[ocean]\namplitude = 0.0\nresolution = 16\nwind_speed = 0.0\n[gerstner]\ncount = 0\n[currents]\nenabled = false\n"
         "[ripples]\nmodel = \"kang2008\"\nresolution = 256\ncell_size = 0.2\ndamping = 0.96\n"
         "[[objects]]\ntype = \"ship\"\nposition = [0, 0.1, -20]\ndensity = 450\nspeed = " + std::to_string(speed) +
         "\nvelocity = [0, 0, " + std::to_string(speed) + "]\n";
@@ -114,7 +114,7 @@ TEST_CASE("[Kang2008] fig. 16: a ship at rest leaves a standing deformation, slo
 TEST_CASE("a ship's hull key sets its box: mass, and a draft of depth times the density ratio (Archimedes)", "[ship]") {
     // A hull twice the default in every direction, density 400 kg/m³ in water of 1025: it
     // weighs 400·(6·3·20) kg and floats at rest with 3·400/1025 m of its depth under water.
-    game::Sandbox sandbox(game::parseScene("[ocean]\namplitude = 0.0\n[gerstner]\ncount = 0\n[ripples]\nenabled = false\n"
+    game::Sandbox sandbox(game::parseScene("[ocean]\namplitude = 0.0\nresolution = 16\n[gerstner]\ncount = 0\n[ripples]\nenabled = false\n"
                                            "[[objects]]\ntype = \"ship\"\nposition = [0, 0.5, 0]\nspeed = 0.0\n"
                                            "density = 400.0\nhull = [6.0, 3.0, 20.0]\n",
                                            "big_hull.toml"));
@@ -129,7 +129,7 @@ TEST_CASE("a ship's hull key sets its box: mass, and a draft of depth times the 
 
 TEST_CASE("the player's ship: W opens the throttle and it settles at its top speed, D turns it to starboard", "[ship]") {
     // No wind: its leeway (about 0.1 m/s across in 10 m/s) is not what this checks.
-    game::Sandbox sandbox(game::parseScene("[ocean]\namplitude = 0.0\nwind_speed = 0.0\n[gerstner]\ncount = 0\n[ripples]\nenabled = false\n"
+    game::Sandbox sandbox(game::parseScene("[ocean]\namplitude = 0.0\nresolution = 16\nwind_speed = 0.0\n[gerstner]\ncount = 0\n[ripples]\nenabled = false\n"
                                            "[[objects]]\ntype = \"ship\"\nplayer = true\nposition = [0, 0.1, 0]\nspeed = 6.0\n",
                                            "player.toml"));
     ecs::World& world = sandbox.world();

@@ -48,16 +48,13 @@ TEST_CASE("the cannon scene's balls splash: drops are thrown, land, and the spla
     CHECK(game::foamMap(quiet.world()) == nullptr);
 }
 
-TEST_CASE("the ship scene leaves wake foam behind its ships, and the same run gives the same hash", "[splash][foam][scene]") {
-    auto run = [] {
-        game::Sandbox sandbox(game::loadScene(scenePath("ship.toml")));
-        for (int s = 0; s < 180; ++s) sandbox.step();
-        const foam::FoamMap* foam = game::foamMap(sandbox.world());
-        REQUIRE(foam);
-        CHECK(foam->mean() > 0.0);
-        return sandbox.stateHash();
-    };
-    CHECK(run() == run());
+TEST_CASE("the ship scene leaves wake foam behind its ships", "[splash][foam][scene]") {
+    // (Its same hash twice: test_scenes.cpp, "scene ship.toml".)
+    game::Sandbox sandbox(game::loadScene(scenePath("ship.toml")));
+    for (int s = 0; s < 180; ++s) sandbox.step();
+    const foam::FoamMap* foam = game::foamMap(sandbox.world());
+    REQUIRE(foam);
+    CHECK(foam->mean() > 0.0);
 }
 
 TEST_CASE("a 5 m/s ship's wake foam along its track, 40 m back: the stern's deposit and its turbulent wake's, decaying by exp(−age/τ)", "[splash][foam][scene][long]") {

@@ -19,6 +19,7 @@ namespace {
 const char* CALM_SCENE = R"(
 [ocean]
 amplitude = 0.0
+resolution = 16
 [gerstner]
 count = 0
 )";

@@ -55,7 +55,7 @@ const char* BALL = "[[objects]]\ntype = \"sphere\"\nradius = 0.1\ndensity = 500.
 TEST_CASE("a small ball on one Gerstner wave rides its closed orbit and does not drift", "[physics][water_motion]") {
     // λ = 20 m, a = 0.5 m along x: k = 0.314 rad/m, ω = √(g·k) = 1.756 rad/s, T = 3.58 s.
     const double k = 2.0 * M_PI / 20.0, a = 0.5, omega = std::sqrt(G * k), period = 2.0 * M_PI / omega;
-    const std::string scene = std::string("[ocean]\namplitude = 0.0\nwind_speed = 0.0\n[gerstner]\ncount = 0\n"
+    const std::string scene = std::string("[ocean]\namplitude = 0.0\nwind_speed = 0.0\nresolution = 16\n[foam]\nenabled = false\n[gerstner]\ncount = 0\n"
                                           "[[gerstner.waves]]\nkx = ") +
                               std::to_string(k) + "\nkz = 0.0\namplitude = 0.5\nphase = 0.0\n[ripples]\nenabled = false\n" + BALL;
     game::Sandbox sandbox(game::parseScene(scene, "gerstner_orbit.toml"));
@@ -116,7 +116,7 @@ TEST_CASE("leeway: a floating ball in the wind drifts where the air's drag equal
     // A_w = π r²·f and A_air = π r²·(1 − f) (f the submerged fraction), U the wind at the ball's
     // top from the neutral log profile U10·ln(z/z0)/ln(10/z0), z0 = 2e-4 m.
     const double u10 = 20.0, r = 0.5;
-    const std::string scene = "[ocean]\namplitude = 0.0\nwind_speed = 20.0\nwind_direction = [1.0, 0.0]\n[gerstner]\ncount = 0\n"
+    const std::string scene = "[ocean]\namplitude = 0.0\nwind_speed = 20.0\nwind_direction = [1.0, 0.0]\nresolution = 16\n[foam]\nenabled = false\n[gerstner]\ncount = 0\n"
                               "[ripples]\nenabled = false\n[currents]\nenabled = false\n[[objects]]\ntype = \"sphere\"\nradius = 0.5\ndensity = 300.0\n"
                               "position = [0, 0, 0]\n";
     game::Sandbox sandbox(game::parseScene(scene, "leeway.toml"));
