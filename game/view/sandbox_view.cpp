@@ -84,9 +84,7 @@ void SandboxView::render(ecs::World& world, const ecs::Tick& tick) {
             control->update(m_timer.frameSamples().back() / 1000.0);
         m_renderer->def().resolution_scale = control->scale();
     }
-    // Bodies and the camera between the last two steps (render.interpolate); the water, the
-    // fish, the drops and the tools' marks at the latest.
-    const float alpha = drawnAlpha(world);
+    const float alpha = drawnAlpha(world);  // bodies and camera between the last two steps; the water etc. at the latest
     gfx::CameraView camera = cameraView(world, size, alpha);
     if (const OceanState* ocean = world.resource<OceanState>(); ocean && ocean->water) {
         const water::WaterSample s = ocean->water->sample(camera.position.x, camera.position.z);
