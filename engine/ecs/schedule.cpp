@@ -91,6 +91,8 @@ void Schedule::runFrame(World& world, double now) {
     // input of the frame is spread over its steps in the order it came.
     SimControl* control = world.resource<SimControl>();
     const auto stopped = [control] { return control && control->stopped; };
+    // While time stands still the frame draws the latest step (alpha 1): the camera moves over it.
+    m_alpha = 1.0;
     if (stopped()) {
         // Over: time stands still for good (a step of the frame may have stopped it).
         m_accumulator = 0;
@@ -108,10 +110,13 @@ void Schedule::runFrame(World& world, double now) {
             m_accumulator -= h;
         }
         if (due == m_def.max_steps_per_frame && m_accumulator > h) m_accumulator = 0;
+        // The clock is this far past the step before the latest: the render's interpolation
+        // weight (a step of the frame may have stopped time: then the latest).
+        if (!stopped()) m_alpha = std::clamp(m_accumulator / h, 0.0, 1.0);
     }
 
     // --- the per-frame rows after the steps (render), at the latest simulated state
-    const Tick renderTick{simTime(), frameDt, m_step, now, simTime()};
+    const Tick renderTick{simTime(), frameDt, m_step, now, simTime(), m_alpha};
     for (auto e = firstStep; e != m_systems.end(); ++e)
         if (e->rate == Rate::Frame) run(world, *e, renderTick);
     ++m_frames;

@@ -64,6 +64,8 @@ struct Tick {
     double clock = 0;    ///< the run's clock time this step or frame reaches: input stamped
                          ///< before it belongs to it (platform::InputQueue)
     double end = 0;      ///< simulated seconds at the end of this step (per frame: = time)
+    double alpha = 1;    ///< per frame after the steps: the clock's fraction of a step past the step before
+                         ///< the latest, [0, 1] (render interpolation); 1 while time stands still
 };
 
 /// A system: a free function over the world.
@@ -152,6 +154,8 @@ public:
     double simTime() const { return double(m_step) / m_def.step_hz; }
     uint64_t steps() const { return m_step; }
     uint64_t frames() const { return m_frames; }
+    /// The latest frame's Tick::alpha: how far its clock is between the last two steps.
+    double alpha() const { return m_alpha; }
     double stepSeconds() const { return 1.0 / m_def.step_hz; }
 
 private:
@@ -170,6 +174,7 @@ private:
     bool m_frameOpen = false;
     double m_accumulator = 0;
     double m_firstFrameSeconds = 0;  // 0: one step
+    double m_alpha = 1;              // the latest frame's Tick::alpha
 };
 
 } // namespace ob::ecs

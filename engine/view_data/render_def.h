@@ -57,6 +57,7 @@ struct RenderDef {
     bool dither = true;                             ///< ±1 LSB triangular noise on every colour written in 8 bits (shaders/common_dither.glsl): no banding in smooth gradients; off: plain rounding
     float subsurface = 1.0f;                        ///< light through thin crests: the turquoise of a backlit crest (shaders/common_subsurface.glsl), × its strength, [0, 4]; 0 = off
     float light_shafts = 1.0f;                      ///< under water: sunlight shafts in the water and caustics on bodies (shaders/common_underwater.glsl), × their strength, [0, 4]; 0 = off
+    bool interpolate = true;                        ///< bodies and the camera drawn between the last two fixed steps, at the clock's fraction of a step past the earlier (smooth at any display rate, one step behind); off: at the latest step. The simulation is untouched
 };
 
 template <class V> void describe(V& v, RenderDef& d) {
@@ -92,6 +93,7 @@ template <class V> void describe(V& v, RenderDef& d) {
     v.field("dither", d.dither, "±1 LSB noise on the 8-bit colour outputs (no banding in gradients); off: plain rounding", LIVE);
     v.field("subsurface", d.subsurface, range(0, 4), "light through thin crests: turquoise of a backlit crest, × this; 0 = off", LIVE);
     v.field("light_shafts", d.light_shafts, range(0, 4), "under water: sunlight shafts and caustics on bodies, × this; 0 = off", LIVE);
+    v.field("interpolate", d.interpolate, "bodies and the camera drawn between the last two steps (smooth at any display rate); off: the latest step", LIVE);
 }
 
 } // namespace ob::gfx

@@ -1,5 +1,6 @@
 // Floating bodies: spheres and boxes, water forces (Archimedes + drag per probe), Bullet stepping.
 #include "sim/objects.h"
+#include "sim/step_poses.h"
 
 #include "ecs/components.h"
 #include "currents/current_layer.h"
@@ -479,14 +480,16 @@ void physicsSystem(ecs::World& world, const ecs::Tick& tick) {
     }
 }
 
-std::vector<gfx::ObjectDraw> objectDraws(ecs::World& world, ecs::Entity highlighted) {
+std::vector<gfx::ObjectDraw> objectDraws(ecs::World& world, ecs::Entity highlighted, float alpha) {
     std::vector<gfx::ObjectDraw> draws;
     auto& renderables = world.pool<Renderable>();
+    const StepPoses* poses = world.resource<StepPoses>();
     for (size_t i = 0; i < renderables.size(); ++i) {
         const Renderable& r = renderables.components()[i];
-        const ecs::Transform* t = world.find<ecs::Transform>(renderables.entities()[i]);
-        if (!t) continue;
-        glm::mat4 model = glm::translate(glm::mat4(1.0f), t->position) * glm::mat4_cast(t->rotation) * glm::scale(glm::mat4(1.0f), r.scale);
+        const ecs::Transform* current = world.find<ecs::Transform>(renderables.entities()[i]);
+        if (!current) continue;
+        const ecs::Transform t = drawnTransform(poses, renderables.entities()[i], *current, alpha);
+        glm::mat4 model = glm::translate(glm::mat4(1.0f), t.position) * glm::mat4_cast(t.rotation) * glm::scale(glm::mat4(1.0f), r.scale);
         gfx::ObjectDraw& d = draws.emplace_back(gfx::ObjectDraw{r.mesh, model, r.color, r.model});
         d.highlight = renderables.entities()[i] == highlighted;
         d.modelTint = r.modelTint;

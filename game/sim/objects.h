@@ -299,8 +299,9 @@ ecs::Entity findObject(ecs::World& world, const std::string& name);
 /// Physics phase: water forces on every probe and the behaviours' forces, the Bullet step,
 /// poses back to the entities.
 void physicsSystem(ecs::World& world, const ecs::Tick& tick);
-/// What the opaque pass draws this frame; `highlighted`'s draw is lit up.
-std::vector<gfx::ObjectDraw> objectDraws(ecs::World& world, ecs::Entity highlighted = ecs::Entity::None);
+/// What the opaque pass draws this frame; `highlighted`'s draw is lit up. Each body `alpha`
+/// of the way through the latest step (sim/step_poses.h; 1: where the step left it).
+std::vector<gfx::ObjectDraw> objectDraws(ecs::World& world, ecs::Entity highlighted = ecs::Entity::None, float alpha = 1.0f);
 /// Roll and pitch (deg) of a rotation for a body whose bow is local +z and deck local +y:
 /// pitch = bow above the horizon, roll = about the bow axis, + when local +x rises.
 glm::vec2 rollPitchDeg(const glm::quat& rotation);

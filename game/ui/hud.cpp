@@ -5,6 +5,7 @@
 #include "behaviours/ship.h"
 #include "goals/goals.h"
 #include "world/camera.h"
+#include "world/interpolation.h"
 #include "world/controls.h"
 #include "world/tools.h"
 
@@ -182,7 +183,7 @@ void goalCues(ecs::World& world) {
     const GameState* game = gameState(world);
     if (!game || game->events.empty()) return;
     const ImVec2 size = ImGui::GetIO().DisplaySize;
-    const gfx::CameraView view = cameraView(world, {int(size.x), int(size.y)});
+    const gfx::CameraView view = cameraView(world, {int(size.x), int(size.y)}, drawnAlpha(world));
     const glm::mat4 clip = view.projection * view.view;
     ImDrawList* draw = ImGui::GetBackgroundDrawList();
     constexpr int SEGMENTS = 32;

@@ -5,6 +5,7 @@
 
 #include "currents/current_layer.h"
 #include "world/camera.h"
+#include "world/interpolation.h"
 #include "behaviours/cannon.h"
 #include "world/controls.h"
 #include "world/sandbox.h"
@@ -243,7 +244,7 @@ static void currentArrows(ecs::World& world) {
     const auto* layer = world.resource<currents::CurrentLayer>();
     if (!layer || !layer->def().arrows) return;
     const ImVec2 size = ImGui::GetIO().DisplaySize;
-    const gfx::CameraView view = cameraView(world, {int(size.x), int(size.y)});
+    const gfx::CameraView view = cameraView(world, {int(size.x), int(size.y)}, drawnAlpha(world));
     const glm::mat4 clip = view.projection * view.view;
     const auto toScreen = [&](glm::vec3 p, ImVec2& out) {
         const glm::vec4 c = clip * glm::vec4(p, 1.0f);

@@ -14,6 +14,7 @@
 #include "ui/hud.h"
 #include "ui/ui_panels.h"
 #include "world/controls.h"
+#include "world/interpolation.h"
 #include "view/water_view.h"
 #include "water/composite_water.h"
 
@@ -83,13 +84,14 @@ void SandboxView::render(ecs::World& world, const ecs::Tick& tick) {
             control->update(m_timer.frameSamples().back() / 1000.0);
         m_renderer->def().resolution_scale = control->scale();
     }
-    gfx::CameraView camera = cameraView(world, size);
+    const float alpha = drawnAlpha(world);  // bodies and camera between the last two steps; the water etc. at the latest
+    gfx::CameraView camera = cameraView(world, size, alpha);
     if (const OceanState* ocean = world.resource<OceanState>(); ocean && ocean->water) {
         const water::WaterSample s = ocean->water->sample(camera.position.x, camera.position.z);
         camera.waterHeight = s.height;
         camera.waterSlope = -glm::vec2(s.normal.x, s.normal.z) / s.normal.y;
     }
-    std::vector<gfx::ObjectDraw> draws = objectDraws(world, highlightedBody(world));
+    std::vector<gfx::ObjectDraw> draws = objectDraws(world, highlightedBody(world), alpha);
     appendFishDraws(world, draws);
     appendToolDraws(world, draws, camera.position);
     if (const OceanState* ocean = world.resource<OceanState>(); ocean && ocean->water)

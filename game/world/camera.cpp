@@ -6,6 +6,7 @@
 #include "ecs/components.h"
 #include "interaction/ripple_patch.h"
 #include "sim/objects.h"
+#include "sim/step_poses.h"
 #include "platform/input.h"
 #include "behaviours/ship.h"
 #include "behaviours/step_input.h"
@@ -55,7 +56,8 @@ ecs::Entity spawnCamera(ecs::World& world, const CameraDef& def) {
     rig.focus = def.target;
     rig.underwater = def.position.y < 0.0f;  // a scene that starts below the water means it
     lookAt(rig, def.position, def.target);
-    world.add<ecs::Transform>(e, {def.position});
+    // Oriented as the camera system leaves it: the first step's interpolation starts from here.
+    world.add<ecs::Transform>(e, {def.position, glm::quatLookAtRH(forwardOf(rig.yaw, rig.pitch), glm::vec3(0, 1, 0))});
     world.add<CameraRig>(e, rig);
     return e;
 }
@@ -265,14 +267,17 @@ bool cameraFlies(ecs::World& world) {
     return rigs.size() > 0 && rigs.components()[0].def.mode == CameraMode::Fly;
 }
 
-gfx::CameraView cameraView(ecs::World& world, glm::ivec2 size) {
+gfx::CameraView cameraView(ecs::World& world, glm::ivec2 size, float alpha) {
     auto& rigs = world.pool<CameraRig>();
     gfx::CameraView view;
     if (rigs.size() == 0) return view;
     const CameraRig& rig = rigs.components()[0];
-    const ecs::Transform& t = world.get<ecs::Transform>(rigs.entities()[0]);
+    const ecs::Transform& current = world.get<ecs::Transform>(rigs.entities()[0]);
+    const ecs::Transform t = drawnTransform(world.resource<StepPoses>(), rigs.entities()[0], current, alpha);
+    // The eye looks along its rotation's -z (quatLookAtRH); at the latest step, along yaw and pitch.
+    const glm::vec3 forward = alpha < 1.0f ? t.rotation * glm::vec3(0, 0, -1) : forwardOf(rig.yaw, rig.pitch);
     view.position = t.position;
-    view.view = glm::lookAtRH(t.position, t.position + forwardOf(rig.yaw, rig.pitch), glm::vec3(0, 1, 0));
+    view.view = glm::lookAtRH(t.position, t.position + forward, glm::vec3(0, 1, 0));
     float aspect = float(size.x) / float(std::max(size.y, 1));
     view.projection = glm::perspectiveRH_NO(glm::radians(rig.def.fov_deg), aspect, rig.def.near_m, rig.def.far_m);
     view.nearM = rig.def.near_m;

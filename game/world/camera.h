@@ -109,7 +109,8 @@ void patchFollowSystem(ecs::World& world, const ecs::Tick& tick);
 std::string cameraMode(ecs::World& world);
 /// The object the follow mode tracks (None when there is none).
 ecs::Entity followedObject(ecs::World& world, const std::string& name);
-/// The view of the first camera entity for a framebuffer of `size`.
-gfx::CameraView cameraView(ecs::World& world, glm::ivec2 size);
+/// The view of the first camera entity for a framebuffer of `size`, `alpha` of the way through
+/// the latest step (sim/step_poses.h; 1: where the step left it).
+gfx::CameraView cameraView(ecs::World& world, glm::ivec2 size, float alpha = 1.0f);
 
 } // namespace ob::game

@@ -107,6 +107,15 @@ std::string checkLiveSet(const std::string& key, float value) {
     return "";
 }
 
+std::optional<float> keyValue(const SceneDef& scene, const std::string& key) {
+    SceneDef copy = scene;  // the walk takes its slots writable
+    const Slot slot = findKey(copy, key);
+    if (!slot.value) return std::nullopt;
+    if (slot.key.switch_) return *static_cast<const bool*>(slot.value) ? 1.0f : 0.0f;
+    if (slot.key.integer) return float(*static_cast<const int*>(slot.value));
+    return *static_cast<const float*>(slot.value);
+}
+
 SceneSection setLiveKey(SceneDef& scene, const std::string& key, float value) {
     if (key == WIND_DIRECTION_DEG) {
         const double rad = double(value) * std::numbers::pi / 180.0;

@@ -5,6 +5,7 @@
 #include "core/schema.h"
 #include "world/scene_settings.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -37,6 +38,8 @@ std::string liveKeyHelp();
 /// "" when `key` is a live key of the scene and `value` fits its range, else why not
 /// ("key: ..." or "value: ...").
 std::string checkLiveSet(const std::string& key, float value);
+/// The value of a number or switch of `scene` (a switch: 0 or 1); none for a key no Def field holds.
+std::optional<float> keyValue(const SceneDef& scene, const std::string& key);
 /// Writes a checked live change into `scene`; returns the section it changed.
 SceneSection setLiveKey(SceneDef& scene, const std::string& key, float value);
 

@@ -14,6 +14,7 @@
 #include "sim/objects.h"
 #include "behaviours/spawning.h"
 #include "ocean/ocean_fft_cpu.h"
+#include "world/interpolation.h"
 #include "world/scene_settings.h"
 #include "world/righting.h"
 #include "world/script.h"
@@ -47,6 +48,7 @@ const ecs::SystemEntry SYSTEMS[] = {
     {Phase::Input, Rate::Frame, "platform input", platformInputSystem},
     {Phase::Input, Rate::Frame, "frame input", frameInputSystem},
     {Phase::Input, Rate::Frame, "controls", controlsSystem},
+    {Phase::Script, Rate::Step, "step poses", rememberPosesSystem},  // what the frames until the next step draw from
     {Phase::Script, Rate::Step, "step input", stepInputSystem},
     {Phase::Script, Rate::Step, "tools", toolsSystem},
     {Phase::Script, Rate::Step, "righting", rightingSystem},  // T: a capsized ship upright
@@ -64,6 +66,7 @@ const ecs::SystemEntry SYSTEMS[] = {
     {Phase::Interaction, Rate::Step, "splashes and foam", splashFoamSystem},
     {Phase::Ocean, Rate::Step, "ocean", oceanSystem},
     {Phase::Ocean, Rate::Step, "camera", cameraSystem},
+    {Phase::Render, Rate::Frame, "drawn alpha", drawnAlphaSystem},  // where between the last two steps the frame draws
     {Phase::Render, Rate::Frame, "paused camera", pausedCameraSystem},
     {Phase::Render, Rate::Frame, "render", renderSystem},
 };

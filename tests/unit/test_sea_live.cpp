@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <complex>
 #include <string>
 #include <vector>
@@ -422,6 +423,7 @@ TEST_CASE("cost of a live change of the sea: the fade's build and its per-step b
         std::sort(v.begin(), v.end());
         return v[v.size() / 2];
     };
-    WARN("median ms of 9: swell drawn " << median(generate) << ", fade built (2 new spectra) " << median(build) << ", blend per step "
-                                        << median(apply) << ", the maps' update " << median(update));
+    // A measurement, not a property: printed, never asserted.
+    std::printf("median ms of 9: swell drawn %.3f, fade built (2 new spectra) %.3f, blend per step %.3f, the maps' update %.3f\n",
+                median(generate), median(build), median(apply), median(update));
 }
