@@ -9,6 +9,7 @@
 #include "physics/buoyancy.h"
 #include "physics/physics_world.h"
 
+#include <functional>
 #include <string>
 #include <optional>
 #include <vector>
@@ -300,7 +301,8 @@ ecs::Entity findObject(ecs::World& world, const std::string& name);
 /// poses back to the entities.
 void physicsSystem(ecs::World& world, const ecs::Tick& tick);
 /// What the opaque pass draws this frame; `highlighted`'s draw is lit up.
-std::vector<gfx::ObjectDraw> objectDraws(ecs::World& world, ecs::Entity highlighted = ecs::Entity::None);
+std::vector<gfx::ObjectDraw> objectDraws(ecs::World& world, ecs::Entity highlighted = ecs::Entity::None,
+                                         const std::function<void(ecs::Entity, gfx::ObjectDraw&)>& restyle = {});
 /// Roll and pitch (deg) of a rotation for a body whose bow is local +z and deck local +y:
 /// pitch = bow above the horizon, roll = about the bow axis, + when local +x rises.
 glm::vec2 rollPitchDeg(const glm::quat& rotation);

@@ -14,6 +14,7 @@
 #include "ui/hud.h"
 #include "ui/ui_panels.h"
 #include "world/controls.h"
+#include "view/goal_looks.h"
 #include "view/water_view.h"
 #include "water/composite_water.h"
 
@@ -89,7 +90,7 @@ void SandboxView::render(ecs::World& world, const ecs::Tick& tick) {
         camera.waterHeight = s.height;
         camera.waterSlope = -glm::vec2(s.normal.x, s.normal.z) / s.normal.y;
     }
-    std::vector<gfx::ObjectDraw> draws = objectDraws(world, highlightedBody(world));
+    std::vector<gfx::ObjectDraw> draws = objectDraws(world, highlightedBody(world), goalRestyle(world));
     appendFishDraws(world, draws);
     appendToolDraws(world, draws, camera.position);
     if (const OceanState* ocean = world.resource<OceanState>(); ocean && ocean->water)
