@@ -1,7 +1,8 @@
 // Goals ([game], goals/goals.h): the geometry they decide with, checked on cases worked by
-// hand; a cannonball touching a target counts it exactly once; a race gate skipped is missed;
-// a wrong-way crossing is no pass; the run stops stepping once the goal is decided; bad
-// [game] input names file, line and key.
+// hand; a cannonball touching a target counts it exactly once and the target floods and sinks;
+// a race gate skipped is missed; a wrong-way crossing is no pass; the run stops stepping once
+// the goal is decided; bad [game] input names file, line and key; herd.toml is won by steering
+// or by the stir's water, not by the one press that used to win it.
 #include "behaviours/cannon.h"
 #include "core/error.h"
 #include "ecs/components.h"
@@ -10,7 +11,9 @@
 #include "goals/race/race_goal.h"
 #include "goals/targets/targets_goal.h"
 #include "sim/objects.h"
+#include "world/input_script.h"
 #include "world/sandbox.h"
+#include "world/tools.h"
 #include "world/scene.h"
 
 #include <catch2/catch.hpp>
@@ -294,4 +297,88 @@ TEST_CASE("bad [game] input names file, line and key", "[goals][config]") {
     // A scene without [game] has none: mode "none".
     CHECK(sceneError(CALM) == "");
     CHECK(parseScene(CALM, "ok.toml").game.mode == GameMode::None);
+}
+
+namespace {
+
+const std::string HERD = "config/scenes/herd.toml";
+const std::string HERD_INPUT = std::string(OCEANBOX_TEST_DATA) + "/goals/";
+
+// Runs the herd scene (no view: the cursor's rays are cast in the input file's framebuffer,
+// as `run` renders at it) with scripted input for `seconds` of the goal clock, or to its result.
+void runHerd(Sandbox& sandbox, const std::string& input, double seconds) {
+    if (!input.empty()) {
+        const InputScriptDef script = loadInputScript(HERD_INPUT + input);
+        if (script.size.x > 0) sandbox.world().resource<Viewport>()->size = glm::ivec2(script.size);
+        sandbox.setScriptedInput(scriptEvents(script));
+    }
+    for (int f = 0; f < int(seconds * 60.0) && !sandbox.over(); ++f) sandbox.frame(double(f + 1) / 60.0);
+}
+
+glm::vec3 positionOf(Sandbox& sandbox, const std::string& name) {
+    return sandbox.world().get<ecs::Transform>(findObject(sandbox.world(), name)).position;
+}
+
+} // namespace
+
+TEST_CASE("herd.toml: no input loses at the time limit", "[goals][herd]") {
+    Sandbox sandbox(loadScene(HERD, {"game.time_limit=5"}));
+    runHerd(sandbox, "", 10.0);
+    const GameState& game = *gameState(sandbox.world());
+    CHECK(game.result == GameResult::Lost);
+    CHECK(game.reason == "time is up");
+    CHECK(game.goal->score() == 0);
+    CHECK(sandbox.schedule().steps() == 300);
+}
+
+TEST_CASE("herd.toml: the old one-press input (W held 1 s, no steering) no longer wins", "[goals][herd][long]") {
+    // Half throttle straight on from where the ship lies: it sails east, south of the crates'
+    // line, and by 25 s is past it; not one crate is in the ring and none was pushed north.
+    Sandbox sandbox(loadScene(HERD));
+    runHerd(sandbox, "herd_one_press.toml", 25.0);
+    const GameState& game = *gameState(sandbox.world());
+    const glm::vec3 ship = positionOf(sandbox, "player");
+    INFO("the ship at (" << ship.x << ", " << ship.z << ") after 25 s");
+    CHECK(ship.x > -10.0f);  // it did sail on, east, past the crates' line (x = -20)
+    CHECK(game.result == GameResult::Running);
+    CHECK(game.goal->score() == 0);
+    for (const char* crate : {"crate1", "crate2", "crate3"}) CHECK(positionOf(sandbox, crate).z < 30.0f);
+}
+
+TEST_CASE("herd.toml: steering into the crates' line and pushing them wins", "[goals][herd][long]") {
+    // Half throttle and the rudder held to starboard for a quarter turn (the same W press as
+    // the one-press input, plus D): the ship ends in the crates' line heading north and its bow
+    // pushes three of them into the ring.
+    Sandbox sandbox(loadScene(HERD));
+    runHerd(sandbox, "herd_steer_win.toml", 40.0);
+    const GameState& game = *gameState(sandbox.world());
+    INFO(game.reason << " at " << game.time << " s");
+    CHECK(game.result == GameResult::Won);
+    CHECK(game.goal->score() >= 3);
+    CHECK(game.time < 30.0);
+}
+
+TEST_CASE("herd.toml: the stir alone wins, and only through the water it sets moving", "[goals][herd][currents][long]") {
+    // Sweeps of the stir behind the crates towards the ring; the ship is never touched. The
+    // swept water (the current layer) carries them in. The same sweeps with the current layer
+    // off leave the ring empty: the stir does not touch a crate, only the water does.
+    Sandbox sandbox(loadScene(HERD));
+    const glm::vec3 shipStart = positionOf(sandbox, "player");
+    runHerd(sandbox, "herd_stir_win.toml", 60.0);
+    const GameState& game = *gameState(sandbox.world());
+    const double won = game.time;
+    const glm::vec3 ship = positionOf(sandbox, "player");
+    INFO(game.reason << " at " << won << " s; the ship drifted " << glm::length(ship - shipStart) << " m");
+    CHECK(game.result == GameResult::Won);
+    CHECK(game.goal->score() >= 3);
+    CHECK(glm::length(glm::vec2(ship.x - shipStart.x, ship.z - shipStart.z)) < 8.0f);  // no more than the wind's drift: it took no part
+
+    Sandbox still(loadScene(HERD, {"currents.enabled=false"}));
+    runHerd(still, "herd_stir_win.toml", won);
+    const GameState& without = *gameState(still.world());
+    float furthest = 0.0f;
+    for (const char* crate : {"crate1", "crate2", "crate3"}) furthest = std::max(furthest, positionOf(still, crate).z);
+    INFO("without the current layer, after " << won << " s: " << without.goal->score() << " in the ring, the furthest of the line at z = " << furthest);
+    CHECK(without.result == GameResult::Running);
+    CHECK(without.goal->score() == 0);
 }
