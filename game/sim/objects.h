@@ -261,7 +261,7 @@ struct Renderable {
     glm::vec3 scale{1.0f};
     glm::vec3 color{0.8f};
     std::string model;    ///< glTF file replacing `mesh` ("" = built-in)
-    glm::vec3 modelTint{1.0f};  ///< multiplies a model's own colours (a goal's state: a gate, a target, a crate)
+    glm::vec3 modelTint{1.0f};  ///< multiplies a model's own colours (1: as modelled; a goal's state is the view's, view/goal_looks.h)
 };
 
 /// A lattice of counts.x × counts.y × counts.z equal probe spheres at the cell centres of a
