@@ -43,7 +43,7 @@ std::vector<Tool> allowedTools(const GameDef& game);
 std::vector<std::pair<std::string, std::string>> gameKeysNotReadBy(GameMode mode);
 
 template <class V> void describe(V& v, GameDef& d) {
-    v.field("mode", d.mode, "the goal: none, targets, race or herd");
+    v.field("mode", d.mode, "the goal: none, or a registered mode's name (goals/goal_modes.h)");
     v.field("time_limit", d.time_limit, range(0, 1e6), "seconds to reach the goal (0: none)");
     v.field("mooring_period", d.mooring_period, range(0, 1000), "targets and gate buoys held where they start (s; 0: free)");
     v.field("tools", d.tools, "the tools the player may take (default: all; in a goal scene all but grab and drop)");
