@@ -480,7 +480,8 @@ void physicsSystem(ecs::World& world, const ecs::Tick& tick) {
     }
 }
 
-std::vector<gfx::ObjectDraw> objectDraws(ecs::World& world, ecs::Entity highlighted, float alpha) {
+std::vector<gfx::ObjectDraw> objectDraws(ecs::World& world, ecs::Entity highlighted, float alpha,
+                                         const std::function<void(ecs::Entity, gfx::ObjectDraw&)>& restyle) {
     std::vector<gfx::ObjectDraw> draws;
     auto& renderables = world.pool<Renderable>();
     const StepPoses* poses = world.resource<StepPoses>();
@@ -495,6 +496,7 @@ std::vector<gfx::ObjectDraw> objectDraws(ecs::World& world, ecs::Entity highligh
         d.modelTint = r.modelTint;
         const Obstacle* obstacle = world.find<Obstacle>(renderables.entities()[i]);
         d.hull = obstacle && obstacle->shape == Obstacle::Shape::Hull;
+        if (restyle) restyle(renderables.entities()[i], d);  // the view's reading of a goal's state
     }
     return draws;
 }

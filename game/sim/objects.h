@@ -9,6 +9,7 @@
 #include "physics/buoyancy.h"
 #include "physics/physics_world.h"
 
+#include <functional>
 #include <string>
 #include <optional>
 #include <vector>
@@ -260,7 +261,7 @@ struct Renderable {
     glm::vec3 scale{1.0f};
     glm::vec3 color{0.8f};
     std::string model;    ///< glTF file replacing `mesh` ("" = built-in)
-    glm::vec3 modelTint{1.0f};  ///< multiplies a model's own colours (a goal's state: a gate, a target, a crate)
+    glm::vec3 modelTint{1.0f};  ///< multiplies a model's own colours (1: as modelled; a goal's state is the view's, view/goal_looks.h)
 };
 
 /// A lattice of counts.x × counts.y × counts.z equal probe spheres at the cell centres of a
@@ -300,8 +301,10 @@ ecs::Entity findObject(ecs::World& world, const std::string& name);
 /// poses back to the entities.
 void physicsSystem(ecs::World& world, const ecs::Tick& tick);
 /// What the opaque pass draws this frame; `highlighted`'s draw is lit up. Each body `alpha`
-/// of the way through the latest step (sim/step_poses.h; 1: where the step left it).
-std::vector<gfx::ObjectDraw> objectDraws(ecs::World& world, ecs::Entity highlighted = ecs::Entity::None, float alpha = 1.0f);
+/// of the way through the latest step (sim/step_poses.h; 1: where the step left it);
+/// `restyle`, when given, recolours a draw (the view's reading of goal state).
+std::vector<gfx::ObjectDraw> objectDraws(ecs::World& world, ecs::Entity highlighted = ecs::Entity::None, float alpha = 1.0f,
+                                         const std::function<void(ecs::Entity, gfx::ObjectDraw&)>& restyle = {});
 /// Roll and pitch (deg) of a rotation for a body whose bow is local +z and deck local +y:
 /// pitch = bow above the horizon, roll = about the bow axis, + when local +x rises.
 glm::vec2 rollPitchDeg(const glm::quat& rotation);

@@ -76,35 +76,10 @@ static nlohmann::json phaseStats(const std::vector<double>& samples) {
 
 // The goal's result and what the mode counts (docs/games.md).
 static nlohmann::json gameStats(const GameState& game) {
-    nlohmann::json j = {{"mode", enumName(game.def.mode)}, {"result", enumName(game.result)}, {"score", game.score},
-                        {"time_s", game.time}, {"time_limit_s", game.def.time_limit}, {"reason", game.reason}};
-    switch (game.def.mode) {
-    case GameMode::None: break;
-    case GameMode::Targets: {
-        j["targets"] = game.targets.size();
-        j["hits"] = game.score;
-        j["hit"] = nlohmann::json::array();
-        for (const GameTarget& t : game.targets)
-            if (t.hit) j["hit"].push_back({{"name", t.name}, {"time_s", t.hitTime}});
-        break;
-    }
-    case GameMode::Race: {
-        j["gates"] = game.gates.size();
-        j["passed"] = game.score;
-        j["next_gate"] = game.nextGate + 1;  // numbered from 1, as the HUD shows them
-        j["missed_gates"] = nlohmann::json::array();
-        for (size_t g = 0; g < game.gates.size(); ++g)
-            if (game.gates[g].state == GateState::Missed) j["missed_gates"].push_back(g + 1);
-        j["race_time_s"] = game.raceTime();
-        break;
-    }
-    case GameMode::Herd: {
-        j["crates"] = game.crates.size();
-        j["inside"] = game.score;
-        j["needed"] = game.needed;
-        break;
-    }
-    }
+    nlohmann::json j = {{"mode", enumName(game.def.mode)}, {"result", enumName(game.result)},
+                        {"score", game.goal ? game.goal->score() : 0}, {"time_s", game.time},
+                        {"time_limit_s", game.def.time_limit}, {"reason", game.reason}};
+    if (game.goal) game.goal->addStats(j);
     return j;
 }
 

@@ -4,12 +4,14 @@
 #include "behaviours/cannon.h"
 #include "behaviours/ship.h"
 #include "goals/goals.h"
+#include "view/goal_looks.h"
 #include "world/camera.h"
 #include "world/interpolation.h"
 #include "world/controls.h"
 #include "world/tools.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -20,7 +22,6 @@ namespace ob::game {
 namespace {
 
 const ImVec4 WON_COLOR{0.3f, 1.0f, 0.4f, 1.0f}, LOST_COLOR{1.0f, 0.35f, 0.3f, 1.0f}, NOTE_COLOR{1.0f, 0.8f, 0.3f, 1.0f};
-constexpr double MISSED_SHOWN_S = 4.0;      // how long "gate N missed" stays on the HUD
 constexpr double CUE_S = 1.5;               // a goal event's ring fades over this (goal-clock s)
 constexpr float CUE_RADIUS_M = 6.0f;        // and grows to this radius on the water
 constexpr float CARD_WIDTH = 0.5f;          // the start card's width, of the view's
@@ -38,26 +39,14 @@ std::string clockText(double time, float limit) {
     return text;
 }
 
-// The goal's count and clock in one line ("" without a goal).
+// The goal's count and clock in one line ("" without a goal): "TARGETS  hits 2 / 5  12.3 / 60 s".
 std::string goalLine(const GameState& game) {
+    if (!game.goal) return "";
     const std::string clock = game.started || !game.waitsForPlayer ? clockText(game.time, game.def.time_limit)
                                                                      : clockText(0.0, game.def.time_limit) + " (starts with you)";
-    char text[160];
-    switch (game.def.mode) {
-    case GameMode::None: return "";
-    case GameMode::Targets:
-        std::snprintf(text, sizeof text, "TARGETS  hits %d / %zu  %s", game.score, game.targets.size(), clock.c_str());
-        break;
-    case GameMode::Race:
-        std::snprintf(text, sizeof text, "RACE  gate %zu / %zu  %s", std::min(game.nextGate + 1, game.gates.size()), game.gates.size(),
-                      clock.c_str());
-        break;
-    case GameMode::Herd:  // the herded objects by their name: crates, balls
-        std::snprintf(text, sizeof text, "HERD  %ss in the ring %d / %d  %s", game.def.herd.herd_prefix.c_str(), game.score,
-                      game.needed, clock.c_str());
-        break;
-    }
-    return text;
+    std::string mode = enumName(game.def.mode);
+    for (char& c : mode) c = char(std::toupper(static_cast<unsigned char>(c)));
+    return mode + "  " + game.goal->count() + "  " + clock;
 }
 
 float uiScale() { return ImGui::GetIO().FontGlobalScale; }
@@ -100,9 +89,11 @@ std::string startCardKeys(ecs::World& world) {
         for (Tool t : tools->allowed) list += (list.empty() ? "" : "/") + std::to_string(int(t) + 1);
         add(list + " tools");
     }
+    // Every camera reaches fly mode with C (world/camera.cpp cycleCameraMode), and a flying
+    // camera dives with Q: every scene has its under-water view, and its card says how.
     auto& rigs = world.pool<CameraRig>();
-    if (rigs.size() > 0 && (rigs.components()[0].def.mode == CameraMode::Fly || rigs.components()[0].underwater))
-        add("hold Q at the surface: under water (E: up)");
+    if (rigs.size() > 0)
+        add(rigs.components()[0].def.mode == CameraMode::Fly ? "hold Q: under water, E: up" : "C until fly, hold Q: under water, E: up");
     add("H all keys");
     return keys;
 }
@@ -119,10 +110,9 @@ void compactHud(ecs::World& world, const ecs::FrameTimer& timer) {
     const auto* sim = world.resource<ecs::SimControl>();
     ImGui::Text("%.0f fps   tool %s   H panels%s", ms > 0.0 ? 1000.0 / ms : 0.0, tools ? enumName(tools->def.tool) : "-",
                 sim && sim->paused ? "   PAUSED (P)" : "");
-    if (const GameState* game = gameState(world); game && game->def.mode != GameMode::None && !game->over()) {
+    if (const GameState* game = gameState(world); game && game->goal && !game->over()) {
         ImGui::TextUnformatted(goalLine(*game).c_str());
-        if (game->def.mode == GameMode::Race && game->time - game->lastMissedTime < MISSED_SHOWN_S)
-            ImGui::TextColored(LOST_COLOR, "%s  (+%.0f s)", game->lastMissed.c_str(), double(game->def.race.miss_penalty));
+        if (const std::string note = game->goal->note(game->time); !note.empty()) ImGui::TextColored(LOST_COLOR, "%s", note.c_str());
     }
     if (tools && !tools->message.empty()) ImGui::TextColored(NOTE_COLOR, "%s", tools->message.c_str());
     ImGui::End();
@@ -158,20 +148,12 @@ void resultPanel(ecs::World& world) {
     default: ImGui::TextUnformatted("THE END"); break;
     }
     ImGui::SetWindowFontScale(1.0f);
-    if (game->def.mode == GameMode::None) {
+    if (!game->goal) {
         // A scene without a goal: only its end_time ends it.
         ImGui::Text("the scene ends at its end_time, %.0f s", double(game->endTime));
     } else {
         ImGui::Text("ended by: %s", game->reason == "time is up" ? "the goal's time limit" : game->reason.c_str());
-        switch (game->def.mode) {
-        case GameMode::None: break;
-        case GameMode::Targets: ImGui::Text("%d of %zu targets hit", game->score, game->targets.size()); break;
-        case GameMode::Race:
-            ImGui::Text("%d of %zu gates passed, %d missed; race time %.1f s", game->score, game->gates.size(), game->missed,
-                        game->raceTime());
-            break;
-        case GameMode::Herd: ImGui::Text("%d in the ring, %d needed", game->score, game->needed); break;
-        }
+        ImGui::TextUnformatted(game->goal->summary().c_str());
         ImGui::Text("time %s", clockText(game->time, game->def.time_limit).c_str());
     }
     ImGui::Separator();
@@ -181,17 +163,17 @@ void resultPanel(ecs::World& world) {
 
 void goalCues(ecs::World& world) {
     const GameState* game = gameState(world);
-    if (!game || game->events.empty()) return;
+    if (!game || game->events.latest().empty()) return;
     const ImVec2 size = ImGui::GetIO().DisplaySize;
     const gfx::CameraView view = cameraView(world, {int(size.x), int(size.y)}, drawnAlpha(world));
     const glm::mat4 clip = view.projection * view.view;
     ImDrawList* draw = ImGui::GetBackgroundDrawList();
     constexpr int SEGMENTS = 32;
-    for (const GoalEvent& e : game->events) {
+    for (const GoalEvent& e : game->events.latest()) {
         const double age = game->time - e.time;
         if (age < 0.0 || age > CUE_S) continue;
         const float f = float(age / CUE_S), radius = CUE_RADIUS_M * (0.2f + 0.8f * f);
-        const glm::vec3 c = glm::clamp(e.color, 0.0f, 1.0f);
+        const glm::vec3 c = cueColor(e.state);
         const ImU32 colour = IM_COL32(int(255 * c.x), int(255 * c.y), int(255 * c.z), int(255 * (1.0f - f)));
         std::vector<ImVec2> ring;
         for (int k = 0; k < SEGMENTS; ++k) {

@@ -17,7 +17,7 @@ float overlayScale(const platform::WindowDef& window, glm::ivec2 size, float con
 /// the file's opening comment.
 std::string startCardText(const SceneDef& scene, const std::string& path);
 /// The card's keys: the few that matter in this world (its ship, its cannon, its tools, the
-/// way under water where the camera can dive), then H for the rest.
+/// way under water and back: C to fly where the camera does not, Q down, E up), then H for the rest.
 std::string startCardKeys(ecs::World& world);
 
 /// Top right: fps, the tool (and why a key was refused), the goal's count and clock, "H panels".

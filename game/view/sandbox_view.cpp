@@ -15,6 +15,7 @@
 #include "ui/ui_panels.h"
 #include "world/controls.h"
 #include "world/interpolation.h"
+#include "view/goal_looks.h"
 #include "view/water_view.h"
 #include "water/composite_water.h"
 
@@ -91,7 +92,7 @@ void SandboxView::render(ecs::World& world, const ecs::Tick& tick) {
         camera.waterHeight = s.height;
         camera.waterSlope = -glm::vec2(s.normal.x, s.normal.z) / s.normal.y;
     }
-    std::vector<gfx::ObjectDraw> draws = objectDraws(world, highlightedBody(world), alpha);
+    std::vector<gfx::ObjectDraw> draws = objectDraws(world, highlightedBody(world), alpha, goalRestyle(world));
     appendFishDraws(world, draws);
     appendToolDraws(world, draws, camera.position);
     if (const OceanState* ocean = world.resource<OceanState>(); ocean && ocean->water)

@@ -11,6 +11,7 @@
 #include "interaction/ripple_patch.h"
 #include "behaviours/fish.h"
 #include "goals/goals.h"
+#include "behaviours/mooring.h"
 #include "sim/objects.h"
 #include "behaviours/spawning.h"
 #include "ocean/ocean_fft_cpu.h"
@@ -37,6 +38,13 @@ namespace {
 void platformInputSystem(ecs::World& world, const ecs::Tick& tick) {
     if (View* view = world.resource<View>()) view->pollInput(world, tick);
 }
+// The goal (goals/goals.h), told whether the player's input this step acts in the world (a
+// goal clock that waits for the player starts there).
+void gameSystem(ecs::World& world, const ecs::Tick& tick) {
+    const auto* input = world.resource<StepInput>();
+    gameStep(world, tick, input && actsInWorld(*input));
+}
+
 void renderSystem(ecs::World& world, const ecs::Tick& tick) {
     if (View* view = world.resource<View>()) view->render(world, tick);
 }
@@ -58,6 +66,8 @@ const ecs::SystemEntry SYSTEMS[] = {
     {Phase::Script, Rate::Step, "ships", shipSystem},
     {Phase::Script, Rate::Step, "cannons", cannonSystem},
     {Phase::Script, Rate::Step, "fish", fishSystem},
+    {Phase::Script, Rate::Step, "moorings", mooringSystem},
+    {Phase::Script, Rate::Step, "flooding", floodingSystem},  // a target hit sinks
     {Phase::Script, Rate::Step, "game", gameSystem},  // after the behaviours: judges the last physics step
     {Phase::Physics, Rate::Step, "bodies", physicsSystem},
     {Phase::Interaction, Rate::Step, "patch follows", patchFollowSystem},
@@ -90,7 +100,7 @@ Sandbox::Sandbox(const SceneDef& scene) : m_schedule(scene.sim) {
     addScript(m_world);
     addPlayerTools(m_world, def.tools, {def.window.width, def.window.height}, fishSchoolOf(def.controls), droppedShip(def));
     allowTools(m_world, allowedTools(def.game));
-    addGame(m_world, def);
+    addGame(m_world, def.game, def.objects, def.sim.end_time);
 }
 
 const SceneDef& Sandbox::scene() { return sceneSettings(m_world).def; }

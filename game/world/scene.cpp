@@ -173,7 +173,7 @@ static SceneDef readScene(TomlDocument& doc, const std::string& source, const st
     if (errors.empty()) {
         for (const std::string& e : ocean::validate(scene.gerstner, &scene.ocean)) errors.push_back(source + ": " + e);
         for (const std::string& e : validateEvents(scene, source, &doc)) errors.push_back(e);
-        for (const std::string& e : validateGame(scene, [&](const std::string& key) { return doc.where(key, source); }))
+        for (const std::string& e : validateGame(scene.game, scene.objects, [&](const std::string& key) { return doc.where(key, source); }))
             errors.push_back(e);
         for (const interaction::RippleDefError& e : interaction::validate(scene.ripples))
             errors.push_back(doc.where("ripples." + e.key, source) + ": ripples." + e.key + ": " + e.message);

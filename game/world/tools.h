@@ -6,7 +6,7 @@
 #include "ecs/schedule.h"
 #include "view_data/scene_view.h"
 #include "sim/objects.h"
-#include "world/tool_kind.h"
+#include "behaviours/tool_kind.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>

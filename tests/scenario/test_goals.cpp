@@ -4,6 +4,7 @@
 // at 1 and 8 steps a frame alike; [sim] end_time ends any run; R restarts; bad [game] input
 // exits 2 naming file, line and key. The sea is each scene's own (its ocean grid at 64², as
 // the scene tests do); a losing run's limit is cut short with --set to keep the test quick.
+// herd.toml's inputs run in the unit suite (tests/unit/test_goals.cpp), without the picture.
 #include "support/test_support.h"
 
 #include <catch2/catch.hpp>
@@ -89,23 +90,6 @@ TEST_CASE("race.toml: full throttle on a straight course skips gate 2 (it lies t
     const nlohmann::json strict = play("config/scenes/race.toml", straight, 3000, "--set game.missed_gate=lose");
     INFO(strict["game"].dump());
     CHECK(strict["game"]["result"] == "lost");
-}
-
-TEST_CASE("herd.toml: pushing the crates in line ahead wins", "[goals][scenes][long]") {
-    const nlohmann::json won = play("config/scenes/herd.toml", DATA + "herd_win.toml", 3000);
-    const nlohmann::json& game = won["game"];
-    INFO(game.dump());
-    CHECK(game["mode"] == "herd");
-    CHECK(game["result"] == "won");
-    CHECK(game["inside"] == 3);
-    CHECK(game["needed"] == 3);
-    CHECK(game["time_s"].get<double>() < 90.0);
-}
-
-TEST_CASE("herd.toml: no input loses at the time limit", "[goals][scenes]") {
-    const nlohmann::json lost = play("config/scenes/herd.toml", "", 3000, "--set game.time_limit=5");
-    CHECK(lost["game"]["result"] == "lost");
-    CHECK(lost["game"]["inside"] == 0);
 }
 
 TEST_CASE("a goal ends on the same step with the same state hash at 1 and 8 steps a frame", "[goals][determinism]") {
