@@ -244,6 +244,45 @@ void chooseTool(ecs::World& world, PlayerTools& tools, const StepInput& input) {
     }
 }
 
+// The grab tool this step: a click takes the body under the cursor; while held, the wheel
+// moves it nearer or farther and the spring pulls it to the cursor's ray; let go, it is thrown.
+void grabTool(ecs::World& world, PlayerTools& tools, StepInput& input, const std::optional<BodyPick>& body,
+              const std::optional<Ray>& ray, float dt) {
+    if (input.wasClicked(platform::MouseButton::Left) && tools.grabbed == ecs::Entity::None && body && world.has<Body>(body->entity)) {
+        const ecs::Transform& t = world.get<ecs::Transform>(body->entity);
+        tools.grabbed = body->entity;
+        tools.grabLocal = glm::inverse(t.rotation) * (body->point - t.position);
+        tools.holdDistance = body->distance;
+        tools.target = body->point;
+        tools.targetVelocity = glm::vec3(0.0f);
+    }
+    if (tools.grabbed == ecs::Entity::None || !ray) return;
+    tools.holdDistance = std::clamp(tools.holdDistance * std::pow(WHEEL_FACTOR, input.scroll), 1.0f, 500.0f);
+    input.scroll = 0.0f;  // the wheel is the hold distance's, not the camera's
+    const glm::vec3 target = ray->at(tools.holdDistance);
+    const float blend = 1.0f - std::exp(-dt / THROW_SMOOTHING_S);
+    tools.targetVelocity += ((target - tools.target) / std::max(dt, 1e-6f) - tools.targetVelocity) * blend;
+    tools.target = target;
+    if (input.isDown(platform::MouseButton::Left)) pullGrabbed(world, tools, dt);
+    else release(world, tools);
+}
+
+// The stir tool this step: while held, the wheel sizes the sphere (Shift: its depth, each within
+// its key's range) and the sphere follows the water point.
+void stirTool(ecs::World& world, PlayerTools& tools, StepInput& input, float dt) {
+    const bool held = input.isDown(platform::MouseButton::Left);
+    if (held && (input.scroll != 0.0f)) {
+        const bool depth = input.isDown(platform::Key::Shift);
+        float& value = depth ? tools.def.stir_depth : tools.def.stir_radius;
+        const Limits limits = keyLimits<ToolsDef>(depth ? "stir_depth" : "stir_radius");
+        value = std::clamp(depth ? value + 0.1f * input.scroll : value * std::pow(WHEEL_FACTOR, input.scroll), float(limits.min),
+                           float(limits.max));
+        input.scroll = 0.0f;
+    }
+    if (held && tools.waterPoint) stir(world, tools, *tools.waterPoint, dt);
+    else stopStirring(world, tools);
+}
+
 } // namespace
 
 std::optional<float> ballisticElevationDeg(glm::vec3 from, glm::vec3 to, float speed, float g, bool high) {
@@ -278,7 +317,6 @@ void toolsSystem(ecs::World& world, const ecs::Tick& tick) {
     auto* input = world.resource<StepInput>();
     if (!tools || !input) return;
     const float dt = float(tick.dt);
-    using platform::Key;
 
     chooseTool(world, *tools, *input);
 
@@ -295,43 +333,12 @@ void toolsSystem(ecs::World& world, const ecs::Tick& tick) {
         body = pickBody(world, *ray, reach);
         if (body) tools->hoverBody = body->entity;
     }
-    const bool held = input->isDown(platform::MouseButton::Left);
     const bool clicked = input->wasClicked(platform::MouseButton::Left);
 
     // --- the tool acts
     switch (tools->def.tool) {
-    case Tool::Grab:
-        if (clicked && tools->grabbed == ecs::Entity::None && body && world.has<Body>(body->entity)) {
-            const ecs::Transform& t = world.get<ecs::Transform>(body->entity);
-            tools->grabbed = body->entity;
-            tools->grabLocal = glm::inverse(t.rotation) * (body->point - t.position);
-            tools->holdDistance = body->distance;
-            tools->target = body->point;
-            tools->targetVelocity = glm::vec3(0.0f);
-        }
-        if (tools->grabbed != ecs::Entity::None && ray) {
-            tools->holdDistance = std::clamp(tools->holdDistance * std::pow(WHEEL_FACTOR, input->scroll), 1.0f, 500.0f);
-            input->scroll = 0.0f;  // the wheel is the hold distance's, not the camera's
-            const glm::vec3 target = ray->at(tools->holdDistance);
-            const float blend = 1.0f - std::exp(-dt / THROW_SMOOTHING_S);
-            tools->targetVelocity += ((target - tools->target) / std::max(dt, 1e-6f) - tools->targetVelocity) * blend;
-            tools->target = target;
-            if (held) pullGrabbed(world, *tools, dt);
-            else release(world, *tools);
-        }
-        break;
-    case Tool::Stir:
-        if (held && (input->scroll != 0.0f)) {
-            const bool depth = input->isDown(Key::Shift);
-            float& value = depth ? tools->def.stir_depth : tools->def.stir_radius;
-            const Limits limits = keyLimits<ToolsDef>(depth ? "stir_depth" : "stir_radius");
-            value = std::clamp(depth ? value + 0.1f * input->scroll : value * std::pow(WHEEL_FACTOR, input->scroll),
-                               float(limits.min), float(limits.max));
-            input->scroll = 0.0f;
-        }
-        if (held && tools->waterPoint) stir(world, *tools, *tools->waterPoint, dt);
-        else stopStirring(world, *tools);
-        break;
+    case Tool::Grab: grabTool(world, *tools, *input, body, ray, dt); break;
+    case Tool::Stir: stirTool(world, *tools, *input, dt); break;
     case Tool::Drop:
         if (clicked && tools->waterPoint && world.resource<physics::PhysicsWorld>()) {
             const float yaw = ray ? glm::degrees(std::atan2(ray->direction.x, ray->direction.z)) : 0.0f;
