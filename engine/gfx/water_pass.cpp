@@ -136,12 +136,15 @@ int WaterPass::uploadHullClips(const WaterView& water, const CameraView& camera,
     const size_t count = std::min(order.size(), size_t(MAX_HULL_CLIPS));
     std::partial_sort(order.begin(), order.begin() + ptrdiff_t(count), order.end(),
                       [&](const HullClip* a, const HullClip* b) { return eyeDistance(a) < eyeDistance(b); });
+    // Outlines of hulls gone (a restart, another scene) are dropped once more are held than drawn.
+    const bool renew = m_hullOutlineLayers.size() > size_t(MAX_HULL_CLIPS);
+    if (renew) m_hullOutlineLayers.clear();
     const size_t layers = m_hullOutlineLayers.size();
     for (size_t i = 0; i < count; ++i) {
         u.hullFromWorld[i] = order[i]->worldToHull;
         u.hullPlan[i] = glm::vec4(order[i]->outline ? float(hullOutlineLayer(order[i]->outline) + 1) : 0.0f, 0.0f, 0.0f, 0.0f);
     }
-    if (m_hullOutlineLayers.size() != layers || !m_hullOutlines) uploadHullOutlines();
+    if (renew || m_hullOutlineLayers.size() != layers || !m_hullOutlines) uploadHullOutlines();
     u.hullCount = glm::vec4(float(count), 0.0f, 0.0f, 0.0f);
     return int(count);
 }
