@@ -7,8 +7,11 @@
 #include "foam/foam_nodes.h"
 #include "foam/foam_wind.h"
 
+#include <algorithm>
+#include <cstdint>
 #include <span>
 #include <vector>
+#include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 
 namespace ob::foam {
