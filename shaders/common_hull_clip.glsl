@@ -18,23 +18,24 @@ const float HULL_CLIP_MARGIN = 0.005;
 // texels: the station's keel height, then its half-beams from the keel up, all in the unit cube.
 layout(binding = HULL_OUTLINE_UNIT) uniform sampler2DArray u_hullOutlines;
 
-// The half-beam at height y of station k of outline `layer` (0 under its keel): its heights lie
-// at y = keel + (1 − keel)·t⁴, t in HEIGHTS − 1 equal steps, linear between.
-float outlineStation(int layer, int k, float y) {
-    float keel = texelFetch(u_hullOutlines, ivec3(0, k, layer), 0).r;
-    if (y <= keel) return 0.0;
-    float t = sqrt(sqrt(clamp((y - keel) / max(1.0 - keel, 1e-6), 0.0, 1.0))) * float(HULL_OUTLINE_HEIGHTS - 1);
-    int j = min(int(t), HULL_OUTLINE_HEIGHTS - 2);
+// The half-beam of station k of outline `layer` at the share t (in height steps) of its depth.
+float outlineAt(int layer, int k, int j, float u) {
     float a = texelFetch(u_hullOutlines, ivec3(1 + j, k, layer), 0).r, b = texelFetch(u_hullOutlines, ivec3(2 + j, k, layer), 0).r;
-    return mix(a, b, t - float(j));
+    return mix(a, b, u);
 }
 
-// The model's half-beam over its box's at length w and height y (unit cube): between the two
-// stations around w (at w = −cos(π·i/(STATIONS − 1))), each at its own heights.
+// The model's half-beam over its box's at length w and height y (unit cube; assets::halfBeam):
+// between the two stations around w (at w = −cos(π·i/(STATIONS − 1))), the keel linear; over
+// it, both at the same share of their depth, y = keel + (1 − keel)·t⁴ (t in HEIGHTS − 1 steps).
 float hullHalfBeam(int layer, float w, float y) {
     float s = acos(clamp(-w, -1.0, 1.0)) / 3.14159265 * float(HULL_OUTLINE_STATIONS - 1);
     int i = clamp(int(s), 0, HULL_OUTLINE_STATIONS - 2);
-    return mix(outlineStation(layer, i, y), outlineStation(layer, i + 1, y), clamp(s - float(i), 0.0, 1.0));
+    float f = clamp(s - float(i), 0.0, 1.0);
+    float keel = mix(texelFetch(u_hullOutlines, ivec3(0, i, layer), 0).r, texelFetch(u_hullOutlines, ivec3(0, i + 1, layer), 0).r, f);
+    if (y <= keel || keel >= 1.0) return 0.0;
+    float t = sqrt(sqrt(clamp((y - keel) / max(1.0 - keel, 1e-6), 0.0, 1.0))) * float(HULL_OUTLINE_HEIGHTS - 1);
+    int j = min(int(t), HULL_OUTLINE_HEIGHTS - 2);
+    return mix(outlineAt(layer, i, j, t - float(j)), outlineAt(layer, i + 1, j, t - float(j)), f);
 }
 
 // Whether world point p lies inside hull i (over its keel, within its outline).

@@ -99,14 +99,15 @@ float halfBeam(const HullOutline& outline, float w, float y) {
     const float s = std::acos(std::clamp(-w, -1.0f, 1.0f)) / float(std::numbers::pi) * float(Outline::STATIONS - 1);
     const int i = std::clamp(int(s), 0, Outline::STATIONS - 2);
     const float f = std::clamp(s - float(i), 0.0f, 1.0f);
-    const auto atStation = [&](int k) {
-        const float* row = outline.table.data() + size_t(k) * Outline::ROW;
-        if (y <= row[0]) return 0.0f;
-        const float t = heightT(std::min(y, 1.0f), row[0]) * float(Outline::HEIGHTS - 1);
-        const int j = std::min(int(t), Outline::HEIGHTS - 2);
-        return glm::mix(row[1 + j], row[2 + j], t - float(j));
-    };
-    return glm::mix(atStation(i), atStation(i + 1), f);
+    const float* a = outline.table.data() + size_t(i) * Outline::ROW;
+    const float* b = a + Outline::ROW;
+    const float keel = glm::mix(a[0], b[0], f);
+    if (y <= keel || keel >= 1.0f) return 0.0f;
+    // The same share of the depth at both stations (as the hull is lofted), t from it.
+    const float t = heightT(std::min(y, 1.0f), keel) * float(Outline::HEIGHTS - 1);
+    const int j = std::min(int(t), Outline::HEIGHTS - 2);
+    const float u = t - float(j);
+    return glm::mix(glm::mix(a[1 + j], a[2 + j], u), glm::mix(b[1 + j], b[2 + j], u), f);
 }
 
 } // namespace ob::assets

@@ -30,7 +30,8 @@ struct HullOutline {
 HullOutline hullOutline(const ModelData& model, glm::vec3 boxMin, glm::vec3 boxMax);
 
 /// The clip's half-beam at (w, y) in the unit cube (0: outside the hull), as the shader takes
-/// it: at the two stations around w, each at its own heights, then linear between them.
+/// it: the keel linear between the two stations around w; over it, both stations' half-beams
+/// at the same share of their depth (as a lofted hull's sections), linear between them.
 float halfBeam(const HullOutline& outline, float w, float y);
 
 } // namespace ob::assets
