@@ -35,6 +35,7 @@ SHARED_CONST FOAM_PATTERN_UNIT = 10;     // water: the baked foam pattern
 SHARED_CONST RIPPLE_LEVELS_UNIT = 11;    // water: the coarse ewave levels' heights, 2D array
 SHARED_CONST RIPPLE_LEVEL_SLOPES_UNIT = 12;  // water: their slopes, 2D array
 SHARED_CONST SCENE_DEPTH_UNIT = 13;      // water (hull clip): the opaque scene's depth before the water pass
+SHARED_CONST HULL_OUTLINE_UNIT = 14;     // water (hull clip): the hulls' outlines from their models (assets::HullOutline), R32F 2D array, a layer an outline
 SHARED_CONST POST_SOURCE_UNIT = 0;       // post (FXAA, upscale): the frame read
 
 // --- uniform locations, per program
@@ -84,9 +85,12 @@ UNIFORM_BLOCK(FrameUniforms, FRAME_BLOCK) {
     vec4 switches;             // reflections, refractions, foam (1 on, 0 off), dither of the 8-bit outputs (LSB; 0 off)
     vec4 waterline;            // xyz: height (m) of a pixel's point on the near plane above the water's tangent plane at the eye = x·ndc.x + y·ndc.y + z (< 0: the pixel is under water); w the eye's depth under the surface (m, ≥ 0)
     vec4 sky;                  // x [sky] cloud_cover, yz the clouds' drift with the wind aloft (m), w the cloud layer's height (m)
+    vec4 sunLight;             // rgb [render] sun_color (linear, before sunTint), w the direct light on a surface facing the sun, × rgb (objects, foam)
 } BLOCK_INSTANCE(frame);
 
 SHARED_CONST MAX_GERSTNER_WAVES = 32;
+SHARED_CONST HULL_OUTLINE_STATIONS = 64;  // a hull outline's stations (assets::HullOutline::STATIONS)
+SHARED_CONST HULL_OUTLINE_HEIGHTS = 24;   // its half-beams a station (assets::HullOutline::HEIGHTS)
 SHARED_CONST MAX_HULL_CLIPS = 16;  // hulls whose inside the water skips (common_hull_clip.glsl); the nearest to the eye first
 SHARED_CONST MAX_RIPPLE_LEVELS = 3;  // coarse ewave levels (ripples.levels − 1, docs/ewave.md#levels)
 
@@ -109,7 +113,7 @@ UNIFORM_BLOCK(WaterUniforms, WATER_BLOCK) {
     vec4 gerstner[MAX_GERSTNER_WAVES];  // (kx, kz, amplitude, phase) per wave
     vec4 hullCount;          // x hulls in hullFromWorld (≤ MAX_HULL_CLIPS)
     mat4 hullFromWorld[MAX_HULL_CLIPS];  // world → hull box unit cube [−1, 1]³ (gfx::HullClip::worldToHull)
-    vec4 hullPlan[MAX_HULL_CLIPS];       // x the outline: 0 box, 1 the ship model's (gfx::HullClip::Plan)
+    vec4 hullPlan[MAX_HULL_CLIPS];       // x the outline: 0 the box, k > 0 layer k − 1 of the outlines (gfx::HullClip::outline)
 } BLOCK_INSTANCE(water);
 
 #undef SHARED_CONST

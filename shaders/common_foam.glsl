@@ -25,7 +25,6 @@ const float FOAM_HOLE_WIDTH = 0.2;
 const float FOAM_THICKNESS = 2.5;
 // One octave's open share averaged over the pattern (its values uniform on [0, 1], as foamPattern is made).
 const float FOAM_HOLES_MEAN = 1.0 - FOAM_HOLE_BELOW - 0.5 * FOAM_HOLE_WIDTH;
-const vec3 FOAM_SUN = vec3(1.0, 0.92, 0.8) * 1.4;       // sunlight on a surface facing the sun (the objects' light, object_mesh.frag)
 const vec3 FOAM_SKY = vec3(0.30, 0.38, 0.48);           // skylight on an upward rough surface by day: about the day dome's mean radiance (common_sky.glsl)
 const vec3 FOAM_SKY_OVERCAST = vec3(0.21, 0.22, 0.24);  // ...under an overcast: its grey dome's mean (cloudRadiance)
 
@@ -108,6 +107,6 @@ vec3 shadeFoam(vec3 color, vec2 world, vec3 n, vec3 sun, float jacobian, float r
     }
     // --- light: a rough white surface lying on the water (Lambert), greyer as it ages
     vec3 albedo = mix(FOAM_ALBEDO_OLD, FOAM_ALBEDO_FRESH, smoothstep(0.1, 0.9, density));
-    vec3 light = FOAM_SUN * sunTint(sun) * max(dot(n, sun), 0.0) + mix(FOAM_SKY, FOAM_SKY_OVERCAST, cloudCover()) * daylight(sun);
+    vec3 light = frame.sunLight.rgb * frame.sunLight.w * sunTint(sun) * max(dot(n, sun), 0.0) + mix(FOAM_SKY, FOAM_SKY_OVERCAST, cloudCover()) * daylight(sun);
     return mix(color, albedo * light, alpha);
 }

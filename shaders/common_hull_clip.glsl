@@ -10,21 +10,32 @@
 #define COMMON_HULL_CLIP_GLSL
 #include "common_bindings.glsl"
 
-// Kept inside the ship model's hull by this share of its beam, so no clip reaches past the
-// hull's skin (its facets lie inside the curves below by less than 0.1 %).
-const float HULL_CLIP_MARGIN = 0.02;
+// Kept inside the model's hull by this share of its beam, so no clip reaches past the hull's
+// skin between the outline's samples.
+const float HULL_CLIP_MARGIN = 0.005;
 
-// The ship model's half-beam over its box's (game/tools/model_shapes.cpp, hullStations and
-// hullPoint, in the unit cube) at length w and height y: the deck outline (round stern over
-// w < −0.6, straight waist, parabolic bow from w = 0.2) times the section's width at y (the
-// bilge s(2 − s) from the deck edge to the keel, whose height rises at both ends).
-float shipHalfBeam(float w, float y) {
-    float stern = (w + 0.6) / 0.4, bow = (w - 0.2) / 0.8;
-    float deck = w < -0.6 ? sqrt(max(1.0 - stern * stern, 0.0)) : (w > 0.2 ? 1.0 - bow * bow : 1.0);
-    float keel = -1.0 + (w < -0.6 ? stern * stern / 3.0 : (w > 0.2 ? 2.0 / 3.0 * bow * bow * bow : 0.0));
-    float g = clamp((1.0 - y) / (1.0 - keel), 0.0, 1.0);  // depth below the deck edge over the section's
-    float s = 1.0 - sqrt(1.0 - g);                        // sin φ of hullPoint's angle there
-    return y <= keel ? 0.0 : deck * sqrt(max(1.0 - s * s, 0.0));
+// The hulls' outlines (assets::HullOutline, hull_outline.h): a layer each, STATIONS rows of ROW
+// texels: the station's keel height, then its half-beams from the keel up, all in the unit cube.
+layout(binding = HULL_OUTLINE_UNIT) uniform sampler2DArray u_hullOutlines;
+
+// The half-beam of station k of outline `layer` at the share t (in height steps) of its depth.
+float outlineAt(int layer, int k, int j, float u) {
+    float a = texelFetch(u_hullOutlines, ivec3(1 + j, k, layer), 0).r, b = texelFetch(u_hullOutlines, ivec3(2 + j, k, layer), 0).r;
+    return mix(a, b, u);
+}
+
+// The model's half-beam over its box's at length w and height y (unit cube; assets::halfBeam):
+// between the two stations around w (at w = −cos(π·i/(STATIONS − 1))), the keel linear; over
+// it, both at the same share of their depth, y = keel + (1 − keel)·t⁴ (t in HEIGHTS − 1 steps).
+float hullHalfBeam(int layer, float w, float y) {
+    float s = acos(clamp(-w, -1.0, 1.0)) / 3.14159265 * float(HULL_OUTLINE_STATIONS - 1);
+    int i = clamp(int(s), 0, HULL_OUTLINE_STATIONS - 2);
+    float f = clamp(s - float(i), 0.0, 1.0);
+    float keel = mix(texelFetch(u_hullOutlines, ivec3(0, i, layer), 0).r, texelFetch(u_hullOutlines, ivec3(0, i + 1, layer), 0).r, f);
+    if (y <= keel || keel >= 1.0) return 0.0;
+    float t = sqrt(sqrt(clamp((y - keel) / max(1.0 - keel, 1e-6), 0.0, 1.0))) * float(HULL_OUTLINE_HEIGHTS - 1);
+    int j = min(int(t), HULL_OUTLINE_HEIGHTS - 2);
+    return mix(outlineAt(layer, i, j, t - float(j)), outlineAt(layer, i + 1, j, t - float(j)), f);
 }
 
 // Whether world point p lies inside hull i (over its keel, within its outline).
@@ -32,7 +43,7 @@ bool insideHull(int i, vec3 p) {
     vec3 q = (water.hullFromWorld[i] * vec4(p, 1.0)).xyz;
     if (q.y <= -1.0 || abs(q.z) >= 1.0 || abs(q.x) >= 1.0) return false;
     if (water.hullPlan[i].x < 0.5) return true;  // the box
-    return abs(q.x) < (1.0 - HULL_CLIP_MARGIN) * shipHalfBeam(q.z, min(q.y, 1.0));
+    return abs(q.x) < (1.0 - HULL_CLIP_MARGIN) * hullHalfBeam(int(water.hullPlan[i].x) - 1, q.z, min(q.y, 1.0));
 }
 
 // The first hull (nearest the eye first) that holds world point p, −1 none.

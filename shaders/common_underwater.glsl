@@ -143,7 +143,7 @@ vec3 underwaterShafts(vec3 origin, vec3 dir, float dist, const bool sheets) {
         waves += (re * b + im * sb) / (sb * sb + b * b + 1e-8);
     }
     waves *= exp(-UNDERWATER_KD * (d0 / up.y) - d0 / SHAFT_BLUR_DEPTH_M) * SHAFT_WAVE_AMPLITUDE;
-    vec3 light = vec3(1.0, 0.92, 0.8) * sunTint(sun) * SHAFT_SUN;
+    vec3 light = frame.sunLight.rgb * sunTint(sun) * SHAFT_SUN;
     return light * (frame.shading.w * SHAFT_SCATTER * phase) * max(mean + waves, 0.0);
 }
 

@@ -23,7 +23,7 @@ void main() {
     bool under = pixelUnderwater(gl_FragCoord.xy);
     // Under water the sunlight comes focused by the waves (caustics); 1 above.
     float focus = under ? underwaterCaustics(v_world) : 1.0;
-    vec3 light = ambient + vec3(1.0, 0.92, 0.8) * sunTint(sun) * 1.4 * max(dot(n, sun), 0.0) * focus;
+    vec3 light = ambient + frame.sunLight.rgb * sunTint(sun) * frame.sunLight.w * max(dot(n, sun), 0.0) * focus;
     vec3 color = u_tint * v_color * light + sunTint(sun) * 0.25 * pow(max(dot(reflect(-sun, n), v), 0.0), 40.0);
     if (under) {
         // The light reaching the object's depth under the mean level (y = 0), then the path to the

@@ -231,25 +231,14 @@ glm::vec3 unitOr(glm::vec3 v, glm::vec3 fallback) {
     return std::isfinite(len) && len > 1e-20f ? v / len : fallback;
 }
 
-// Appends one TRIANGLES primitive, in the model frame given by `world`.
-void appendPrimitive(const tinygltf::Model& m, const tinygltf::Primitive& prim, const glm::mat4& world,
-                     const std::string& name, ModelData& out) {
-    auto attribute = [&](const char* key) {
-        auto it = prim.attributes.find(key);
-        return it == prim.attributes.end() ? -1 : it->second;
-    };
-    const int positionIndex = attribute("POSITION");
-    if (positionIndex < 0) throw Corrupt(name + ": no POSITION attribute");
-    std::vector<glm::vec3> positions = readVec3(m, positionIndex, name + " POSITION");
-    const size_t n = positions.size();
+// A primitive's attribute's accessor index, −1 where it has none.
+int attributeOf(const tinygltf::Primitive& prim, const char* key) {
+    auto it = prim.attributes.find(key);
+    return it == prim.attributes.end() ? -1 : it->second;
+}
 
-    std::vector<glm::vec3> normals;
-    if (attribute("NORMAL") >= 0) {
-        normals = readVec3(m, attribute("NORMAL"), name + " NORMAL");
-        if (normals.size() != n)
-            throw Corrupt(name + ": NORMAL has " + numText(normals.size()) + " elements, POSITION " + numText(n));
-    }
-
+// The n vertex colours: the material's base colour factor times COLOR_0 where it has one.
+std::vector<glm::vec3> primitiveColors(const tinygltf::Model& m, const tinygltf::Primitive& prim, size_t n, const std::string& name) {
     glm::vec3 factor(1.0f);
     if (prim.material >= 0) {
         if (size_t(prim.material) >= m.materials.size())
@@ -259,14 +248,18 @@ void appendPrimitive(const tinygltf::Model& m, const tinygltf::Primitive& prim, 
         if (f.size() == 4) factor = glm::vec3(float(f[0]), float(f[1]), float(f[2]));
     }
     std::vector<glm::vec3> colors(n, factor);
-    if (attribute("COLOR_0") >= 0) {
-        Values c = readAccessor(m, attribute("COLOR_0"), false, name + " COLOR_0");
+    if (attributeOf(prim, "COLOR_0") >= 0) {
+        Values c = readAccessor(m, attributeOf(prim, "COLOR_0"), false, name + " COLOR_0");
         if (c.width != 3 && c.width != 4) throw Corrupt(name + " COLOR_0: type must be VEC3 or VEC4");
         if (c.count != n) throw Corrupt(name + ": COLOR_0 has " + numText(c.count) + " elements, POSITION " + numText(n));
         const size_t w = size_t(c.width);
         for (size_t i = 0; i < n; ++i) colors[i] *= glm::vec3(c.v[i * w], c.v[i * w + 1], c.v[i * w + 2]);
     }
+    return colors;
+}
 
+// The triangles' corners (indices into the n vertices; none given: 0 … n − 1).
+std::vector<uint32_t> primitiveIndices(const tinygltf::Model& m, const tinygltf::Primitive& prim, size_t n, const std::string& name) {
     std::vector<uint32_t> indices;
     if (prim.indices >= 0) {
         indices = readIndices(m, prim.indices, name + " indices");
@@ -280,40 +273,70 @@ void appendPrimitive(const tinygltf::Model& m, const tinygltf::Primitive& prim, 
     }
     if (indices.size() % 3 != 0)
         throw Corrupt(name + ": " + numText(indices.size()) + " vertices in TRIANGLES mode, not a multiple of 3");
+    return indices;
+}
 
-    // A mirroring transform turns counter-clockwise faces clockwise: swap to keep them front.
-    const glm::mat3 linear(world);
-    const glm::mat3 normalMatrix = glm::transpose(glm::inverse(linear));
-    if (glm::determinant(linear) < 0.0f)
+// The positions moved into the model frame by `world`; a mirroring transform turns
+// counter-clockwise faces clockwise, so their corners are swapped to keep them front.
+void placePrimitive(const glm::mat4& world, std::vector<glm::vec3>& positions, std::vector<uint32_t>& indices, const std::string& name) {
+    if (glm::determinant(glm::mat3(world)) < 0.0f)
         for (size_t k = 0; k < indices.size(); k += 3) std::swap(indices[k + 1], indices[k + 2]);
     for (glm::vec3& p : positions) p = glm::vec3(world * glm::vec4(p, 1.0f));
     for (const glm::vec3& p : positions)
         if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
             throw Corrupt(name + ": a transformed position is not finite");
+}
 
-    const size_t added = normals.empty() ? indices.size() : n;
-    if (out.positions.size() + added > MAX_VERTICES) throw Corrupt("more than " + numText(MAX_VERTICES) + " vertices");
+// No normals: flat shading, one vertex per corner (spec §3.7.2.1).
+void appendFlat(const std::vector<glm::vec3>& positions, const std::vector<uint32_t>& indices, const std::vector<glm::vec3>& colors,
+                ModelData& out) {
     const uint32_t base = uint32_t(out.positions.size());
-    if (normals.empty()) {
-        // No normals: flat shading, one vertex per corner (spec §3.7.2.1).
-        for (size_t k = 0; k < indices.size(); k += 3) {
-            const glm::vec3 a = positions[indices[k]], b = positions[indices[k + 1]], c = positions[indices[k + 2]];
-            const glm::vec3 face = unitOr(glm::cross(b - a, c - a), glm::vec3(0.0f, 1.0f, 0.0f));
-            for (size_t j = 0; j < 3; ++j) {
-                out.positions.push_back(positions[indices[k + j]]);
-                out.normals.push_back(face);
-                out.colors.push_back(colors[indices[k + j]]);
-                out.indices.push_back(base + uint32_t(k + j));
-            }
+    for (size_t k = 0; k < indices.size(); k += 3) {
+        const glm::vec3 a = positions[indices[k]], b = positions[indices[k + 1]], c = positions[indices[k + 2]];
+        const glm::vec3 face = unitOr(glm::cross(b - a, c - a), glm::vec3(0.0f, 1.0f, 0.0f));
+        for (size_t j = 0; j < 3; ++j) {
+            out.positions.push_back(positions[indices[k + j]]);
+            out.normals.push_back(face);
+            out.colors.push_back(colors[indices[k + j]]);
+            out.indices.push_back(base + uint32_t(k + j));
         }
-        return;
     }
-    for (size_t i = 0; i < n; ++i) {
+}
+
+// With normals: the vertices as given, their normals turned by `world`'s normal matrix.
+void appendSmooth(const glm::mat4& world, const std::vector<glm::vec3>& positions, const std::vector<glm::vec3>& normals,
+                  const std::vector<uint32_t>& indices, const std::vector<glm::vec3>& colors, ModelData& out) {
+    const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(world)));
+    const uint32_t base = uint32_t(out.positions.size());
+    for (size_t i = 0; i < positions.size(); ++i) {
         out.positions.push_back(positions[i]);
         out.normals.push_back(unitOr(normalMatrix * normals[i], glm::vec3(0.0f, 1.0f, 0.0f)));
         out.colors.push_back(colors[i]);
     }
     for (uint32_t k : indices) out.indices.push_back(base + k);
+}
+
+// Appends one TRIANGLES primitive, in the model frame given by `world`.
+void appendPrimitive(const tinygltf::Model& m, const tinygltf::Primitive& prim, const glm::mat4& world,
+                     const std::string& name, ModelData& out) {
+    const int positionIndex = attributeOf(prim, "POSITION");
+    if (positionIndex < 0) throw Corrupt(name + ": no POSITION attribute");
+    std::vector<glm::vec3> positions = readVec3(m, positionIndex, name + " POSITION");
+    const size_t n = positions.size();
+    std::vector<glm::vec3> normals;
+    if (attributeOf(prim, "NORMAL") >= 0) {
+        normals = readVec3(m, attributeOf(prim, "NORMAL"), name + " NORMAL");
+        if (normals.size() != n)
+            throw Corrupt(name + ": NORMAL has " + numText(normals.size()) + " elements, POSITION " + numText(n));
+    }
+    const std::vector<glm::vec3> colors = primitiveColors(m, prim, n, name);
+    std::vector<uint32_t> indices = primitiveIndices(m, prim, n, name);
+    placePrimitive(world, positions, indices, name);
+
+    const size_t added = normals.empty() ? indices.size() : n;
+    if (out.positions.size() + added > MAX_VERTICES) throw Corrupt("more than " + numText(MAX_VERTICES) + " vertices");
+    if (normals.empty()) appendFlat(positions, indices, colors, out);
+    else appendSmooth(world, positions, normals, indices, colors, out);
 }
 
 // The roots to draw: the default scene's, else scene 0's, else every node no node parents.

@@ -70,6 +70,31 @@ enum class Change : uint8_t {
 /// The mark a describe() puts last on a live key's line: `v.field("exposure", d.exposure, range(0.01, 16), "...", LIVE);`
 inline constexpr Change LIVE = Change::Live;
 
+namespace detail {
+/// The visitor keyLimits() walks a describe() with.
+struct KeyLimitsFinder {
+    std::string_view key;
+    Limits found{};
+    template <class T> void field(const char* k, T&, Limits l, const char*, Change = {}) {
+        if (key == k) found = l;
+    }
+    template <class T> void field(const char*, T&, const char*, Change = {}) {}
+    template <class D> void section(const char*, D&) {}
+    template <class D> void fields(D&) {}
+    template <class I> void list(const char*, std::vector<I>&, const char*) {}
+};
+} // namespace detail
+
+/// The Limits a Def's describe() gives its key `key` (any() where it has no such number): the
+/// editor's sliders and the clamps of the code that moves a key read its range here, so the
+/// range stays written once, in describe().
+template <class Def> Limits keyLimits(std::string_view key) {
+    detail::KeyLimitsFinder find{key};
+    Def def{};
+    describe(find, def);
+    return find.found;
+}
+
 /// A key that takes one of a fixed set of words is an enum with its words declared beside it,
 /// in the enum's order, by a function `names` found by argument-dependent lookup:
 ///

@@ -23,6 +23,10 @@ template <class V> void describe(V& v, EnvironmentDef& d) {
     v.field("water_viscosity", d.water_viscosity, range(0, 1), "kinematic viscosity of water, m²/s");
 }
 
+/// The standard environment (the defaults above): the starting value of every Def that holds a
+/// copy of one of its constants, replaced by the scene's [environment] when the scene is built.
+inline constexpr EnvironmentDef STANDARD_ENVIRONMENT{};
+
 /// σ/ρ, m³/s²: the capillary term of the dispersion ω² = g·k + (σ/ρ)·k³.
 inline double capillarity(const EnvironmentDef& d) { return double(d.surface_tension) / double(d.water_density); }
 

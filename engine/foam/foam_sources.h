@@ -28,6 +28,7 @@
 //                  sweeps over gains bow_weight·q
 #pragma once
 #include "core/scrolling_grid.h"
+#include "environment/environment_def.h"
 #include "foam/foam_def.h"
 #include "foam/foam_whitecaps.h"
 
@@ -70,7 +71,7 @@ struct FoamInputs {
     float windSpeed = 0.0f;           ///< U10, m/s: with whitecap_from_wind, sets (a)'s threshold and gain (foam_whitecaps.h)
     glm::vec2 windDirection{1.0f, 0.0f};  ///< ŵ, the way the wind blows (any non-zero vector): the drift and streaks of §2.2
     glm::vec2 stokesDrift{0.0f};          ///< the sea's surface Stokes drift, m/s (ocean::stokesDrift), added to the wind drift
-    float gravity = 9.81f;            ///< g, m/s²
+    float gravity = environment::STANDARD_ENVIRONMENT.gravity;  ///< g, m/s² (OceanDef::gravity)
     const interaction::RipplePatch* ripples = nullptr;  ///< (b) steep ripples of its Vh(t); null: none
     const water::CompositeWater* water = nullptr;       ///< the surface velocity at its time(); null: the velocity set last
 };

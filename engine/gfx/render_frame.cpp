@@ -11,6 +11,9 @@ namespace ob::gfx {
 namespace {
 const char* const PASS_NAMES[] = {"sky_bake", "reflection", "refraction", "opaque", "water", "sky", "splash", "post"};
 static_assert(std::size(PASS_NAMES) == PASS_COUNT);
+// The direct sunlight on a surface facing the sun, × render.sun_color, relative to the sky's
+// radiance: the objects' and the foam's Lambert light (frame.sunLight.w).
+constexpr float SUNLIT_SURFACE = 1.4f;
 } // namespace
 
 glm::vec4 nearPlaneWaterHeight(const CameraView& camera) {
@@ -44,6 +47,7 @@ void FrameViews::update(const RenderDef& def, const SkyDef& sky, const FrameStat
     u.sunDirectionFresnel = glm::vec4(sunDirection(def), def.fresnel == Fresnel::Exact ? 1.0f : 0.0f);
     u.waterColorExposure = glm::vec4(def.water_color, def.exposure * frame.exposureGain);
     u.sky = glm::vec4(sky.cloud_cover, frame.cloudDrift, sky.cloud_height);
+    u.sunLight = glm::vec4(def.sun_color, SUNLIT_SURFACE);
     u.depthParams = glm::vec4(camera.nearM, camera.farM, def.water_clarity, float(skyMips));
     u.shading = glm::vec4(def.dudv_strength, def.normal_distortion, def.glitter, def.light_shafts);
     u.switches = glm::vec4(def.reflections ? 1.0f : 0.0f, def.refractions ? 1.0f : 0.0f, def.foam ? 1.0f : 0.0f,

@@ -96,6 +96,35 @@ void WaterPass::buildGrid(int resolution) {
     glVertexArrayAttribBinding(m_gridVao.id(), GRID_UV_ATTRIB, 0);
 }
 
+static_assert(HULL_OUTLINE_STATIONS == assets::HullOutline::STATIONS && HULL_OUTLINE_HEIGHTS == assets::HullOutline::HEIGHTS);
+
+// The layer of the outlines texture that holds `outline` (a new one is added: the texture is
+// made anew, with every outline seen so far).
+int WaterPass::hullOutlineLayer(const std::shared_ptr<const assets::HullOutline>& outline) {
+    const auto known = std::find(m_hullOutlineLayers.begin(), m_hullOutlineLayers.end(), outline);
+    if (known != m_hullOutlineLayers.end()) return int(known - m_hullOutlineLayers.begin());
+    m_hullOutlineLayers.push_back(outline);
+    return int(m_hullOutlineLayers.size()) - 1;
+}
+
+// The outlines seen so far, a layer each (one zero layer when there is none: the sampler is bound).
+void WaterPass::uploadHullOutlines() {
+    constexpr int ROW = assets::HullOutline::ROW, STATIONS = assets::HullOutline::STATIONS;
+    const int layers = std::max(int(m_hullOutlineLayers.size()), 1);
+    GLuint id;
+    glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &id);
+    glObjectLabel(GL_TEXTURE, id, -1, "hull clip: outlines");
+    glTextureStorage3D(id, 1, GL_R32F, ROW, STATIONS, layers);
+    glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    m_hullOutlines = Texture(id);
+    const std::vector<float> zero(size_t(ROW) * STATIONS, 0.0f);
+    for (int l = 0; l < layers; ++l) {
+        const float* data = l < int(m_hullOutlineLayers.size()) ? m_hullOutlineLayers[size_t(l)]->table.data() : zero.data();
+        glTextureSubImage3D(id, 0, 0, 0, l, ROW, STATIONS, 1, GL_RED, GL_FLOAT, data);
+    }
+}
+
 // The hulls nearest the eye first, at most MAX_HULL_CLIPS (a far hull past the limit spans few
 // pixels, and its water shows there).
 int WaterPass::uploadHullClips(const WaterView& water, const CameraView& camera, WaterUniforms& u) {
@@ -107,10 +136,15 @@ int WaterPass::uploadHullClips(const WaterView& water, const CameraView& camera,
     const size_t count = std::min(order.size(), size_t(MAX_HULL_CLIPS));
     std::partial_sort(order.begin(), order.begin() + ptrdiff_t(count), order.end(),
                       [&](const HullClip* a, const HullClip* b) { return eyeDistance(a) < eyeDistance(b); });
+    // Outlines of hulls gone (a restart, another scene) are dropped once more are held than drawn.
+    const bool renew = m_hullOutlineLayers.size() > size_t(MAX_HULL_CLIPS);
+    if (renew) m_hullOutlineLayers.clear();
+    const size_t layers = m_hullOutlineLayers.size();
     for (size_t i = 0; i < count; ++i) {
         u.hullFromWorld[i] = order[i]->worldToHull;
-        u.hullPlan[i] = glm::vec4(order[i]->plan == HullClip::Plan::Ship ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f);
+        u.hullPlan[i] = glm::vec4(order[i]->outline ? float(hullOutlineLayer(order[i]->outline) + 1) : 0.0f, 0.0f, 0.0f, 0.0f);
     }
+    if (renew || m_hullOutlineLayers.size() != layers || !m_hullOutlines) uploadHullOutlines();
     u.hullCount = glm::vec4(float(count), 0.0f, 0.0f, 0.0f);
     return int(count);
 }
@@ -201,6 +235,8 @@ void WaterPass::copySceneDepth(const FrameContext& frame, GLuint frameFramebuffe
     else
         glCopyTextureSubImage2D(m_sceneDepth.id(), 0, 0, 0, 0, 0, size.x, size.y);  // the bound read framebuffer's depth
     glBindTextureUnit(SCENE_DEPTH_UNIT, m_sceneDepth.id());
+    if (!m_hullOutlines) uploadHullOutlines();
+    glBindTextureUnit(HULL_OUTLINE_UNIT, m_hullOutlines.id());
 }
 
 void WaterPass::waterPass(FrameContext& frame, const SkyPass& sky, const SurfacePasses& surfaces, GLuint frameFramebuffer) {
@@ -227,7 +263,7 @@ void WaterPass::waterPass(FrameContext& frame, const SkyPass& sky, const Surface
     glBindVertexArray(m_gridVao.id());
     glDrawElements(GL_TRIANGLES, m_gridIndexCount, GL_UNSIGNED_INT, nullptr);
     // The targets are drawn into again next frame: never leave them bound for sampling.
-    for (GLuint unit : {REFLECTION_UNIT, REFRACTION_UNIT, REFLECTION_DEPTH_UNIT, SCENE_DEPTH_UNIT}) glBindTextureUnit(unit, 0);
+    for (GLuint unit : {REFLECTION_UNIT, REFRACTION_UNIT, REFLECTION_DEPTH_UNIT, SCENE_DEPTH_UNIT, HULL_OUTLINE_UNIT}) glBindTextureUnit(unit, 0);
     for (GLuint unit : {SLOPES_UNIT, DETAIL_UNIT, FOAM_PATTERN_UNIT}) glBindSampler(unit, 0);
 }
 

@@ -2,6 +2,8 @@
 // grid, shaded from the reflection and refraction targets, the sky and the detail maps, with
 // its program compiled per configuration (WaterVariant).
 #pragma once
+#include "assets/hull_outline.h"
+#include "environment/environment_def.h"
 #include "gfx/projected_grid.h"
 #include "gfx/render_frame.h"
 #include "gfx/water_detail.h"
@@ -9,6 +11,7 @@
 
 #include <array>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -27,7 +30,7 @@ struct WaterView {
     std::array<float, 4> cascadeSlopeVariance{};  ///< mean square slope of each cascade's waves (ocean::cascadeSlopeVariance)
     float seaSlopeVariance = 0.0f;          ///< the whole sea's mean square slope (ocean::coxMunkSlopeVariance): the glitter's spread
     float lambda = 0.0f;                    ///< choppy displacement factor λ (X + λ·D)
-    float gravity = 9.81f;                  ///< m/s², Gerstner dispersion
+    float gravity = environment::STANDARD_ENVIRONMENT.gravity;  ///< m/s², Gerstner dispersion (OceanDef::gravity)
     std::vector<glm::vec4> gerstner;        ///< (kx, kz, amplitude, phase) per wave, at most 32
     const float* ripples = nullptr;         ///< ripple heights Vh(t), rippleCells² row-major (z rows), m
     int rippleCells = 0;                    ///< ripple patch cells per side (0: no ripple layer)
@@ -96,6 +99,8 @@ public:
 private:
     void buildGrid(int resolution);
     int uploadHullClips(const WaterView& water, const CameraView& camera, WaterUniforms& u);
+    int hullOutlineLayer(const std::shared_ptr<const assets::HullOutline>& outline);
+    void uploadHullOutlines();
     void uploadUniforms(FrameContext& frame, const CameraView& camera, const WaterView& water);
     void copySceneDepth(const FrameContext& frame, GLuint frameFramebuffer);
 
@@ -113,6 +118,9 @@ private:
     // The hull clip's copy of the opaque scene's depth, made before the water is drawn
     // (DEPTH_COMPONENT32F, the frame's size and samples), and the framebuffer that holds it.
     Texture m_sceneDepth;
+    // The outlines of the hulls drawn this frame, a layer each (HULL_OUTLINE_UNIT), and which.
+    Texture m_hullOutlines;
+    std::vector<std::shared_ptr<const assets::HullOutline>> m_hullOutlineLayers;
     Framebuffer m_sceneDepthFramebuffer;
     glm::ivec2 m_sceneDepthSize{0};
     int m_sceneDepthSamples = 0;

@@ -27,7 +27,7 @@ struct OceanDef {
     float small_wave_cutoff = 0.0f;    ///< l, metres, [0, 100]: waves shorter than ~l are damped by exp(−k²l²); 0 = auto, l = 0.001·V²/g ([CodingTower])
     float choppiness = 1.0f;           ///< c, horizontal displacement strength, [0, 10]: points move to X + λ·D with λ = −c (SPEC eq. 7: λ < 0 sharpens crests); 0 = no displacement
     std::uint64_t seed = 1;            ///< seed of the Gaussian noise ξ (eq. 4); equal seeds give equal seas at any resolution
-    float gravity = 9.81f;             ///< g, m/s², > 0; dispersion ω = sqrt(g·k) (eq. 3): environment.gravity, set when the scene is built (not a key)
+    float gravity = environment::STANDARD_ENVIRONMENT.gravity;             ///< g, m/s², > 0; dispersion ω = sqrt(g·k) (eq. 3): environment.gravity, set when the scene is built (not a key)
     int cascades = 1;                  ///< number of tiles, [1, 4]; cascade c has side L/φ^(2c) (φ = golden ratio, never commensurate) and its own band of k
     float fetch = 100000.0f;           ///< F, JONSWAP fetch: distance the wind has blown over water, metres, [100, 10000000]
     float peak_enhancement = 3.3f;     ///< γ, JONSWAP peak enhancement factor, [1, 10] (1 = Pierson–Moskowitz shape)

@@ -64,7 +64,7 @@ struct SpectrumParams {
     double windSpeed = 0.0;    ///< V, m/s
     double windX = 1.0;        ///< ŵ.x, unit vector the wind blows toward
     double windZ = 0.0;        ///< ŵ.z
-    double gravity = 9.81;     ///< g, m/s²
+    double gravity = environment::STANDARD_ENVIRONMENT.gravity;  ///< g, m/s² (OceanDef::gravity)
     double largestWave = 0.0;  ///< L_w = V²/g, metres
     double cutoff = 0.0;       ///< l, metres (auto already resolved to 0.001·L_w)
     double alpha = 0.0;        ///< JONSWAP α, dimensionless

@@ -7,9 +7,9 @@ namespace ob::physics {
 
 /// The Bullet world and how the water pushes bodies.
 struct PhysicsDef {
-    float gravity = 9.81f;              ///< m/s², downward: environment.gravity, set when the scene is built (not a key)
-    float water_density = 1025.0f;      ///< ρ of the water, kg/m³: environment.water_density, set likewise (not a key)
-    float air_density = 1.225f;         ///< ρ_a of the air, kg/m³: environment.air_density, set likewise (not a key)
+    float gravity = environment::STANDARD_ENVIRONMENT.gravity;  ///< m/s², downward: environment.gravity, set when the scene is built (not a key)
+    float water_density = environment::STANDARD_ENVIRONMENT.water_density;  ///< ρ of the water, kg/m³: environment.water_density, set likewise (not a key)
+    float air_density = environment::STANDARD_ENVIRONMENT.air_density;      ///< ρ_a of the air, kg/m³: environment.air_density, set likewise (not a key)
     float linear_drag = 1000.0f;        ///< linear drag per submerged probe area, N·s/m per m², [0, 1e6]; stands in for the
                                         ///< wave-radiation damping of a heaving body (order ρ·ω·r ≈ 2000 for r = 0.5 m)
     float quadratic_drag = 0.6f;        ///< ½·ρ·C_d factor: quadratic drag coefficient C_d, [0, 100]

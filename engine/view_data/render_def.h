@@ -31,6 +31,7 @@ struct RenderDef {
     float time_of_day = -1.0f;                      ///< local solar time, hours, [−1, 24]: the sun stands where it does at that hour (gfx/sun.h; 12 noon toward +z, rising toward +x), sky and light follow; −1 = off (sun_direction)
     float latitude_deg = 40.0f;                     ///< latitude of the sea for time_of_day, degrees, [−90, 90]
     float sun_declination_deg = 10.0f;              ///< the sun's declination for time_of_day, degrees, [−23.44, 23.44] (0 at the equinoxes, +23.44 at the June solstice)
+    glm::vec3 sun_color{1.0f, 0.92f, 0.8f};        ///< the sunlight's colour at noon (linear RGB, [0, 10]; tinted by the sun's height): objects, foam, spray, light shafts
     glm::vec3 water_color{0.015f, 0.09f, 0.13f};   ///< deep water body colour (linear RGB, 0..1)
     Fresnel fresnel = Fresnel::Schlick;             ///< "schlick" approximation or "exact" unpolarised equations (n = 1.33)
     bool reflections = true;                        ///< planar reflection pass (objects above the water, mirrored); off: sky only
@@ -65,6 +66,7 @@ template <class V> void describe(V& v, RenderDef& d) {
     v.field("time_of_day", d.time_of_day, range(-1, 24), "local solar time, hours: places the sun (12 = noon); -1 = off (sun_direction)", LIVE);
     v.field("latitude_deg", d.latitude_deg, range(-90, 90), "latitude for time_of_day, degrees", LIVE);
     v.field("sun_declination_deg", d.sun_declination_deg, range(-23.44, 23.44), "the sun's declination for time_of_day, degrees", LIVE);
+    v.field("sun_color", d.sun_color, range(0, 10), "the sunlight's colour at noon, linear RGB (objects, foam, spray, light shafts)", LIVE);
     v.field("water_color", d.water_color, range(0, 1), "deep water body colour (linear RGB)", LIVE);
     v.field("fresnel", d.fresnel, "Fresnel term: Schlick or exact (n = 1.33)", LIVE);
     v.field("reflections", d.reflections, "planar reflection pass (local objects mirrored); off: sky only", LIVE);

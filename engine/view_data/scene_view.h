@@ -3,12 +3,17 @@
 // layers, which live in GPU textures, are the renderer's WaterView).
 #pragma once
 #include <cstdint>
+#include <memory>
 #include <vector>
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 #include <string>
+
+namespace ob::assets {
+struct HullOutline;
+}
 
 namespace ob::gfx {
 
@@ -41,15 +46,11 @@ struct ObjectDraw {
 
 /// A floating hull's clip volume: the water surface is not drawn inside it where the hull's own
 /// surface lies behind (shaders/common_hull_clip.glsl), so no sea shows in a hull where the waves
-/// rise above its deck or in an open boat. Its outline on the hull's deck plane tapers with depth
-/// as the hull's section.
+/// rise above its deck or in an open boat. Its outline is the section of the model the body
+/// draws (assets/hull_outline.h), or the whole box.
 struct HullClip {
-    enum class Plan : uint8_t {
-        Box,   ///< the whole box (the built-in box mesh)
-        Ship,  ///< the project's ship model (make-models): round stern, straight waist, pointed bow, round bilge
-    };
     glm::mat4 worldToHull{1.0f};  ///< world → the hull box's unit cube [−1, 1]³ (x across, y up from keel −1 to deck +1, z to the bow)
-    Plan plan = Plan::Box;
+    std::shared_ptr<const assets::HullOutline> outline;  ///< the model's outline in that cube; null: the whole box (the built-in box mesh)
 };
 
 /// One splash drop to draw: world centre (xyz, m) and radius (w, m).

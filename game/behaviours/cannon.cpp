@@ -55,6 +55,13 @@ void fire(ecs::World& world, Cannon& cannon, glm::vec3 pivot) {
 
 } // namespace
 
+Limits cannonElevationLimits() { return keyLimits<CannonDef>("elevation_deg"); }
+
+float clampElevationDeg(float deg) {
+    const Limits l = cannonElevationLimits();
+    return std::clamp(deg, float(l.min), float(l.max));
+}
+
 glm::vec3 cannonAim(float yawDeg, float elevationDeg) {
     const float yaw = glm::radians(yawDeg), elevation = glm::radians(elevationDeg);
     return {std::sin(yaw) * std::cos(elevation), std::sin(elevation), std::cos(yaw) * std::cos(elevation)};
@@ -109,8 +116,7 @@ void cannonSystem(ecs::World& world, const ecs::Tick& tick) {
             Cannon& c = cannons.components()[i];
             using platform::Key;
             c.yawDeg += AIM_RATE_DEG_S * dt * float(input->isDown(Key::Left) - input->isDown(Key::Right));
-            c.elevationDeg = std::clamp(c.elevationDeg + AIM_RATE_DEG_S * dt * float(input->isDown(Key::Up) - input->isDown(Key::Down)),
-                                        -10.0f, 89.0f);
+            c.elevationDeg = clampElevationDeg(c.elevationDeg + AIM_RATE_DEG_S * dt * float(input->isDown(Key::Up) - input->isDown(Key::Down)));
             c.fireRequested = c.fireRequested || input->wasPressed(Key::Space);
         }
         Cannon& c = cannons.components()[i];

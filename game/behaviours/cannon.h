@@ -33,6 +33,10 @@ constexpr float CANNON_BARREL = 2.0f;
 
 /// Creates a cannon (and its pillar) from its [[objects]] entry (type "cannon").
 ecs::Entity spawnCannon(ecs::World& world, const ObjectDef& def);
+/// The barrel's elevation range, deg: its key's (CannonDef's elevation_deg).
+Limits cannonElevationLimits();
+/// `deg` kept within the barrel's elevation range.
+float clampElevationDeg(float deg);
 /// Unit aim direction for an azimuth and elevation (deg).
 glm::vec3 cannonAim(float yawDeg, float elevationDeg);
 /// Script phase: sunk balls are removed, cannons aim (player), then fire when asked or due.

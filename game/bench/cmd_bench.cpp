@@ -206,6 +206,105 @@ int benchSpheres(const SpheresBenchArgs& a) {
     return EXIT_OK;
 }
 
+namespace {
+
+// One kind of bench: its subcommand and its arguments (the command line kept for the report),
+// with the action that runs it; the caller adds the kind's flags, then addOutputFlags.
+template <class Args> struct BenchKind {
+    CLI::App* command;
+    std::shared_ptr<Args> args;
+};
+template <class Args>
+BenchKind<Args> addBenchKind(CLI::App* bench, CommandAction& action, const std::string& commandLine, const char* name,
+                             const char* help, int (*run)(const Args&)) {
+    auto args = std::make_shared<Args>();
+    args->output.command = commandLine;
+    CLI::App* command = bench->add_subcommand(name, help);
+    command->callback([&action, args, run] { action = [args, run] { return run(*args); }; });
+    return {command, args};
+}
+
+void addSetFlag(CLI::App* command, std::vector<std::string>& sets) {
+    command->add_option("--set", sets, "override a scene key: key.path=value (repeatable)");
+}
+
+// bench spheres
+void addSpheresBench(CLI::App* bench, CommandAction& action, const std::string& commandLine) {
+    auto [s, spheres] = addBenchKind(bench, action, commandLine, "spheres",
+                                     "[Kang2008] Table 5: fps against the number of jumping fish (one sphere each)", &benchSpheres);
+    s->add_option("--counts", spheres->counts, "fish counts, comma-separated")->delimiter(',');
+    s->add_flag("--render", spheres->render, "also draw the water with the ripple layer each frame (headless)");
+    s->add_option("--size", spheres->size, "framebuffer WxH with --render (default 800x600, the paper's)");
+    s->add_option("--field", spheres->field, "ripple field cells per side (default 128)");
+    s->add_option("--radius-cells", spheres->radiusCells, "sphere radius SR in cells (default 20)")->check(FINITE_NUMBER);
+    s->add_option("--frames", spheres->frames, "measured frames per count (default 60)");
+    s->add_option("--warmup", spheres->warmup, "frames run before measuring (default 20)");
+    s->add_option("--stamping", spheres->stamping, "batched (default) or sequential (stepSphere per fish, the reference)")
+        ->check(CLI::IsMember({"batched", "sequential"}));
+    s->add_option("--seed", spheres->seed, "swarm seed (default 1)")->check(SEED);
+    s->add_option("--workers", spheres->workers, "worker threads (default 0: every core)");
+    addOutputFlags(s, spheres->output);
+}
+
+// bench fields
+void addFieldsBench(CLI::App* bench, CommandAction& action, const std::string& commandLine) {
+    auto [f, fields] = addBenchKind(bench, action, commandLine, "fields",
+                                    "[Kang2008] Table 3: fps by scene and ripple field size, rendered and spheres only", &benchFields);
+    f->add_option("--sizes", fields->sizes, "ripple field sizes (ripples.resolution), comma-separated")->delimiter(',');
+    f->add_option("--scenes", fields->scenes, "scene names (config/scenes/NAME.toml) or paths, comma-separated")->delimiter(',');
+    f->add_option("--model", fields->model, "ripple model of every run: kang2008 (default, the paper's) or ewave")
+        ->check(CLI::IsMember(std::vector<std::string>(interaction::RippleModels::NAMES.begin(), interaction::RippleModels::NAMES.end())));
+    f->add_flag("--no-render", fields->noRender, "only the spheres-only rows (interaction phase, nothing drawn)");
+    f->add_option("--size", fields->size, "framebuffer WxH for the rendered rows (default 800x600, the paper's)");
+    f->add_option("--frames", fields->frames, "measured frames per point (default 30)");
+    f->add_option("--warmup", fields->warmup, "frames run before measuring (default 5)");
+    addSetFlag(f, fields->sets);
+    addOutputFlags(f, fields->output);
+}
+
+// bench ocean
+void addOceanBench(CLI::App* bench, CommandAction& action, const std::string& commandLine) {
+    auto [o, ocean] = addBenchKind(bench, action, commandLine, "ocean",
+                                   "[Lee2007] Tables 1-3: fps against spectrum size (sim + render, sim, FFT, FFTW)", &benchOcean);
+    o->add_option("--sizes", ocean->sizes, "spectrum sizes N (ocean.resolution), comma-separated")->delimiter(',');
+    o->add_option("--backend", ocean->backendWords, "cpu, gpu or both, comma-separated")->delimiter(',');
+    o->add_option("--scene", ocean->scene, "scene drawn for sim + render (default config/scenes/default.toml)");
+    o->add_option("--size", ocean->size, "framebuffer WxH for sim + render (default 1280x1024, the paper's)");
+    o->add_flag("--no-render", ocean->noRender, "skip the sim + render column");
+    o->add_option("--frames", ocean->frames, "measured frames or updates per point (default 20)");
+    o->add_option("--warmup", ocean->warmup, "frames or updates run before measuring (default 3)");
+    addSetFlag(o, ocean->sets);
+    addOutputFlags(o, ocean->output);
+}
+
+// bench frame SCENE
+void addFrameBench(CLI::App* bench, CommandAction& action, const std::string& commandLine) {
+    auto [r, frame] = addBenchKind(bench, action, commandLine, "frame", "every per-phase CPU and GPU time of one scene's frame", &benchFrame);
+    r->add_option("scene", frame->scene, "scene name (config/scenes/NAME.toml) or path")->required();
+    r->add_option("--size", frame->size, "framebuffer WxH (default: the scene's [window])");
+    r->add_option("--frames", frame->frames, "measured frames (default 60)");
+    r->add_option("--warmup", frame->warmup, "frames run before measuring (default 10)");
+    addSetFlag(r, frame->sets);
+    addOutputFlags(r, frame->output);
+}
+
+// bench sea [SCENE]
+void addSeaBench(CLI::App* bench, CommandAction& action, const std::string& commandLine) {
+    auto [e, sea] = addBenchKind(bench, action, commandLine, "sea",
+                                 "frame times across a live change of the sea (cross-fade): max frame / median", &benchSea);
+    e->add_option("scene", sea->scene, "scene name (config/scenes/NAME.toml) or path (default: default)");
+    e->add_option("--size", sea->size, "framebuffer WxH (default: the scene's [window])");
+    e->add_option("--preset", sea->preset, "the change: calm, breeze or storm (default storm)")->check(CLI::IsMember({"calm", "breeze", "storm"}));
+    e->add_option("--before", sea->before, "measured frames before the change (default 60)");
+    e->add_option("--after", sea->after, "measured frames from the change on (default 150)");
+    e->add_option("--warmup", sea->warmup, "frames run before measuring (default 30)");
+    e->add_option("--runs", sea->runs, "runs, each a fresh world (default 3)");
+    addSetFlag(e, sea->sets);
+    addOutputFlags(e, sea->output);
+}
+
+} // namespace
+
 void addBenchCommand(CLI::App& app, CommandAction& action, const std::string& commandLine) {
     CLI::App* bench = app.add_subcommand("bench", "benchmarks that reproduce the papers' tables (spheres, fields, ocean, frame, sea)");
     bench->require_subcommand(0, 1);
@@ -219,83 +318,11 @@ void addBenchCommand(CLI::App& app, CommandAction& action, const std::string& co
             return EXIT_BAD_INPUT;
         };
     });
-
-    // bench spheres
-    auto spheres = std::make_shared<SpheresBenchArgs>();
-    spheres->output.command = commandLine;
-    CLI::App* s = bench->add_subcommand("spheres", "[Kang2008] Table 5: fps against the number of jumping fish (one sphere each)");
-    s->add_option("--counts", spheres->counts, "fish counts, comma-separated")->delimiter(',');
-    s->add_flag("--render", spheres->render, "also draw the water with the ripple layer each frame (headless)");
-    s->add_option("--size", spheres->size, "framebuffer WxH with --render (default 800x600, the paper's)");
-    s->add_option("--field", spheres->field, "ripple field cells per side (default 128)");
-    s->add_option("--radius-cells", spheres->radiusCells, "sphere radius SR in cells (default 20)")->check(FINITE_NUMBER);
-    s->add_option("--frames", spheres->frames, "measured frames per count (default 60)");
-    s->add_option("--warmup", spheres->warmup, "frames run before measuring (default 20)");
-    s->add_option("--stamping", spheres->stamping, "batched (default) or sequential (stepSphere per fish, the reference)")
-        ->check(CLI::IsMember({"batched", "sequential"}));
-    s->add_option("--seed", spheres->seed, "swarm seed (default 1)")->check(SEED);
-    s->add_option("--workers", spheres->workers, "worker threads (default 0: every core)");
-    addOutputFlags(s, spheres->output);
-    s->callback([&action, spheres] { action = [spheres] { return benchSpheres(*spheres); }; });
-
-    // bench fields
-    auto fields = std::make_shared<FieldsBenchArgs>();
-    fields->output.command = commandLine;
-    CLI::App* f = bench->add_subcommand("fields", "[Kang2008] Table 3: fps by scene and ripple field size, rendered and spheres only");
-    f->add_option("--sizes", fields->sizes, "ripple field sizes (ripples.resolution), comma-separated")->delimiter(',');
-    f->add_option("--scenes", fields->scenes, "scene names (config/scenes/NAME.toml) or paths, comma-separated")->delimiter(',');
-    f->add_option("--model", fields->model, "ripple model of every run: kang2008 (default, the paper's) or ewave")
-        ->check(CLI::IsMember(std::vector<std::string>(interaction::RippleModels::NAMES.begin(), interaction::RippleModels::NAMES.end())));
-    f->add_flag("--no-render", fields->noRender, "only the spheres-only rows (interaction phase, nothing drawn)");
-    f->add_option("--size", fields->size, "framebuffer WxH for the rendered rows (default 800x600, the paper's)");
-    f->add_option("--frames", fields->frames, "measured frames per point (default 30)");
-    f->add_option("--warmup", fields->warmup, "frames run before measuring (default 5)");
-    f->add_option("--set", fields->sets, "override a scene key: key.path=value (repeatable)");
-    addOutputFlags(f, fields->output);
-    f->callback([&action, fields] { action = [fields] { return benchFields(*fields); }; });
-
-    // bench ocean
-    auto ocean = std::make_shared<OceanBenchArgs>();
-    ocean->output.command = commandLine;
-    CLI::App* o = bench->add_subcommand("ocean", "[Lee2007] Tables 1-3: fps against spectrum size (sim + render, sim, FFT, FFTW)");
-    o->add_option("--sizes", ocean->sizes, "spectrum sizes N (ocean.resolution), comma-separated")->delimiter(',');
-    o->add_option("--backend", ocean->backendWords, "cpu, gpu or both, comma-separated")->delimiter(',');
-    o->add_option("--scene", ocean->scene, "scene drawn for sim + render (default config/scenes/default.toml)");
-    o->add_option("--size", ocean->size, "framebuffer WxH for sim + render (default 1280x1024, the paper's)");
-    o->add_flag("--no-render", ocean->noRender, "skip the sim + render column");
-    o->add_option("--frames", ocean->frames, "measured frames or updates per point (default 20)");
-    o->add_option("--warmup", ocean->warmup, "frames or updates run before measuring (default 3)");
-    o->add_option("--set", ocean->sets, "override a scene key: key.path=value (repeatable)");
-    addOutputFlags(o, ocean->output);
-    o->callback([&action, ocean] { action = [ocean] { return benchOcean(*ocean); }; });
-
-    // bench frame SCENE
-    auto frame = std::make_shared<FrameBenchArgs>();
-    frame->output.command = commandLine;
-    CLI::App* r = bench->add_subcommand("frame", "every per-phase CPU and GPU time of one scene's frame");
-    r->add_option("scene", frame->scene, "scene name (config/scenes/NAME.toml) or path")->required();
-    r->add_option("--size", frame->size, "framebuffer WxH (default: the scene's [window])");
-    r->add_option("--frames", frame->frames, "measured frames (default 60)");
-    r->add_option("--warmup", frame->warmup, "frames run before measuring (default 10)");
-    r->add_option("--set", frame->sets, "override a scene key: key.path=value (repeatable)");
-    addOutputFlags(r, frame->output);
-    r->callback([&action, frame] { action = [frame] { return benchFrame(*frame); }; });
-
-    // bench sea [SCENE]
-    auto sea = std::make_shared<SeaBenchArgs>();
-    sea->output.command = commandLine;
-    CLI::App* e = bench->add_subcommand("sea", "frame times across a live change of the sea (cross-fade): max frame / median");
-    e->add_option("scene", sea->scene, "scene name (config/scenes/NAME.toml) or path (default: default)");
-    e->add_option("--size", sea->size, "framebuffer WxH (default: the scene's [window])");
-    e->add_option("--preset", sea->preset, "the change: calm, breeze or storm (default storm)")->check(CLI::IsMember({"calm", "breeze", "storm"}));
-    e->add_option("--before", sea->before, "measured frames before the change (default 60)");
-    e->add_option("--after", sea->after, "measured frames from the change on (default 150)");
-    e->add_option("--warmup", sea->warmup, "frames run before measuring (default 30)");
-    e->add_option("--runs", sea->runs, "runs, each a fresh world (default 3)");
-    e->add_option("--set", sea->sets, "override a scene key: key.path=value (repeatable)");
-    addOutputFlags(e, sea->output);
-    e->callback([&action, sea] { action = [sea] { return benchSea(*sea); }; });
-
+    addSpheresBench(bench, action, commandLine);
+    addFieldsBench(bench, action, commandLine);
+    addOceanBench(bench, action, commandLine);
+    addFrameBench(bench, action, commandLine);
+    addSeaBench(bench, action, commandLine);
     // A word that is no kind lands in bench's extras and is named in the message (set after
     // the subcommands, which would otherwise inherit it).
     bench->allow_extras();

@@ -1,6 +1,7 @@
 // Waterline footprints of the obstructing bodies.
 #include "sim/obstacles.h"
 
+#include "assets/hull_outline.h"
 #include "ecs/components.h"
 #include "water/water_query.h"
 
@@ -116,6 +117,21 @@ std::vector<interaction::ObstacleShape> obstacleFootprints(ecs::World& world, co
     return shapes;
 }
 
+namespace {
+
+// The outline of the model `look` draws over the box of half extents `half` (the body's
+// frame), from the world's cache (made there on first use).
+std::shared_ptr<const assets::HullOutline> outlineOf(ecs::World& world, const Renderable& look, glm::vec3 half) {
+    auto* cache = world.resource<HullOutlines>();
+    if (!cache) cache = &world.setResource(std::make_unique<HullOutlines>());
+    const glm::vec3 box = half / look.scale;  // the box in the model's metres
+    auto& outline = cache->byModel[{look.model, box.x, box.y, box.z}];
+    if (!outline) outline = std::make_shared<const assets::HullOutline>(assets::hullOutline(assets::loadGltfModel(look.model), -box, box));
+    return outline;
+}
+
+} // namespace
+
 std::vector<gfx::HullClip> hullClips(ecs::World& world) {
     std::vector<gfx::HullClip> clips;
     auto& obstacles = world.pool<Obstacle>();
@@ -128,7 +144,7 @@ std::vector<gfx::HullClip> hullClips(ecs::World& world) {
         gfx::HullClip c;
         c.worldToHull = glm::scale(glm::mat4(1.0f), 1.0f / o.half) * glm::mat4_cast(glm::conjugate(t->rotation)) *
                         glm::translate(glm::mat4(1.0f), -t->position);
-        c.plan = look && !look->model.empty() ? gfx::HullClip::Plan::Ship : gfx::HullClip::Plan::Box;
+        if (look && !look->model.empty()) c.outline = outlineOf(world, *look, o.half);
         clips.push_back(c);
     }
     return clips;

@@ -7,7 +7,11 @@
 
 #include <glm/gtc/quaternion.hpp>
 #include <glm/vec3.hpp>
+#include <map>
+#include <memory>
 #include <optional>
+#include <string>
+#include <tuple>
 #include <vector>
 
 namespace ob::water {
@@ -38,8 +42,15 @@ std::optional<interaction::ObstacleShape> hullWaterplane(const glm::vec3& half, 
 /// (Obstacle::hollow).
 std::vector<interaction::ObstacleShape> obstacleFootprints(ecs::World& world, const water::WaterQuery* water);
 
+/// The hulls' clip outlines taken from their models (a resource of the world, made on first
+/// use): one a model file and box.
+struct HullOutlines {
+    std::map<std::tuple<std::string, float, float, float>, std::shared_ptr<const assets::HullOutline>> byModel;
+};
+
 /// Every hull's clip volume for the renderer (gfx::HullClip: no water drawn inside it): its
-/// box from the Obstacle, the ship model's outline when it is drawn with a model, else the box.
+/// box from the Obstacle, the outline of the model it is drawn with (assets::hullOutline, made
+/// once a model and box), else the box.
 std::vector<gfx::HullClip> hullClips(ecs::World& world);
 
 } // namespace ob::game

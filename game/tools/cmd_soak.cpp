@@ -306,96 +306,133 @@ static void reportSoak(Sandbox& sandbox, const std::string& scenePath, const Soa
     }
 }
 
+namespace {
+
+// The soak's bounds as they stand: the scene's (its stamps and sea) and those in force. The
+// ripple bound holds from the end of the warm-up: a dense swarm's stamps chain through eq. 5's
+// base (each fish stamps over the field the others left) to several stamps' height, a damped
+// random walk with no a-priori bound. Until then only finiteness is checked; after it, the
+// larger of the stamp bound and 4 × the warm-up's maximum, which a blow-up (growth without
+// bound) crosses and the stationary walk does not.
+struct SoakLimits {
+    SoakBounds scene;
+    SoakBounds now;
+
+    explicit SoakLimits(Sandbox& sandbox) : scene(soakBounds(sandbox)), now(scene) {
+        now.ripple = now.surface = std::numeric_limits<float>::infinity();
+    }
+    // The ripple bound in force becomes `ripple`; the surface's follows it.
+    void holdRipple(float ripple) {
+        now.ripple = ripple;
+        now.surface = scene.surface - scene.ripple + ripple;
+    }
+};
+
+// Bodies may start above the water (dropped in): each one's ceiling is the higher of its start
+// and the sea, plus its extents.
+std::vector<float> bodyCeilings(Sandbox& sandbox, const SoakBounds& scene) {
+    auto& bodies = sandbox.world().pool<Body>();
+    std::vector<float> ceiling;
+    for (size_t i = 0; i < bodies.size(); ++i) {
+        const float start = sandbox.world().get<ecs::Transform>(bodies.entities()[i]).position.y;
+        ceiling.push_back(std::max(start, 0.0f) + scene.surface + BODY_EXTENTS * bodyExtent(bodies.components()[i]));
+    }
+    return ceiling;
+}
+
+// A body an [[events]] entry spawns stamps too: once one enters, the stamp bound counts it
+// (the scene's objects, cannon balls and fish count from the start).
+void countEventStamps(Sandbox& sandbox, int& eventsRun, SoakLimits& limits) {
+    const auto* script = sandbox.world().resource<ScriptState>();
+    if (!script || script->fired == eventsRun) return;
+    eventsRun = script->fired;
+    const float stamps = std::max(1e-3f, RIPPLE_STAMPS * largestStamp(sandbox.world()));
+    if (stamps <= limits.scene.ripple) return;
+    limits.scene.surface += stamps - limits.scene.ripple;
+    limits.scene.ripple = stamps;
+    if (std::isfinite(limits.now.ripple)) limits.holdRipple(std::max(limits.now.ripple, stamps));
+}
+
+// No body thrown above its ceiling.
+void checkCeilings(Sandbox& sandbox, const std::vector<float>& ceiling) {
+    auto& bodies = sandbox.world().pool<Body>();
+    for (size_t i = 0; i < bodies.size() && i < ceiling.size(); ++i) {
+        const float y = sandbox.world().get<ecs::Transform>(bodies.entities()[i]).position.y;
+        if (y > ceiling[i])
+            fail(sandbox, "body " + std::to_string(i) + " (" + objectTypeName(sandbox.world(), bodies.entities()[i]) + ") was thrown to y = " +
+                              fmt(y) + " m, above its start and the sea (" + fmt(ceiling[i]) + " m)");
+    }
+}
+
+// The memory at step s; at the warm-up's end the ripple bound comes into force.
+void sampleMemory(uint64_t s, uint64_t steps, uint64_t warmup, SoakReport& report, SoakLimits& limits) {
+    if (s % RSS_EVERY_STEPS != 0 && s != steps && s != warmup) return;
+    const double rss = residentMiB();
+    report.rssMaxMiB = std::max(report.rssMaxMiB, rss);
+    if (s == warmup) {
+        report.rssWarmMiB = rss;
+        report.warmupRipple = report.maxRipple;
+        limits.holdRipple(std::max(limits.scene.ripple, RIPPLE_STAMPS * report.maxRipple));
+    }
+    if (s == steps) report.rssEndMiB = rss;
+}
+
+// Where the run is: a line that rewrites itself on a terminal, else one line every 10 s.
+struct SoakProgress {
+    bool terminal = isatty(STDERR_FILENO);
+    std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now(), last = start;
+
+    void show(uint64_t s, uint64_t steps) {
+        if (std::chrono::steady_clock::now() - last <= (terminal ? std::chrono::seconds(1) : std::chrono::seconds(10))) return;
+        last = std::chrono::steady_clock::now();
+        std::fprintf(stderr, "%soceanbox: soak step %llu/%llu (%3.0f%%)%s", terminal ? "\r" : "", static_cast<unsigned long long>(s),
+                     static_cast<unsigned long long>(steps), 100.0 * double(s) / double(steps), terminal ? "" : "\n");
+    }
+    double finish() const {
+        if (terminal && std::chrono::steady_clock::now() - start > std::chrono::seconds(1)) std::fprintf(stderr, "\n");
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
+};
+
+} // namespace
+
 int soakCommand(const SceneDef& scene, const std::string& scenePath, const SoakOptions& options) {
     if (!(options.seconds > 0.0)) throw InputError("soak: --seconds must be > 0");
     if (options.checkEvery < 1) throw InputError("soak: --check-every must be >= 1");
     if (!options.stats.empty()) checkWritable(options.stats, "stats");
 
     Sandbox sandbox(scene);  // no platform: simulation phases only
-    // The ripple bound holds from the end of the warm-up: a dense swarm's stamps chain through
-    // eq. 5's base (each fish stamps over the field the others left) to several stamps' height,
-    // a damped random walk with no a-priori bound. Until then only finiteness is checked; after
-    // it, the larger of the stamp bound and 4 × the warm-up's maximum, which a blow-up (growth
-    // without bound) crosses and the stationary walk does not.
-    SoakBounds sceneBounds = soakBounds(sandbox);
-    SoakBounds bounds = sceneBounds;
-    bounds.ripple = bounds.surface = std::numeric_limits<float>::infinity();
+    SoakLimits limits(sandbox);
     const uint64_t steps = uint64_t(std::llround(options.seconds * double(scene.sim.step_hz)));
     const uint64_t warmup =
         std::max<uint64_t>(1, std::min<uint64_t>(uint64_t(WARMUP_SECONDS * double(scene.sim.step_hz)), steps / 10));
     logInfo("soak: %s, %llu steps (%g s simulated), invariants every %d step(s)", scenePath.c_str(),
             static_cast<unsigned long long>(steps), options.seconds, options.checkEvery);
-
-    // Bodies may start above the water (dropped in): the ceiling is the higher of start and sea.
-    auto& bodies = sandbox.world().pool<Body>();
-    std::vector<float> ceiling;
-    for (size_t i = 0; i < bodies.size(); ++i) {
-        const float start = sandbox.world().get<ecs::Transform>(bodies.entities()[i]).position.y;
-        ceiling.push_back(std::max(start, 0.0f) + sceneBounds.surface + BODY_EXTENTS * bodyExtent(bodies.components()[i]));
-    }
+    const std::vector<float> ceiling = bodyCeilings(sandbox, limits.scene);
 
     SoakReport report;
     report.rssStartMiB = report.rssMaxMiB = residentMiB();
     report.rssWarmMiB = report.rssStartMiB;
-    checkSoakInvariants(sandbox, bounds, report);
-    const bool terminal = isatty(STDERR_FILENO);
-    const auto start = std::chrono::steady_clock::now();
-    auto lastProgress = start;
+    checkSoakInvariants(sandbox, limits.now, report);
+    SoakProgress progress;
     int eventsRun = 0;
     for (uint64_t s = 1; s <= steps; ++s) {
         sandbox.step();
-        // A body an [[events]] entry spawns stamps too: once one enters, the stamp bound counts
-        // it (the scene's objects, cannon balls and fish count from the start).
-        if (const auto* script = sandbox.world().resource<ScriptState>(); script && script->fired != eventsRun) {
-            eventsRun = script->fired;
-            const float stamps = std::max(1e-3f, RIPPLE_STAMPS * largestStamp(sandbox.world()));
-            if (stamps > sceneBounds.ripple) {
-                const float grown = stamps - sceneBounds.ripple;
-                sceneBounds.ripple = stamps;
-                sceneBounds.surface += grown;
-                if (std::isfinite(bounds.ripple)) {
-                    bounds.ripple = std::max(bounds.ripple, stamps);
-                    bounds.surface = sceneBounds.surface - sceneBounds.ripple + bounds.ripple;
-                }
-            }
-        }
+        countEventStamps(sandbox, eventsRun, limits);
         if (s % uint64_t(options.checkEvery) == 0 || s == steps) {
-            checkSoakInvariants(sandbox, bounds, report);
-            for (size_t i = 0; i < bodies.size() && i < ceiling.size(); ++i) {
-                const float y = sandbox.world().get<ecs::Transform>(bodies.entities()[i]).position.y;
-                if (y > ceiling[i])
-                    fail(sandbox, "body " + std::to_string(i) + " (" + objectTypeName(sandbox.world(), bodies.entities()[i]) + ") was thrown to y = " +
-                                      fmt(y) + " m, above its start and the sea (" + fmt(ceiling[i]) + " m)");
-            }
+            checkSoakInvariants(sandbox, limits.now, report);
+            checkCeilings(sandbox, ceiling);
         }
-        if (s % RSS_EVERY_STEPS == 0 || s == steps || s == warmup) {
-            const double rss = residentMiB();
-            report.rssMaxMiB = std::max(report.rssMaxMiB, rss);
-            if (s == warmup) {
-                report.rssWarmMiB = rss;
-                report.warmupRipple = report.maxRipple;
-                bounds.ripple = std::max(sceneBounds.ripple, RIPPLE_STAMPS * report.maxRipple);
-                bounds.surface = sceneBounds.surface - sceneBounds.ripple + bounds.ripple;
-            }
-            if (s == steps) report.rssEndMiB = rss;
-        }
-        // Where the run is: a line that rewrites itself on a terminal, else one line every 10 s.
-        if (std::chrono::steady_clock::now() - lastProgress > (terminal ? std::chrono::seconds(1) : std::chrono::seconds(10))) {
-            lastProgress = std::chrono::steady_clock::now();
-            std::fprintf(stderr, "%soceanbox: soak step %llu/%llu (%3.0f%%)%s", terminal ? "\r" : "",
-                         static_cast<unsigned long long>(s), static_cast<unsigned long long>(steps),
-                         100.0 * double(s) / double(steps), terminal ? "" : "\n");
-        }
+        sampleMemory(s, steps, warmup, report, limits);
+        progress.show(s, steps);
     }
-    if (terminal && std::chrono::steady_clock::now() - start > std::chrono::seconds(1)) std::fprintf(stderr, "\n");
+    report.wallSeconds = progress.finish();
     report.steps = steps;
     report.simulatedSeconds = sandbox.schedule().simTime();
-    report.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     const double growth = report.rssEndMiB - report.rssWarmMiB;
     const double allowed = std::max(RSS_GROWTH_MIB, RSS_GROWTH_FRACTION * report.rssWarmMiB);
-
-    reportSoak(sandbox, scenePath, options, bounds, report, growth, allowed);
+    reportSoak(sandbox, scenePath, options, limits.now, report, growth, allowed);
     if (RSS_MEANINGFUL && growth > allowed)
         fail(sandbox, "memory grew by " + fmt(growth) + " MiB after the warm-up (" + fmt(report.rssWarmMiB) + " -> " +
                           fmt(report.rssEndMiB) + " MiB), more than " + fmt(allowed) + " MiB");

@@ -187,6 +187,13 @@ static void pressKey(ecs::World& world, platform::Key key, double now) {
     }
 }
 
+// A slider on the [tools] key `key`, its range the key's own (ToolsDef's describe()), moved
+// through the live path.
+static void toolSlider(ecs::World& world, const char* label, const char* key, float value, const char* format) {
+    const Limits limits = keyLimits<ToolsDef>(key);
+    liveSlider(world, label, ("tools." + std::string(key)).c_str(), value, float(limits.min), float(limits.max), format, nullptr);
+}
+
 // The tools' palette: the tool (keys 1–5), what it drops, its sizes, what it last said.
 static void toolsPanel(ecs::World& world, double now) {
     auto* tools = world.resource<PlayerTools>();
@@ -206,12 +213,12 @@ static void toolsPanel(ecs::World& world, double now) {
     switch (def.tool) {
     case Tool::Grab:
         ImGui::TextDisabled("left drag a body; wheel: nearer/farther; release throws");
-        liveSlider(world, "spring Hz", "tools.grab_frequency_hz", def.grab_frequency_hz, 0.1f, 20.0f, "%.1f", nullptr);
+        toolSlider(world, "spring Hz", "grab_frequency_hz", def.grab_frequency_hz, "%.1f");
         break;
     case Tool::Stir:
         ImGui::TextDisabled("hold left on the water; wheel: radius, Shift + wheel: depth");
-        liveSlider(world, "radius m", "tools.stir_radius", def.stir_radius, 0.05f, 10.0f, "%.2f", nullptr);
-        liveSlider(world, "depth m", "tools.stir_depth", def.stir_depth, -10.0f, 10.0f, "%.2f", nullptr);
+        toolSlider(world, "radius m", "stir_radius", def.stir_radius, "%.2f");
+        toolSlider(world, "depth m", "stir_depth", def.stir_depth, "%.2f");
         break;
     case Tool::Drop: {
         ImGui::TextDisabled("left click on the water drops it %.0f m above", double(def.drop_height));
@@ -223,8 +230,8 @@ static void toolsPanel(ecs::World& world, double now) {
         }
         if (def.drop == DropKind::Ball) {
             // Through the live path (recorded as tools.* sets): a session that used them replays.
-            liveSlider(world, "ball radius m", "tools.ball_radius", def.ball_radius, 0.05f, 5.0f, "%.2f", nullptr);
-            liveSlider(world, "density kg/m3", "tools.ball_density", def.ball_density, 10.0f, 20000.0f, "%.0f", nullptr);
+            toolSlider(world, "ball radius m", "ball_radius", def.ball_radius, "%.2f");
+            toolSlider(world, "density kg/m3", "ball_density", def.ball_density, "%.0f");
             const float water = sceneSettings(world).def.environment.water_density;
             ImGui::TextDisabled("%s (water: %.0f kg/m3)", def.ball_density < water ? "floats" : "sinks", double(water));
         }

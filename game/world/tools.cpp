@@ -31,7 +31,6 @@ constexpr float WHEEL_FACTOR = 1.1f;         // one wheel step scales a radius o
 constexpr float THROW_SMOOTHING_S = 0.08f;   // the throw's velocity: the cursor's over about this long
 constexpr float MAX_THROW_M_S = 60.0f;
 constexpr float MAX_GRAB_ACCEL = 60.0f;      // m/s² the grab's spring gives at most (about 6 g)
-constexpr float MIN_ELEVATION_DEG = -10.0f;  // a cannon's barrel goes no lower (CannonDef)
 constexpr glm::vec3 TOOL_MARKER_COLOR{1.0f, 0.85f, 0.2f};
 constexpr glm::vec3 RING_COLOR{0.3f, 0.9f, 1.0f};
 
@@ -40,10 +39,8 @@ const water::WaterQuery* waterOf(ecs::World& world) {
     return ocean && ocean->water ? ocean->water.get() : nullptr;
 }
 
-float gravityOf(ecs::World& world) {
-    const auto* def = findPhysicsDef(world);
-    return def ? def->gravity : physics::PhysicsDef{}.gravity;
-}
+// The scene's gravity (environment.gravity, copied into [physics] when the world is built).
+float gravityOf(ecs::World& world) { return physicsDef(world).gravity; }
 
 // The ray under the cursor from the camera as it is now.
 std::optional<Ray> cursorRay(ecs::World& world, const PlayerTools& tools, glm::vec2 cursor) {
@@ -113,8 +110,7 @@ void stir(ecs::World& world, PlayerTools& tools, glm::vec3 waterPoint, float dt)
     if (tools.stirrer == ecs::Entity::None || !world.has<ecs::Transform>(tools.stirrer)) {
         tools.stirrer = world.create();
         world.add<ecs::Transform>(tools.stirrer, {centre});
-        const auto* physics = findPhysicsDef(world);
-        const float density = physics ? physics->water_density : physics::PhysicsDef{}.water_density;
+        const float density = physicsDef(world).water_density;
         world.add<ecs::Motion>(tools.stirrer, {glm::vec3(0.0f), density * 4.0f / 3.0f * float(M_PI) * r * r * r});
         interaction::BoundingSphere sphere;  // a hand pushed through the water: it pushes it down
         sphere.radius = r;
@@ -210,11 +206,11 @@ void fireAt(ecs::World& world, PlayerTools& tools, glm::vec3 point) {
     for (int k = 0; k < 3; ++k) {
         const glm::vec3 muzzle = pivot + cannonAim(c.yawDeg, elevation) * CANNON_BARREL;
         std::optional<float> e = ballisticElevationDeg(muzzle, point, c.def.muzzle_speed, gravityOf(world), false);
-        if (e && *e < MIN_ELEVATION_DEG) e = ballisticElevationDeg(muzzle, point, c.def.muzzle_speed, gravityOf(world), true);
+        if (e && *e < cannonElevationLimits().min) e = ballisticElevationDeg(muzzle, point, c.def.muzzle_speed, gravityOf(world), true);
         reachable = e.has_value();
         elevation = e ? *e : 45.0f;  // out of reach: the farthest shot
     }
-    c.elevationDeg = std::clamp(elevation, MIN_ELEVATION_DEG, 89.0f);
+    c.elevationDeg = clampElevationDeg(elevation);
     c.fireRequested = true;
     ++tools.shots;
     tools.message = reachable ? "" : "out of the cannon's reach: fired as far as it goes";
@@ -246,6 +242,45 @@ void chooseTool(ecs::World& world, PlayerTools& tools, const StepInput& input) {
         if (tools.def.tool == Tool::Drop)
             tools.def.drop = DropKind((size_t(tools.def.drop) + size_t(presses)) % enumNames<DropKind>.size());
     }
+}
+
+// The grab tool this step: a click takes the body under the cursor; while held, the wheel
+// moves it nearer or farther and the spring pulls it to the cursor's ray; let go, it is thrown.
+void grabTool(ecs::World& world, PlayerTools& tools, StepInput& input, const std::optional<BodyPick>& body,
+              const std::optional<Ray>& ray, float dt) {
+    if (input.wasClicked(platform::MouseButton::Left) && tools.grabbed == ecs::Entity::None && body && world.has<Body>(body->entity)) {
+        const ecs::Transform& t = world.get<ecs::Transform>(body->entity);
+        tools.grabbed = body->entity;
+        tools.grabLocal = glm::inverse(t.rotation) * (body->point - t.position);
+        tools.holdDistance = body->distance;
+        tools.target = body->point;
+        tools.targetVelocity = glm::vec3(0.0f);
+    }
+    if (tools.grabbed == ecs::Entity::None || !ray) return;
+    tools.holdDistance = std::clamp(tools.holdDistance * std::pow(WHEEL_FACTOR, input.scroll), 1.0f, 500.0f);
+    input.scroll = 0.0f;  // the wheel is the hold distance's, not the camera's
+    const glm::vec3 target = ray->at(tools.holdDistance);
+    const float blend = 1.0f - std::exp(-dt / THROW_SMOOTHING_S);
+    tools.targetVelocity += ((target - tools.target) / std::max(dt, 1e-6f) - tools.targetVelocity) * blend;
+    tools.target = target;
+    if (input.isDown(platform::MouseButton::Left)) pullGrabbed(world, tools, dt);
+    else release(world, tools);
+}
+
+// The stir tool this step: while held, the wheel sizes the sphere (Shift: its depth, each within
+// its key's range) and the sphere follows the water point.
+void stirTool(ecs::World& world, PlayerTools& tools, StepInput& input, float dt) {
+    const bool held = input.isDown(platform::MouseButton::Left);
+    if (held && (input.scroll != 0.0f)) {
+        const bool depth = input.isDown(platform::Key::Shift);
+        float& value = depth ? tools.def.stir_depth : tools.def.stir_radius;
+        const Limits limits = keyLimits<ToolsDef>(depth ? "stir_depth" : "stir_radius");
+        value = std::clamp(depth ? value + 0.1f * input.scroll : value * std::pow(WHEEL_FACTOR, input.scroll), float(limits.min),
+                           float(limits.max));
+        input.scroll = 0.0f;
+    }
+    if (held && tools.waterPoint) stir(world, tools, *tools.waterPoint, dt);
+    else stopStirring(world, tools);
 }
 
 } // namespace
@@ -282,7 +317,6 @@ void toolsSystem(ecs::World& world, const ecs::Tick& tick) {
     auto* input = world.resource<StepInput>();
     if (!tools || !input) return;
     const float dt = float(tick.dt);
-    using platform::Key;
 
     chooseTool(world, *tools, *input);
 
@@ -299,41 +333,12 @@ void toolsSystem(ecs::World& world, const ecs::Tick& tick) {
         body = pickBody(world, *ray, reach);
         if (body) tools->hoverBody = body->entity;
     }
-    const bool held = input->isDown(platform::MouseButton::Left);
     const bool clicked = input->wasClicked(platform::MouseButton::Left);
 
     // --- the tool acts
     switch (tools->def.tool) {
-    case Tool::Grab:
-        if (clicked && tools->grabbed == ecs::Entity::None && body && world.has<Body>(body->entity)) {
-            const ecs::Transform& t = world.get<ecs::Transform>(body->entity);
-            tools->grabbed = body->entity;
-            tools->grabLocal = glm::inverse(t.rotation) * (body->point - t.position);
-            tools->holdDistance = body->distance;
-            tools->target = body->point;
-            tools->targetVelocity = glm::vec3(0.0f);
-        }
-        if (tools->grabbed != ecs::Entity::None && ray) {
-            tools->holdDistance = std::clamp(tools->holdDistance * std::pow(WHEEL_FACTOR, input->scroll), 1.0f, 500.0f);
-            input->scroll = 0.0f;  // the wheel is the hold distance's, not the camera's
-            const glm::vec3 target = ray->at(tools->holdDistance);
-            const float blend = 1.0f - std::exp(-dt / THROW_SMOOTHING_S);
-            tools->targetVelocity += ((target - tools->target) / std::max(dt, 1e-6f) - tools->targetVelocity) * blend;
-            tools->target = target;
-            if (held) pullGrabbed(world, *tools, dt);
-            else release(world, *tools);
-        }
-        break;
-    case Tool::Stir:
-        if (held && (input->scroll != 0.0f)) {
-            float& value = input->isDown(Key::Shift) ? tools->def.stir_depth : tools->def.stir_radius;
-            value = input->isDown(Key::Shift) ? std::clamp(value + 0.1f * input->scroll, -10.0f, 10.0f)
-                                              : std::clamp(value * std::pow(WHEEL_FACTOR, input->scroll), 0.05f, 10.0f);
-            input->scroll = 0.0f;
-        }
-        if (held && tools->waterPoint) stir(world, *tools, *tools->waterPoint, dt);
-        else stopStirring(world, *tools);
-        break;
+    case Tool::Grab: grabTool(world, *tools, *input, body, ray, dt); break;
+    case Tool::Stir: stirTool(world, *tools, *input, dt); break;
     case Tool::Drop:
         if (clicked && tools->waterPoint && world.resource<physics::PhysicsWorld>()) {
             const float yaw = ray ? glm::degrees(std::atan2(ray->direction.x, ray->direction.z)) : 0.0f;

@@ -33,7 +33,7 @@ const std::map<std::string, int> EXPECTED_UNITS = {
     {"u_reflection", REFLECTION_UNIT}, {"u_refraction", REFRACTION_UNIT}, {"u_detail", DETAIL_UNIT},
     {"u_reflectionDepth", REFLECTION_DEPTH_UNIT}, {"u_foamMap", FOAM_UNIT}, {"u_rippleSlopes", RIPPLE_SLOPES_UNIT},
     {"u_foamPattern", FOAM_PATTERN_UNIT}, {"u_source", POST_SOURCE_UNIT}, {"u_rippleLevels", RIPPLE_LEVELS_UNIT},
-    {"u_rippleLevelSlopes", RIPPLE_LEVEL_SLOPES_UNIT}, {"u_sceneDepth", SCENE_DEPTH_UNIT},
+    {"u_rippleLevelSlopes", RIPPLE_LEVEL_SLOPES_UNIT}, {"u_sceneDepth", SCENE_DEPTH_UNIT}, {"u_hullOutlines", HULL_OUTLINE_UNIT},
 };
 const std::map<std::string, int> EXPECTED_IMAGES = {{"u_displacement", OCEAN_DISPLACEMENT_IMAGE}, {"u_slopes", OCEAN_SLOPES_IMAGE}};
 const std::map<std::string, int> EXPECTED_LOCATIONS = {
@@ -59,7 +59,7 @@ const std::map<std::string, size_t> CPP_OFFSETS = {
     MEMBER(FrameUniforms, viewProjection), MEMBER(FrameUniforms, inverseViewProjection), MEMBER(FrameUniforms, cameraPositionTime),
     MEMBER(FrameUniforms, sunDirectionFresnel), MEMBER(FrameUniforms, waterColorExposure), MEMBER(FrameUniforms, viewport),
     MEMBER(FrameUniforms, surfaceClip), MEMBER(FrameUniforms, depthParams), MEMBER(FrameUniforms, shading),
-    MEMBER(FrameUniforms, switches), MEMBER(FrameUniforms, waterline), MEMBER(FrameUniforms, sky), ARRAY(WaterUniforms, corner), MEMBER(WaterUniforms, cascadeSize),
+    MEMBER(FrameUniforms, switches), MEMBER(FrameUniforms, waterline), MEMBER(FrameUniforms, sky), MEMBER(FrameUniforms, sunLight), ARRAY(WaterUniforms, corner), MEMBER(WaterUniforms, cascadeSize),
     MEMBER(WaterUniforms, waterParams), MEMBER(WaterUniforms, gridParams), MEMBER(WaterUniforms, rippleParams),
     MEMBER(WaterUniforms, foamParams), MEMBER(WaterUniforms, cascadeFade), MEMBER(WaterUniforms, cascadeFadeEnd),
     MEMBER(WaterUniforms, farFade), MEMBER(WaterUniforms, cascadeSlopeVariance), MEMBER(WaterUniforms, glitterParams),
@@ -173,7 +173,7 @@ void renderEverything(gfx::Renderer& renderer, const ocean::OceanTextures& textu
     ship.model = glm::scale(glm::mat4(1.0f), glm::vec3(8.0f));
     gfx::ObjectDraw ball;  // small, across the surface: the tangent plane cut
     ball.model = glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(3.0f, 0.0f, 0.0f)), glm::vec3(0.5f));
-    water.hulls.push_back({glm::inverse(ship.model), gfx::HullClip::Plan::Box});
+    water.hulls.push_back({glm::inverse(ship.model), nullptr});
     const std::vector<gfx::SplashDrop> drops = {glm::vec4(0.0f, 1.0f, 0.0f, 0.05f)};
     renderer.render(camera, water, {ship, ball}, 0.0, {160, 90}, drops);
 }

@@ -50,7 +50,7 @@ Image render(bool clip, const gfx::CameraView& cam, std::vector<float>* depth = 
     hull.model = glm::translate(glm::mat4(1.0f), CENTRE) * glm::scale(glm::mat4(1.0f), HALF);  // the unit box is [−1, 1]³
     hull.color = glm::vec3(0.8f, 0.1f, 0.1f);
     gfx::WaterView water;
-    water.hulls.push_back({glm::scale(glm::mat4(1.0f), 1.0f / HALF) * glm::translate(glm::mat4(1.0f), -CENTRE), gfx::HullClip::Plan::Box});
+    water.hulls.push_back({glm::scale(glm::mat4(1.0f), 1.0f / HALF) * glm::translate(glm::mat4(1.0f), -CENTRE), nullptr});
     renderer.render(cam, water, {hull}, 0.0, SIZE);
     const std::string path = test::tempPath(clip ? "hull_clip_on.png" : "hull_clip_off.png");
     gfx::writeScreenshot(path, SIZE);

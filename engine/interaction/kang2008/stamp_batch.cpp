@@ -235,13 +235,78 @@ void StampBatch::applyBandForward(RippleField& field, int z0, int z1) {
     }
 }
 
-void StampBatch::applyBandBackward(RippleField& field, int z0, int z1) {
+// Writes the cells of row z that stamp s reaches and no newer stamp has written, in runs merged
+// across the coverage words, each in one go, and marks them final. Returns how many it wrote;
+// `visited` grows by the cells it looked at.
+int StampBatch::writeOpenCells(const Stamp& s, int z, float* cur, float* prev, long& visited) {
+    const int cols = m_cols;
+    const FootprintRow& r = s.fp->rows[size_t(z - s.cz + s.reach)];
+    const int x0 = s.cx + r.dx0;
+    const int a = std::max(x0, 1), b = std::min(x0 + r.count, cols - 1);
+    if (a >= b) return 0;
+    visited += b - a;
+    uint64_t* bits = m_covered.data() + size_t(z) * size_t(m_words);
+    const float* ph = s.fp->ph.data() + r.offset;  // PH of column x at ph[x − x0]
+    float* curRow = cur + size_t(z) * size_t(cols);
+    float* prevRow = prev + size_t(z) * size_t(cols);
+    int runStart = 0, runEnd = 0, written = 0;
+    const auto flush = [&] {
+        if (runEnd > runStart)
+            writeCells(curRow + runStart, prevRow + runStart, ph + (runStart - x0), runEnd - runStart, s.base, s.heightScale, s.af);
+    };
+    for (int w = a >> 6; w <= (b - 1) >> 6; ++w) {
+        const int lo = std::max(a, w << 6), hi = std::min(b, (w + 1) << 6);
+        const uint64_t mask = bitRange(lo - (w << 6), hi - (w << 6));
+        uint64_t free = mask & ~bits[w];
+        if (!free) continue;
+        bits[w] |= mask;
+        while (free) {
+            const int first = std::countr_zero(free);
+            const uint64_t rest = ~(free >> first);  // ones from the first covered bit up
+            const int len = std::countr_zero(rest);  // rest != 0: the shift brought in zeros
+            const int start = (w << 6) + first;
+            written += len;
+            if (start != runEnd) {
+                flush();
+                runStart = start;
+            }
+            runEnd = start + len;
+            free &= len == 64 ? 0 : ~(((uint64_t(1) << len) - 1) << first);
+        }
+    }
+    flush();
+    return written;
+}
+
+// Closes the cells of rows [z0, z1) that no stamp reaches (reachableRows) and returns how many
+// interior cells stay open; −1 (nothing closed) when the reach was not worth computing.
+long StampBatch::closeUnreached(int z0, int z1) {
     const int cols = m_cols, words = m_words;
+    thread_local std::vector<uint64_t> reach;
+    if (!reachableRows(z0, z1, reach)) return -1;
+    long left = 0;
+    for (int z = z0; z < z1; ++z) {
+        uint64_t* bits = m_covered.data() + size_t(z) * size_t(words);
+        const uint64_t* in = reach.data() + size_t(z - z0) * size_t(words);
+        int open = 0;
+        for (int w = 0; w < words; ++w) {
+            const int lo = std::max(1, w << 6), hi = std::min(cols - 1, (w + 1) << 6);
+            const uint64_t interior = lo < hi ? bitRange(lo - (w << 6), hi - (w << 6)) : 0;
+            open += std::popcount(in[w] & ~bits[w] & interior);
+            bits[w] |= ~in[w];
+        }
+        m_rowLeft[size_t(z)] = open;
+        left += open;
+    }
+    return left;
+}
+
+void StampBatch::applyBandBackward(RippleField& field, int z0, int z1) {
     float* const cur = field.current().data();
     float* const prev = field.previous().data();
-    std::fill(m_covered.begin() + long(z0) * words, m_covered.begin() + long(z1) * words, 0);
-    std::fill(m_rowLeft.begin() + z0, m_rowLeft.begin() + z1, cols - 2);
-    const long bandCells = long(z1 - z0) * long(cols - 2);
+    std::fill(m_covered.begin() + long(z0) * m_words, m_covered.begin() + long(z1) * m_words, 0);
+    std::fill(m_rowLeft.begin() + z0, m_rowLeft.begin() + z1, m_cols - 2);
+    const long bandCells = long(z1 - z0) * long(m_cols - 2);
     long left = bandCells;
     // Stagnation: cells looked at and written since the last check, one check per band's worth.
     long visited = 0, writtenSince = 0;
@@ -253,45 +318,7 @@ void StampBatch::applyBandBackward(RippleField& field, int z0, int z1) {
         const int za = std::max(s.cz - s.reach, z0), zb = std::min(s.cz + s.reach + 1, z1);
         for (int z = za; z < zb; ++z) {
             if (m_rowLeft[size_t(z)] == 0) continue;
-            const FootprintRow& r = s.fp->rows[size_t(z - s.cz + s.reach)];
-            const int x0 = s.cx + r.dx0;
-            const int a = std::max(x0, 1), b = std::min(x0 + r.count, cols - 1);
-            if (a >= b) continue;
-            visited += b - a;
-            uint64_t* bits = m_covered.data() + size_t(z) * size_t(words);
-            const float* ph = s.fp->ph.data() + r.offset;  // PH of column x at ph[x − x0]
-            float* curRow = cur + size_t(z) * size_t(cols);
-            float* prevRow = prev + size_t(z) * size_t(cols);
-            // Runs of cells not yet final, merged across words, each written in one go.
-            int runStart = 0, runEnd = 0, written = 0;
-            const auto flush = [&] {
-                if (runEnd > runStart)
-                    writeCells(curRow + runStart, prevRow + runStart, ph + (runStart - x0), runEnd - runStart, s.base,
-                               s.heightScale, s.af);
-            };
-            for (int w = a >> 6; w <= (b - 1) >> 6; ++w) {
-                const int lo = std::max(a, w << 6), hi = std::min(b, (w + 1) << 6);
-                const uint64_t mask = bitRange(lo - (w << 6), hi - (w << 6));
-                uint64_t free = mask & ~bits[w];
-                if (!free) continue;
-                bits[w] |= mask;
-                while (free) {
-                    const int first = std::countr_zero(free);
-                    const uint64_t rest = ~(free >> first);  // ones from the first covered bit up
-                    const int len = std::countr_zero(rest);  // rest != 0: the shift brought in zeros
-                    const int start = (w << 6) + first;
-                    written += len;
-                    if (start == runEnd) {
-                        runEnd = start + len;
-                    } else {
-                        flush();
-                        runStart = start;
-                        runEnd = start + len;
-                    }
-                    free &= len == 64 ? 0 : ~(((uint64_t(1) << len) - 1) << first);
-                }
-            }
-            flush();
+            const int written = writeOpenCells(s, z, cur, prev, visited);
             m_rowLeft[size_t(z)] -= written;
             left -= written;
             writtenSince += written;
@@ -304,22 +331,7 @@ void StampBatch::applyBandBackward(RippleField& field, int z0, int z1) {
         writtenSince = 0;
         if (!stalled || reachTried || left == 0) continue;
         reachTried = true;
-        thread_local std::vector<uint64_t> reach;
-        if (!reachableRows(z0, z1, reach)) continue;
-        left = 0;
-        for (int z = z0; z < z1; ++z) {
-            uint64_t* bits = m_covered.data() + size_t(z) * size_t(words);
-            const uint64_t* in = reach.data() + size_t(z - z0) * size_t(words);
-            int open = 0;
-            for (int w = 0; w < words; ++w) {
-                const int lo = std::max(1, w << 6), hi = std::min(cols - 1, (w + 1) << 6);
-                const uint64_t interior = lo < hi ? bitRange(lo - (w << 6), hi - (w << 6)) : 0;
-                open += std::popcount(in[w] & ~bits[w] & interior);
-                bits[w] |= ~in[w];
-            }
-            m_rowLeft[size_t(z)] = open;
-            left += open;
-        }
+        if (const long open = closeUnreached(z0, z1); open >= 0) left = open;
     }
 }
 

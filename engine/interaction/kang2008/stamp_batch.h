@@ -98,6 +98,8 @@ private:
     void indexUpTo(size_t n) const;
     void applyBandForward(RippleField& field, int z0, int z1);
     void applyBandBackward(RippleField& field, int z0, int z1);
+    int writeOpenCells(const Stamp& s, int z, float* cur, float* prev, long& visited);
+    long closeUnreached(int z0, int z1);
     bool reachableRows(int z0, int z1, std::vector<uint64_t>& out) const;
     int tileOf(int cell, int tiles) const;
 
