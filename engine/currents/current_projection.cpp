@@ -66,12 +66,12 @@ CurrentProjection::CurrentProjection(int n, bool open) : m_n(n), m_open(open) {
     m_div = allocFloat(cells);
     m_spec = allocFloat(2 * modes);
     m_phiFft = allocFloat(cells);
-    if (open) {  // DST-I both ways (its own inverse up to 2(n + 1) per axis), out of place
+    if (open) {  // DST-II forward, DST-III back (its inverse up to 2n per axis), out of place: FFTs of 2n
         m_forward = ocean::planWithWisdom([&](unsigned flags) {
-            return fftwf_plan_r2r_2d(n, n, m_div, m_spec, FFTW_RODFT00, FFTW_RODFT00, flags);
+            return fftwf_plan_r2r_2d(n, n, m_div, m_spec, FFTW_RODFT10, FFTW_RODFT10, flags);
         });
         m_backward = ocean::planWithWisdom([&](unsigned flags) {
-            return fftwf_plan_r2r_2d(n, n, m_spec, m_phiFft, FFTW_RODFT00, FFTW_RODFT00, flags);
+            return fftwf_plan_r2r_2d(n, n, m_spec, m_phiFft, FFTW_RODFT01, FFTW_RODFT01, flags);
         });
     } else {
         m_forward = ocean::planWithWisdom([&](unsigned flags) {
@@ -83,11 +83,11 @@ CurrentProjection::CurrentProjection(int n, bool open) : m_n(n), m_open(open) {
     }
     if (!m_forward || !m_backward)
         throw RuntimeError("FFTW could not plan a " + std::to_string(n) + "×" + std::to_string(n) + " transform");
-    // φ̂ = −D̂/λ, and FFTW's unnormalised pair multiplies by n² (DST-I: (2(n + 1))²): both folded into one factor.
+    // φ̂ = −D̂/λ, and FFTW's unnormalised pair multiplies by n² (the sine pair: (2n)²): both folded into one factor.
     const double pi = std::numbers::pi, cells2 = double(cells);
     if (open) {
         m_coef.resize(cells);
-        const double half = 0.5 * pi / double(n + 1), norm = 4.0 * double(n + 1) * double(n + 1);
+        const double half = 0.5 * pi / double(n), norm = 4.0 * double(n) * double(n);
         for (int kz = 0; kz < n; ++kz)
             for (int kx = 0; kx < n; ++kx) {
                 const double sx = std::sin(half * (kx + 1)), sz = std::sin(half * (kz + 1));
@@ -167,11 +167,38 @@ void CurrentProjection::applyGradient(float* u, float* v, const float* phi, cons
     });
 }
 
-// The open edge's gradient: φ = 0 beyond the edge, so the edge faces (the west and south ghosts,
-// the east and north last faces) take φ_inside − 0; with `solid`, faces touching a wall stay 0.
+// The open edge's gradient: φ = 0 on the edge, the ring outside holding −φ_inside (the sine
+// basis' mirror), so the edge faces (the west and south ghosts, the east and north last faces)
+// take 2·φ_inside; with `solid`, faces touching a wall stay 0.
 void CurrentProjection::applyGradientOpen(float* u, float* v, const float* phi, const uint8_t* solid) const {
     const int n = m_n;
-    auto at = [&](const float* f, int i, int j) { return i < 0 || i >= n || j < 0 || j >= n ? 0.0f : f[size_t(j) * size_t(n) + size_t(i)]; };
+    if (!solid) {  // rows as vector loops, the edge faces apart
+        parallelFor(0, n, rowChunk(), [&](int lo, int hi) {
+            for (int j = lo; j < hi; ++j) {
+                const float* p = phi + size_t(j) * size_t(n);
+                float* ur = u + face(0, j);
+                float* vr = v + face(0, j);
+                ur[-1] -= 2.0f * p[0];  // the west edge face, the ghost u(−1, j)
+                for (int i = 0; i < n - 1; ++i) ur[i] -= p[i + 1] - p[i];
+                ur[n - 1] += 2.0f * p[n - 1];  // the east edge face
+                if (j < n - 1) {
+                    const float* pn = p + n;
+                    for (int i = 0; i < n; ++i) vr[i] -= pn[i] - p[i];
+                } else {
+                    for (int i = 0; i < n; ++i) vr[i] += 2.0f * p[i];  // the north edge faces
+                }
+                if (j == 0) {  // the south edge faces, the ghost row v(i, −1)
+                    float* vs = v + face(0, -1);
+                    for (int i = 0; i < n; ++i) vs[i] -= 2.0f * p[i];
+                }
+            }
+        });
+        return;
+    }
+    auto at = [&](const float* f, int i, int j) {  // beyond the edge: minus the cell inside it
+        return f[size_t(std::clamp(j, 0, n - 1)) * size_t(n) + size_t(std::clamp(i, 0, n - 1))] *
+               (i < 0 || i >= n || j < 0 || j >= n ? -1.0f : 1.0f);
+    };
     auto wall = [&](int i, int j) { return solid && i >= 0 && i < n && j >= 0 && j < n && solid[size_t(j) * size_t(n) + size_t(i)]; };
     parallelFor(-1, n, rowChunk(), [&](int lo, int hi) {
         for (int j = lo; j < hi; ++j)
@@ -198,7 +225,7 @@ void CurrentProjection::closeWallFaces(float* u, float* v, const uint8_t* solid)
 void CurrentProjection::projectPeriodic(float* u, float* v, glm::vec2 add) {
     const size_t modes = size_t(m_n) * size_t(m_n / 2 + 1);
     divergence(u, v, m_div);
-    if (m_open) {  // DST-I, φ̂ = −D̂/λ, DST-I back; no uniform part to add (it would flow out)
+    if (m_open) {  // DST-II, φ̂ = −D̂/λ, DST-III back; no uniform part to add (it would flow out)
         fftwf_execute_r2r(m_forward, m_div, m_spec);
         for (size_t m = 0; m < m_coef.size(); ++m) m_spec[m] *= m_coef[m];
         fftwf_execute_r2r(m_backward, m_spec, m_phiFft);
@@ -218,14 +245,14 @@ void CurrentProjection::projectPeriodic(float* u, float* v, glm::vec2 add) {
 // open-neighbour weight `o` 0, so a row is a vector loop over its interior.
 void CurrentProjection::applyA(const float* x, float* out, const uint8_t* solid) const {
     const int n = m_n;
-    if (m_open) {  // beyond the edge φ = 0: a cell's term with it is x_c
+    if (m_open) {  // beyond the edge −x_c (φ = 0 on the edge): a cell's term with it is 2·x_c
         for (int j = 0; j < n; ++j)
             for (int i = 0; i < n; ++i) {
                 const size_t c = size_t(j) * size_t(n) + size_t(i);
                 float sum = 0.0f;
                 if (!solid[c])
                     for (long k : {neighbour(i - 1, j), neighbour(i + 1, j), neighbour(i, j - 1), neighbour(i, j + 1)})
-                        if (k < 0 || !solid[size_t(k)]) sum += x[c] - (k < 0 ? 0.0f : x[size_t(k)]);
+                        if (k < 0 || !solid[size_t(k)]) sum += k < 0 ? 2.0f * x[c] : x[c] - x[size_t(k)];
                 out[c] = sum;
             }
         return;
@@ -260,7 +287,7 @@ void CurrentProjection::applyA(const float* x, float* out, const uint8_t* solid)
 void CurrentProjection::factor(const uint8_t* solid) {
     const int n = m_n;
     const size_t cells = size_t(n) * size_t(n);
-    // The open edge's outside (−1) counts on the diagonal (φ = 0 there), never as a neighbour.
+    // The open edge's outside (−1) counts twice on the diagonal (it holds −φ_c), never as a neighbour.
     auto neighbours = [this, n](size_t c, long out[4]) {
         const int i = int(c % size_t(n)), j = int(c / size_t(n));
         out[0] = neighbour(i - 1, j);
@@ -275,7 +302,7 @@ void CurrentProjection::factor(const uint8_t* solid) {
         long nb[4];
         neighbours(c, nb);
         double diag = 0.0, e = 0.0;
-        for (long k : nb) diag += k < 0 || openCell(k) ? 1.0 : 0.0;
+        for (long k : nb) diag += k < 0 ? 2.0 : openCell(k) ? 1.0 : 0.0;
         if (diag == 0.0) continue;  // a lone open cell: nothing flows
         e = diag;
         for (long k : nb) {

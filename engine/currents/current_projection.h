@@ -13,13 +13,14 @@
 //    faces touching walls are zeroed and the rest is solved by conjugate gradients preconditioned
 //    with the modified incomplete Cholesky factor MIC(0) (τ = 0.97), warm-started from the last
 //    step's φ, until max |D| ≤ tolerance.
-//  - Open edge (CurrentEdge::Open): the pressure departure beyond the edge is 0 (an outflow
-//    condition: φ = 0 in the ring of cells outside, so a face on the edge takes the gradient
-//    φ_inside − 0 and water leaves or enters freely). The edge faces are the padded arrays'
-//    ghost faces on the west and south (u(−1, j), v(i, −1)) and the last stored ones on the east
-//    and north (u(n − 1, j), v(i, n − 1)). A is then diagonal in the sine basis:
-//    λ(k) = 4·sin²(πk_x/(2(n + 1))) + 4·sin²(πk_z/(2(n + 1))), k = 1..n, one DST-I each way
-//    (FFTW's RODFT00); no mode is 0, so the mean flow is not kept (momentum leaves with the water).
+//  - Open edge (CurrentEdge::Open): the pressure departure on the edge is 0 (an outflow
+//    condition: the ring of cells outside holds −φ of the cell inside it, so a face on the edge
+//    takes the gradient 2·φ_inside and water leaves or enters freely). The edge faces are the
+//    padded arrays' ghost faces on the west and south (u(−1, j), v(i, −1)) and the last stored
+//    ones on the east and north (u(n − 1, j), v(i, n − 1)). A is then diagonal in the sine basis
+//    sin(πk(i + ½)/n): λ(k) = 4·sin²(πk_x/(2n)) + 4·sin²(πk_z/(2n)), k = 1..n, one DST-II forward
+//    and one DST-III back (FFTW's RODFT10, RODFT01: transforms of 2n, fast for a power of two); no
+//    mode is 0, so the mean flow is not kept (momentum leaves with the water).
 #pragma once
 #include "currents/current_layer.h"
 
