@@ -22,7 +22,7 @@ namespace ob::interaction {
 namespace {
 
 // FFTW's allocation, so every array has the alignment the plans were made for.
-float* allocFloat(size_t n) {
+float* allocTransformArray(size_t n) {
     float* p = fftwf_alloc_real(n);
     if (!p) throw RuntimeError("out of memory for the ewave ripple field");
     std::memset(p, 0, n * sizeof(float));
@@ -145,8 +145,8 @@ EWaveTransforms::EWaveTransforms(int rows, int cols, float cellSize)
     : m_rows(rows), m_cols(cols), m_specCols(cols / 2 + 1), m_cells(size_t(rows) * size_t(cols)),
       m_modes(size_t(rows) * size_t(cols / 2 + 1)), m_cellSize(cellSize) {
     for (int t = 0; t < 2; ++t) {
-        m_spec[t] = allocFloat(2 * m_modes);
-        m_change[t] = allocFloat(m_cells);
+        m_spec[t] = allocTransformArray(2 * m_modes);
+        m_change[t] = allocTransformArray(m_cells);
     }
     // Planning may overwrite the arrays (FFTW_MEASURE): they hold nothing yet. The forward
     // transform keeps its input (r2c's default): it reads the field's float copies of the state,
@@ -161,8 +161,8 @@ EWaveTransforms::EWaveTransforms(int rows, int cols, float cellSize)
         throw RuntimeError("FFTW could not plan a " + std::to_string(rows) + "×" + std::to_string(cols) + " transform");
     m_coef.resize(3 * size_t(m_rows / 2 + 1) * size_t(m_specCols));
     for (int f = 0; f < 4; ++f) {
-        m_horiz[f] = allocFloat(m_cells);
-        m_horizSpec[f] = allocFloat(2 * m_modes);
+        m_horiz[f] = allocTransformArray(m_cells);
+        m_horizSpec[f] = allocTransformArray(2 * m_modes);
     }
     m_rowSums.assign(2 * size_t(m_rows), 0.0);
     m_power.assign(m_modes, 0.0f);
