@@ -472,7 +472,7 @@ JetExit jetToTheEdge(CurrentEdge edge) {
 
 } // namespace
 
-TEST_CASE("currents: an open edge lets a jet leave the patch; the periodic one brings it back on the opposite side", "[currents]") {
+TEST_CASE("currents: an open edge lets a jet leave the patch, the periodic one brings it back on the opposite side", "[currents]") {
     const JetExit open = jetToTheEdge(CurrentEdge::Open), periodic = jetToTheEdge(CurrentEdge::Periodic);
     INFO("west strip after 40 s: open " << open.west << " m/s, periodic " << periodic.west << " m/s; momentum left: open "
                                         << open.momentum << ", periodic " << periodic.momentum << " of the jet's; open max|div|·Δ/max|u| "
