@@ -41,7 +41,7 @@ CurrentLayer::CurrentLayer(const CurrentsDef& def, float waterDensity)
     m_v.assign(padded, def.uniform.y);
     m_u0 = m_u;
     m_v0 = m_v;
-    m_projection = std::make_unique<CurrentProjection>(def.resolution);
+    m_projection = std::make_unique<CurrentProjection>(def.resolution, def.edge == CurrentEdge::Open);
     m_openCount = glm::dvec2(double(def.resolution) * double(def.resolution));
     m_sum = faceSum();
     chooseThreads();
@@ -126,8 +126,10 @@ void CurrentLayer::step(float dt) {
     m_v.swap(m_v0);
     fillGhosts();  // the other buffer's ring
     if (m_walls) zeroWallFaces();
+    // An open edge lets momentum leave with the water: no correction (it would put back what left).
+    const bool conserve = m_conserve && m_def.edge == CurrentEdge::Periodic;
     glm::dvec2 correction(0.0);
-    if (m_conserve) {
+    if (conserve) {
         const glm::dvec2 after = faceSum();
         correction = glm::dvec2(m_openCount.x > 0.0 ? (m_sum.x - after.x) / m_openCount.x : 0.0,
                                 m_openCount.y > 0.0 ? (m_sum.y - after.y) / m_openCount.y : 0.0);
@@ -145,7 +147,7 @@ void CurrentLayer::step(float dt) {
         // projection keeps Σu (k = 0), so m_sum stands.
         m_projection->projectPeriodic(m_u.data(), m_v.data(), glm::vec2(correction));
         m_wallSolve = {};
-        if (!m_conserve) m_sum = faceSum();
+        if (!conserve) m_sum = faceSum();  // (open: the sine transform has no mean mode to keep)
     }
 }
 
@@ -388,8 +390,9 @@ double CurrentLayer::fluxThrough(std::span<const uint32_t> cells) const {
     double flux = 0.0;
     for (uint32_t c : cells) {
         const int i = int(c % uint32_t(n)), j = int(c / uint32_t(n));
-        flux += std::abs(m_u[at(i, j)]) + std::abs(m_u[at((i + n - 1) % n, j)]) + std::abs(m_v[at(i, j)]) +
-                std::abs(m_v[at(i, (j + n - 1) % n)]);
+        const bool open = m_def.edge == CurrentEdge::Open;  // the west and south edge faces are the ghosts
+        flux += std::abs(m_u[at(i, j)]) + std::abs(m_u[at(open ? i - 1 : (i + n - 1) % n, j)]) + std::abs(m_v[at(i, j)]) +
+                std::abs(m_v[at(i, open ? j - 1 : (j + n - 1) % n)]);
     }
     return flux * double(m_grid.cell);
 }

@@ -99,7 +99,7 @@ public:
     /// Total horizontal momentum of the layer, kg·m/s: ρ·depth·Δ²·Σu over the open faces.
     glm::vec2 momentum() const;
     /// max |∇·u|·Δ over the open cells, m/s (the discrete divergence the projection zeroes:
-    /// face differences of the staggered grid, periodic at the patch's edges).
+    /// face differences of the staggered grid, periodic at the patch's edges or, open, with its edge faces).
     float maxDivergence() const;
     /// The velocity's flux through the faces of the cells listed (indices j·n + i), m²/s: the sum
     /// over each listed cell's four faces of |u|·Δ (tests: the flow through a wall's cells).

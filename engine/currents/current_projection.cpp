@@ -61,30 +61,55 @@ OB_VECTOR_KERNEL float updateKernel(float* __restrict phi, float* __restrict r, 
 
 } // namespace
 
-CurrentProjection::CurrentProjection(int n) : m_n(n) {
+CurrentProjection::CurrentProjection(int n, bool open) : m_n(n), m_open(open) {
     const size_t cells = size_t(n) * size_t(n), modes = size_t(n) * size_t(n / 2 + 1);
     m_div = allocFloat(cells);
     m_spec = allocFloat(2 * modes);
     m_phiFft = allocFloat(cells);
-    m_forward = ocean::planWithWisdom([&](unsigned flags) {
-        return fftwf_plan_dft_r2c_2d(n, n, m_div, reinterpret_cast<fftwf_complex*>(m_spec), flags);
-    });
-    m_backward = ocean::planWithWisdom([&](unsigned flags) {
-        return fftwf_plan_dft_c2r_2d(n, n, reinterpret_cast<fftwf_complex*>(m_spec), m_phiFft, flags);
-    });
+    if (open) {  // DST-II forward, DST-III back (its inverse up to 2n per axis), out of place: FFTs of 2n
+        m_forward = ocean::planWithWisdom([&](unsigned flags) {
+            return fftwf_plan_r2r_2d(n, n, m_div, m_spec, FFTW_RODFT10, FFTW_RODFT10, flags);
+        });
+        m_backward = ocean::planWithWisdom([&](unsigned flags) {
+            return fftwf_plan_r2r_2d(n, n, m_spec, m_phiFft, FFTW_RODFT01, FFTW_RODFT01, flags);
+        });
+    } else {
+        m_forward = ocean::planWithWisdom([&](unsigned flags) {
+            return fftwf_plan_dft_r2c_2d(n, n, m_div, reinterpret_cast<fftwf_complex*>(m_spec), flags);
+        });
+        m_backward = ocean::planWithWisdom([&](unsigned flags) {
+            return fftwf_plan_dft_c2r_2d(n, n, reinterpret_cast<fftwf_complex*>(m_spec), m_phiFft, flags);
+        });
+    }
     if (!m_forward || !m_backward)
         throw RuntimeError("FFTW could not plan a " + std::to_string(n) + "×" + std::to_string(n) + " transform");
-    // φ̂ = −D̂/λ, and FFTW's unnormalised pair multiplies by n²: both folded into one factor.
-    m_coef.resize(modes);
+    // φ̂ = −D̂/λ, and FFTW's unnormalised pair multiplies by n² (the sine pair: (2n)²): both folded into one factor.
     const double pi = std::numbers::pi, cells2 = double(cells);
-    for (int kz = 0; kz < n; ++kz)
-        for (int kx = 0; kx <= n / 2; ++kx) {
-            const double sx = std::sin(pi * kx / n), sz = std::sin(pi * kz / n);
-            const double lambda = 4.0 * (sx * sx + sz * sz);
-            m_coef[size_t(kz) * size_t(n / 2 + 1) + size_t(kx)] = lambda > 0.0 ? float(-1.0 / (lambda * cells2)) : 0.0f;
-        }
+    if (open) {
+        m_coef.resize(cells);
+        const double half = 0.5 * pi / double(n), norm = 4.0 * double(n) * double(n);
+        for (int kz = 0; kz < n; ++kz)
+            for (int kx = 0; kx < n; ++kx) {
+                const double sx = std::sin(half * (kx + 1)), sz = std::sin(half * (kz + 1));
+                m_coef[size_t(kz) * size_t(n) + size_t(kx)] = float(-1.0 / (4.0 * (sx * sx + sz * sz) * norm));
+            }
+    } else {
+        m_coef.resize(modes);
+        for (int kz = 0; kz < n; ++kz)
+            for (int kx = 0; kx <= n / 2; ++kx) {
+                const double sx = std::sin(pi * kx / n), sz = std::sin(pi * kz / n);
+                const double lambda = 4.0 * (sx * sx + sz * sz);
+                m_coef[size_t(kz) * size_t(n / 2 + 1) + size_t(kx)] = lambda > 0.0 ? float(-1.0 / (lambda * cells2)) : 0.0f;
+            }
+    }
     for (auto* v : {&m_phi, &m_r, &m_z, &m_s, &m_t, &m_precon, &m_pw, &m_q}) v->assign(cells, 0.0f);
     m_row.assign(size_t(n), 0.0f);
+}
+
+long CurrentProjection::neighbour(int i, int j) const {
+    const int n = m_n;
+    if (m_open && (i < 0 || i >= n || j < 0 || j >= n)) return -1;
+    return long(wrap(j, n)) * long(n) + long(wrap(i, n));
 }
 
 CurrentProjection::~CurrentProjection() {
@@ -104,9 +129,10 @@ void CurrentProjection::divergence(const float* u, const float* v, float* out) c
         for (int j = lo; j < hi; ++j) {
             const float* ur = u + face(0, j);
             const float* vr = v + face(0, j);
-            const float* vs = v + face(0, wrap(j - 1, n));
+            // open: the west and south edge faces are the ghosts u(−1, j), v(i, −1)
+            const float* vs = v + (m_open ? face(0, j - 1) : face(0, wrap(j - 1, n)));
             float* o = out + size_t(j) * size_t(n);
-            o[0] = (ur[0] - ur[n - 1]) + (vr[0] - vs[0]);
+            o[0] = (ur[0] - (m_open ? ur[-1] : ur[n - 1])) + (vr[0] - vs[0]);
             for (int i = 1; i < n; ++i) o[i] = (ur[i] - ur[i - 1]) + (vr[i] - vs[i]);
         }
     });
@@ -115,6 +141,7 @@ void CurrentProjection::divergence(const float* u, const float* v, float* out) c
 // u(i, j) −= φ(i + 1, j) − φ(i, j), v(i, j) −= φ(i, j + 1) − φ(i, j), periodic; with `solid`, only
 // faces between two open cells (the rest stay 0).
 void CurrentProjection::applyGradient(float* u, float* v, const float* phi, const uint8_t* solid, glm::vec2 add) const {
+    if (m_open) return applyGradientOpen(u, v, phi, solid);
     const int n = m_n;
     parallelFor(0, n, rowChunk(), [&](int lo, int hi) {
         for (int j = lo; j < hi; ++j) {
@@ -140,9 +167,71 @@ void CurrentProjection::applyGradient(float* u, float* v, const float* phi, cons
     });
 }
 
+// The open edge's gradient: φ = 0 on the edge, the ring outside holding −φ_inside (the sine
+// basis' mirror), so the edge faces (the west and south ghosts, the east and north last faces)
+// take 2·φ_inside; with `solid`, faces touching a wall stay 0.
+void CurrentProjection::applyGradientOpen(float* u, float* v, const float* phi, const uint8_t* solid) const {
+    const int n = m_n;
+    if (!solid) {  // rows as vector loops, the edge faces apart
+        parallelFor(0, n, rowChunk(), [&](int lo, int hi) {
+            for (int j = lo; j < hi; ++j) {
+                const float* p = phi + size_t(j) * size_t(n);
+                float* ur = u + face(0, j);
+                float* vr = v + face(0, j);
+                ur[-1] -= 2.0f * p[0];  // the west edge face, the ghost u(−1, j)
+                for (int i = 0; i < n - 1; ++i) ur[i] -= p[i + 1] - p[i];
+                ur[n - 1] += 2.0f * p[n - 1];  // the east edge face
+                if (j < n - 1) {
+                    const float* pn = p + n;
+                    for (int i = 0; i < n; ++i) vr[i] -= pn[i] - p[i];
+                } else {
+                    for (int i = 0; i < n; ++i) vr[i] += 2.0f * p[i];  // the north edge faces
+                }
+                if (j == 0) {  // the south edge faces, the ghost row v(i, −1)
+                    float* vs = v + face(0, -1);
+                    for (int i = 0; i < n; ++i) vs[i] -= 2.0f * p[i];
+                }
+            }
+        });
+        return;
+    }
+    auto at = [&](const float* f, int i, int j) {  // beyond the edge: minus the cell inside it
+        return f[size_t(std::clamp(j, 0, n - 1)) * size_t(n) + size_t(std::clamp(i, 0, n - 1))] *
+               (i < 0 || i >= n || j < 0 || j >= n ? -1.0f : 1.0f);
+    };
+    auto wall = [&](int i, int j) { return solid && i >= 0 && i < n && j >= 0 && j < n && solid[size_t(j) * size_t(n) + size_t(i)]; };
+    parallelFor(-1, n, rowChunk(), [&](int lo, int hi) {
+        for (int j = lo; j < hi; ++j)
+            for (int i = -1; i < n; ++i) {
+                // u(i, j) between cells (i, j) and (i + 1, j): rows 0..n − 1; v(i, j) between (i, j) and (i, j + 1): columns 0..n − 1
+                if (j >= 0 && !wall(i, j) && !wall(i + 1, j)) u[face(i, j)] -= at(phi, i + 1, j) - at(phi, i, j);
+                if (i >= 0 && !wall(i, j) && !wall(i, j + 1)) v[face(i, j)] -= at(phi, i, j + 1) - at(phi, i, j);
+            }
+    });
+}
+
+// No flow through any face of a wall cell (open edge: the edge faces beside a wall cell too).
+void CurrentProjection::closeWallFaces(float* u, float* v, const uint8_t* solid) const {
+    const int n = m_n;
+    auto wall = [&](long c) { return c >= 0 && solid[size_t(c)]; };
+    for (int j = m_open ? -1 : 0; j < n; ++j)
+        for (int i = m_open ? -1 : 0; i < n; ++i) {
+            const bool here = wall(neighbour(i, j));
+            if (j >= 0 && (here || wall(neighbour(i + 1, j)))) u[face(i, j)] = 0.0f;
+            if (i >= 0 && (here || wall(neighbour(i, j + 1)))) v[face(i, j)] = 0.0f;
+        }
+}
+
 void CurrentProjection::projectPeriodic(float* u, float* v, glm::vec2 add) {
     const size_t modes = size_t(m_n) * size_t(m_n / 2 + 1);
     divergence(u, v, m_div);
+    if (m_open) {  // DST-II, φ̂ = −D̂/λ, DST-III back; no uniform part to add (it would flow out)
+        fftwf_execute_r2r(m_forward, m_div, m_spec);
+        for (size_t m = 0; m < m_coef.size(); ++m) m_spec[m] *= m_coef[m];
+        fftwf_execute_r2r(m_backward, m_spec, m_phiFft);
+        applyGradientOpen(u, v, m_phiFft, nullptr);
+        return;
+    }
     fftwf_execute_dft_r2c(m_forward, m_div, reinterpret_cast<fftwf_complex*>(m_spec));
     for (size_t m = 0; m < modes; ++m) {
         m_spec[2 * m] *= m_coef[m];
@@ -156,6 +245,18 @@ void CurrentProjection::projectPeriodic(float* u, float* v, glm::vec2 add) {
 // open-neighbour weight `o` 0, so a row is a vector loop over its interior.
 void CurrentProjection::applyA(const float* x, float* out, const uint8_t* solid) const {
     const int n = m_n;
+    if (m_open) {  // beyond the edge −x_c (φ = 0 on the edge): a cell's term with it is 2·x_c
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i) {
+                const size_t c = size_t(j) * size_t(n) + size_t(i);
+                float sum = 0.0f;
+                if (!solid[c])
+                    for (long k : {neighbour(i - 1, j), neighbour(i + 1, j), neighbour(i, j - 1), neighbour(i, j + 1)})
+                        if (k < 0 || !solid[size_t(k)]) sum += k < 0 ? 2.0f * x[c] : x[c] - x[size_t(k)];
+                out[c] = sum;
+            }
+        return;
+    }
     for (int j = 0; j < n; ++j) {
         const size_t r = size_t(j) * size_t(n), rs = size_t(wrap(j - 1, n)) * size_t(n), rn = size_t(wrap(j + 1, n)) * size_t(n);
         auto cell = [&](int i, int iw, int ie) {
@@ -186,29 +287,31 @@ void CurrentProjection::applyA(const float* x, float* out, const uint8_t* solid)
 void CurrentProjection::factor(const uint8_t* solid) {
     const int n = m_n;
     const size_t cells = size_t(n) * size_t(n);
-    auto neighbours = [n](size_t c, size_t out[4]) {
+    // The open edge's outside (−1) counts twice on the diagonal (it holds −φ_c), never as a neighbour.
+    auto neighbours = [this, n](size_t c, long out[4]) {
         const int i = int(c % size_t(n)), j = int(c / size_t(n));
-        out[0] = size_t(j) * size_t(n) + size_t(wrap(i - 1, n));
-        out[1] = size_t(j) * size_t(n) + size_t(wrap(i + 1, n));
-        out[2] = size_t(wrap(j - 1, n)) * size_t(n) + size_t(i);
-        out[3] = size_t(wrap(j + 1, n)) * size_t(n) + size_t(i);
+        out[0] = neighbour(i - 1, j);
+        out[1] = neighbour(i + 1, j);
+        out[2] = neighbour(i, j - 1);
+        out[3] = neighbour(i, j + 1);
     };
+    auto openCell = [solid](long k) { return k >= 0 && !solid[size_t(k)]; };
     for (size_t c = 0; c < cells; ++c) {
         m_precon[c] = 0.0f;
         if (solid[c]) continue;
-        size_t nb[4];
+        long nb[4];
         neighbours(c, nb);
         double diag = 0.0, e = 0.0;
-        for (size_t k : nb) diag += solid[k] ? 0.0 : 1.0;
+        for (long k : nb) diag += k < 0 ? 2.0 : openCell(k) ? 1.0 : 0.0;
         if (diag == 0.0) continue;  // a lone open cell: nothing flows
         e = diag;
-        for (size_t k : nb) {
-            if (solid[k] || k >= c) continue;
-            size_t kb[4];
-            neighbours(k, kb);
+        for (long k : nb) {
+            if (!openCell(k) || size_t(k) >= c) continue;
+            long kb[4];
+            neighbours(size_t(k), kb);
             int later = 0;
-            for (size_t m : kb) later += (!solid[m] && m > k && m != c) ? 1 : 0;
-            const double pk = m_precon[k];
+            for (long m : kb) later += (openCell(m) && m > k && size_t(m) != c) ? 1 : 0;
+            const double pk = m_precon[size_t(k)];
             e -= pk * pk * (1.0 + MIC_TAU * later);
         }
         if (e < MIC_SAFETY * diag) e = diag;
@@ -237,12 +340,12 @@ void CurrentProjection::precondition(const float* r, float* z) {
             for (int i = 0; i < n; ++i) t[i] = p[row + size_t(i)] * (r[row + size_t(i)] + p[south + size_t(i)] * q[south + size_t(i)]);
         else
             for (int i = 0; i < n; ++i) t[i] = p[size_t(i)] * r[size_t(i)];
-        if (j == n - 1)  // N across the edge: row 0, done
+        if (j == n - 1 && !m_open)  // N across the edge: row 0, done
             for (int i = 0; i < n; ++i) t[i] += p[row + size_t(i)] * (p[size_t(i)] * q[size_t(i)]);
         q[row] = t[0];
         for (int i = 1; i < n; ++i) q[row + size_t(i)] = t[i] + pw[row + size_t(i)] * q[row + size_t(i - 1)];
         // E across the edge of the last column: cell (0, j), done.
-        q[row + size_t(n - 1)] += p[row + size_t(n - 1)] * (p[row] * q[row]);
+        if (!m_open) q[row + size_t(n - 1)] += p[row + size_t(n - 1)] * (p[row] * q[row]);
     }
     for (int j = n - 1; j >= 0; --j) {
         const size_t row = size_t(j) * size_t(n), north = size_t(wrap(j + 1, n)) * size_t(n);
@@ -250,7 +353,7 @@ void CurrentProjection::precondition(const float* r, float* z) {
             for (int i = 0; i < n; ++i) t[i] = q[row + size_t(i)] + p[row + size_t(i)] * z[north + size_t(i)];
         else
             for (int i = 0; i < n; ++i) t[i] = q[row + size_t(i)];
-        if (j == 0)  // S across the edge: row n − 1, done
+        if (j == 0 && !m_open)  // S across the edge: row n − 1, done
             for (int i = 0; i < n; ++i) t[i] += p[size_t(i)] * z[size_t(n - 1) * size_t(n) + size_t(i)];
         // z_c = p_c·(t_c + p_c·z_{c+1}); the first column's W across the edge (cell n − 1) is done
         // before the row's recurrence reaches it, so it joins its t first.
@@ -259,7 +362,7 @@ void CurrentProjection::precondition(const float* r, float* z) {
             const float pc = p[row + size_t(i)];
             z[row + size_t(i)] = pc * t[i] + (pc * pc) * z[row + size_t(i + 1)];
         }
-        z[row] += p[row] * (p[row] * z[row + size_t(n - 1)]);
+        if (!m_open) z[row] += p[row] * (p[row] * z[row + size_t(n - 1)]);
     }
 }
 
@@ -268,15 +371,7 @@ WallSolve CurrentProjection::projectWithWalls(float* u, float* v, const uint8_t*
     const size_t cells = size_t(n) * size_t(n);
     // --- the bulk: the periodic projection, then no flow through any face of a wall cell
     projectPeriodic(u, v);
-    for (int j = 0; j < n; ++j) {
-        const int jn = wrap(j + 1, n);
-        for (int i = 0; i < n; ++i) {
-            const int ie = wrap(i + 1, n);
-            const uint8_t s = solid[size_t(j) * size_t(n) + size_t(i)];
-            if (s || solid[size_t(j) * size_t(n) + size_t(ie)]) u[face(i, j)] = 0.0f;
-            if (s || solid[size_t(jn) * size_t(n) + size_t(i)]) v[face(i, j)] = 0.0f;
-        }
-    }
+    closeWallFaces(u, v, solid);
     if (m_factored.size() != cells || !std::equal(m_factored.begin(), m_factored.end(), solid)) factor(solid);
 
     // --- the rest: A·φ = −D on the open cells, from last step's φ

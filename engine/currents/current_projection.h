@@ -13,6 +13,14 @@
 //    faces touching walls are zeroed and the rest is solved by conjugate gradients preconditioned
 //    with the modified incomplete Cholesky factor MIC(0) (τ = 0.97), warm-started from the last
 //    step's φ, until max |D| ≤ tolerance.
+//  - Open edge (CurrentEdge::Open): the pressure departure on the edge is 0 (an outflow
+//    condition: the ring of cells outside holds −φ of the cell inside it, so a face on the edge
+//    takes the gradient 2·φ_inside and water leaves or enters freely). The edge faces are the
+//    padded arrays' ghost faces on the west and south (u(−1, j), v(i, −1)) and the last stored
+//    ones on the east and north (u(n − 1, j), v(i, n − 1)). A is then diagonal in the sine basis
+//    sin(πk(i + ½)/n): λ(k) = 4·sin²(πk_x/(2n)) + 4·sin²(πk_z/(2n)), k = 1..n, one DST-II forward
+//    and one DST-III back (FFTW's RODFT10, RODFT01: transforms of 2n, fast for a power of two); no
+//    mode is 0, so the mean flow is not kept (momentum leaves with the water).
 #pragma once
 #include "currents/current_layer.h"
 
@@ -27,14 +35,18 @@ namespace ob::currents {
 /// caller's (padded arrays, current_layer.h's layout).
 class CurrentProjection {
 public:
-    explicit CurrentProjection(int n);
+    /// n cells a side; `open`: the outflow edge (file comment), else periodic.
+    explicit CurrentProjection(int n, bool open = false);
     ~CurrentProjection();
     CurrentProjection(const CurrentProjection&) = delete;
     CurrentProjection& operator=(const CurrentProjection&) = delete;
 
-    /// Makes the faces divergence-free on the periodic n × n grid (no walls); k = 0 untouched.
-    /// `add` (m/s) is added to every face in the same pass (a uniform flow: no divergence).
+    /// Makes the faces divergence-free on the n × n grid (no walls): periodic, k = 0 untouched; or
+    /// with the open edge. `add` (m/s) is added to every face in the same pass (a uniform flow: no
+    /// divergence; periodic only).
     void projectPeriodic(float* u, float* v, glm::vec2 add = glm::vec2(0.0f));
+    /// Whether the edge is open (the outflow condition) rather than periodic.
+    bool open() const { return m_open; }
     /// With `solid` (n² cells, 1 = wall): projectPeriodic, faces touching a wall zeroed, then
     /// MIC(0)-PCG on the open cells until max |D| ≤ tolerance (m/s) or maxIterations.
     WallSolve projectWithWalls(float* u, float* v, const uint8_t* solid, float tolerance, int maxIterations);
@@ -51,12 +63,17 @@ public:
 
 private:
     size_t face(int i, int j) const { return size_t(j + 1) * size_t(m_n + 2) + size_t(i + 1); }
+    // Cell (i, j)'s neighbour index, or −1 beyond an open edge (periodic: wrapped).
+    long neighbour(int i, int j) const;
+    void applyGradientOpen(float* u, float* v, const float* phi, const uint8_t* solid) const;
+    void closeWallFaces(float* u, float* v, const uint8_t* solid) const;
     void applyGradient(float* u, float* v, const float* phi, const uint8_t* solid, glm::vec2 add = glm::vec2(0.0f)) const;
     void factor(const uint8_t* solid);
     void applyA(const float* x, float* out, const uint8_t* solid) const;
     void precondition(const float* r, float* z);
 
     int m_n;
+    bool m_open = false;
     int m_threads = 1;
     int rowChunk() const { return m_threads > 1 ? (m_n + m_threads - 1) / m_threads : m_n; }
     float* m_div = nullptr;     // n² real, FFTW-aligned
@@ -64,7 +81,7 @@ private:
     float* m_phiFft = nullptr;  // n² real
     fftwf_plan_s* m_forward = nullptr;
     fftwf_plan_s* m_backward = nullptr;
-    std::vector<float> m_coef;  // per mode: −1/(λ·n²), 0 at k = 0
+    std::vector<float> m_coef;  // per mode: −1/(λ·n²), 0 at k = 0 (open: −1/(λ·(2(n + 1))²), DST-I's modes)
     // Wall solve (n² each).
     std::vector<float> m_phi, m_r, m_z, m_s, m_t, m_precon, m_pw, m_q;
     std::vector<float> m_row;  // a row's terms from its neighbouring row (precondition)

@@ -3,9 +3,18 @@
 #pragma once
 #include "core/schema.h"
 
+#include <array>
+#include <cstdint>
 #include <vector>
 
 namespace ob::currents {
+
+/// What the layer's edge is to the flow (docs/currents.md#edges).
+enum class CurrentEdge : uint8_t {
+    Periodic,  ///< the patch is a torus for the pressure: what leaves one edge pushes on the opposite one
+    Open,      ///< outflow: the pressure beyond the edge is the background's, so what leaves the patch is gone
+};
+constexpr std::array<const char*, 2> names(CurrentEdge) { return {"periodic", "open"}; }
 
 /// A region where the flow is held towards a velocity ([[currents.sources]]): a river mouth or a
 /// tidal inflow. Inside the disc the layer relaxes as u ← s + (u − s)·e^(−dt/time) (a one-cell
@@ -47,6 +56,7 @@ struct CurrentsDef {
                                            ///< U10 = 10 m/s, 300 s for h ≈ 0.15 m, the wind-drift skin where Wu's 3 %
                                            ///< is measured; the whole 2 m layer would take ~3900 s (an hour). 300 s is
                                            ///< the skin's order, minutes, so a change of wind shows within a scene
+    CurrentEdge edge = CurrentEdge::Periodic;  ///< "periodic" or "open" (an outflow edge: nothing wraps; docs/currents.md#edges)
     std::vector<CurrentSource> sources;    ///< [[currents.sources]]: discs the flow is held towards a velocity in; default none
     bool arrows = false;                   ///< the overlay draws the flow as arrows (drawn by the view)
 };
@@ -60,6 +70,7 @@ template <class V> void describe(V& v, CurrentsDef& d) {
     v.field("decay_time", d.decay_time, range(0, 1e6), "e-folding time of departures from the background flow (s); 0 = none", LIVE);
     v.field("wind_drift", d.wind_drift, range(0, 0.1), "surface drift the wind drives, fraction of U10 (Wu 1975: 0.03)", LIVE);
     v.field("wind_time", d.wind_time, range(1, 1e6), "relaxation time of the drift towards wind_drift·U10 (s)");
+    v.field("edge", d.edge, "the grid's edge: periodic (the pressure wraps) or open (outflow: what leaves is gone)");
     v.list("sources", d.sources, "discs where the flow is held towards a velocity (center, radius, velocity, time)");
     v.field("arrows", d.arrows, "draw the current as arrows in the overlay", LIVE);
 }

@@ -175,6 +175,57 @@ TEST_CASE("tide.toml: the flood carries the balls through the harbour gap, and a
     CHECK(wall < 0.01f * gap);
 }
 
+TEST_CASE("tide.toml: a strong push back out through the mouth leaves the flood through the gap flowing in", "[currents][water_motion][scene]") {
+    // The scene's [currents] and its breakwaters (the fixed boxes, wall to wall across the grid)
+    // on a layer where the sandbox puts it (on the ripple patch's centre). After 20 s of flood a
+    // push of 5 kN southward 2.5 m inside the mouth (a vigorous stir's stroke, ½ρ·C_d·A·v² for the
+    // scene's 0.8 m stir sphere at 3 m/s, held for 10 s) drives a jet back out through the gap.
+    // The scene's periodic layer makes the sea, the gap and the basin one circuit: the flood is
+    // the whole patch's water moving, and the push takes a small share of it. The same scene with
+    // the open edge (docs/currents.md#edges) loses most of its flood sideways through the sea's
+    // open edges, and the same push nearly stops what is left: the open edge is not the tide's.
+    const game::SceneDef scene = game::loadScene("config/scenes/tide.toml");
+    REQUIRE(scene.currents.edge == currents::CurrentEdge::Periodic);
+    std::vector<interaction::ObstacleShape> walls;
+    for (const game::ObjectDef& o : scene.objects)
+        if (o.type == game::ObjectType::Box && o.box.fixed)
+            walls.push_back({interaction::ObstacleShape::Kind::Rect, {o.position.x, o.position.z}, {1.0f, 0.0f},
+                             0.5f * glm::vec2(o.box.size.x, o.box.size.z)});
+    REQUIRE(walls.size() == 2);
+    const auto run = [&](currents::CurrentEdge edge) {
+        currents::CurrentsDef def = scene.currents;
+        def.edge = edge;
+        currents::CurrentLayer layer(def, scene.environment.water_density);
+        layer.centerOn(scene.ripples.center);
+        layer.setWalls(walls);
+        const auto gapFlux = [&] {  // m²/s into the harbour through the 8 m gap, on the breakwaters' line
+            double q = 0.0;
+            for (float x = -3.75f; x <= 3.75f; x += 0.5f) q += double(layer.velocityAt({x, 8.0f}).y) * 0.5;
+            return q;
+        };
+        constexpr float PUSH = 5000.0f;  // N
+        const float dt = float(DT);
+        for (int s = 0; s < 60 * 20; ++s) layer.step(dt);
+        const double flood = gapFlux();
+        double least = flood;
+        for (int s = 0; s < 60 * 15; ++s) {
+            if (s < 60 * 10) layer.addImpulse({0.0f, 10.5f}, {0.0f, -PUSH * dt}, 1.0f);
+            layer.step(dt);
+            least = std::min(least, gapFlux());
+        }
+        CHECK(layer.finite());
+        return std::pair{flood, least};
+    };
+    const auto [flood, least] = run(currents::CurrentEdge::Periodic);
+    const auto [floodOpen, leastOpen] = run(currents::CurrentEdge::Open);
+    INFO("periodic (the scene): the flood through the gap " << flood << " m²/s, its least under the push " << least
+                                                            << "; with the open edge: " << floodOpen << ", least " << leastOpen);
+    CHECK(flood > 4.0);          // 0.5 m/s across the 8 m gap at least
+    CHECK(least > 0.5 * flood);  // the push takes a small share of the circuit's flow
+    CHECK(floodOpen < 0.5 * flood);
+    CHECK(leastOpen < 0.5 * floodOpen);
+}
+
 TEST_CASE("currents: a bad [currents] key is refused with the file, its line and the key", "[currents][scene_config]") {
     const auto refused = [](const std::string& text) {
         try {

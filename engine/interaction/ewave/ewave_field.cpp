@@ -1,6 +1,7 @@
 // Dispersive ripple field: exact per-mode rotation of (ĥ, v̂) with FFTW real-to-complex
 // transforms of the step's change (docs/references.md#dispersive-ripples; Tessendorf, "eWave", 2014), then the boundary
-// in real space.
+// in real space. The state, its boundary and the step's order here; the transforms in
+// ewave_transforms.cpp, the sources in ewave_sources.cpp.
 #include "interaction/ewave/ewave_field.h"
 
 #include "core/scrolling_grid.h"
@@ -27,11 +28,6 @@ namespace {
 // The two transforms of a stage may run on two workers (measured: chooseThreads) from this
 // many cells on; below it, waking a worker costs more than half the transforms.
 constexpr size_t PARALLEL_MIN_CELLS = 128 * 128;
-// Sources are split over the workers in row bands from this many cells of footprint on (a
-// hundred SR-20 spheres; a band's hand-off costs about as much as a few thousand cells).
-constexpr size_t PARALLEL_MIN_SOURCE_CELLS = 1 << 17;
-// Cap of a source's stagnation-pressure term, in g (see ewaveSource).
-constexpr float MAX_DYNAMIC_G = 15.0f;
 
 double* allocReal(size_t n) {
     double* p = fftw_alloc_real(n);
@@ -51,116 +47,6 @@ float* allocFloat(size_t n) {
 // state → float for the forward transform.
 OB_VECTOR_KERNEL void toFloatKernel(float* __restrict out, const double* __restrict f, size_t n) {
     for (size_t i = 0; i < n; ++i) out[i] = float(f[i]);
-}
-
-// Both fields' change over n modes, in place, in double: with (a − 1, b, c) = coef[3m..3m + 2],
-// ĥ ← (a − 1)·ĥ + b·v̂ and v̂ ← c·ĥ + (a − 1)·v̂, for the real and imaginary parts alike.
-OB_VECTOR_KERNEL void changeKernel(float* __restrict hs, float* __restrict vs, const double* __restrict coef, int n) {
-    for (int m = 0; m < n; ++m) {
-        const double am1 = coef[3 * m], b = coef[3 * m + 1], c = coef[3 * m + 2];
-        for (int p = 0; p < 2; ++p) {
-            const double h = hs[2 * m + p], v = vs[2 * m + p];
-            hs[2 * m + p] = float(am1 * h + b * v);
-            vs[2 * m + p] = float(c * h + am1 * v);
-        }
-    }
-}
-
-// One spectrum row of n modes (SPEC §2.5c): the new state's ĥ', v̂' = scale·(ĥ, v̂) + their change
-// (coef's a − 1, b, c as changeKernel, which carry `scale`; coef null: no change, the state as it
-// is), then û = i·K·r·v̂' into ux, uz and, when xx is not null, ξ̂ = i·K·r·ĥ' into xx, xz, with
-// K = (kx[m], kz) and r = riesz[m] = 1/(|K|·tanh(|K|d)); power[m] = weight[m]·|v̂'|² (weight: the
-// mode's count in the full spectrum; the caller zeroes K = 0's and sums: sumsKernel).
-// Multiplying by i: (re, im) → (−im, re).
-OB_VECTOR_KERNEL void horizontalKernel(const float* __restrict hs, const float* __restrict vs,
-                                       const double* __restrict coef, double scale, const float* __restrict riesz,
-                                       const float* __restrict kx, const float* __restrict weight, float kz,
-                                       float* __restrict ux, float* __restrict uz, float* __restrict xx,
-                                       float* __restrict xz, float* __restrict power, int n) {
-    if (coef) {
-        for (int m = 0; m < n; ++m) {
-            const double am1 = coef[3 * m], c = coef[3 * m + 2];
-            const float n0 = float(scale * vs[2 * m] + (c * hs[2 * m] + am1 * vs[2 * m]));
-            const float n1 = float(scale * vs[2 * m + 1] + (c * hs[2 * m + 1] + am1 * vs[2 * m + 1]));
-            const float mx = kx[m] * riesz[m], mz = kz * riesz[m];
-            ux[2 * m] = -mx * n1;
-            ux[2 * m + 1] = mx * n0;
-            uz[2 * m] = -mz * n1;
-            uz[2 * m + 1] = mz * n0;
-            power[m] = weight[m] * (n0 * n0 + n1 * n1);
-        }
-    } else {
-        const float sc = float(scale);
-        for (int m = 0; m < n; ++m) {
-            const float n0 = sc * vs[2 * m], n1 = sc * vs[2 * m + 1];
-            const float mx = kx[m] * riesz[m], mz = kz * riesz[m];
-            ux[2 * m] = -mx * n1;
-            ux[2 * m + 1] = mx * n0;
-            uz[2 * m] = -mz * n1;
-            uz[2 * m + 1] = mz * n0;
-            power[m] = weight[m] * (n0 * n0 + n1 * n1);
-        }
-    }
-    if (!xx) return;
-    for (int m = 0; m < n; ++m) {
-        double h0 = scale * hs[2 * m], h1 = scale * hs[2 * m + 1];
-        if (coef) {
-            h0 += coef[3 * m] * hs[2 * m] + coef[3 * m + 1] * vs[2 * m];
-            h1 += coef[3 * m] * hs[2 * m + 1] + coef[3 * m + 1] * vs[2 * m + 1];
-        }
-        const float mx = kx[m] * riesz[m], mz = kz * riesz[m];
-        xx[2 * m] = float(-mx * h1);
-        xx[2 * m + 1] = float(mx * h0);
-        xz[2 * m] = float(-mz * h1);
-        xz[2 * m + 1] = float(mz * h0);
-    }
-}
-
-// changeKernel and the horizontal velocity's spectra in one pass over a spectrum row (the step
-// without the displacement): with Δĥ, Δv̂ as changeKernel makes them, the new state's v̂' =
-// scale·v̂ + Δv̂ (the coefficients carry `scale`, 1/(rows·cols)), û = i·K·r·v̂' into ux, uz as
-// horizontalKernel, and power[m] = w·|v̂'|² (the caller zeroes K = 0's), the reduction left to
-// sumsKernel: no branch and no reduction, so this loop vectorises.
-OB_VECTOR_KERNEL void changeVelocityKernel(float* __restrict hs, float* __restrict vs, const double* __restrict coef,
-                                           double scale, const float* __restrict riesz, const float* __restrict kx,
-                                           const float* __restrict weight, float kz, float* __restrict ux,
-                                           float* __restrict uz, float* __restrict power, int n) {
-    for (int m = 0; m < n; ++m) {
-        const double am1 = coef[3 * m], b = coef[3 * m + 1], c = coef[3 * m + 2];
-        const double h0 = hs[2 * m], h1 = hs[2 * m + 1], v0 = vs[2 * m], v1 = vs[2 * m + 1];
-        const double dv0 = c * h0 + am1 * v0, dv1 = c * h1 + am1 * v1;
-        hs[2 * m] = float(am1 * h0 + b * v0);
-        hs[2 * m + 1] = float(am1 * h1 + b * v1);
-        vs[2 * m] = float(dv0);
-        vs[2 * m + 1] = float(dv1);
-        const float n0 = float(scale * v0 + dv0), n1 = float(scale * v1 + dv1);
-        const float r = riesz[m];
-        const float mx = kx[m] * r, mz = kz * r;
-        ux[2 * m] = -mx * n1;
-        ux[2 * m + 1] = mx * n0;
-        uz[2 * m] = -mz * n1;
-        uz[2 * m + 1] = mz * n0;
-        power[m] = weight[m] * (n0 * n0 + n1 * n1);
-    }
-}
-
-// sums[0] = Σ kabs[m]·power[m], sums[1] = Σ power[m] over a row, in float (a row's sum to ~1e-6
-// of itself, ample for a mean wavenumber), reassociated into vector lanes: the order is fixed by
-// the code the clone was built with, so the bits do not depend on the workers; only this
-// reduction is relaxed, never the state's arithmetic.
-#if defined(__GNUC__) && !defined(__clang__)
-#define OB_RELAXED_SUM __attribute__((optimize("associative-math", "no-signed-zeros", "no-trapping-math")))
-#else
-#define OB_RELAXED_SUM
-#endif
-OB_RELAXED_SUM OB_VECTOR_KERNEL void sumsKernel(const float* __restrict power, const float* __restrict kabs, int n, double* __restrict sums) {
-    float num = 0.0f, den = 0.0f;
-    for (int m = 0; m < n; ++m) {
-        num += kabs[m] * power[m];
-        den += power[m];
-    }
-    sums[0] = num;
-    sums[1] = den;
 }
 
 // f += change, then its float copy (before the boundary: the caller redoes the band's).
@@ -205,38 +91,14 @@ double EWaveMedium::omega(double k) const {
 }
 
 EWaveField::EWaveField(int rows, int cols, float cellSize, RippleBoundary boundary, int spongeWidth)
-    : m_rows(rows), m_cols(cols), m_specCols(cols / 2 + 1), m_cells(size_t(rows) * size_t(cols)),
-      m_modes(size_t(rows) * size_t(cols / 2 + 1)), m_cellSize(cellSize), m_boundary(boundary) {
+    : m_rows(rows), m_cols(cols), m_cells(size_t(rows) * size_t(cols)), m_cellSize(cellSize), m_boundary(boundary),
+      m_sources(rows, cols), m_transforms(rows, cols, cellSize) {
     assert(rows >= 2 && cols >= 2 && cellSize > 0.0f);
     m_h = allocReal(m_cells);
     m_v = allocReal(m_cells);
-    for (int t = 0; t < 2; ++t) {
-        m_float[t] = allocFloat(m_cells);
-        m_spec[t] = allocFloat(2 * m_modes);
-        m_change[t] = allocFloat(m_cells);
-    }
-    // Planning may overwrite the arrays (FFTW_MEASURE): they hold nothing yet. The forward
-    // transform keeps its input (r2c's default): it reads the float copies of the state.
-    m_forward = ocean::planWithWisdom([&](unsigned flags) {
-        return fftwf_plan_dft_r2c_2d(rows, cols, m_float[0], reinterpret_cast<fftwf_complex*>(m_spec[0]), flags);
-    });
-    m_backward = ocean::planWithWisdom([&](unsigned flags) {
-        return fftwf_plan_dft_c2r_2d(rows, cols, reinterpret_cast<fftwf_complex*>(m_spec[0]), m_change[0], flags);
-    });
-    if (!m_forward || !m_backward)
-        throw RuntimeError("FFTW could not plan a " + std::to_string(rows) + "×" + std::to_string(cols) + " transform");
-    std::memset(m_float[0], 0, m_cells * sizeof(float));  // planning wrote into them
-    std::memset(m_float[1], 0, m_cells * sizeof(float));
+    for (int t = 0; t < 2; ++t) m_float[t] = allocFloat(m_cells);
     if (boundary == RippleBoundary::Absorbing) m_spongeWidth = std::clamp(spongeWidth, 1, std::min(rows, cols) / 2);
-    m_coef.resize(3 * size_t(m_rows / 2 + 1) * size_t(m_specCols));
-    for (int f = 0; f < 4; ++f) {
-        m_horiz[f] = allocFloat(m_cells);
-        m_horizSpec[f] = allocFloat(2 * m_modes);
-    }
-    m_rowSums.assign(2 * size_t(m_rows), 0.0);
-    m_power.assign(m_modes, 0.0f);
-    prepareHorizontal();
-    m_sourceSum.assign(m_cells, 0.0f);
+    m_transforms.prepareHorizontal(m_medium);
     chooseThreads();
 }
 
@@ -252,102 +114,38 @@ void EWaveField::chooseThreads() {
         });
         m_preparedDt = -1.0f;
     }
-    // Sources of 20 cells (or a quarter of the field) in a lattice, PARALLEL_MIN_SOURCE_CELLS of
+    // Sources of 20 cells (or a quarter of the field) in a lattice, EWaveSources::PARALLEL_MIN_CELLS of
     // footprint in all: the smallest batch the bands are split for.
     const float r = std::min(20.0f, float(std::min(m_rows, m_cols)) / 4.0f);
-    const size_t count = PARALLEL_MIN_SOURCE_CELLS / size_t((2.0f * r + 1.0f) * (2.0f * r + 1.0f)) + 1;
+    const size_t count = EWaveSources::PARALLEL_MIN_CELLS / size_t((2.0f * r + 1.0f) * (2.0f * r + 1.0f)) + 1;
     std::vector<EWaveSource> batch(count);
     for (size_t i = 0; i < count; ++i)
         batch[i] = {float((i * 37) % size_t(m_cols)), float((i * 61) % size_t(m_rows)), r, 1.0f};
-    m_sourceThreads = measuredThreads("ewave sources " + size, workerCount(), [&](int n) {
-        m_sourceThreads = n;
+    m_sources.setThreads(measuredThreads("ewave sources " + size, workerCount(), [&](int n) {
+        m_sources.setThreads(n);
         addSources(batch, 1.0f / 60.0f);
-    });
+    }));
     clear();
 }
 
 EWaveField::~EWaveField() {
-    {
-        std::lock_guard<std::mutex> lock(ocean::fftwPlannerMutex());
-        if (m_forward) fftwf_destroy_plan(m_forward);
-        if (m_backward) fftwf_destroy_plan(m_backward);
-    }
     fftw_free(m_h);
     fftw_free(m_v);
-    for (int t = 0; t < 2; ++t) {
-        fftwf_free(m_float[t]);
-        fftwf_free(m_spec[t]);
-        fftwf_free(m_change[t]);
-    }
-    for (int f = 0; f < 4; ++f) {
-        fftwf_free(m_horiz[f]);
-        fftwf_free(m_horizSpec[f]);
-    }
+    for (float* f : m_float) fftwf_free(f);
 }
 
 void EWaveField::setMedium(const EWaveMedium& medium) {
     assert(medium.gravity > 0.0 && medium.capillarity >= 0.0);
     m_medium = medium;
     m_preparedDt = -1.0f;
-    prepareHorizontal();
+    m_transforms.prepareHorizontal(m_medium);
 }
 
-// Per mode of rows 0..rows/2 (row rows − j has row j's |K|) r = 1/(|K|·tanh(|K|d)) (deep water, or
-// |K|·d past 20: 1/|K|), 0 at K = 0; per column kx, 0 at the Nyquist column (its ±kx are one mode
-// of a real field, whose derivative there is taken as 0; kz likewise in horizontalRow); per
-// column the count of the full spectrum's modes it stands for (the half spectrum's inner columns
-// stand for K and −K).
-void EWaveField::prepareHorizontal() {
-    const double twoPi = 2.0 * std::numbers::pi;
-    const double lx = double(m_cols) * m_cellSize, lz = double(m_rows) * m_cellSize;
-    m_kx.assign(size_t(m_specCols), 0.0f);
-    m_weight.assign(size_t(m_specCols), 2.0f);
-    for (int i = 0; i < m_specCols; ++i) m_kx[size_t(i)] = 2 * i == m_cols ? 0.0f : float(twoPi * i / lx);
-    m_weight[0] = 1.0f;
-    if (m_cols % 2 == 0) m_weight[size_t(m_cols / 2)] = 1.0f;
-    const size_t modes = size_t(m_rows / 2 + 1) * size_t(m_specCols);
-    m_riesz.assign(modes, 0.0f);
-    m_kabs.assign(modes, 0.0f);
-    const double d = m_medium.depth;
-    for (int j = 0; j <= m_rows / 2; ++j) {
-        const double kz = twoPi * j / lz;
-        for (int i = 0; i < m_specCols; ++i) {
-            const double kx = twoPi * i / lx;
-            const double k = std::sqrt(kx * kx + kz * kz);
-            const size_t m = size_t(j) * size_t(m_specCols) + size_t(i);
-            m_kabs[m] = float(k);
-            if (k > 0.0) m_riesz[m] = float(1.0 / (d > 0.0 && k * d < 20.0 ? k * std::tanh(k * d) : k));
-        }
-    }
-}
+void EWaveField::keepHorizontalDisplacement(bool on) { m_transforms.keepDisplacement(on); }
 
-void EWaveField::keepHorizontalDisplacement(bool on) {
-    m_displacement = on;
-    if (!on)
-        for (int f = 2; f < 4; ++f) std::memset(m_horiz[f], 0, m_cells * sizeof(float));
-}
-
-// Spectrum row j (the step's: before changeRows turns it into the change; `change` false: the
-// state as transformed) into the horizontal fields' spectra and its sums of velocityWavenumber.
-// kz = 2π·(j or j − rows)/(rows·Δ), 0 at the Nyquist row.
-void EWaveField::horizontalRow(int j, bool change) {
-    const size_t row = size_t(j) * size_t(m_specCols);
-    const size_t coefRow = size_t(std::min(j, m_rows - j)) * size_t(m_specCols);
-    float* power = m_power.data() + row;
-    horizontalKernel(m_spec[0] + 2 * row, m_spec[1] + 2 * row, change ? m_coef.data() + 3 * coefRow : nullptr,
-                     1.0 / (double(m_rows) * double(m_cols)), m_riesz.data() + coefRow, m_kx.data(), m_weight.data(),
-                     rowKz(j), m_horizSpec[0] + 2 * row, m_horizSpec[1] + 2 * row,
-                     m_displacement ? m_horizSpec[2] + 2 * row : nullptr, m_displacement ? m_horizSpec[3] + 2 * row : nullptr,
-                     power, m_specCols);
-    if (j == 0) power[0] = 0.0f;  // K = 0: the mean, no wave (its û is 0: r = 0)
-    sumsKernel(power, m_kabs.data() + coefRow, m_specCols, m_rowSums.data() + 2 * size_t(j));
-}
-
-// kz of spectrum row j: 2π·(j, or j − rows past the middle)/(rows·Δ), rad/m; 0 at the Nyquist
-// row (its ±kz are one mode of a real field).
-float EWaveField::rowKz(int j) const {
-    const int signedJ = j <= m_rows / 2 ? j : j - m_rows;
-    return 2 * j == m_rows ? 0.0f : float(2.0 * std::numbers::pi * signedJ / (double(m_rows) * m_cellSize));
+void EWaveField::keepHorizontalVelocity(bool on) {
+    assert(on || !m_transforms.displacement());
+    m_transforms.keepVelocity(on);
 }
 
 void EWaveField::setDamping(float decayTime, float viscosity) {
@@ -403,26 +201,10 @@ std::vector<float> EWaveField::spongeFactors(int rows, int cols, int spongeWidth
     return sponge;
 }
 
-// Per mode (row j ≤ rows/2, column i of the r2c spectrum; row rows − j has the same |k| and
-// reads row j's) the change's coefficients a − 1, b, c (the rotation by ωΔt times the damping,
-// less the identity) times FFTW's 1/(rows·cols) (a power of two for power-of-two sides: exact).
-// The sponge factors depend on Δt too: both are rebuilt when Δt or the damping changes.
+// The per-mode coefficients (EWaveTransforms::prepare) and the sponge factors, which depend on Δt
+// too: both are rebuilt when Δt or the damping changes.
 void EWaveField::prepare(float dt) {
-    const double norm = 1.0 / (double(m_rows) * double(m_cols));
-    const double twoPi = 2.0 * std::numbers::pi;
-    const double lx = double(m_cols) * m_cellSize, lz = double(m_rows) * m_cellSize;
-    for (int j = 0; j <= m_rows / 2; ++j) {
-        const double kz = twoPi * j / lz;
-        for (int i = 0; i < m_specCols; ++i) {
-            const double kx = twoPi * i / lx;
-            const double k = std::sqrt(kx * kx + kz * kz);
-            double* c = m_coef.data() + 3 * (size_t(j) * size_t(m_specCols) + size_t(i));
-            c[0] = modeStepMinusOne(m_medium, k, dt, m_decayTime, m_viscosity, norm);
-            const ModeStep s = modeStep(m_medium, k, dt, m_decayTime, m_viscosity, norm);
-            c[1] = s.b;
-            c[2] = s.c;
-        }
-    }
+    m_transforms.prepare(m_medium, dt, m_decayTime, m_viscosity);
     m_sponge.clear();
     if (m_boundary == RippleBoundary::Absorbing) m_sponge = spongeFactors(m_rows, m_cols, m_spongeWidth, dt);
     m_preparedDt = dt;
@@ -449,13 +231,12 @@ void EWaveField::step(float dt) {
     const int rowChunk = m_stepThreads > 1 ? m_rows / 2 : m_rows;  // two row bands, or one
     // --- 1. forward transforms of h and v, each whole on one worker
     parallelFor(0, 2, pairChunk, [&](int b, int e) {
-        for (int t = b; t < e; ++t)
-            fftwf_execute_dft_r2c(m_forward, m_float[t], reinterpret_cast<fftwf_complex*>(m_spec[t]));
+        for (int t = b; t < e; ++t) m_transforms.forward(t, m_float[t]);
     });
     // --- 2. the horizontal fields' spectra of the new state, then both spectra become their
     //        changes, in row bands
-    parallelFor(0, m_rows, rowChunk, [&](int j0, int j1) { changeRows(j0, j1); });
-    sumVelocityWavenumber();
+    parallelFor(0, m_rows, rowChunk, [&](int j0, int j1) { m_transforms.changeRows(j0, j1); });
+    m_transforms.sumVelocityWavenumber();
     // --- 3. per field: the inverse transform of its change, added to it, the boundary, its float
     //        copy; the horizontal fields' inverse transforms and their boundary
     inverseTransforms(true);
@@ -467,18 +248,19 @@ void EWaveField::step(float dt) {
 // field (its transform and its finishRows, the larger tasks) and half the horizontal ones.
 void EWaveField::inverseTransforms(bool state) {
     // Tasks: 0, 1 the state's h and v; 2.. the horizontal fields ux, uz, ξx, ξz.
-    static constexpr int STEP[] = {0, 2, 1, 3}, STEP_DISPLACEMENT[] = {0, 2, 4, 1, 3, 5}, DERIVED[] = {2, 3, 4, 5};
-    const int* tasks = state ? (m_displacement ? STEP_DISPLACEMENT : STEP) : DERIVED;
-    const int count = (state ? 2 : 0) + (m_displacement ? 4 : 2);
+    static constexpr int STATE[] = {0, 1}, STEP[] = {0, 2, 1, 3}, STEP_DISPLACEMENT[] = {0, 2, 4, 1, 3, 5}, DERIVED[] = {2, 3, 4, 5};
+    const bool displacement = m_transforms.displacement(), velocity = m_transforms.velocity();
+    const int* tasks = !velocity ? STATE : state ? (displacement ? STEP_DISPLACEMENT : STEP) : DERIVED;
+    const int count = (state ? 2 : 0) + (!velocity ? 0 : displacement ? 4 : 2);
     const int chunk = m_stepThreads > 1 ? 1 : count;
     parallelFor(0, count, chunk, [&](int b, int e) {
         for (int k = b; k < e; ++k) {
             const int t = tasks[k];
             if (t < 2) {
-                fftwf_execute_dft_c2r(m_backward, reinterpret_cast<fftwf_complex*>(m_spec[t]), m_change[t]);
+                m_transforms.inverseChange(t);
                 finishRows(t, 0, m_rows);
             } else {
-                fftwf_execute_dft_c2r(m_backward, reinterpret_cast<fftwf_complex*>(m_horizSpec[t - 2]), m_horiz[t - 2]);
+                m_transforms.inverseHorizontal(t - 2);
                 if (state) finishHorizontal(t - 2);  // derived from a state that had its boundary: none again
             }
         }
@@ -488,7 +270,7 @@ void EWaveField::inverseTransforms(bool state) {
 // Field f of the horizontal ones after its transform: the boundary as finishRows applies it to v
 // (Fixed: the outer ring 0; Absorbing: the band scaled by the sponge factors, towards 0).
 void EWaveField::finishHorizontal(int f) {
-    float* const u = m_horiz[f];
+    float* const u = m_transforms.horizontal(f);
     const int rows = m_rows, cols = m_cols, w = m_spongeWidth;
     switch (m_boundary) {
     case RippleBoundary::Periodic:
@@ -515,29 +297,19 @@ void EWaveField::finishHorizontal(int f) {
 
 // As the step's passes 1–3 with no change: the state as it is, its boundary already applied.
 void EWaveField::deriveHorizontal() {
+    if (!m_transforms.velocity()) return;  // nothing to derive: the fields stay 0
     syncFloatCopies();
     const int pairChunk = m_stepThreads > 1 ? 1 : 2;
-    parallelFor(0, m_displacement ? 2 : 1, pairChunk, [&](int b, int e) {
+    parallelFor(0, m_transforms.displacement() ? 2 : 1, pairChunk, [&](int b, int e) {
         for (int t = b; t < e; ++t) {
             const int field = 1 - t;  // v first
-            fftwf_execute_dft_r2c(m_forward, m_float[field], reinterpret_cast<fftwf_complex*>(m_spec[field]));
+            m_transforms.forward(field, m_float[field]);
         }
     });
     const int rowChunk = m_stepThreads > 1 ? m_rows / 2 : m_rows;
-    parallelFor(0, m_rows, rowChunk, [&](int j0, int j1) {
-        for (int j = j0; j < j1; ++j) horizontalRow(j, false);
-    });
-    sumVelocityWavenumber();
+    parallelFor(0, m_rows, rowChunk, [&](int j0, int j1) { m_transforms.horizontalRows(j0, j1); });
+    m_transforms.sumVelocityWavenumber();
     inverseTransforms(false);
-}
-
-void EWaveField::sumVelocityWavenumber() {
-    double num = 0.0, den = 0.0;  // in row order: the same bits whatever the workers' split
-    for (int j = 0; j < m_rows; ++j) {
-        num += m_rowSums[2 * size_t(j)];
-        den += m_rowSums[2 * size_t(j) + 1];
-    }
-    m_velocityWavenumber = den > 0.0 ? num / den : 0.0;
 }
 
 // The step changes no mode but k = 0 of h by more than rounding, so the shift is that rounding
@@ -546,34 +318,6 @@ void EWaveField::sumVelocityWavenumber() {
 void EWaveField::conserveVolume() {
     const double shift = (m_volume - sumKernel(m_h, m_cells)) / double(m_cells);
     shiftKernel(m_h, m_float[0], shift, m_cells);
-}
-
-// Spectrum rows [j0, j1) of both fields: Δĥ = (a − 1)·ĥ + b·v̂, Δv̂ = c·ĥ + (a − 1)·v̂ in place.
-// Mode 0 (in the band of row 0): its coefficients are 0, so ĥ(0) is kept, and v̂(0) is dropped
-// (Δv̂(0) = −v̂(0)): a source's uniform part lifts no water.
-void EWaveField::changeRows(int j0, int j1) {
-    const float v0[2] = {j0 == 0 ? m_spec[1][0] : 0.0f, j0 == 0 ? m_spec[1][1] : 0.0f};
-    for (int j = j0; j < j1; ++j) {
-        const size_t row = size_t(j) * size_t(m_specCols);
-        const size_t coefRow = size_t(std::min(j, m_rows - j)) * size_t(m_specCols);
-        if (m_displacement) {  // ξ too (the coarse levels, which step rarely): the two passes
-            horizontalRow(j, true);
-            changeKernel(m_spec[0] + 2 * row, m_spec[1] + 2 * row, m_coef.data() + 3 * coefRow, m_specCols);
-            continue;
-        }
-        float* power = m_power.data() + row;
-        changeVelocityKernel(m_spec[0] + 2 * row, m_spec[1] + 2 * row, m_coef.data() + 3 * coefRow,
-                             1.0 / (double(m_rows) * double(m_cols)), m_riesz.data() + coefRow, m_kx.data(),
-                             m_weight.data(), rowKz(j), m_horizSpec[0] + 2 * row, m_horizSpec[1] + 2 * row, power,
-                             m_specCols);
-        if (j == 0) power[0] = 0.0f;  // K = 0: the mean, no wave (its û is 0: r = 0)
-        sumsKernel(power, m_kabs.data() + coefRow, m_specCols, m_rowSums.data() + 2 * size_t(j));
-    }
-    if (j0 == 0) {  // the change's spectrum carries the inverse transform's 1/(rows·cols), as the coefficients do
-        const float norm = float(1.0 / (double(m_rows) * double(m_cols)));
-        m_spec[1][0] = -v0[0] * norm;
-        m_spec[1][1] = -v0[1] * norm;
-    }
 }
 
 // Rows [z0, z1) of field t (0: h, 1: v): the change added, then the boundary (Fixed: the outer
@@ -586,7 +330,7 @@ void EWaveField::finishRows(int t, int z0, int z1) {
         const size_t row = size_t(z) * size_t(cols);
         double* fr = f + row;
         float* copy = m_float[t] + row;
-        addKernel(fr, copy, m_change[t] + row, cols);
+        addKernel(fr, copy, m_transforms.change(t) + row, cols);
         switch (m_boundary) {
         case RippleBoundary::Periodic:
             break;
@@ -627,37 +371,11 @@ void EWaveField::syncHeight() {
     m_vRows1 = 0;
 }
 
-// One source over `rows` rows of n cells of the sources' sum (row stride `stride`): per row
-// q = 1 − dz²/R² (dz = dz0 + row), then sum[x] += amount·max(0, q − dx2[x])², 0 outside the disc.
-OB_VECTOR_KERNEL static void sourceKernel(float* __restrict sum, size_t stride, int rows, float dz0, float invR2,
-                                          const float* __restrict dx2, int n, float amount) {
-    for (int r = 0; r < rows; ++r, sum += stride) {
-        const float dz = dz0 + float(r);
-        const float q = 1.0f - dz * dz * invR2;
-        if (q <= 0.0f) continue;
-        for (int x = 0; x < n; ++x) {
-            const float w = std::max(0.0f, q - dx2[x]);  // 1 − r²/R²
-            sum[x] += amount * w * w;
-        }
-    }
-}
-
-// v += the sources' sum, row by row, and the sum back to 0.
-OB_VECTOR_KERNEL static void applySumKernel(double* __restrict v, float* __restrict sum, size_t n) {
-    for (size_t i = 0; i < n; ++i) {
-        v[i] += double(sum[i]);
-        sum[i] = 0.0f;
-    }
-}
-
 void EWaveField::applySources() const {
-    if (m_sourceRows0 >= m_sourceRows1) return;
-    const size_t at = size_t(m_sourceRows0) * size_t(m_cols);
-    applySumKernel(m_v + at, m_sourceSum.data() + at, size_t(m_sourceRows1 - m_sourceRows0) * size_t(m_cols));
-    m_vRows0 = std::min(m_vRows0, m_sourceRows0);  // v's float copy is stale there
-    m_vRows1 = std::max(m_vRows1, m_sourceRows1);
-    m_sourceRows0 = m_rows;
-    m_sourceRows1 = 0;
+    const auto [r0, r1] = m_sources.applyTo(m_v);
+    if (r0 >= r1) return;
+    m_vRows0 = std::min(m_vRows0, r0);  // v's float copy is stale there
+    m_vRows1 = std::max(m_vRows1, r1);
 }
 
 void EWaveField::addSource(float gx, float gz, float radiusCells, float accel, float dt) {
@@ -665,38 +383,7 @@ void EWaveField::addSource(float gx, float gz, float radiusCells, float accel, f
     addSources({&s, 1}, dt);
 }
 
-// Row bands [z0, z1) of the field on the workers, each applying every source's rows in it in
-// list order: a cell receives its sources in the same order whatever the split, so the bits do
-// not depend on it. Per source the column terms (x − gx)²/R² are computed once, then per row
-// q = 1 − (z − gz)²/R² and v += amount·max(0, q − (x − gx)²/R²)² over the bounding square
-// (the corners cost less as multiply-adds than finding the disc's ends per row).
-void EWaveField::addSources(std::span<const EWaveSource> sources, float dt) {
-    size_t work = 0;  // cells in the sources' bounding squares
-    for (const EWaveSource& s : sources) {
-        const float r = std::max(s.radiusCells, 1.0f);
-        work += size_t(2.0 * r + 1.0) * size_t(2.0 * r + 1.0);
-        m_sourceRows0 = std::min(m_sourceRows0, std::max(0, int(std::ceil(s.gz - r))));
-        m_sourceRows1 = std::max(m_sourceRows1, std::min(m_rows, int(std::floor(s.gz + r)) + 1));
-    }
-    const int minRows = m_sourceThreads > 1 && work >= PARALLEL_MIN_SOURCE_CELLS ? std::max(1, m_rows / 16) : m_rows;
-    parallelFor(0, m_rows, minRows, [&](int band0, int band1) {
-        thread_local std::vector<float> dx2;
-        dx2.resize(size_t(m_cols));
-        for (const EWaveSource& s : sources) {
-            const float r = std::max(s.radiusCells, 1.0f);
-            const int z0 = std::max(band0, int(std::ceil(s.gz - r))), z1 = std::min(band1 - 1, int(std::floor(s.gz + r)));
-            const int x0 = std::max(0, int(std::ceil(s.gx - r))), x1 = std::min(m_cols - 1, int(std::floor(s.gx + r)));
-            if (z0 > z1 || x0 > x1) continue;
-            const float invR2 = 1.0f / (r * r);
-            for (int x = x0; x <= x1; ++x) {
-                const float dx = float(x) - s.gx;
-                dx2[size_t(x - x0)] = dx * dx * invR2;
-            }
-            sourceKernel(m_sourceSum.data() + size_t(z0) * size_t(m_cols) + size_t(x0), size_t(m_cols), z1 - z0 + 1,
-                         float(z0) - s.gz, invR2, dx2.data(), x1 - x0 + 1, s.accel * dt);
-        }
-    });
-}
+void EWaveField::addSources(std::span<const EWaveSource> sources, float dt) { m_sources.add(sources, dt); }
 
 // Fixed: the new cells at 0 and the volume recounted (its ring drains anyway). Periodic and
 // Absorbing keep the volume, the k = 0 mode, exactly: the new cells come in at the mean level
@@ -712,38 +399,18 @@ void EWaveField::scroll(int dx, int dz) {
     const double volume = m_volume;
     scrollCells(m_h, m_rows, m_cols, glm::ivec2(dx, dz), keep ? volume / double(m_cells) : 0.0);
     scrollCells(m_v, m_rows, m_cols, glm::ivec2(dx, dz), 0.0);
-    for (float* f : m_horiz) scrollCells(f, m_rows, m_cols, glm::ivec2(dx, dz), 0.0f);
+    for (int f = 0; f < 4; ++f) scrollCells(m_transforms.horizontal(f), m_rows, m_cols, glm::ivec2(dx, dz), 0.0f);
     syncHeight();
     if (!keep) return;
     m_volume = volume;
     conserveVolume();
 }
 
-EWaveSource ewaveSource(const RippleStamp& stamp, float gx, float gz, float cellSize, float gravity, float verticalVelocity) {
-    EWaveSource s;
-    s.gx = gx;
-    s.gz = gz;
-    s.radiusCells = stamp.radiusCells;
-    // heightScale = SD·SHR·Δ, so g·D/R = g·heightScale·SR/(SR·Δ) = g·SD·SHR; the stagnation
-    // pressure ρ·v²/2 over the same patch adds v²/(2R), pushing the way SD points.
-    const float sd = stamp.heightScale < 0.0f ? -1.0f : 1.0f;
-    const float radius = std::max(stamp.radiusCells, 1.0f) * cellSize;
-    const float hydrostatic = gravity * (stamp.heightScale / cellSize);
-    // Capped at MAX_DYNAMIC_G·g: over a crossing of 2R/|v| the stagnation term gives the water
-    // an impulse of about |v|, which for a fast ball (16 m/s) is a jet, not a ring; linear
-    // waves cannot carry it (the default scene's cannonballs made 1.1 m spikes uncapped).
-    const float dynamic = sd * std::min(verticalVelocity * verticalVelocity / (2.0f * radius),
-                                        MAX_DYNAMIC_G * gravity);
-    s.accel = (hydrostatic + dynamic) * std::max(0.0f, 1.0f + stamp.accelerationFactor);
-    return s;
-}
-
 void EWaveField::clear() {
     applySources();
     std::fill(m_h, m_h + m_cells, 0.0);
     std::fill(m_v, m_v + m_cells, 0.0);
-    for (float* f : m_horiz) std::fill(f, f + m_cells, 0.0f);
-    m_velocityWavenumber = 0.0;
+    m_transforms.clearHorizontal();
     syncHeight();
 }
 

@@ -4,13 +4,13 @@
 // and keeps the water's volume (the mean of h): pressures and the border move water, never make it.
 // Row-major rows×cols floats, row = z, column = x; h in metres, v in m/s.
 #pragma once
+#include "interaction/ewave/ewave_medium.h"
+#include "interaction/ewave/ewave_sources.h"
+#include "interaction/ewave/ewave_transforms.h"
 #include "interaction/ripple_def.h"
-#include "interaction/sphere_stamp.h"
 
 #include <span>
 #include <vector>
-
-struct fftwf_plan_s;
 
 namespace ob::interaction {
 
@@ -18,26 +18,10 @@ namespace ob::interaction {
 // Fixed holds the outer ring of cells at h = v = 0 after each step (waves reflect); Absorbing
 // damps h and v in a sponge band in real space, so waves do not wrap around.
 
-struct EWaveSource;
-
-/// The water the waves run in: its restoring forces, its depth and its own viscosity, in the
-/// dispersion ω² = (g·k + (σ/ρ)·k³)·tanh(k·d) (d = 0: deep, tanh = 1) and the damping 2νk².
-struct EWaveMedium {
-    double gravity;           ///< g, m/s², > 0
-    double capillarity;       ///< σ/ρ, m³/s², >= 0
-    double depth = 0.0;       ///< d, m, >= 0; 0 = deep water (no bottom)
-    double viscosity = 0.0;   ///< ν, kinematic, m²/s, >= 0: every wave's amplitude decays as exp(−2νk²t) (Lamb §348)
-    /// g, σ/ρ and ν of an [environment], over water `depth` m deep (0 = deep).
-    static EWaveMedium of(const environment::EnvironmentDef& env, double depth = 0.0) {
-        return {double(env.gravity), environment::capillarity(env), depth, double(env.water_viscosity)};
-    }
-    /// A default [environment]'s g and σ/ρ, deep and without viscosity (a field's medium until told otherwise).
-    static EWaveMedium ideal() { return {double(environment::EnvironmentDef{}.gravity), environment::capillarity({})}; }
-    /// ω(k), rad/s, for a wavenumber k in rad/m.
-    double omega(double k) const;
-};
-
-/// The dispersive ripple field: state (h, v) stepped exactly per Fourier mode.
+/// The dispersive ripple field: state (h, v) stepped exactly per Fourier mode. The facade of three
+/// parts: the state itself (here: h, v, their float copies, the volume, the boundary), its
+/// transforms (EWaveTransforms, ewave_transforms.h: the plans, spectra, per-mode coefficients and
+/// the horizontal fields) and its sources (EWaveSources, ewave_sources.h: the stamps' sum beside v).
 ///
 /// State in double precision, transforms in float, applied to the step's change only: a step
 /// adds to (h, v) the inverse transform of (R − 1)·(ĥ, v̂), R the mode's rotation and damping
@@ -135,7 +119,7 @@ public:
     /// Scales what the sources added since v was last read or stepped at cell `index`
     /// (z·cols + x) by `factor` in [0, 1]: where a floating hull holds the water, no pressure
     /// acts on it (EWaveSolver, docs/ewave.md#hulls).
-    void scaleQueuedSources(size_t index, float factor) { m_sourceSum[index] *= factor; }
+    void scaleQueuedSources(size_t index, float factor) { m_sources.scale(index, factor); }
 
     /// Moves the patch by (dx, dz) whole cells: the value at (x+dx, z+dz) moves to (x, z) in h
     /// and v, so waves stay put in the world. Cells with no source: v = 0 and h the mean level,
@@ -202,16 +186,20 @@ public:
     /// applied to it as to v (Fixed: the ring 0; Absorbing: scaled by the sponge factors); scrolls
     /// with the state (new cells 0), 0 after clear(). An edit* leaves it as it was until the
     /// next step or deriveHorizontal(). Not part of the state: nothing hashes it.
-    std::span<const float> horizontalVelocity(int axis) const { return {m_horiz[axis], m_cells}; }
+    std::span<const float> horizontalVelocity(int axis) const { return {m_transforms.horizontal(axis), m_cells}; }
     /// The horizontal displacement of the surface, ξ̂ = i·K/(|K|·tanh(|K|d))·ĥ (∂ξ/∂t = u), m, as
     /// horizontalVelocity; all 0 unless keepHorizontalDisplacement(true) (the coarse levels' Hermite
     /// in time reads it: EWaveLevels).
-    std::span<const float> horizontalDisplacement(int axis) const { return {m_horiz[2 + axis], m_cells}; }
+    std::span<const float> horizontalDisplacement(int axis) const { return {m_transforms.horizontal(2 + axis), m_cells}; }
     /// Whether the steps make horizontalDisplacement too (two more inverse transforms a step).
     void keepHorizontalDisplacement(bool on);
+    /// Whether the steps make horizontalVelocity (on unless told: its two inverse transforms and its
+    /// share of the spectral pass). Off, it and velocityWavenumber read 0: the step as it was
+    /// before the velocity, the benchmarks' baseline (BM_EWaveStep's `velocity` argument).
+    void keepHorizontalVelocity(bool on);
     /// The wavenumber the vertical velocity's variance is centred on, Σ|K|·|v̂|² / Σ|v̂|² over the
     /// modes K ≠ 0 of the state the last step made (before the boundary), rad/m; 0 when still.
-    double velocityWavenumber() const { return m_velocityWavenumber; }
+    double velocityWavenumber() const { return m_transforms.velocityWavenumber(); }
     /// Derives the horizontal fields and velocityWavenumber from the state as it is now (after
     /// edit*, or a GPU twin's read-back): one forward transform of v (and of h with the
     /// displacement) and the inverse ones; no boundary (the state has had its own).
@@ -219,86 +207,38 @@ public:
     /// Scales the horizontal velocity and displacement at cell `index` (z·cols + x) by `factor`
     /// in [0, 1]: towards 0 inside a body, as the obstruction scales v (obstructField).
     void scaleHorizontal(size_t index, float factor) {
-        for (float* f : m_horiz) f[index] *= factor;
+        for (int f = 0; f < 4; ++f) m_transforms.horizontal(f)[index] *= factor;
     }
 
 private:
     void chooseThreads();
     void prepare(float dt);
-    void changeRows(int j0, int j1);
-    void applySources() const;  // the sources' float sums into v (rows m_sourceRows0..1), then 0
+    void applySources() const;  // the sources' float sums into v, their rows marked for the float copy
     void finishRows(int t, int z0, int z1);
     void finishHorizontal(int f);  // the boundary on horizontal field f (0, 1: u; 2, 3: ξ)
     void inverseTransforms(bool state);  // pass 3 (state: h and v too) over the workers
-    void horizontalRow(int j, bool change);  // û (ξ̂) of spectrum row j's new state, its sums (see the .cpp)
-    float rowKz(int j) const;                // kz of spectrum row j, rad/m (0 at the Nyquist row)
-    void prepareHorizontal();  // m_riesz, m_kabs, m_kx, m_weight of the medium
-    void sumVelocityWavenumber();
-    void syncFloatCopies();  // before the forward transforms  // m_rowSums in row order into m_velocityWavenumber
+    void syncFloatCopies();  // before the forward transforms
     void conserveVolume();  // pass 4: h += (volume − Σh)/cells
 
-    int m_rows, m_cols, m_specCols;
-    size_t m_cells, m_modes;
+    int m_rows, m_cols;
+    size_t m_cells;
     float m_cellSize;
     RippleBoundary m_boundary;
     int m_spongeWidth = 0;
     float m_decayTime = 0.0f, m_viscosity = 0.0f;
     double m_volume = 0.0;             // Σh the step keeps (addHeight adds to it, syncHeight recounts it), m
     EWaveMedium m_medium = EWaveMedium::ideal();
-    float m_preparedDt = -1.0f;        // dt of the coefficients below (and the sponge factors)
+    float m_preparedDt = -1.0f;        // dt of the coefficients (and the sponge factors)
     int m_stepThreads = 1;             // the step's passes on 1 or 2 workers (measured, chooseThreads)
-    int m_sourceThreads = 1;           // addSources' row bands on 1 or workerCount() workers (measured)
     bool m_stale = false;              // the state was written through edit*: m_float needs a rebuild
     mutable int m_vRows0 = 0, m_vRows1 = 0;  // rows [m_vRows0, m_vRows1) of v written by sources since m_float[1] was made
-    // The sources' velocity not yet in v: float, rows·cols, nonzero only in rows
-    // [m_sourceRows0, m_sourceRows1). Applied by the readers of v (logically const).
-    mutable std::vector<float> m_sourceSum;
-    mutable int m_sourceRows0 = 0, m_sourceRows1 = 0;
     double* m_h = nullptr;             // fftw_alloc'd real arrays, rows·cols
     double* m_v = nullptr;
     float* m_float[2] = {};            // per field (h, v): float(state), rows·cols; the forward transforms' input
-    float* m_spec[2] = {};             // per field: its spectrum, then its change's, complex rows × (cols/2 + 1) (re, im)
-    float* m_change[2] = {};           // per field: its change in real space, rows·cols
-    fftwf_plan_s* m_forward = nullptr;   // r2c rows × cols, out of place, input kept (new-array execute)
-    fftwf_plan_s* m_backward = nullptr;  // c2r, out of place (destroys its input)
-    std::vector<double> m_coef;        // per mode of rows 0..rows/2: a − 1, b, c (modeStep's, times 1/(rows·cols))
     std::vector<float> m_sponge;       // per cell: the factor exp(−γΔt) (Absorbing), 1 away from the band
-    // The horizontal fields (horizontalVelocity, horizontalDisplacement): ux, uz (m/s), ξx, ξz (m).
-    float* m_horiz[4] = {};            // rows·cols each, row-major: the inverse transforms' output
-    float* m_horizSpec[4] = {};        // their spectra, complex rows × (cols/2 + 1)
-    std::vector<float> m_riesz;        // per mode of rows 0..rows/2: 1/(|K|·tanh(|K|d)), m; 0 at K = 0
-    std::vector<float> m_kabs;         // per mode of rows 0..rows/2: |K|, rad/m
-    std::vector<float> m_kx;           // per spectrum column: kx, rad/m, 0 at the Nyquist column
-    std::vector<float> m_weight;       // per spectrum column: its modes' count in the full spectrum (1 or 2)
-    std::vector<double> m_rowSums;     // per spectrum row: Σw·|K|·|v̂'|², Σw·|v̂'|² (velocityWavenumber)
-    std::vector<float> m_power;        // per mode: w·|v̂'|² (the step's fused pass, summed per row after it)
-    double m_velocityWavenumber = 0.0; // rad/m
-    bool m_displacement = false;       // keepHorizontalDisplacement
+    // The sources' velocity not yet in v, applied by the readers of v (logically const).
+    mutable EWaveSources m_sources;
+    EWaveTransforms m_transforms;
 };
-
-/// A bounding sphere's stamp as an ewave source: a vertical acceleration `accel` (m/s²) on v
-/// over a biweight bump of radius `radiusCells` centred at grid (gx, gz), for one step.
-struct EWaveSource {
-    float gx = 0.0f, gz = 0.0f;  ///< exact centre, cells (column x, row z)
-    float radiusCells = 0.0f;    ///< R, cells
-    float accel = 0.0f;          ///< m/s² at the centre, + lifts the water
-};
-
-/// How a Table 2 stamp (planStamp: the same decision, SD, SHR, AF, SR as kang2008) enters the
-/// ewave state. Eq. 5 would raise the water at the centre by D = SD·SHR·SR·Δ (PH = SR there);
-/// here the sphere is a moving surface pressure over its footprint, p = −ρ·(g·D + SD·v²/2)·w(r):
-/// the hydrostatic pressure of that displacement plus the stagnation pressure of the sphere's
-/// vertical speed v (a ball entering or leaving the water at speed pushes far harder than
-/// one at rest; a sphere moving level has v = 0). In deep water a pressure patch of radius
-/// R = SR·Δ drives v̂ by −|k|·p̂/ρ with |k| ≈ 1/R, so while the sphere stamps the water's
-/// vertical velocity gains (g·SD·SHR + SD·min(v²/(2R), 15·g))·w(r) per second (the cap keeps a
-/// fast ball's splash a ring, not a jet linear waves cannot carry): a sphere at rest settles
-/// into a dip of about D, a moving one leaves a Kelvin wake, a falling ball rings the water.
-/// Eq. 7's AF scales it by (1 + AF) (clamped at 0): AF > 0 a stronger push, AF < 0 a weaker
-/// one. Eq. 5's base height is not used (a pressure acts on whatever the water does).
-/// (gx, gz): the sphere's exact grid position (not the snapped centre cell), so a moving
-/// source makes no grid noise. gravity g in m/s², verticalVelocity in m/s.
-EWaveSource ewaveSource(const RippleStamp& stamp, float gx, float gz, float cellSize, float gravity,
-                        float verticalVelocity = 0.0f);
 
 } // namespace ob::interaction
