@@ -200,6 +200,16 @@ void OceanFftCpu::unpackRows(int rowBegin, int rowEnd) {
 }
 
 void OceanFftCpu::update(double t) {
+    updateMaps(t);
+    if (m_texels) m_texels->fill(*this);
+}
+
+void OceanFftCpu::setMakeTexels(bool on) {
+    if (on && !m_texels) m_texels = std::make_unique<OceanTexels>();
+    if (!on) m_texels.reset();
+}
+
+void OceanFftCpu::updateMaps(double t) {
     m_time = t;
     const int transforms = cascadeCount() * OCEAN_PACKED_TRANSFORMS;
     using Clock = std::chrono::steady_clock;
