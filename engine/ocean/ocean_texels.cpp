@@ -3,6 +3,8 @@
 
 #include "ocean/ocean_fft_cpu.h"
 
+#include <algorithm>
+
 namespace ob::ocean {
 
 namespace {
@@ -39,6 +41,7 @@ void OceanTexels::fill(const OceanFftCpu& fft) {
     displacement.resize(total);
     slopes.resize(total);
     const size_t texels = size_t(resolution) * size_t(resolution);
+    extremes.assign(size_t(cascades), {});
     for (int c = 0; c < cascades; ++c) {
         const float* dx = fft.channel(c, OceanChannel::DispX);
         const float* h = fft.channel(c, OceanChannel::Height);
@@ -48,7 +51,11 @@ void OceanTexels::fill(const OceanFftCpu& fft) {
         const float* jac = fft.channel(c, OceanChannel::Jacobian);
         float* d = displacement.data() + texels * size_t(c) * 4;
         float* s = slopes.data() + texels * size_t(c) * 4;
+        Extremes& e = extremes[size_t(c)];
         for (size_t p = 0; p < texels; ++p) {
+            e.hi = std::max(e.hi, h[p]);
+            e.lo = std::min(e.lo, h[p]);
+            e.d2 = std::max(e.d2, dx[p] * dx[p] + dz[p] * dz[p]);
             d[4 * p] = dx[p];
             d[4 * p + 1] = h[p];
             d[4 * p + 2] = dz[p];

@@ -18,6 +18,12 @@ class OceanFftCpu;
 /// bytes written at level 0 (4 MiB at N = 256, C = 2).
 struct OceanTexels {
     std::vector<float> displacement, slopes;
+    /// Each cascade's extremes over its texels, found in the same pass (OceanFftCpu::displacementBounds).
+    struct Extremes {
+        float hi = 0.0f, lo = 0.0f;  ///< max(0, h), min(0, h), m
+        float d2 = 0.0f;             ///< max(Dx² + Dz²), m², not multiplied by λ²
+    };
+    std::vector<Extremes> extremes;
     int resolution = 0;  ///< N
     int cascades = 0;    ///< layers
     int levels = 0;      ///< log2(N) + 1

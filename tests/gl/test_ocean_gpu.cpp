@@ -260,6 +260,14 @@ TEST_CASE("the CPU backend's texels made beside its update draw as its maps uplo
             else CHECK(worst <= 1e-6 * peak);     // a 2 × 2 mean, rounded in another order
         }
     }
+    // The grid's reach from the extremes the texels' pass found: the same floats as a scan of the maps.
+    OceanFftCpu plain(def, 1);
+    plain.update(7.3);
+    const DisplacementBounds made = cpu.displacementBounds(), scanned = plain.displacementBounds();
+    CHECK(made.up == scanned.up);
+    CHECK(made.down == scanned.down);
+    CHECK(made.horizontal == scanned.horizontal);
+    CHECK(made.up > 0.0f);
     // Off again: no texels after the next update.
     cpu.setMakeTexels(false);
     cpu.update(8.0);
