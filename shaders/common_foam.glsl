@@ -82,8 +82,12 @@ vec3 shadeFoam(vec3 color, vec2 world, vec3 n, vec3 sun, float jacobian, float r
     float repeats = max(span.x, span.y);
     float laceBlur = foamBlur(repeats), bubbleBlur = foamBlur(repeats * FOAM_BUBBLE_SCALE);
     float fineBlur = foamBlur(repeats * FOAM_BUBBLE_SCALE * FOAM_FRESH_SCALE);
-    vec2 fineUv = (fuv * FOAM_FRESH_SCALE + FOAM_FRESH_OFFSET) / FOAM_PATTERN_REPEAT;
-    vec2 fineDx = dFdx(fineUv), fineDy = dFdy(fineUv);
+#ifndef WATER_FULL_QUALITY
+    // The fine bubbles' lookup before any branch, with the pixel's own derivatives: a software
+    // rasteriser pays every branch's work anyway, and with explicit ones (textureGrad, as a
+    // branch would need) paid more for it; a GPU pays one RGBA8 lookup a water pixel.
+    float fineBubbles = texture(u_foamPattern, (fuv * FOAM_FRESH_SCALE + FOAM_FRESH_OFFSET) / FOAM_PATTERN_REPEAT).a;
+#endif
     if (density <= 0.0) return color;
     // --- opacity: the lace's soft ramp (thinner as the density falls), the bubbles' holes,
     // both tending to their means where the pixel averages them; thin old foam lets water through
@@ -91,14 +95,11 @@ vec3 shadeFoam(vec3 color, vec2 world, vec3 n, vec3 sun, float jacobian, float r
     float laceAlpha = mix(foamRamp(lace.z, t), foamRampMean(t), laceBlur);
     float holes = mix(0.55 + 0.45 * bubbles, 0.775, bubbleBlur);
     float alpha = laceAlpha * holes * (0.1 + 0.9 * density * density);
-    // fresh foam (only there: the fine bubbles' lookup costs): holes where either bubble octave
-    // is low, soft-rimmed, each octave's toward its mean where the pixel averages it; the lace's
-    // soft ramp above carries the rim along the coverage
+    // fresh foam: holes where either bubble octave is low, soft-rimmed, each octave's toward its
+    // mean where the pixel averages it; the lace's soft ramp above carries the rim along the coverage
     if (density > 0.5) {
 #ifdef WATER_FULL_QUALITY
         float fineBubbles = foamPattern((fuv * FOAM_FRESH_SCALE + FOAM_FRESH_OFFSET) * FOAM_BUBBLE_SCALE + FOAM_BUBBLE_OFFSET).z;
-#else
-        float fineBubbles = textureGrad(u_foamPattern, fineUv, fineDx, fineDy).a;
 #endif
         float open = mix(smoothstep(0.0, FOAM_HOLE_WIDTH, bubbles - FOAM_HOLE_BELOW), FOAM_HOLES_MEAN, bubbleBlur) *
                      mix(smoothstep(0.0, FOAM_HOLE_WIDTH, fineBubbles - FOAM_HOLE_BELOW), FOAM_HOLES_MEAN, fineBlur);

@@ -9,6 +9,7 @@
 #define WATER_CASCADES int(water.gridParams.z)
 #define WATER_RIPPLES (water.rippleParams.w > 0.0)
 #define WATER_FOAM_MAP (water.foamParams.w > 0.0)
+#define WATER_CLOUDS (frame.sky.x > 0.0)
 #endif
 
 layout(binding = DISPLACEMENT_UNIT) uniform sampler2DArray u_displacement;  // layer c: (Dx, h, Dz, J)

@@ -14,7 +14,8 @@
 // Compiled per gfx::WaterVariant: the cascade count and the switches (WATER_REFLECTIONS,
 // WATER_REFRACTIONS, WATER_FOAM, WATER_FOAM_MAP, WATER_RIPPLES), the eye's side
 // (WATER_UNDERWATER; WATER_WATERLINE: the surface crosses the near plane, each pixel takes its
-// own), the hulls' clip (WATER_HULL_CLIP) and the Fresnel law (WATER_EXACT_FRESNEL) are constants here. With
+// own), the hulls' clip (WATER_HULL_CLIP), the Fresnel law (WATER_EXACT_FRESNEL) and whether the
+// sky has clouds (WATER_CLOUDS) are constants here. With
 // WATER_FULL_QUALITY ([render] water_full_quality): every term per pixel, the reference the
 // shipped shading is tested against (the ripple slope from four height lookups, the haze from
 // the sky and the cascades' weights per pixel instead of per vertex).
@@ -108,11 +109,12 @@ void main() {
         o_color = finalColorUnderwater(seen, gl_FragCoord.xy);
         return;
     }
-    // Under clouds the baked cube holds their pattern (the formula only their mean). A branch,
-    // not a select: a software rasteriser would run both.
+    // Under clouds the baked cube holds their pattern (the formula only their mean); a clear sky
+    // is the formula alone. The variant's constant, so the program holds one of the two (a
+    // software rasteriser runs both sides of a branch, even on a uniform).
     vec3 sky;
-    if (cloudCover() > 0.0) sky = textureLod(u_sky, r, 0.0).rgb;
-    else sky = skyRadiance(normalize(r), sun);
+    if (WATER_CLOUDS) sky = textureLod(u_sky, r, 0.0).rgb;
+    else sky = clearSkyRadiance(normalize(r), sun);
 
     // --- lookups into the targets, offset by the normal and the scrolling DU/DV map
     vec2 screen = gl_FragCoord.xy / frame.viewport.xy;

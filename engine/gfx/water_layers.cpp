@@ -1,4 +1,4 @@
-// Ripple, ripple slope and foam textures, re-uploaded every frame; the flat FFT stand-ins.
+// Ripple and foam textures, re-uploaded every frame, the ripple slopes made from them on the GPU; the flat FFT stand-ins.
 #include "gfx/water_layers.h"
 
 #include "gfx/render_target.h"
@@ -15,19 +15,6 @@ namespace ob::gfx {
 using namespace glsl;  // the binding points and locations (shaders/common_bindings.glsl)
 
 namespace {
-// Central differences (dh/dx, dh/dz) = (h(i+1, j) − h(i−1, j), h(i, j+1) − h(i, j−1)) / 2Δ of
-// the n² ripple heights (row j along z), heights outside the patch 0, on an (n + 2)² grid
-// whose texel (i + 1, j + 1) is cell (i, j): the water shader's ripple slope in one lookup.
-void rippleSlopes(const float* h, int n, float cellSize, std::vector<glm::vec2>& out) {
-    const size_t m = size_t(n) + 2;
-    out.assign(m * m, glm::vec2(0.0f));
-    const auto at = [&](int i, int j) { return i < 0 || j < 0 || i >= n || j >= n ? 0.0f : h[size_t(j) * size_t(n) + size_t(i)]; };
-    const float scale = 1.0f / (2.0f * cellSize);
-    for (int j = -1; j <= n; ++j)
-        for (int i = -1; i <= n; ++i)
-            out[size_t(j + 1) * m + size_t(i + 1)] = scale * glm::vec2(at(i + 1, j) - at(i - 1, j), at(i, j + 1) - at(i, j - 1));
-}
-
 // A map read with a zero border: no ripples, no foam outside it.
 Texture borderedMap(const char* label, GLenum format, int cells) {
     Texture texture = createTexture2D(label, format, glm::ivec2(cells));
@@ -76,8 +63,7 @@ void WaterLayers::upload(const WaterView& water, bool fft, bool foamOn, WaterUni
             m_rippleCells = water.rippleCells;
         }
         glTextureSubImage2D(m_ripples.id(), 0, 0, 0, m_rippleCells, m_rippleCells, GL_RED, GL_FLOAT, water.ripples);
-        rippleSlopes(water.ripples, m_rippleCells, water.rippleCellSize, m_slopeTexels);
-        glTextureSubImage2D(m_rippleSlopes.id(), 0, 0, 0, m_rippleCells + 2, m_rippleCells + 2, GL_RG, GL_FLOAT, m_slopeTexels.data());
+        makeRippleSlopes(water.rippleCellSize);
         u.rippleParams = glm::vec4(water.rippleOrigin, water.rippleCellSize, float(m_rippleCells));
         uploadLevels(water, u);
     }
@@ -99,6 +85,23 @@ void WaterLayers::upload(const WaterView& water, bool fft, bool foamOn, WaterUni
     const bool levels = ripples && u.rippleFade.x > 0.0f;
     glBindTextureUnit(RIPPLE_LEVELS_UNIT, levels ? m_levels.id() : 0);
     glBindTextureUnit(RIPPLE_LEVEL_SLOPES_UNIT, levels ? m_levelSlopes.id() : 0);
+}
+
+// Level 0's slopes from the heights just uploaded (ripple_slopes.comp): central differences
+// (dh/dx, dh/dz) = (h(i+1, j) − h(i−1, j), h(i, j+1) − h(i, j−1)) / 2Δ with heights outside the
+// patch 0, on an (n + 2)² grid whose texel (i + 1, j + 1) is cell (i, j): the water shader's
+// ripple slope in one lookup. On the GPU, not the main thread: the same floats (1/2Δ from here).
+void WaterLayers::makeRippleSlopes(float cellSize) {
+    if (!m_slopeProgram.id()) m_slopeProgram = loadProgram("ripple slopes", {"ripple_slopes.comp"});
+    glUseProgram(m_slopeProgram.id());
+    glBindTextureUnit(RIPPLE_SLOPES_HEIGHT_UNIT, m_ripples.id());
+    glBindImageTexture(RIPPLE_SLOPES_IMAGE, m_rippleSlopes.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);
+    glProgramUniform2f(m_slopeProgram.id(), RIPPLE_SLOPES_GRID_LOCATION, float(m_rippleCells), 1.0f / (2.0f * cellSize));
+    const GLuint groups = GLuint((m_rippleCells + 2 + RIPPLE_LEVEL_TILE - 1) / RIPPLE_LEVEL_TILE);
+    glDispatchCompute(groups, groups, 1);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+    glBindTextureUnit(RIPPLE_SLOPES_HEIGHT_UNIT, 0);
+    glUseProgram(0);
 }
 
 // The coarse ripple levels as layers of two arrays (heights with a zero border, slopes with a

@@ -22,11 +22,12 @@ public:
     void upload(const WaterView& water, bool fft, bool foamOn, WaterUniforms& u);
 
 private:
+    void makeRippleSlopes(float cellSize);
     void uploadLevels(const WaterView& water, WaterUniforms& u);
     Texture m_flatDisplacement, m_flatSlopes;  // 1×1 layers: no displacement, zero slope, J = 1
     Texture m_ripples;        // R32F heights of the ripple patch, re-uploaded every frame
     Texture m_rippleSlopes;   // RG32F central differences of the heights, one cell of margin, every frame
-    std::vector<glm::vec2> m_slopeTexels;  // their texels, (cells + 2)² row-major
+    Program m_slopeProgram;   // ripple_slopes.comp: those differences on the GPU
     int m_rippleCells = 0;
     Texture m_levels, m_levelSlopes;  // the coarse levels' heights and slopes, 2D arrays of MAX_RIPPLE_LEVELS layers
     Texture m_levelStates;            // their two states, 4 layers a level (h0, h1, v0, v1), uploaded when they change

@@ -57,7 +57,7 @@ std::string WaterVariant::defines() const {
     const auto flag = [](const char* name, bool on) { return std::string("#define ") + name + (on ? " true\n" : " false\n"); };
     return "#define WATER_VARIANT\n#define WATER_CASCADES " + std::to_string(cascades) + "\n" + flag("WATER_RIPPLES", ripples) +
            flag("WATER_FOAM_MAP", foamMap) + flag("WATER_UNDERWATER", underwater) + flag("WATER_WATERLINE", waterline) +
-           flag("WATER_EXACT_FRESNEL", exactFresnel) +
+           flag("WATER_EXACT_FRESNEL", exactFresnel) + flag("WATER_CLOUDS", clouds) +
            flag("WATER_REFLECTIONS", reflections) + flag("WATER_REFRACTIONS", refractions) + flag("WATER_FOAM", foam) +
            flag("WATER_HULL_CLIP", hullClip) + "#define WATER_HULL_DEPTH_SAMPLES " + std::to_string(hullDepthSamples) + "\n" +
            (fullQuality ? "#define WATER_FULL_QUALITY\n" : "");
@@ -176,6 +176,7 @@ void WaterPass::uploadUniforms(FrameContext& frame, const CameraView& camera, co
                  .underwater = frame.state.underwater,
                  .waterline = frame.state.waterline,
                  .exactFresnel = def.fresnel == Fresnel::Exact,
+                 .clouds = frame.sky.cloud_cover > 0.0f,
                  .reflections = def.reflections,
                  .refractions = def.refractions,
                  .foam = def.foam,

@@ -76,6 +76,7 @@ struct WaterVariant {
     bool underwater = false;   ///< the whole near plane is below the surface: the surface seen from below
     bool waterline = false;    ///< the surface crosses the near plane: each pixel takes its side (both shadings compiled)
     bool exactFresnel = false; ///< [render] fresnel = "exact" (else Schlick)
+    bool clouds = false;       ///< [sky] cloud_cover > 0: the sky reflected from the baked cube (its clouds), else the clear sky's formula
     bool reflections = true, refractions = true, foam = true;  ///< [render] switches
     bool fullQuality = false;  ///< [render] water_full_quality: every term per pixel, the reference
     bool hullClip = false;     ///< hulls are clipped out of the water ([render] hull_clip and at least one hull)

@@ -18,6 +18,7 @@
 #include <mutex>
 #include <string>
 #include <algorithm>
+#include <tuple>
 #include <fcntl.h>
 #include <fftw3.h>
 #include <sys/file.h>
@@ -140,13 +141,19 @@ const CascadeSpectrum& OceanFftCpu::spectrum(int cascade) const {
 DisplacementBounds OceanFftCpu::displacementBounds() const {
     DisplacementBounds bounds;
     const size_t count = size_t(m_n) * size_t(m_n);
+    const OceanTexels* made = texels();  // their pass found them already
     for (int c = 0; c < cascadeCount(); ++c) {
-        const float *h = channel(c, OceanChannel::Height), *dx = channel(c, OceanChannel::DispX), *dz = channel(c, OceanChannel::DispZ);
         float hi = 0.0f, lo = 0.0f, d2 = 0.0f;
-        for (size_t i = 0; i < count; ++i) {
-            hi = std::max(hi, h[i]);
-            lo = std::min(lo, h[i]);
-            d2 = std::max(d2, dx[i] * dx[i] + dz[i] * dz[i]);
+        if (made) {
+            const OceanTexels::Extremes& e = made->extremes[size_t(c)];
+            hi = e.hi, lo = e.lo, d2 = e.d2;
+        } else {
+            const float *h = channel(c, OceanChannel::Height), *dx = channel(c, OceanChannel::DispX), *dz = channel(c, OceanChannel::DispZ);
+            for (size_t i = 0; i < count; ++i) {
+                hi = std::max(hi, h[i]);
+                lo = std::min(lo, h[i]);
+                d2 = std::max(d2, dx[i] * dx[i] + dz[i] * dz[i]);
+            }
         }
         bounds += {hi, -lo, std::abs(m_lambda) * std::sqrt(d2)};
     }
@@ -200,6 +207,16 @@ void OceanFftCpu::unpackRows(int rowBegin, int rowEnd) {
 }
 
 void OceanFftCpu::update(double t) {
+    updateMaps(t);
+    if (m_texels) m_texels->fill(*this);
+}
+
+void OceanFftCpu::setMakeTexels(bool on) {
+    if (on && !m_texels) m_texels = std::make_unique<OceanTexels>();
+    if (!on) m_texels.reset();
+}
+
+void OceanFftCpu::updateMaps(double t) {
     m_time = t;
     const int transforms = cascadeCount() * OCEAN_PACKED_TRANSFORMS;
     using Clock = std::chrono::steady_clock;

@@ -3,6 +3,7 @@
 #pragma once
 #include "ocean/displacement_bounds.h"
 #include "ocean/ocean_def.h"
+#include "ocean/ocean_texels.h"
 #include "ocean/spectrum.h"
 
 #include <memory>
@@ -47,8 +48,15 @@ public:
     OceanFftCpu(const OceanFftCpu&) = delete;
     OceanFftCpu& operator=(const OceanFftCpu&) = delete;
 
-    /// Computes every cascade's channels at time t, seconds (any t; equal t, equal maps).
+    /// Computes every cascade's channels at time t, seconds (any t; equal t, equal maps), and
+    /// with setMakeTexels the renderer's texels of them.
     void update(double t);
+    /// With `on`, every later update() also makes the renderer's texels of its maps (OceanTexels:
+    /// the interleaved layers and their mips) on the thread that runs it: a view's CPU backend.
+    void setMakeTexels(bool on);
+    bool makesTexels() const { return m_texels != nullptr; }
+    /// The texels of the last update(), or null (off, or none made since it was turned on).
+    const OceanTexels* texels() const { return m_texels && m_texels->time == m_time ? m_texels.get() : nullptr; }
 
     /// Time of the last update(), seconds (0 before the first).
     double time() const { return m_time; }
@@ -96,6 +104,7 @@ private:
     void synthesizeRows(int pairBegin, int pairEnd);
     void transform(int index);
     void unpackRows(int rowBegin, int rowEnd);
+    void updateMaps(double t);
 
     int m_n = 0;
     int m_threads = 1;
@@ -104,6 +113,7 @@ private:
     StageMs m_stageMs;
     fftwf_plan_s* m_plan = nullptr;  // one in-place backward plan for every buffer (new-array execute)
     std::vector<std::unique_ptr<Cascade>> m_cascades;
+    std::unique_ptr<OceanTexels> m_texels;  // setMakeTexels
 };
 
 } // namespace ob::ocean

@@ -92,6 +92,7 @@ void oceanSystem(ecs::World& world, const ecs::Tick& tick) {
         // world was made, by a test or a tool, included): the next steps' maps are its maps.
         ocean->cpuNext = std::make_unique<ocean::OceanFftCpu>(ocean->def);
         for (int c = 0; c < ocean->def.cascades; ++c) ocean->cpuNext->spectrum(c) = ocean->cpu->spectrum(c);
+        ocean->cpuNext->setMakeTexels(ocean->cpu->makesTexels());
     }
     if (ocean->cpuNext) {
         // The next step's end time as the schedule will compute it (step / rate + step length);

@@ -47,6 +47,8 @@ void attachWaterGpu(ecs::World& world) {
         side.gpu = std::make_unique<ocean::OceanFftGpu>(ocean->def);
         if (!ocean->cpuNext) ocean->cpuNext = std::make_unique<ocean::OceanFftCpu>(ocean->def);
     }
+    // The CPU backend's maps come with their texels, made where they are updated (a worker, pipelined).
+    if (!gpu) ocean->cpu->setMakeTexels(true);
     logInfo("ocean: %s backend, %d² × %d cascade(s)", gpu ? "gpu (compute shaders)" : "cpu (FFTW)", ocean->def.resolution,
             ocean->def.cascades);
 }
@@ -110,9 +112,15 @@ gfx::WaterView prepareWaterView(ecs::World& world, double time) {
         side->uploadedTime = -1.0;
     }
     if (wanted >= 0.0 && wanted != side->uploadedTime) {
-        if (side->gpu) side->gpu->update(time, *side->textures);
-        else side->textures->upload(*ocean->cpu);
-        side->textures->generateMipmaps();
+        if (side->gpu) {
+            side->gpu->update(time, *side->textures);
+            side->textures->generateMipmaps();
+        } else if (const ocean::OceanTexels* texels = ocean->cpu->texels()) {
+            side->textures->upload(*texels);  // interleaved and filtered beside the maps' update
+        } else {
+            side->textures->upload(*ocean->cpu);
+            side->textures->generateMipmaps();
+        }
         side->uploadedTime = wanted;
     }
     view.windAngle = std::atan2(ocean->def.wind_direction.y, ocean->def.wind_direction.x);

@@ -298,3 +298,23 @@ TEST_CASE("the ripple levels' compute program uses the numbers of its bindings f
     CHECK(local[0] == RIPPLE_LEVEL_TILE);
     CHECK(local[1] == RIPPLE_LEVEL_TILE);
 }
+
+TEST_CASE("level 0's ripple slope program uses the numbers of its bindings file", "[gl][levels][bindings]") {
+    auto platform = platform::createHeadlessPlatform({64, 64});
+    const gfx::Program program = gfx::loadProgram("ripple_slopes.comp", {"ripple_slopes.comp"});
+    const GLuint id = program.id();
+    const std::map<std::string, int> expected = {
+        {"u_rippleHeights", RIPPLE_SLOPES_HEIGHT_UNIT}, {"u_rippleSlopesOut", RIPPLE_SLOPES_IMAGE}, {"u_grid", RIPPLE_SLOPES_GRID_LOCATION}};
+    std::set<std::string> seen;
+    for (GLuint i = 0; i < GLuint(activeCount(id, GL_UNIFORM)); ++i) {
+        const std::string name = resourceName(id, GL_UNIFORM, i);
+        INFO("uniform " << name);
+        REQUIRE(expected.count(name) == 1);
+        const GLint type = resourceValue(id, GL_UNIFORM, i, GL_TYPE), location = resourceValue(id, GL_UNIFORM, i, GL_LOCATION);
+        GLint actual = location;
+        if (isSampler(type) || isImage(type)) glGetUniformiv(id, location, &actual);
+        CHECK(actual == expected.at(name));
+        seen.insert(name);
+    }
+    CHECK(seen.size() == expected.size());
+}

@@ -225,6 +225,56 @@ TEST_CASE("OceanTextures holds the CPU backend's channels unchanged, one layer p
     CHECK(gfx::glErrorCount() == errorsBefore);
 }
 
+TEST_CASE("the CPU backend's texels made beside its update draw as its maps uploaded and mipmapped by the driver", "[ocean_gpu]") {
+    auto context = glContext();
+    const int errorsBefore = gfx::glErrorCount();
+    OceanDef def;
+    def.resolution = 32;
+    def.cascades = 2;
+    OceanFftCpu cpu(def, 1);
+    cpu.setMakeTexels(true);
+    cpu.update(7.3);
+    REQUIRE(cpu.texels() != nullptr);
+    // The reference: level 0 from the channels, levels 1… by glGenerateTextureMipmap.
+    OceanTextures driver(def.resolution, def.cascades), texels(def.resolution, def.cascades);
+    driver.upload(cpu);
+    driver.generateMipmaps();
+    texels.upload(*cpu.texels());
+    const auto read = [](const gfx::Texture& t, int level, int n, int layers) {
+        std::vector<float> out(size_t(n) * size_t(n) * size_t(layers) * 4);
+        glGetTextureImage(t.id(), level, GL_RGBA, GL_FLOAT, GLsizei(out.size() * sizeof(float)), out.data());
+        return out;
+    };
+    for (int level = 0; level < driver.mipLevels(); ++level) {
+        const int n = def.resolution >> level;
+        for (bool slopes : {false, true}) {
+            const auto expected = read(slopes ? driver.slopes() : driver.displacement(), level, n, def.cascades);
+            const auto actual = read(slopes ? texels.slopes() : texels.displacement(), level, n, def.cascades);
+            double peak = 0.0, worst = 0.0;
+            for (size_t p = 0; p < expected.size(); ++p) {
+                peak = std::max(peak, double(std::abs(expected[p])));
+                worst = std::max(worst, double(std::abs(actual[p] - expected[p])));
+            }
+            INFO("level " << level << (slopes ? ", slopes" : ", displacement") << ": worst " << worst << " of peak " << peak);
+            if (level == 0) CHECK(worst == 0.0);  // the channels themselves
+            else CHECK(worst <= 1e-6 * peak);     // a 2 × 2 mean, rounded in another order
+        }
+    }
+    // The grid's reach from the extremes the texels' pass found: the same floats as a scan of the maps.
+    OceanFftCpu plain(def, 1);
+    plain.update(7.3);
+    const DisplacementBounds made = cpu.displacementBounds(), scanned = plain.displacementBounds();
+    CHECK(made.up == scanned.up);
+    CHECK(made.down == scanned.down);
+    CHECK(made.horizontal == scanned.horizontal);
+    CHECK(made.up > 0.0f);
+    // Off again: no texels after the next update.
+    cpu.setMakeTexels(false);
+    cpu.update(8.0);
+    CHECK(cpu.texels() == nullptr);
+    CHECK(gfx::glErrorCount() == errorsBefore);
+}
+
 TEST_CASE("the GPU inverse FFT of an N = 8 spectrum equals a direct DFT of eq. 1 in double for every channel",
           "[ocean_gpu]") {
     auto context = glContext();

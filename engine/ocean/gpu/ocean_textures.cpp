@@ -2,6 +2,7 @@
 #include "ocean/gpu/ocean_textures.h"
 
 #include "ocean/ocean_fft_cpu.h"
+#include "ocean/ocean_texels.h"
 
 #include <cassert>
 
@@ -69,6 +70,16 @@ void OceanTextures::upload(const OceanFftCpu& fft) {
         }
     }
     glTextureSubImage3D(m_slopes.id(), 0, 0, 0, 0, m_n, m_n, m_cascades, GL_RGBA, GL_FLOAT, m_staging.data());
+}
+
+void OceanTextures::upload(const OceanTexels& texels) {
+    assert(texels.resolution == m_n && texels.cascades == m_cascades && texels.levels == m_levels);
+    for (int l = 0; l < m_levels; ++l) {
+        const int n = m_n >> l;
+        const size_t offset = texels.levelOffset(l);
+        glTextureSubImage3D(m_displacement.id(), l, 0, 0, 0, n, n, m_cascades, GL_RGBA, GL_FLOAT, texels.displacement.data() + offset);
+        glTextureSubImage3D(m_slopes.id(), l, 0, 0, 0, n, n, m_cascades, GL_RGBA, GL_FLOAT, texels.slopes.data() + offset);
+    }
 }
 
 void OceanTextures::generateMipmaps() {

@@ -8,6 +8,7 @@
 namespace ob::ocean {
 
 class OceanFftCpu;
+struct OceanTexels;
 
 /// Two GL_TEXTURE_2D_ARRAY maps, N×N texels × one layer per cascade, RGBA32F, repeat wrap
 /// (the tile is periodic), trilinear filtering with a full mip chain. Texel (i, j) of layer
@@ -39,6 +40,10 @@ public:
     /// through glTextureSubImage3D (synchronous copy by the driver: 2 MiB at N = 256, C = 1;
     /// 32 MiB at N = 1024). fft must have this resolution and cascade count.
     void upload(const OceanFftCpu& fft);
+
+    /// CPU backend, the maps' texels made beside their update (OceanFftCpu::setMakeTexels): every
+    /// level of both textures, copied as they are (no interleave, no generateMipmaps() after).
+    void upload(const OceanTexels& texels);
 
     /// Rebuilds levels 1… of both textures from level 0 (glGenerateTextureMipmap).
     void generateMipmaps();
