@@ -45,12 +45,14 @@ float luma(const Image& img, int x, int y) {
 // Flat, still water (no waves, no wind), a foam map of 256² cells `extent` m wide centred on the origin,
 // the camera `height` m straight above it (a hair off the vertical for the look-at), the sun at
 // `elevation` degrees toward +z; the map's coverage set by `coverage(x, z)` after the first step.
+// Drawn at the latest step (render.interpolate off): the frame after a whole step would draw the
+// camera where it was before it, while the map written by hand is the step's.
 Image renderFoam(float height, float elevation, const std::function<float(float, float)>& coverage, float extent = 25.6f) {
     const float e = glm::radians(elevation);
     const std::string sun = "[0.0, " + std::to_string(std::sin(e)) + ", " + std::to_string(std::cos(e)) + "]";
     const std::string text = "[ocean]\namplitude = 0.0\n[ripples]\nresolution = 128\ncell_size = 0.2\n"
                              "[foam]\nresolution = 256\nextent_m = " + std::to_string(extent) + "\n[splash]\nenabled = false\n"
-                             "[render]\nsun_direction = " + sun + "\n"
+                             "[render]\ninterpolate = false\nsun_direction = " + sun + "\n"
                              "[camera]\nmode = \"fixed\"\nposition = [0.0, " + std::to_string(height) + ", -0.001]\n"
                              "target = [0.0, 0.0, 0.0]\nfov_deg = 60.0\n";
     auto platform = platform::createHeadlessPlatform(SIZE);

@@ -79,7 +79,7 @@ TEST_CASE("a gate is crossed the right way with its port buoy on the left hand, 
     CHECK(gateCrossing({20, -4}, {20, 4}, {19.8f, 0}, {20.2f, 0}) == 1);
 }
 
-TEST_CASE("a cannonball that touches a target counts it once; the target floods, sinks and is gone; a second touch counts nothing",
+TEST_CASE("a cannonball that touches a target counts it once, the target floods, sinks and is gone, a second touch counts nothing",
           "[goals]") {
     // A target 12 m out at the cannon's height: the first ball (fired level, fast) hits its
     // face; the target is counted at that touch, marked spent, floods and sinks. A second ball
