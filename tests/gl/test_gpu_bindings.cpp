@@ -248,6 +248,23 @@ void checkSolverProgram(const char* file, const std::map<std::string, int>& loca
     CHECK(local[1] == tile);
 }
 
+// Every active uniform of a program in `expected` and at its number (a sampler's or image's
+// unit, else its location), every entry met.
+void checkUniformNumbers(GLuint id, const std::map<std::string, int>& expected) {
+    std::set<std::string> seen;
+    for (GLuint i = 0; i < GLuint(activeCount(id, GL_UNIFORM)); ++i) {
+        const std::string name = resourceName(id, GL_UNIFORM, i);
+        INFO("uniform " << name);
+        REQUIRE(expected.count(name) == 1);
+        const GLint type = resourceValue(id, GL_UNIFORM, i, GL_TYPE), location = resourceValue(id, GL_UNIFORM, i, GL_LOCATION);
+        GLint actual = location;
+        if (isSampler(type) || isImage(type)) glGetUniformiv(id, location, &actual);
+        CHECK(actual == expected.at(name));
+        seen.insert(name);
+    }
+    CHECK(seen.size() == expected.size());
+}
+
 } // namespace
 
 TEST_CASE("the ripple solvers' compute programs use the numbers of their bindings files", "[gl][ripple_gpu][ewave_gpu][bindings]") {
@@ -281,18 +298,7 @@ TEST_CASE("the ripple levels' compute program uses the numbers of its bindings f
         {"u_states", RIPPLE_LEVEL_STATES_UNIT},         {"u_heights", RIPPLE_LEVEL_HEIGHT_IMAGE},
         {"u_levelSlopes", RIPPLE_LEVEL_SLOPE_IMAGE},    {"u_level", RIPPLE_LEVEL_LOCATION},
         {"u_weights", RIPPLE_LEVEL_WEIGHTS_LOCATION},   {"u_grid", RIPPLE_LEVEL_GRID_LOCATION}};
-    std::set<std::string> seen;
-    for (GLuint i = 0; i < GLuint(activeCount(id, GL_UNIFORM)); ++i) {
-        const std::string name = resourceName(id, GL_UNIFORM, i);
-        INFO("uniform " << name);
-        REQUIRE(expected.count(name) == 1);
-        const GLint type = resourceValue(id, GL_UNIFORM, i, GL_TYPE), location = resourceValue(id, GL_UNIFORM, i, GL_LOCATION);
-        GLint actual = location;
-        if (isSampler(type) || isImage(type)) glGetUniformiv(id, location, &actual);
-        CHECK(actual == expected.at(name));
-        seen.insert(name);
-    }
-    CHECK(seen.size() == expected.size());
+    checkUniformNumbers(id, expected);
     GLint local[3] = {0, 0, 0};
     glGetProgramiv(id, GL_COMPUTE_WORK_GROUP_SIZE, local);
     CHECK(local[0] == RIPPLE_LEVEL_TILE);
@@ -305,16 +311,5 @@ TEST_CASE("level 0's ripple slope program uses the numbers of its bindings file"
     const GLuint id = program.id();
     const std::map<std::string, int> expected = {
         {"u_rippleHeights", RIPPLE_SLOPES_HEIGHT_UNIT}, {"u_rippleSlopesOut", RIPPLE_SLOPES_IMAGE}, {"u_grid", RIPPLE_SLOPES_GRID_LOCATION}};
-    std::set<std::string> seen;
-    for (GLuint i = 0; i < GLuint(activeCount(id, GL_UNIFORM)); ++i) {
-        const std::string name = resourceName(id, GL_UNIFORM, i);
-        INFO("uniform " << name);
-        REQUIRE(expected.count(name) == 1);
-        const GLint type = resourceValue(id, GL_UNIFORM, i, GL_TYPE), location = resourceValue(id, GL_UNIFORM, i, GL_LOCATION);
-        GLint actual = location;
-        if (isSampler(type) || isImage(type)) glGetUniformiv(id, location, &actual);
-        CHECK(actual == expected.at(name));
-        seen.insert(name);
-    }
-    CHECK(seen.size() == expected.size());
+    checkUniformNumbers(id, expected);
 }
