@@ -25,6 +25,13 @@ static glm::vec3 forwardOf(float yaw, float pitch) {
     return {std::sin(yaw) * std::cos(pitch), std::sin(pitch), std::cos(yaw) * std::cos(pitch)};
 }
 
+// The eye's orientation: its -z turned to forwardOf(yaw, pitch), its up in the vertical plane
+// through it (no roll). Built from the angles, it holds straight up and down too, where a
+// look-at's cross product with the world's up vanishes.
+static glm::quat orientationOf(float yaw, float pitch) {
+    return glm::angleAxis(yaw + glm::pi<float>(), glm::vec3(0, 1, 0)) * glm::angleAxis(pitch, glm::vec3(1, 0, 0));
+}
+
 static void lookAt(CameraRig& rig, glm::vec3 from, glm::vec3 to) {
     glm::vec3 d = to - from;
     if (glm::dot(d, d) < 1e-12f) return;
@@ -37,7 +44,7 @@ void placeCamera(CameraRig& rig, ecs::Transform& transform, glm::vec3 eye, glm::
     transform.position = eye;
     rig.focus = target;
     lookAt(rig, eye, target);
-    transform.rotation = glm::quatLookAtRH(forwardOf(rig.yaw, rig.pitch), glm::vec3(0, 1, 0));
+    transform.rotation = orientationOf(rig.yaw, rig.pitch);
 }
 
 ecs::Entity followedObject(ecs::World& world, const std::string& name) {
@@ -57,7 +64,7 @@ ecs::Entity spawnCamera(ecs::World& world, const CameraDef& def) {
     rig.underwater = def.position.y < 0.0f;  // a scene that starts below the water means it
     lookAt(rig, def.position, def.target);
     // Oriented as the camera system leaves it: the first step's interpolation starts from here.
-    world.add<ecs::Transform>(e, {def.position, glm::quatLookAtRH(forwardOf(rig.yaw, rig.pitch), glm::vec3(0, 1, 0))});
+    world.add<ecs::Transform>(e, {def.position, orientationOf(rig.yaw, rig.pitch)});
     world.add<CameraRig>(e, rig);
     return e;
 }
@@ -223,7 +230,7 @@ static void steerCameras(ecs::World& world, const platform::InputState* input, f
         } else if (rig.def.mode == CameraMode::Fly) {
             fly(world, rig, t, *input, dt);
         }
-        t.rotation = glm::quatLookAtRH(forwardOf(rig.yaw, rig.pitch), glm::vec3(0, 1, 0));
+        t.rotation = orientationOf(rig.yaw, rig.pitch);
     }
 }
 
@@ -274,10 +281,10 @@ gfx::CameraView cameraView(ecs::World& world, glm::ivec2 size, float alpha) {
     const CameraRig& rig = rigs.components()[0];
     const ecs::Transform& current = world.get<ecs::Transform>(rigs.entities()[0]);
     const ecs::Transform t = drawnTransform(world.resource<StepPoses>(), rigs.entities()[0], current, alpha);
-    // The eye looks along its rotation's -z (quatLookAtRH); at the latest step, along yaw and pitch.
-    const glm::vec3 forward = alpha < 1.0f ? t.rotation * glm::vec3(0, 0, -1) : forwardOf(rig.yaw, rig.pitch);
+    // The eye looks along its rotation's -z; at the latest step, along yaw and pitch as they are now.
+    const glm::quat rotation = alpha < 1.0f ? t.rotation : orientationOf(rig.yaw, rig.pitch);
     view.position = t.position;
-    view.view = glm::lookAtRH(t.position, t.position + forward, glm::vec3(0, 1, 0));
+    view.view = glm::mat4_cast(glm::conjugate(rotation)) * glm::translate(glm::mat4(1.0f), -t.position);
     float aspect = float(size.x) / float(std::max(size.y, 1));
     view.projection = glm::perspectiveRH_NO(glm::radians(rig.def.fov_deg), aspect, rig.def.near_m, rig.def.far_m);
     view.nearM = rig.def.near_m;

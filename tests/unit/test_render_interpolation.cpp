@@ -95,3 +95,21 @@ TEST_CASE("render interpolation: at 144 Hz of display and 60 Hz steps the camera
     CHECK(still >= 75);
     CHECK(repeats(off.ball) >= 75);
 }
+
+TEST_CASE("render interpolation: a fixed camera looking straight down draws one view between steps and at them", "[interpolation][render]") {
+    // A millimetre off the vertical from 4 m: the pitch rounds to −π/2 in float, where a look-at
+    // with the world's up has no cross product (glm's quatLookAtRH gave a quaternion of length
+    // 0.71 there, and the frames between steps looked 27° off the frames at them).
+    game::Sandbox sandbox(game::parseScene("[ocean]\nresolution = 16\n[ripples]\nresolution = 32\n"
+                                           "[camera]\nmode = \"fixed\"\nposition = [0.0, 4.0, -0.001]\ntarget = [0.0, 0.0, 0.0]\n",
+                                           "down.toml"));
+    ecs::World& world = sandbox.world();
+    sandbox.frame(sandbox.schedule().stepSeconds());
+    const glm::mat4 between = game::cameraView(world, {640, 360}, 0.5f).view;
+    const glm::mat4 at = game::cameraView(world, {640, 360}, 1.0f).view;
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) {
+            INFO("view[" << c << "][" << r << "]: " << between[c][r] << " between steps, " << at[c][r] << " at one");
+            CHECK(between[c][r] == Approx(at[c][r]).margin(1e-6));
+        }
+}
