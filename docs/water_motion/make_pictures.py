@@ -5,7 +5,8 @@ Run from the repository root (a build in build/):
 
     /usr/bin/python3 docs/water_motion/make_pictures.py [NAME ...]
 
-NAME is one of the sequences below (all of them when none is named); --reuse-tracks reads the
+NAME is one of the sequences below (all of them when none is named; storm_tables only prints
+the storm runs' tables again from their saved stats); --reuse-tracks reads the
 tracks from the CSV files an earlier run wrote instead of running for them again. Each runs its scene
 headless with `oceanbox run`, deterministic (one simulation step per frame, whatever the frame
 size): first at 64 x 36 px, once per track time with --stats, for the bodies' positions (their
@@ -26,7 +27,7 @@ import tomllib
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 HERE = os.path.join(ROOT, "docs", "water_motion")
-OCEANBOX = os.environ.get("OCEANBOX", os.path.join(ROOT, "build", "bin", "oceanbox"))
+OCEANBOX = os.environ.get("OCEANBOX") or os.path.join(ROOT, "build", "bin", "oceanbox")  # another build: OCEANBOX=path
 STEP_HZ = 60          # [sim] step_hz of every scene here
 TILE = "640x360"      # one frame of a sheet
 TRACK_COLOURS = ["#ffd84a", "#ff6a3d", "#7cff6b", "#ff5cf0", "#5ce1ff", "#ffffff"]
@@ -120,17 +121,25 @@ def draw_tracks(frame, out, camera, track, names, width, height, colour=None, st
     subprocess.run(args + [out], check=True)
 
 
+MAX_BYTES = 300_000   # a picture of the docs at most (about)
+
+
 def sheet(frames, labels, out, tile=TILE, columns=2):
-    """Frames side by side, each labelled, as an 8-bit palette PNG."""
-    args = ["montage"]
-    for f, label in zip(frames, labels):
-        args += ["-label", label, f]
+    """Frames side by side, each labelled, as an 8-bit palette PNG; the tiles shrink by tenths
+    until it fits MAX_BYTES."""
+    w, h = (int(v) for v in tile.split("x"))
     rows = (len(frames) + columns - 1) // columns
-    args += ["-tile", f"{columns}x{rows}", "-geometry", f"{tile}+3+3", "-pointsize", "18", "-background", "#202020",
-             "-fill", "#e0e0e0", "PNG24:" + out + ".tmp.png"]
-    subprocess.run(args, check=True)
-    subprocess.run(["convert", out + ".tmp.png", "-dither", "FloydSteinberg", "-colors", "256", "PNG8:" + out], check=True)
-    os.remove(out + ".tmp.png")
+    for scale in (1.0, 0.9, 0.8, 0.7, 0.6):
+        args = ["montage"]
+        for f, label in zip(frames, labels):
+            args += ["-label", label, f]
+        args += ["-tile", f"{columns}x{rows}", "-geometry", f"{round(w * scale)}x{round(h * scale)}+3+3", "-pointsize",
+                 str(round(18 * max(scale, 0.8))), "-background", "#202020", "-fill", "#e0e0e0", "PNG24:" + out + ".tmp.png"]
+        subprocess.run(args, check=True)
+        subprocess.run(["convert", out + ".tmp.png", "-dither", "FloydSteinberg", "-colors", "256", "PNG8:" + out], check=True)
+        os.remove(out + ".tmp.png")
+        if os.path.getsize(out) <= MAX_BYTES:
+            break
 
 
 def frames_of(scene, size, steps_per_frame, seconds, sets=(), extra=()):
@@ -181,7 +190,14 @@ def ship_crates():
     scene = os.path.join(HERE, "ship_crates.toml")
     track = tracks_cached(scene, os.path.join(HERE, "ship_crates_tracks.csv"), [1.0 / STEP_HZ] + [0.5 * k for k in range(1, 33)])
     crates = sorted(n for n in track if n.startswith("crate"))
-    print_displacements(track, crates, 16.0)
+    print("crate      start x, z     most out from the track (m, at s)   at 16 s: dx, dz (m)")
+    for n in crates:
+        rows = track[n]
+        x0, z0 = rows[0][1], rows[0][3]
+        side = 1.0 if x0 > 0.5 else -1.0 if x0 < -0.5 else 0.0
+        out = max(rows, key=lambda r: side * (r[1] - x0))
+        print(f"{n:10s} {x0:6.2f} {z0:6.2f}   {side * (out[1] - x0):+.2f} at {out[0]:4.1f}"
+              f"                        {rows[-1][1] - x0:+.2f}, {rows[-1][3] - z0:+.2f}")
     tmp, shots, _ = frames_of(scene, "960x540", 4, 14.0)
     beside = close_up(scene, 14.0, {"position": [10.0, 17.0, -8.0], "target": [2.0, 0.0, -8.0], "fov_deg": 40.0}, track,
                       [n for n in crates if not n.startswith("crate_t")])
@@ -203,7 +219,7 @@ def write_stir_input(path, scene, width, height):
     camera = camera_of(scene)
     lines = [f"# docs/water_motion.md: the stir's circle for {os.path.basename(scene)} (written by make_pictures.py):",
              f"# the left button held {STIR['seconds']:g} s from {STIR['start']:g} s while the cursor runs a circle of "
-             f"{STIR['radius']:g} m about the origin", f"# {STIR['turns_per_s']:g} times a second, as pixels of the scene's camera.",
+             f"{STIR['radius']:g} m about the origin", f"# at {STIR['turns_per_s']:g} turns per second, as framebuffer pixels of the scene's camera.",
              f"size = [{width}, {height}]", ""]
 
     def pixel(t):
@@ -227,7 +243,8 @@ def stir_ball():
     inp = os.path.join(HERE, "stir_input.toml")
     write_stir_input(inp, scene, 960, 540)
     times = [1.0 / STEP_HZ] + [0.5 * k for k in range(1, 31)]
-    track = tracks_cached(scene, os.path.join(HERE, "stir_ball_tracks.csv"), times, extra=["--input", inp], size="960x540")
+    fine = sorted(set(times) | {0.25 * k for k in range(4, 33)})  # every 0.25 s while the water turns fastest
+    track = tracks_cached(scene, os.path.join(HERE, "stir_ball_tracks.csv"), fine, extra=["--input", inp], size="960x540")
     still = tracks_cached(scene, os.path.join(HERE, "stir_ball_tracks_no_layer.csv"), times, sets=["currents.enabled=false"],
                           extra=["--input", inp], size="960x540")
     balls = sorted(n for n in track if n.startswith("ball"))
@@ -303,6 +320,28 @@ def surface_under(scene, sets, seconds, points, tmp):
     return [float(h) for h in np.load(out)[:, 0]]
 
 
+def storm_table(key, tmp):
+    """The bodies at the end of a storm run (its storm_KEY_stats.json) and the surface under
+    each: the drawn one (the run's keys) and the one bodies ride, the same sea at choppiness 1
+    at most (bodies ride the waves' own orbits: a choppiness above 1 sharpens the drawn crests
+    only). Without the ripples; a fixed body (the cannon's pillar) has no probes."""
+    title, sets = STORMS[key]
+    with open(os.path.join(HERE, f"storm_{key}_stats.json")) as f:
+        saved = json.load(f)
+    scene = os.path.join(ROOT, "config", "scenes", "default.toml")
+    bodies = saved["bodies"]
+    xz = [(b["position"][0], b["position"][2]) for b in bodies]
+    chop = min(float(next(x for x in sets if x.startswith("ocean.choppiness=")).split("=")[1]), 1.0)
+    drawn = surface_under(scene, sets, saved["seconds"], xz, tmp)
+    rides = surface_under(scene, sets + [f"ocean.choppiness={chop:g}"], saved["seconds"], xz, tmp)
+    print(f"{title} ({saved['seconds']:g} s):")
+    print(f"  {'body':8s} {'type':6s} {'x':>8s} {'y':>7s} {'z':>8s}  drawn surface  ridden surface  y - ridden  under water")
+    for b, hd, hr in zip(bodies, drawn, rides):
+        x, y, z = b["position"]
+        print(f"  {b['name'] or '-':8s} {b['type']:6s} {x:8.2f} {y:7.2f} {z:8.2f}  {hd:13.2f}  {hr:14.2f}  {y - hr:+10.2f}"
+              f"  {b['submerged_fraction']:11.2f}")
+
+
 def storm():
     """config/scenes/default.toml in the steepest seas a player can set, and beyond: every body
     rides the surface (its --stats and the surface under it)."""
@@ -315,17 +354,11 @@ def storm():
             g.write(f.read())
             for t in STORM_SHOTS:
                 g.write(f'\n[[events]]\nat = {t}\naction = "screenshot"\nfile = "storm_{key}_{t:04.1f}.png"\n')
-        stats = run(copy, tmp, STORM_SECONDS, size="960x540", steps_per_frame=4, sets=sets)
+        stats = run(copy, tmp, STORM_SECONDS, size="960x540", steps_per_frame=8, sets=sets)
         with open(os.path.join(HERE, f"storm_{key}_stats.json"), "w") as f:
             json.dump({"command_sets": sets, "seconds": STORM_SECONDS, "bodies": stats["bodies"],
                        "state_hash": stats["state_hash"]}, f, indent=1)
-        bodies = stats["bodies"]
-        heights = surface_under(scene, sets, stats["simulated_seconds"], [(b["position"][0], b["position"][2]) for b in bodies], tmp)
-        print(f"{title} ({STORM_SECONDS:g} s):")
-        print(f"  {'body':14s} {'type':11s} {'x':>8s} {'y':>7s} {'z':>8s}  surface  y-surface  under water")
-        for b, h in zip(bodies, heights):
-            x, y, z = b["position"]
-            print(f"  {b['name'] or '-':14s} {b['type']:11s} {x:8.2f} {y:7.2f} {z:8.2f}  {h:7.2f}  {y - h:+9.2f}  {b['submerged_fraction']:.2f}")
+        storm_table(key, tmp)
         for t in STORM_SHOTS:
             frames.append(os.path.join(tmp, f"storm_{key}_{t:04.1f}.png"))
             labels.append(f"{key}: t = {t:g} s")
@@ -335,9 +368,17 @@ def storm():
         shutil.rmtree(os.path.dirname(f), ignore_errors=True)
 
 
-SEQUENCES = {"ship_crates": ship_crates, "stir_ball": stir_ball, "flotsam": flotsam, "storm": storm}
+def storm_tables():
+    """The storm runs' tables again, from their saved stats (no run)."""
+    with tempfile.TemporaryDirectory() as tmp:
+        for key in STORMS:
+            if os.path.exists(os.path.join(HERE, f"storm_{key}_stats.json")):
+                storm_table(key, tmp)
+
+
+SEQUENCES = {"storm_tables": storm_tables, "ship_crates": ship_crates, "stir_ball": stir_ball, "flotsam": flotsam, "storm": storm}
 REUSE = "--reuse-tracks" in sys.argv
 
 if __name__ == "__main__":
-    for name in [a for a in sys.argv[1:] if not a.startswith("--")] or SEQUENCES:
+    for name in [a for a in sys.argv[1:] if not a.startswith("--")] or [k for k in SEQUENCES if k != "storm_tables"]:
         SEQUENCES[name]()
