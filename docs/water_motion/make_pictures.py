@@ -5,15 +5,19 @@ Run from the repository root (a build in build/):
 
     /usr/bin/python3 docs/water_motion/make_pictures.py [NAME ...]
 
-NAME is one of the sequences below (all of them when none is named; storm_tables only prints
-the storm runs' tables again from their saved stats); --reuse-tracks reads the
-tracks from the CSV files an earlier run wrote instead of running for them again. Each runs its scene
-headless with `oceanbox run`, deterministic (one simulation step per frame, whatever the frame
-size): first at 64 x 36 px, once per track time with --stats, for the bodies' positions (their
-tracks, drawn over the last frame and written to NAME_tracks.csv); then at full size, the scene's
-screenshot events giving the frames, laid side by side with ImageMagick (`montage`) into
-docs/water_motion/NAME.png, an 8-bit palette PNG. Everything else is written to a temporary
-folder. Python 3.11 or later (tomllib), ImageMagick; no other package.
+NAME is one of the sequences below: ship_crates, stir_ball, flotsam, storm (all of them when
+none is named); storm_tables prints the storm runs' tables again from their saved stats.
+--reuse-tracks reads the tracks from the CSV files an earlier run wrote instead of running for
+them again.
+
+Each sequence runs its scene headless with `oceanbox run`, deterministic (one simulation step
+per frame; the same state at any number of steps a frame): first once per track time with
+--stats, for the bodies' positions (their tracks, written to NAME_tracks.csv and drawn over a
+frame), at 64 x 36 px, or at the frame size where cursor input drives it (the cursor's rays are
+the framebuffer's); then at full size, the scene's screenshot events giving the frames, laid
+side by side with ImageMagick (`montage`) into docs/water_motion/NAME.png, an 8-bit palette PNG.
+Scenes are run from copies in temporary folders (their screenshot events write beside them).
+Python 3.11 or later (tomllib), ImageMagick, numpy (the storm's surface query).
 """
 import csv
 import json
@@ -199,7 +203,7 @@ def ship_crates():
         print(f"{n:10s} {x0:6.2f} {z0:6.2f}   {side * (out[1] - x0):+.2f} at {out[0]:4.1f}"
               f"                        {rows[-1][1] - x0:+.2f}, {rows[-1][3] - z0:+.2f}")
     tmp, shots, _ = frames_of(scene, "960x540", 4, 14.0)
-    beside = close_up(scene, 14.0, {"position": [10.0, 17.0, -8.0], "target": [2.0, 0.0, -8.0], "fov_deg": 40.0}, track,
+    beside = close_up(scene, 14.0, {"position": [13.0, 21.0, -8.0], "target": [2.5, 0.0, -8.0], "fov_deg": 40.0}, track,
                       [n for n in crates if not n.startswith("crate_t")])
     behind = close_up(scene, 14.0, {"position": [7.0, 12.0, -38.0], "target": [0.0, 0.0, -38.0], "fov_deg": 40.0}, track,
                       [n for n in crates if n.startswith("crate_t")])
