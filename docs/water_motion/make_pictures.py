@@ -33,6 +33,8 @@ ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 HERE = os.path.join(ROOT, "docs", "water_motion")
 OCEANBOX = os.environ.get("OCEANBOX") or os.path.join(ROOT, "build", "bin", "oceanbox")  # another build: OCEANBOX=path
 STEP_HZ = 60          # [sim] step_hz of every scene here
+WIDTH, HEIGHT = 960, 540  # the frames, px
+FRAME = f"{WIDTH}x{HEIGHT}"
 TILE = "640x360"      # one frame of a sheet
 TRACK_COLOURS = ["#ffd84a", "#ff6a3d", "#7cff6b", "#ff5cf0", "#5ce1ff", "#ffffff"]
 
@@ -164,7 +166,7 @@ def camera_of(scene):
         return tomllib.load(f)["camera"]
 
 
-def close_up(scene, seconds, camera, track, names, size="960x540"):
+def close_up(scene, seconds, camera, track, names, size=FRAME):
     """The scene at `seconds` seen from `camera` (its keys set on the command line), with the
     tracks of `names` drawn over it; the picture's path (in a temporary folder)."""
     tmp = tempfile.mkdtemp()
@@ -202,7 +204,7 @@ def ship_crates():
         out = max(rows, key=lambda r: side * (r[1] - x0))
         print(f"{n:10s} {x0:6.2f} {z0:6.2f}   {side * (out[1] - x0):+.2f} at {out[0]:4.1f}"
               f"                        {rows[-1][1] - x0:+.2f}, {rows[-1][3] - z0:+.2f}")
-    tmp, shots, _ = frames_of(scene, "960x540", 4, 14.0)
+    tmp, shots, _ = frames_of(scene, FRAME, 4, 14.0)
     beside = close_up(scene, 14.0, {"position": [13.0, 21.0, -8.0], "target": [2.5, 0.0, -8.0], "fov_deg": 40.0}, track,
                       [n for n in crates if not n.startswith("crate_t")])
     behind = close_up(scene, 14.0, {"position": [7.0, 12.0, -38.0], "target": [0.0, 0.0, -38.0], "fov_deg": 40.0}, track,
@@ -223,7 +225,7 @@ def write_stir_input(path, scene, width, height):
     camera = camera_of(scene)
     lines = [f"# docs/water_motion.md: the stir's circle for {os.path.basename(scene)} (written by make_pictures.py):",
              f"# the left button held {STIR['seconds']:g} s from {STIR['start']:g} s while the cursor runs a circle of "
-             f"{STIR['radius']:g} m about the origin", f"# at {STIR['turns_per_s']:g} turns per second, as framebuffer pixels of the scene's camera.",
+             f"{STIR['radius']:g} m about the origin", f"# at {STIR['turns_per_s']:g} turn/s, as framebuffer pixels of the scene's camera.",
              f"size = [{width}, {height}]", ""]
 
     def pixel(t):
@@ -245,22 +247,22 @@ def stir_ball():
     and without it."""
     scene = os.path.join(HERE, "stir_ball.toml")
     inp = os.path.join(HERE, "stir_input.toml")
-    write_stir_input(inp, scene, 960, 540)
+    write_stir_input(inp, scene, WIDTH, HEIGHT)
     times = [1.0 / STEP_HZ] + [0.5 * k for k in range(1, 31)]
     fine = sorted(set(times) | {0.25 * k for k in range(4, 33)})  # every 0.25 s while the water turns fastest
-    track = tracks_cached(scene, os.path.join(HERE, "stir_ball_tracks.csv"), fine, extra=["--input", inp], size="960x540")
+    track = tracks_cached(scene, os.path.join(HERE, "stir_ball_tracks.csv"), fine, extra=["--input", inp], size=FRAME)
     still = tracks_cached(scene, os.path.join(HERE, "stir_ball_tracks_no_layer.csv"), times, sets=["currents.enabled=false"],
-                          extra=["--input", inp], size="960x540")
+                          extra=["--input", inp], size=FRAME)
     balls = sorted(n for n in track if n.startswith("ball"))
     print("with the current layer:")
     print_displacements(track, balls, 15.0)
     print("without it (currents.enabled=false):")
     print_displacements(still, balls, 15.0)
-    tmp, shots, _ = frames_of(scene, "960x540", 4, 15.0, extra=["--input", inp])
+    tmp, shots, _ = frames_of(scene, FRAME, 4, 15.0, extra=["--input", inp])
     last_t, last = shots[-1]
     upto = lambda tr: {n: [r for r in tr[n] if r[0] <= last_t + 1e-6] for n in balls}
-    draw_tracks(last, last, camera_of(scene), upto(still), balls, 960, 540, colour="#ffffff", stroke=1)
-    draw_tracks(last, last, camera_of(scene), upto(track), balls, 960, 540, stroke=3)
+    draw_tracks(last, last, camera_of(scene), upto(still), balls, WIDTH, HEIGHT, colour="#ffffff", stroke=1)
+    draw_tracks(last, last, camera_of(scene), upto(track), balls, WIDTH, HEIGHT, stroke=3)
     labels = [f"t = {t:g} s" + (" (the stir from 1 s to 7 s)" if k == 1 else "" if f != last else
               ": the balls' tracks (white: without the current layer)") for k, (t, f) in enumerate(shots)]
     sheet([f for _, f in shots], labels, os.path.join(HERE, "stir_ball.png"))
@@ -287,11 +289,11 @@ def flotsam():
             end = positions(run(copy, tmp, 60.0, sets=sets))
             print(f"{label}: drift over 60 s (m): " +
                   ", ".join(f"{n} {end[n][0] - track[n][0][1]:+.2f}" for n in bodies))
-    tmp, shots, _ = frames_of(scene, "960x540", 8, 59.5)
+    tmp, shots, _ = frames_of(scene, FRAME, 8, 59.5)
     last_t, last = shots[-1]
     colour = lambda n: "#ffd84a" if n.startswith("ball") else "#ff6a3d" if n.startswith("crate") else "#7cff6b"
     for n in bodies:
-        draw_tracks(last, last, camera_of(scene), {n: [r for r in track[n] if r[0] <= last_t + 1e-6]}, [n], 960, 540, colour=colour(n))
+        draw_tracks(last, last, camera_of(scene), {n: [r for r in track[n] if r[0] <= last_t + 1e-6]}, [n], WIDTH, HEIGHT, colour=colour(n))
     labels = [f"t = {t:g} s" + (": tracks of the balls (yellow), crates (red), barrels (green)" if f == last else "")
               for t, f in shots]
     sheet([f for _, f in shots], labels, os.path.join(HERE, "flotsam.png"))
@@ -358,7 +360,7 @@ def storm():
             g.write(f.read())
             for t in STORM_SHOTS:
                 g.write(f'\n[[events]]\nat = {t}\naction = "screenshot"\nfile = "storm_{key}_{t:04.1f}.png"\n')
-        stats = run(copy, tmp, STORM_SECONDS, size="960x540", steps_per_frame=8, sets=sets)
+        stats = run(copy, tmp, STORM_SECONDS, size=FRAME, steps_per_frame=8, sets=sets)
         with open(os.path.join(HERE, f"storm_{key}_stats.json"), "w") as f:
             json.dump({"command_sets": sets, "seconds": STORM_SECONDS, "bodies": stats["bodies"],
                        "state_hash": stats["state_hash"]}, f, indent=1)
