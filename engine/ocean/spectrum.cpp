@@ -5,6 +5,7 @@
 #include "core/simd.h"
 #include "ocean/fast_trig.h"
 #include "ocean/spectrum.h"
+#include "ocean/velocity_bands.h"
 
 #include <algorithm>
 #include <cassert>
@@ -401,6 +402,49 @@ void CascadeSpectrum::synthesize(double t, int pairBegin, int pairEnd, const Pac
                      m_sinRe.data() + off, m_cosIm.data() + off, m_sinIm.data() + off,
                      out.heightDxz + 2 * off, out.dispXZ + 2 * off, out.slopeXZ + 2 * off,
                      out.dxxDzz + 2 * off, m_k[row], m_n);
+        }
+    }
+}
+
+// One mode's velocity bands: ∂h̃/∂t = ω·(sinRe·cos − cosRe·sin, sinIm·cos − cosIm·sin) from the
+// eq. 2 coefficients, then per band Ŵ_b(1 − kx/k) = Ŵ_b + i·(i·kx/k·Ŵ_b) and the v pairs
+// (kz/k)·(i·Ŵ_a − Ŵ_c) = i·(kz/k)·Ŵ_a + i·(i·(kz/k)·Ŵ_c).
+void CascadeSpectrum::synthesizeVelocity(double t, int pairBegin, int pairEnd, const VelocityBands& bands,
+                                         float* const* out) const {
+    const int mapped = bands.mappedBands();
+    if (mapped == 0) return;
+    const int quarter = m_n / 2 + 1;
+    assert(bands.quarter == quarter && pairBegin >= 0 && pairEnd <= rowPairCount());
+    std::vector<float> rowSin(quarter), rowCos(quarter), rowOmega(quarter);
+    for (int m = pairBegin; m < pairEnd; ++m) {
+        const size_t q = size_t(m) * quarter;
+        phaseRow(m_omega.data() + q, rowSin.data(), rowCos.data(), t, quarter);
+        for (int c = 0; c < quarter; ++c) rowOmega[c] = float(m_omega[q + c]);
+        const float* invK = m_invK.data() + q;
+        const float* weights = bands.weights.data() + q * size_t(mapped);
+        const int rows[2] = {m, (m_n - m) % m_n};
+        for (int r = 0; r < (rows[1] == rows[0] ? 1 : 2); ++r) {
+            const size_t off = size_t(rows[r]) * m_n;
+            const float kz = m_k[rows[r]];
+            for (int col = 0; col < m_n; ++col) {
+                const int qc = col <= m_n / 2 ? col : m_n - col;
+                const size_t i = off + col;
+                const float s = rowSin[qc], c = rowCos[qc], w = rowOmega[qc];
+                const float dr = w * (m_sinRe[i] * c - m_cosRe[i] * s);
+                const float di = w * (m_sinIm[i] * c - m_cosIm[i] * s);
+                const float ux = m_k[col] * invK[qc], uz = kz * invK[qc];
+                const float* g = weights + size_t(qc) * mapped;
+                for (int b = 0; b < mapped; ++b) {
+                    out[b][2 * i] = g[b] * (1.0f - ux) * dr;
+                    out[b][2 * i + 1] = g[b] * (1.0f - ux) * di;
+                }
+                for (int b = 0; b < mapped; b += 2) {
+                    const float ga = g[b], gc = b + 1 < mapped ? g[b + 1] : 0.0f;
+                    float* o = out[mapped + b / 2];
+                    o[2 * i] = uz * (-gc * dr - ga * di);
+                    o[2 * i + 1] = uz * (ga * dr - gc * di);
+                }
+            }
         }
     }
 }

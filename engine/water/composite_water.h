@@ -185,6 +185,7 @@ private:
     bool step(const Eval& e, float x, float z, glm::vec2& rest, float& residual, float tolerance = 0.0f) const;
     WaterSample finish(const Eval& e, float x, float z, WaterLayers layers = {}) const;
     glm::vec3 velocityBelow(const Eval& e, float alpha, float beta, glm::vec3 p, WaterLayers layers) const;
+    glm::vec3 cascadeVelocity(int c, float alpha, float beta, float z) const;
     template <class Done>
     void invert(float x, float z, WaterLayers layers, Done&& done) const;
     void recordFrame();

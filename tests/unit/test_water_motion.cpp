@@ -171,6 +171,49 @@ TEST_CASE("the water's velocity of one FFT mode is the Airy wave's, in phase wit
     CHECK(worstDeep < 0.01 * a * omega);
 }
 
+TEST_CASE("a single FFT mode inside a wind sea decays under the surface as e^{-k·depth}, long and short alike",
+          "[water][water_motion]") {
+    // One cascade (a 200 m tile of 128², a 5 m/s wind sea in it), choppiness 0 (an Eulerian
+    // surface: the point y below the mean level reads e^{k·y}). A mode h = a·cos(k·x − ω·t) added
+    // to the sea adds, by linearity, u = a·ω·e^{k·y}·cos(…) and w = a·ω·e^{k·y}·sin(…) to the
+    // water's velocity (Airy). Taken as the difference of two oceans, with and without the mode,
+    // at grid nodes (no interpolation error). One factor for the whole cascade, e^{k_c·y} with
+    // k_c its velocity-weighted mean wavenumber (0.8 rad/m here), missed by 50 % to 4× (the 100 m
+    // wave too slow, the 5 m wave too fast); the bands stay within 2.2 % (docs/references.md#velocity-bands).
+    ocean::OceanDef def;
+    def.resolution = 128;
+    def.patch_size = 200.0f;
+    def.cascades = 1;
+    def.choppiness = 0.0f;
+    def.wind_speed = 5.0f;
+    const double a = 0.2, t = 10.0, cell = def.patch_size / def.resolution;
+    for (const int index : {2, 10, 40}) {  // 100 m, 20 m and 5 m waves
+        ocean::OceanFftCpu seaFft(def, 1), modeFft(def, 1);
+        modeFft.spectrum(0).setH0(-index, 0, modeFft.spectrum(0).h0(-index, 0) + std::complex<float>(float(a / 2.0), 0.0f));
+        modeFft.spectrum(0).setH0(index, 0, seaFft.spectrum(0).h0(index, 0));  // its partner as the sea has it
+        water::CompositeWater sea({}, float(G), &seaFft), withMode({}, float(G), &modeFft);
+        water::primeAt(&seaFft, sea, t);
+        water::primeAt(&modeFft, withMode, t);
+        const double k = 2.0 * M_PI * index / def.patch_size, omega = std::sqrt(G * k);
+        for (const double depth : {1.0, 3.0}) {
+            const double decay = std::exp(-k * depth);
+            double worst = 0.0;
+            for (int i = 0; i < 64; ++i) {
+                const float x = float(i * cell);
+                const glm::vec3 p(x, float(-depth), 0.0f);
+                REQUIRE(sea.sample(x, 0.0f).height > p.y + 0.05f);  // the point is under the sea's surface
+                const glm::vec3 u = withMode.velocityAt(p) - sea.velocityAt(p);
+                const double theta = k * x - omega * t;
+                worst = std::max({worst, std::abs(u.x - a * omega * decay * std::cos(theta)),
+                                  std::abs(u.y - a * omega * decay * std::sin(theta)), double(std::abs(u.z))});
+            }
+            INFO("wavelength " << def.patch_size / index << " m, " << depth << " m down (k_c " << sea.cascadeWavenumber(0) << "): largest error " << worst
+                               << " m/s against a·ω·e^{-k·depth} = " << a * omega * decay << " m/s");
+            CHECK(worst < 0.05 * a * omega * decay);
+        }
+    }
+}
+
 // Not a test: the probe's query cost, sample() against sampleBelow() (height + the velocity at
 // depth, one inversion), on the default scene's sea; medians of 9 rounds of 20 000 points.
 // build/bin/tests_unit "[.query_cost]" -s
