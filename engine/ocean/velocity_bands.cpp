@@ -114,15 +114,17 @@ VelocityBands velocityBands(int resolution, double patchSize, WaveBand band) {
         bandWeights(bands, s * s, g);
         std::copy_n(g, mapped, table.begin() + ptrdiff_t(t) * mapped);
     }
-    bands.weights.resize(size_t(bands.quarter) * size_t(bands.quarter) * size_t(mapped));
+    const size_t plane = size_t(bands.quarter) * size_t(bands.quarter);
+    bands.weights.resize(plane * size_t(mapped));
     for (int m = 0; m <= half; ++m)
         for (int n = 0; n <= half; ++n) {
             const double u = std::sqrt(dk * std::hypot(double(n), double(m))) / step;
             const int t = std::min(int(u), TABLE_POINTS - 2);
             const double f = u - t;
-            float* out = bands.weights.data() + (size_t(m) * size_t(bands.quarter) + size_t(n)) * size_t(mapped);
+            const size_t at = size_t(m) * size_t(bands.quarter) + size_t(n);
             for (int b = 0; b < mapped; ++b)
-                out[b] = float((1.0 - f) * table[size_t(t) * mapped + size_t(b)] + f * table[size_t(t + 1) * mapped + size_t(b)]);
+                bands.weights[size_t(b) * plane + at] =
+                    float((1.0 - f) * table[size_t(t) * mapped + size_t(b)] + f * table[size_t(t + 1) * mapped + size_t(b)]);
         }
     return bands;
 }

@@ -21,8 +21,8 @@ struct VelocityBands {
     int count = 1;                        ///< B, bands, [1, MAX_BANDS]
     std::array<float, MAX_BANDS> k{};     ///< knot k_b of each band, rad/m, ascending (count used)
     int quarter = 0;                      ///< N/2 + 1: the weights' quarter grid side
-    /// g_b(|K|) of the count − 1 bands with maps, per quarter-grid mode (|m| rows, |n| columns),
-    /// [(|m|·quarter + |n|)·(count − 1) + b].
+    /// g_b(|K|) of the count − 1 bands with maps, a quarter grid each (|m| rows, |n| columns),
+    /// [(b·quarter + |m|)·quarter + |n|].
     std::vector<float> weights;
 
     /// Bands with maps of their own: count − 1.
