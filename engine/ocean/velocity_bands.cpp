@@ -1,5 +1,5 @@
 // Velocity bands: knots evenly in √k, per-mode weights by a constrained least-squares fit of
-// e^{−k·depth} over the probes' depths (docs/references.md#velocity-bands).
+// e^{−k·depth} over the probes' depths (docs/velocity_bands.md).
 #include "ocean/velocity_bands.h"
 
 #include <algorithm>

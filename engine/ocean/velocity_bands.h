@@ -1,4 +1,4 @@
-// The depth decay of a cascade's velocity by bands of |K| (docs/references.md#velocity-bands): each
+// The depth decay of a cascade's velocity by bands of |K| (docs/velocity_bands.md): each
 // mode's e^{−k·depth} fitted by B ≤ 4 exponentials e^{−k_b·depth}, one per band of the cascade.
 #pragma once
 #include "ocean/spectrum.h"
@@ -15,7 +15,7 @@ namespace ob::ocean {
 /// the last band is the cascade's whole velocity less the others (no maps of its own).
 /// Knots k_b: evenly spaced in √k over the cascade's modes up to VELOCITY_FIT_CAP, at most
 /// VELOCITY_KNOT_SPACING apart in √k, so that B = 4 covers a tile from 0.03 to 5 rad/m to a
-/// few percent at 0–3 m (docs/references.md#velocity-bands gives the error per depth).
+/// few percent at 0–3 m (docs/velocity_bands.md gives the error per depth).
 struct VelocityBands {
     static constexpr int MAX_BANDS = 4;   ///< B at most
     int count = 1;                        ///< B, bands, [1, MAX_BANDS]

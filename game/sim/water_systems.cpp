@@ -81,7 +81,7 @@ void oceanSystem(ecs::World& world, const ecs::Tick& tick) {
         ocean->water->measureWavenumbers();
         ++ocean->seaVersion;
     }
-    // The velocity bands' maps (docs/references.md#velocity-bands) only while bodies may read the
+    // The velocity bands' maps (docs/velocity_bands.md) only while bodies may read the
     // water's velocity under the surface.
     const bool bands = world.pool<Body>().size() > 0;
     for (ocean::OceanFftCpu* fft : {ocean->cpu.get(), ocean->cpuNext.get()})

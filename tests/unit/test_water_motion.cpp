@@ -181,7 +181,7 @@ TEST_CASE("a single FFT mode inside a wind sea decays under the surface as e^{-k
     // water's velocity (Airy). Taken as the difference of two oceans, with and without the mode,
     // at grid nodes (no interpolation error). One factor for the whole cascade, e^{k_c·y} with
     // k_c its velocity-weighted mean wavenumber (0.8 rad/m here), missed by 50 % to 4× (the 100 m
-    // wave too slow, the 5 m wave too fast); the bands stay within 2.2 % (docs/references.md#velocity-bands).
+    // wave too slow, the 5 m wave too fast); the bands stay within 2.2 % (docs/velocity_bands.md).
     ocean::OceanDef def;
     def.resolution = 128;
     def.patch_size = 200.0f;
