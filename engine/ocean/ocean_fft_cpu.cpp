@@ -74,19 +74,28 @@ OB_VECTOR_KERNEL void unpackRange(
 
 struct OceanFftCpu::Cascade {
     CascadeSpectrum spectrum;
+    VelocityBands bands;
     fftwf_complex* buffers[OCEAN_PACKED_TRANSFORMS] = {};  // PackedSpectra order, in place
+    std::vector<fftwf_complex*> velocity;                  // bands.transforms() of them, in place
     std::vector<float> planes[OCEAN_CHANNEL_COUNT];
 
-    Cascade(const OceanDef& def, int c) : spectrum(def, c) {
+    Cascade(const OceanDef& def, int c)
+        : spectrum(def, c), bands(ocean::velocityBands(def.resolution, cascadePatchSize(def, c), cascadeBand(def, c))) {
         const size_t count = size_t(def.resolution) * size_t(def.resolution);
-        for (auto& buffer : buffers) {
-            buffer = fftwf_alloc_complex(count);
+        const auto allocate = [count] {
+            fftwf_complex* buffer = fftwf_alloc_complex(count);
             if (!buffer) throw RuntimeError("out of memory for the ocean FFT buffers");
-        }
+            std::memset(buffer, 0, count * sizeof(fftwf_complex));
+            return buffer;
+        };
+        for (auto& buffer : buffers) buffer = allocate();
+        velocity.resize(size_t(bands.transforms()), nullptr);
+        for (auto& buffer : velocity) buffer = allocate();
         for (auto& plane : planes) plane.assign(count, 0.0f);
     }
     ~Cascade() {
         for (auto* buffer : buffers) fftwf_free(buffer);
+        for (auto* buffer : velocity) fftwf_free(buffer);
     }
     Cascade(const Cascade&) = delete;
     Cascade& operator=(const Cascade&) = delete;
@@ -96,7 +105,10 @@ OceanFftCpu::OceanFftCpu(const OceanDef& def, int threads) {
     validateOceanDef(def, 4096);
     m_n = def.resolution;
     m_lambda = -def.choppiness;
-    for (int c = 0; c < def.cascades; ++c) m_cascades.push_back(std::make_unique<Cascade>(def, c));
+    for (int c = 0; c < def.cascades; ++c) {
+        m_cascades.push_back(std::make_unique<Cascade>(def, c));
+        for (fftwf_complex* buffer : m_cascades.back()->velocity) m_velocityBuffers.push_back(reinterpret_cast<float*>(buffer));
+    }
 
     // One plan serves every buffer: same size, in place, fftwf_alloc alignment.
     m_plan = plan(m_n, m_cascades[0]->buffers[0]);
@@ -114,9 +126,11 @@ OceanFftCpu::OceanFftCpu(const OceanDef& def, int threads) {
         });
         for (auto& c : m_cascades) {
             for (auto* buffer : c->buffers) std::memset(buffer, 0, size_t(m_n) * size_t(m_n) * sizeof(fftwf_complex));
+            for (auto* buffer : c->velocity) std::memset(buffer, 0, size_t(m_n) * size_t(m_n) * sizeof(fftwf_complex));
             for (auto& plane : c->planes) std::fill(plane.begin(), plane.end(), 0.0f);
         }
         m_time = 0.0;
+        m_velocityTime = -1.0;
         m_stageMs = {};
     }
 }
@@ -165,6 +179,16 @@ const float* OceanFftCpu::channel(int cascade, OceanChannel ch) const {
     return m_cascades[cascade]->planes[int(ch)].data();
 }
 
+const VelocityBands& OceanFftCpu::velocityBands(int cascade) const {
+    assert(cascade >= 0 && cascade < cascadeCount());
+    return m_cascades[cascade]->bands;
+}
+
+const float* OceanFftCpu::velocityPacked(int cascade, int k) const {
+    assert(cascade >= 0 && cascade < cascadeCount() && k >= 0 && k < m_cascades[cascade]->bands.transforms());
+    return m_velocityTime == m_time ? reinterpret_cast<const float*>(m_cascades[cascade]->velocity[size_t(k)]) : nullptr;
+}
+
 const float* OceanFftCpu::packed(int cascade, int k) const {
     assert(cascade >= 0 && cascade < cascadeCount() && k >= 0 && k < OCEAN_PACKED_TRANSFORMS);
     return reinterpret_cast<const float*>(m_cascades[cascade]->buffers[k]);
@@ -186,11 +210,21 @@ void OceanFftCpu::synthesizeRows(int pairBegin, int pairEnd) {
         out.slopeXZ = reinterpret_cast<float*>(c->buffers[2]);
         out.dxxDzz = reinterpret_cast<float*>(c->buffers[3]);
         c->spectrum.synthesize(m_time, pairBegin, pairEnd, out);
+        if (m_velocityBands && !c->velocity.empty())
+            c->spectrum.synthesizeVelocity(m_time, pairBegin, pairEnd, c->bands, reinterpret_cast<float* const*>(c->velocity.data()));
     }
 }
 
+// The height transforms of every cascade, then (bands on) every cascade's velocity transforms.
+int OceanFftCpu::transformCount() const {
+    return cascadeCount() * OCEAN_PACKED_TRANSFORMS + (m_velocityBands ? int(m_velocityBuffers.size()) : 0);
+}
+
 void OceanFftCpu::transform(int index) {
-    fftwf_complex* buffer = m_cascades[index / OCEAN_PACKED_TRANSFORMS]->buffers[index % OCEAN_PACKED_TRANSFORMS];
+    const int heights = cascadeCount() * OCEAN_PACKED_TRANSFORMS;
+    fftwf_complex* buffer = index < heights
+                                ? m_cascades[index / OCEAN_PACKED_TRANSFORMS]->buffers[index % OCEAN_PACKED_TRANSFORMS]
+                                : reinterpret_cast<fftwf_complex*>(m_velocityBuffers[size_t(index - heights)]);
     fftwf_execute_dft(m_plan, buffer, buffer);
 }
 
@@ -218,7 +252,8 @@ void OceanFftCpu::setMakeTexels(bool on) {
 
 void OceanFftCpu::updateMaps(double t) {
     m_time = t;
-    const int transforms = cascadeCount() * OCEAN_PACKED_TRANSFORMS;
+    m_velocityTime = m_velocityBands ? t : -1.0;
+    const int transforms = transformCount();
     using Clock = std::chrono::steady_clock;
     const auto ms = [](Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
     Clock::time_point marks[4];

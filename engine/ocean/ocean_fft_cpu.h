@@ -5,6 +5,7 @@
 #include "ocean/ocean_def.h"
 #include "ocean/ocean_texels.h"
 #include "ocean/spectrum.h"
+#include "ocean/velocity_bands.h"
 
 #include <memory>
 #include <vector>
@@ -72,6 +73,19 @@ public:
     void setLambda(float lambda) { m_lambda = lambda; }
     /// Workers update() uses.
     int threadCount() const { return m_threads; }
+    /// With `on` (the default), every later update() also makes each cascade's velocity band maps
+    /// (velocityPacked: transforms() more packed FFTs a cascade, the depth decay of the water's
+    /// velocity under the surface); off, a query decays the cascade as one band.
+    void setVelocityBands(bool on) { m_velocityBands = on; }
+    /// Whether update() makes the velocity band maps.
+    bool makesVelocityBands() const { return m_velocityBands; }
+    /// Cascade c's velocity bands: knots and per-mode weights (fixed by N, the tile and its band of k).
+    const VelocityBands& velocityBands(int cascade) const;
+    /// Velocity transform k ∈ [0, velocityBands(c).transforms()) of cascade c from the last
+    /// update(), or null when that update made none: N·N interleaved pairs, row-major [j][i],
+    /// (w_b, u_b) for k = b < E, (v_2j, v_2j+1) for k = E + j (E = mappedBands(); m/s: the
+    /// vertical velocity and the orbit's x and z velocity −∂D/∂t of band b's share of the modes).
+    const float* velocityPacked(int cascade, int k) const;
 
     /// Wall ms of the last update()'s stages (seen from the calling thread; barriers end each).
     struct StageMs {
@@ -105,14 +119,18 @@ private:
     void transform(int index);
     void unpackRows(int rowBegin, int rowEnd);
     void updateMaps(double t);
+    int transformCount() const;
 
     int m_n = 0;
     int m_threads = 1;
     float m_lambda = 0.0f;
     double m_time = 0.0;
+    bool m_velocityBands = true;
+    double m_velocityTime = -1.0;  // time of the velocity band maps (< 0: none)
     StageMs m_stageMs;
     fftwf_plan_s* m_plan = nullptr;  // one in-place backward plan for every buffer (new-array execute)
     std::vector<std::unique_ptr<Cascade>> m_cascades;
+    std::vector<float*> m_velocityBuffers;  // every cascade's velocity transforms in order (fftwf_complex arrays)
     std::unique_ptr<OceanTexels> m_texels;  // setMakeTexels
 };
 

@@ -5,6 +5,7 @@
 #include "core/simd.h"
 #include "ocean/fast_trig.h"
 #include "ocean/spectrum.h"
+#include "ocean/velocity_bands.h"
 
 #include <algorithm>
 #include <cassert>
@@ -401,6 +402,84 @@ void CascadeSpectrum::synthesize(double t, int pairBegin, int pairEnd, const Pac
                      m_sinRe.data() + off, m_cosIm.data() + off, m_sinIm.data() + off,
                      out.heightDxz + 2 * off, out.dispXZ + 2 * off, out.slopeXZ + 2 * off,
                      out.dxxDzz + 2 * off, m_k[row], m_n);
+        }
+    }
+}
+
+// ∂h̃/∂t = ω·(sinRe·cos − cosRe·sin, sinIm·cos − cosIm·sin) from the eq. 2 coefficients along
+// a row, with (1 − kx/k) and kz/k: what every velocity band of the row multiplies.
+OB_VECTOR_KERNEL
+void rateRow(const float* __restrict sinWt, const float* __restrict cosWt, const float* __restrict omega,
+             const float* __restrict kx, const float* __restrict invK, const float* __restrict cosRe,
+             const float* __restrict sinRe, const float* __restrict cosIm, const float* __restrict sinIm,
+             float* __restrict dr, float* __restrict di, float* __restrict oneMinusUx, float* __restrict uz, float kz,
+             int count) {
+    for (int i = 0; i < count; ++i) {
+        const float s = sinWt[i], c = cosWt[i], w = omega[i];
+        dr[i] = w * (sinRe[i] * c - cosRe[i] * s);
+        di[i] = w * (sinIm[i] * c - cosIm[i] * s);
+        oneMinusUx[i] = 1.0f - kx[i] * invK[i];
+        uz[i] = kz * invK[i];
+    }
+}
+
+// Band b's (w_b, u_b) pair: Ŵ_b·(1 − kx/k) = Ŵ_b + i·(i·(kx/k)·Ŵ_b), Ŵ_b = g_b·∂h̃/∂t.
+OB_VECTOR_KERNEL
+void bandRow(const float* __restrict g, const float* __restrict dr, const float* __restrict di,
+             const float* __restrict oneMinusUx, float* __restrict out, int count) {
+    for (int i = 0; i < count; ++i) {
+        const float f = g[i] * oneMinusUx[i];
+        out[2 * i] = f * dr[i];
+        out[2 * i + 1] = f * di[i];
+    }
+}
+
+// Bands a and c's v pair: (kz/k)·(i·Ŵ_a − Ŵ_c) = i·(kz/k)·Ŵ_a + i·(i·(kz/k)·Ŵ_c).
+OB_VECTOR_KERNEL
+void bandPairRow(const float* __restrict ga, const float* __restrict gc, const float* __restrict dr,
+                 const float* __restrict di, const float* __restrict uz, float* __restrict out, int count) {
+    for (int i = 0; i < count; ++i) {
+        out[2 * i] = uz[i] * (-gc[i] * dr[i] - ga[i] * di[i]);
+        out[2 * i + 1] = uz[i] * (ga[i] * dr[i] - gc[i] * di[i]);
+    }
+}
+
+void CascadeSpectrum::synthesizeVelocity(double t, int pairBegin, int pairEnd, const VelocityBands& bands,
+                                         float* const* out) const {
+    const int mapped = bands.mappedBands();
+    if (mapped == 0) return;
+    const int quarter = m_n / 2 + 1;
+    const size_t plane = size_t(quarter) * size_t(quarter);
+    assert(bands.quarter == quarter && pairBegin >= 0 && pairEnd <= rowPairCount());
+    // Along a whole row, mirrored from the quarter by |n| (scratch): sin, cos, ω, 1/k, each
+    // band's weight, then the row's rate terms.
+    std::vector<float> scratch(size_t(m_n) * size_t(8 + mapped) + size_t(m_n));
+    float* rowSin = scratch.data();
+    float *rowCos = rowSin + m_n, *rowOmega = rowCos + m_n, *rowInvK = rowOmega + m_n, *dr = rowInvK + m_n;
+    float *di = dr + m_n, *oneMinusUx = di + m_n, *uz = oneMinusUx + m_n, *zero = uz + m_n, *rowG = zero + m_n;
+    const auto mirror = [&](float* row) {
+        for (int c = quarter; c < m_n; ++c) row[c] = row[m_n - c];
+    };
+    for (int m = pairBegin; m < pairEnd; ++m) {
+        const size_t q = size_t(m) * quarter;
+        phaseRow(m_omega.data() + q, rowSin, rowCos, t, quarter);
+        for (int c = 0; c < quarter; ++c) rowOmega[c] = float(m_omega[q + c]);
+        std::copy_n(m_invK.data() + q, quarter, rowInvK);
+        for (float* row : {rowSin, rowCos, rowOmega, rowInvK}) mirror(row);
+        for (int b = 0; b < mapped; ++b) {
+            float* g = rowG + size_t(b) * m_n;
+            std::copy_n(bands.weights.data() + size_t(b) * plane + q, quarter, g);
+            mirror(g);
+        }
+        const int rows[2] = {m, (m_n - m) % m_n};
+        for (int r = 0; r < (rows[1] == rows[0] ? 1 : 2); ++r) {
+            const size_t off = size_t(rows[r]) * m_n;
+            rateRow(rowSin, rowCos, rowOmega, m_k.data(), rowInvK, m_cosRe.data() + off, m_sinRe.data() + off,
+                    m_cosIm.data() + off, m_sinIm.data() + off, dr, di, oneMinusUx, uz, m_k[rows[r]], m_n);
+            for (int b = 0; b < mapped; ++b) bandRow(rowG + size_t(b) * m_n, dr, di, oneMinusUx, out[b] + 2 * off, m_n);
+            for (int b = 0; b < mapped; b += 2)
+                bandPairRow(rowG + size_t(b) * m_n, b + 1 < mapped ? rowG + size_t(b + 1) * m_n : zero, dr, di, uz,
+                            out[mapped + b / 2] + 2 * off, m_n);
         }
     }
 }

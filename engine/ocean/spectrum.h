@@ -143,6 +143,8 @@ struct PackedSpectra {
     float* dxxDzz = nullptr;    ///< (∂Dx/∂x)~ + i·(∂Dz/∂z)~ = (kx²/k + i·kz²/k)·h̃
 };
 
+struct VelocityBands;
+
 /// h̃0(K) and ω(k) of one cascade, and the per-frame synthesis of eq. 2, 6, 7.
 class CascadeSpectrum {
 public:
@@ -182,6 +184,12 @@ public:
     /// Writes the four packed spectra at time t (seconds) for the row pairs |m| ∈
     /// [pairBegin, pairEnd); disjoint ranges may run on different threads.
     void synthesize(double t, int pairBegin, int pairEnd, const PackedSpectra& out) const;
+    /// Writes the velocity bands' packed spectra (ocean/velocity_bands.h) at time t for the row
+    /// pairs [pairBegin, pairEnd), N×N interleaved complex each: out[b] = Ŵ_b + i·Û_b for each
+    /// band b with maps, then out[E + j] = V̂_2j + i·V̂_2j+1 (E = bands.mappedBands(), V̂_E = 0),
+    /// with Ŵ_b = g_b(k)·∂h̃/∂t and (Û_b, V̂_b) = i(K/k)·Ŵ_b: the vertical velocity and the
+    /// orbit's horizontal one, −∂D/∂t (eq. 7), of the band's modes, exact in t.
+    void synthesizeVelocity(double t, int pairBegin, int pairEnd, const VelocityBands& bands, float* const* out) const;
 
 private:
     size_t index(int n, int m) const;

@@ -371,12 +371,7 @@ glm::vec3 CompositeWater::velocityBelow(const Eval& e, float alpha, float beta, 
     if (layers.gerstner) u += m_gerstner.velocity(alpha, beta, depth);
     if (layers.fft && m_fft && m_frameCount >= 2) {
         const float z = lagrangian * -depth + (1.0f - lagrangian) * eulerianZ;
-        for (const Cascade& cas : m_cascades) {
-            const Bilinear b(alpha, beta, cas.invCell, m_fft->resolution());
-            const float decay = std::exp(cas.k * z);
-            u += decay * glm::vec3(-b.value(cas.rate.data(), 4, 1), b.value(cas.rate.data(), 4, 0),
-                                   -b.value(cas.rate.data(), 4, 2));
-        }
+        for (size_t c = 0; c < m_cascades.size(); ++c) u += cascadeVelocity(int(c), alpha, beta, z);
     }
     if (layers.ripples && m_ripple.height) {
         const float decay = m_ripple.wavenumber ? std::exp(m_ripple.wavenumber() * eulerianZ) : 1.0f;
@@ -387,6 +382,29 @@ glm::vec3 CompositeWater::velocityBelow(const Eval& e, float alpha, float beta, 
     if (layers.currents && m_current) {
         const glm::vec2 c = m_current(p.x, p.z);
         u += glm::vec3(c.x, 0.0f, c.y);
+    }
+    return u;
+}
+
+// Cascade c's velocity at rest point (α, β), z metres above its mean level (≤ 0 below). Below:
+// per band, Σ_b e^{k_b·z}·U_b = e^{k_B·z}·U + Σ_{b<B} (e^{k_b·z} − e^{k_B·z})·U_b with U the whole
+// cascade's velocity (the rates) and U_b the maps of the bands that have them (the last band is
+// U less the others), exact at z = 0. Above (an Eulerian crest), and without band maps: the
+// whole cascade × e^{k_c·z}, linear theory's extrapolation with its mean wavenumber.
+glm::vec3 CompositeWater::cascadeVelocity(int c, float alpha, float beta, float z) const {
+    const Cascade& cas = m_cascades[size_t(c)];
+    const Bilinear b(alpha, beta, cas.invCell, m_fft->resolution());
+    const glm::vec3 whole(-b.value(cas.rate.data(), 4, 1), b.value(cas.rate.data(), 4, 0), -b.value(cas.rate.data(), 4, 2));
+    const ocean::VelocityBands& bands = m_fft->velocityBands(c);
+    const int mapped = bands.mappedBands();
+    if (z > 0.0f || (mapped > 0 && !m_fft->velocityPacked(c, 0))) return std::exp(cas.k * z) * whole;
+    const float top = std::exp(bands.k[size_t(mapped)] * z);
+    glm::vec3 u = top * whole;
+    for (int band = 0; band < mapped; ++band) {
+        const float* wu = m_fft->velocityPacked(c, band);             // (w_b, u_b)
+        const float* v = m_fft->velocityPacked(c, mapped + band / 2);  // (v_2j, v_2j+1)
+        const float weight = std::exp(bands.k[size_t(band)] * z) - top;
+        u += weight * glm::vec3(b.value(wu, 2, 1), b.value(wu, 2, 0), b.value(v, 2, size_t(band % 2)));
     }
     return u;
 }

@@ -113,15 +113,17 @@ public:
     using WaterQuery::velocityAt;
     /// The velocity at world point p, `depth` = (surface of the layers asked) − p.y ≥ 0 below the
     /// surface above it: Gerstner exact per wave (e^{−k·depth} on each orbit: GerstnerField::velocity);
-    /// each cascade scaled by e^{−k_c·depth}, k_c its velocity-weighted mean wavenumber
-    /// (cascadeWavenumber: exact for a cascade's dominant band, docs/currents.md#velocity gives
-    /// the error for other waves in it); the ripples by e^{−k_r·depth} (RippleHook::wavenumber);
+    /// each cascade per band of |K|, band b × e^{−k_b·depth} (ocean/velocity_bands.h: 1 m down a
+    /// mode's own e^{−k·depth} within 3 %, docs/velocity_bands.md), or × e^{k_c·z} (k_c
+    /// cascadeWavenumber) above the mean level and while the FFT makes no band maps; the ripples
+    /// by e^{−k_r·depth} (RippleHook::wavenumber);
     /// the current the same at every depth of its layer.
     glm::vec3 velocityAt(glm::vec3 p, WaterLayers layers) const override;
     /// sample() and velocityAt() from one inversion.
     WaterSample sampleBelow(glm::vec3 p, WaterLayers layers) const override;
     /// k_c of cascade c, rad/m: Σ k·ω²·|h̃0|² / Σ ω²·|h̃0|² over its modes (the wavenumber its
-    /// velocity variance is centred on), from the spectrum at the last measureWavenumbers().
+    /// velocity variance is centred on), from the spectrum at the last measureWavenumbers(): the
+    /// cascade's one decay factor above its mean level and without band maps.
     float cascadeWavenumber(int c) const { return m_cascades[size_t(c)].k; }
     /// Measures every k_c again from the FFT's spectra (after h̃0 changed: a sea's fade, a test's
     /// hand-set modes); the constructor measures them once. O(N²) per cascade.
@@ -185,6 +187,7 @@ private:
     bool step(const Eval& e, float x, float z, glm::vec2& rest, float& residual, float tolerance = 0.0f) const;
     WaterSample finish(const Eval& e, float x, float z, WaterLayers layers = {}) const;
     glm::vec3 velocityBelow(const Eval& e, float alpha, float beta, glm::vec3 p, WaterLayers layers) const;
+    glm::vec3 cascadeVelocity(int c, float alpha, float beta, float z) const;
     template <class Done>
     void invert(float x, float z, WaterLayers layers, Done&& done) const;
     void recordFrame();

@@ -5,6 +5,7 @@
 #include "core/thread_cpu.h"
 #include "ecs/components.h"
 #include "interaction/ripple_patch.h"
+#include "sim/objects.h"
 #include "sim/obstacles.h"
 #include "sim/stamp_sources.h"
 #include "ocean/gerstner.h"
@@ -80,6 +81,11 @@ void oceanSystem(ecs::World& world, const ecs::Tick& tick) {
         ocean->water->measureWavenumbers();
         ++ocean->seaVersion;
     }
+    // The velocity bands' maps (docs/velocity_bands.md) only while bodies may read the
+    // water's velocity under the surface.
+    const bool bands = world.pool<Body>().size() > 0;
+    for (ocean::OceanFftCpu* fft : {ocean->cpu.get(), ocean->cpuNext.get()})
+        if (fft) fft->setVelocityBands(bands);
     if (ocean->cpuNext && ocean->prefetchTime == ocean->mapsTime) {
         std::swap(ocean->cpu, ocean->cpuNext);
         ocean->water->setFft(ocean->cpu.get());

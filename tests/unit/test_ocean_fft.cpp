@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <complex>
 #include <cstring>
 #include <memory>
@@ -314,6 +315,29 @@ TEST_CASE("update() gives bit-identical maps on 1 and 2 threads", "[ocean][fft]"
     for (int c = 0; c < 2; ++c)
         for (int ch = 0; ch < OCEAN_CHANNEL_COUNT; ++ch)
             CHECK(std::memcmp(one.channel(c, OceanChannel(ch)), two.channel(c, OceanChannel(ch)), bytes) == 0);
+    for (int c = 0; c < 2; ++c)  // the velocity bands' maps
+        for (int k = 0; k < one.velocityBands(c).transforms(); ++k)
+            CHECK(std::memcmp(one.velocityPacked(c, k), two.velocityPacked(c, k), 2 * bytes) == 0);
+}
+
+// Not a test: the update's stages with and without the velocity bands, one 256² cascade (the
+// default tile), medians of 21 updates. build/bin/tests_unit "[.ocean_stages]" -s
+TEST_CASE("ocean update stages with and without the velocity bands", "[.ocean_stages]") {
+    OceanDef def;
+    for (const bool bands : {false, true}) {
+        OceanFftCpu ocean(def, 1);
+        ocean.setVelocityBands(bands);
+        std::vector<double> stage[3];
+        for (int i = 0; i < 21; ++i) {
+            ocean.update(i / 60.0);
+            const OceanFftCpu::StageMs& ms = ocean.lastStageMs();
+            stage[0].push_back(ms.synthesis), stage[1].push_back(ms.transforms), stage[2].push_back(ms.unpack);
+        }
+        for (auto& s : stage) std::sort(s.begin(), s.end());
+        std::printf("bands %s (%d transforms): synthesis %.3f ms, transforms %.3f ms, unpack %.3f ms\n", bands ? "on" : "off",
+                    OCEAN_PACKED_TRANSFORMS + (bands ? ocean.velocityBands(0).transforms() : 0), stage[0][10], stage[1][10],
+                    stage[2][10]);
+    }
 }
 
 TEST_CASE("The dump layout: element [j, i, :] = (h, Dx, Dz, dh/dx, dh/dz) at X = (iL/N, jL/N)", "[ocean][fft]") {
