@@ -59,6 +59,60 @@ OB_VECTOR_KERNEL float updateKernel(float* __restrict phi, float* __restrict r, 
     return worst;
 }
 
+// The open edge's divergence of row j (the west edge face is the ghost u(−1, j); vs: the v row
+// below, the ghost row for j = 0), times the checkerboard sign s·(−1)^i, reordered for the real
+// FFT (Makhoul): cell 2m to m, cell 2m + 1 to n − 1 − m.
+OB_VECTOR_KERNEL void openDivergenceRow(float* __restrict out, const float* __restrict ur, const float* __restrict vr,
+                                        const float* __restrict vs, float s, int n) {
+    const int h = n / 2;
+    for (int m = 0; m < h; ++m) out[m] = s * ((ur[2 * m] - ur[2 * m - 1]) + (vr[2 * m] - vs[2 * m]));
+    for (int m = 0; m < h; ++m) out[n - 1 - m] = -s * ((ur[2 * m + 1] - ur[2 * m]) + (vr[2 * m + 1] - vs[2 * m + 1]));
+}
+
+// The inverse of openDivergenceRow's reordering and sign, for φ.
+OB_VECTOR_KERNEL void openPhiRow(float* __restrict phi, const float* __restrict in, float s, int n) {
+    const int h = n / 2;
+    for (int m = 0; m < h; ++m) {
+        phi[2 * m] = s * in[m];
+        phi[2 * m + 1] = -s * in[n - 1 - m];
+    }
+}
+
+// Spectrum row k1 of the reordered field's r2c (a; b: row n − k1) into the DCT-II's values Y of
+// row k1 at columns k2 and n − k2, k2 = 0..n/2 (Makhoul: Y = 2·Re(ω1·ω2·V(k1, k2) + ω1·ω̄2·V(k1, −k2)),
+// ω = e^(−iπk/(2n)), V(k1, −k2) = conj(V(−k1, k2))), times the solve's coefficient c (padded row):
+// z = c·Y. With P = ω1·ω2·V(k1, k2) and Q = ω1·ω̄2·V(k1, −k2): Y(k1, k2) = 2·Re(P + Q) and
+// Y(k1, n − k2) = −2·Im(P − Q). (cr, ci): cos, sin of πk/(2n).
+OB_VECTOR_KERNEL void openModesRow(float* __restrict z, const float* __restrict c, const float* __restrict a,
+                                   const float* __restrict b, float c1, float s1, const float* __restrict cr,
+                                   const float* __restrict ci, int n) {
+    const int h = n / 2;
+    for (int k = 0; k <= h; ++k) {
+        const float ar = a[2 * k], ai = a[2 * k + 1];
+        const float br = k == 0 ? ar : b[2 * k], bi = k == 0 ? -ai : b[2 * k + 1];  // V(k1, −k2) = (br, −bi)
+        // ω1·ω2 = e^(−i(θ1 + θ2)), ω1·ω̄2 = e^(−i(θ1 − θ2))
+        const float pr = c1 * cr[k] - s1 * ci[k], pi = -(s1 * cr[k] + c1 * ci[k]);
+        const float qr = c1 * cr[k] + s1 * ci[k], qi = c1 * ci[k] - s1 * cr[k];
+        const float Pr = pr * ar - pi * ai, Pi = pr * ai + pi * ar;
+        const float Qr = qr * br + qi * bi, Qi = qi * br - qr * bi;
+        z[k] = c[k] * (2.0f * (Pr + Qr));
+        if (k > 0 && k < h) z[n - k] = c[n - k] * (-2.0f * (Pi - Qi));
+    }
+}
+
+// The DCT-III's spectrum (Makhoul, in reverse) of spectrum row k1, columns k2 = 0..n/2, from the
+// values z of rows k1 and n − k1 (padded: index n reads 0):
+// H = e^(i(θ1 + θ2))·((Z(k1, k2) − Z(−k1, −k2)) − i·(Z(k1, −k2) + Z(−k1, k2))).
+OB_VECTOR_KERNEL void openSpectrumRow(float* __restrict out, const float* __restrict z, const float* __restrict zm,
+                                      float c1, float s1, const float* __restrict cr, const float* __restrict ci, int n) {
+    for (int k = 0; k <= n / 2; ++k) {
+        const float re = z[k] - zm[n - k], im = -(z[n - k] + zm[k]);
+        const float er = c1 * cr[k] - s1 * ci[k], ei = s1 * cr[k] + c1 * ci[k];
+        out[2 * k] = er * re - ei * im;
+        out[2 * k + 1] = er * im + ei * re;
+    }
+}
+
 } // namespace
 
 CurrentProjection::CurrentProjection(int n, bool open) : m_n(n), m_open(open) {
@@ -66,34 +120,19 @@ CurrentProjection::CurrentProjection(int n, bool open) : m_n(n), m_open(open) {
     m_div = allocFloat(cells);
     m_spec = allocFloat(2 * modes);
     m_phiFft = allocFloat(cells);
-    if (open) {  // DST-II forward, DST-III back (its inverse up to 2n per axis), out of place: FFTs of 2n
-        m_forward = ocean::planWithWisdom([&](unsigned flags) {
-            return fftwf_plan_r2r_2d(n, n, m_div, m_spec, FFTW_RODFT10, FFTW_RODFT10, flags);
-        });
-        m_backward = ocean::planWithWisdom([&](unsigned flags) {
-            return fftwf_plan_r2r_2d(n, n, m_spec, m_phiFft, FFTW_RODFT01, FFTW_RODFT01, flags);
-        });
-    } else {
-        m_forward = ocean::planWithWisdom([&](unsigned flags) {
-            return fftwf_plan_dft_r2c_2d(n, n, m_div, reinterpret_cast<fftwf_complex*>(m_spec), flags);
-        });
-        m_backward = ocean::planWithWisdom([&](unsigned flags) {
-            return fftwf_plan_dft_c2r_2d(n, n, reinterpret_cast<fftwf_complex*>(m_spec), m_phiFft, flags);
-        });
-    }
+    // The open edge's sine pair runs through the same real transforms (prepareOpen).
+    m_forward = ocean::planWithWisdom([&](unsigned flags) {
+        return fftwf_plan_dft_r2c_2d(n, n, m_div, reinterpret_cast<fftwf_complex*>(m_spec), flags);
+    });
+    m_backward = ocean::planWithWisdom([&](unsigned flags) {
+        return fftwf_plan_dft_c2r_2d(n, n, reinterpret_cast<fftwf_complex*>(m_spec), m_phiFft, flags);
+    });
     if (!m_forward || !m_backward)
         throw RuntimeError("FFTW could not plan a " + std::to_string(n) + "×" + std::to_string(n) + " transform");
-    // φ̂ = −D̂/λ, and FFTW's unnormalised pair multiplies by n² (the sine pair: (2n)²): both folded into one factor.
-    const double pi = std::numbers::pi, cells2 = double(cells);
     if (open) {
-        m_coef.resize(cells);
-        const double half = 0.5 * pi / double(n), norm = 4.0 * double(n) * double(n);
-        for (int kz = 0; kz < n; ++kz)
-            for (int kx = 0; kx < n; ++kx) {
-                const double sx = std::sin(half * (kx + 1)), sz = std::sin(half * (kz + 1));
-                m_coef[size_t(kz) * size_t(n) + size_t(kx)] = float(-1.0 / (4.0 * (sx * sx + sz * sz) * norm));
-            }
-    } else {
+        prepareOpen();
+    } else {  // φ̂ = −D̂/λ, and FFTW's unnormalised pair multiplies by n²: both folded into one factor
+        const double pi = std::numbers::pi, cells2 = double(cells);
         m_coef.resize(modes);
         for (int kz = 0; kz < n; ++kz)
             for (int kx = 0; kx <= n / 2; ++kx) {
@@ -104,6 +143,28 @@ CurrentProjection::CurrentProjection(int n, bool open) : m_n(n), m_open(open) {
     }
     for (auto* v : {&m_phi, &m_r, &m_z, &m_s, &m_t, &m_precon, &m_pw, &m_q}) v->assign(cells, 0.0f);
     m_row.assign(size_t(n), 0.0f);
+}
+
+// The sine pair's solve, −1/(λ·(2n)²) per mode (FFTW's RODFT10, RODFT01 pair multiplies by 2n per
+// axis), λ(k) = 4·sin²(πk_x/(2n)) + 4·sin²(πk_z/(2n)), k = 1..n; stored for the DCT mode
+// (n − 1 − k_z, n − 1 − k_x) that the checkerboard sign turns it into, on an (n + 1)² grid whose
+// row and column n are 0; and the twiddles cos, sin(πk/(2n)).
+void CurrentProjection::prepareOpen() {
+    const int n = m_n, p = n + 1;
+    const double half = 0.5 * std::numbers::pi / double(n), norm = 4.0 * double(n) * double(n);
+    m_coef.assign(size_t(p) * size_t(p), 0.0f);
+    for (int kz = 0; kz < n; ++kz)
+        for (int kx = 0; kx < n; ++kx) {
+            const double sx = std::sin(half * (kx + 1)), sz = std::sin(half * (kz + 1));
+            m_coef[size_t(n - 1 - kz) * size_t(p) + size_t(n - 1 - kx)] = float(-1.0 / (4.0 * (sx * sx + sz * sz) * norm));
+        }
+    m_modes.assign(size_t(p) * size_t(p), 0.0f);
+    m_cos.resize(size_t(n));
+    m_sin.resize(size_t(n));
+    for (int k = 0; k < n; ++k) {
+        m_cos[size_t(k)] = float(std::cos(half * k));
+        m_sin[size_t(k)] = float(std::sin(half * k));
+    }
 }
 
 long CurrentProjection::neighbour(int i, int j) const {
@@ -223,15 +284,9 @@ void CurrentProjection::closeWallFaces(float* u, float* v, const uint8_t* solid)
 }
 
 void CurrentProjection::projectPeriodic(float* u, float* v, glm::vec2 add) {
+    if (m_open) return projectOpen(u, v);  // no uniform part to add (it would flow out)
     const size_t modes = size_t(m_n) * size_t(m_n / 2 + 1);
     divergence(u, v, m_div);
-    if (m_open) {  // DST-II, φ̂ = −D̂/λ, DST-III back; no uniform part to add (it would flow out)
-        fftwf_execute_r2r(m_forward, m_div, m_spec);
-        for (size_t m = 0; m < m_coef.size(); ++m) m_spec[m] *= m_coef[m];
-        fftwf_execute_r2r(m_backward, m_spec, m_phiFft);
-        applyGradientOpen(u, v, m_phiFft, nullptr);
-        return;
-    }
     fftwf_execute_dft_r2c(m_forward, m_div, reinterpret_cast<fftwf_complex*>(m_spec));
     for (size_t m = 0; m < modes; ++m) {
         m_spec[2 * m] *= m_coef[m];
@@ -239,6 +294,37 @@ void CurrentProjection::projectPeriodic(float* u, float* v, glm::vec2 add) {
     }
     fftwf_execute_dft_c2r(m_backward, reinterpret_cast<fftwf_complex*>(m_spec), m_phiFft);
     applyGradient(u, v, m_phiFft, nullptr, add);
+}
+
+// The open edge (file comment): D signed and reordered, its r2c, per mode the DCT-II's values times
+// the solve's coefficient and the DCT-III's spectrum of them, the c2r, φ back in order, its gradient.
+void CurrentProjection::projectOpen(float* u, float* v) {
+    const int n = m_n, p = n + 1, sc = n / 2 + 1;
+    parallelFor(0, n, rowChunk(), [&](int lo, int hi) {
+        for (int j = lo; j < hi; ++j) {
+            const int to = j % 2 == 0 ? j / 2 : n - 1 - j / 2;
+            openDivergenceRow(m_div + size_t(to) * size_t(n), u + face(0, j), v + face(0, j), v + face(0, j - 1),
+                              j % 2 == 0 ? 1.0f : -1.0f, n);
+        }
+    });
+    fftwf_execute_dft_r2c(m_forward, m_div, reinterpret_cast<fftwf_complex*>(m_spec));
+    parallelFor(0, n, rowChunk(), [&](int lo, int hi) {
+        for (int k = lo; k < hi; ++k)
+            openModesRow(m_modes.data() + size_t(k) * size_t(p), m_coef.data() + size_t(k) * size_t(p), m_spec + 2 * size_t(k) * size_t(sc),
+                         m_spec + 2 * size_t((n - k) % n) * size_t(sc), m_cos[size_t(k)], m_sin[size_t(k)], m_cos.data(), m_sin.data(), n);
+    });
+    parallelFor(0, n, rowChunk(), [&](int lo, int hi) {
+        for (int k = lo; k < hi; ++k)
+            openSpectrumRow(m_spec + 2 * size_t(k) * size_t(sc), m_modes.data() + size_t(k) * size_t(p),
+                            m_modes.data() + size_t(n - k) * size_t(p), m_cos[size_t(k)], m_sin[size_t(k)], m_cos.data(), m_sin.data(), n);
+    });
+    fftwf_execute_dft_c2r(m_backward, reinterpret_cast<fftwf_complex*>(m_spec), m_phiFft);
+    parallelFor(0, n, rowChunk(), [&](int lo, int hi) {
+        for (int j = lo; j < hi; ++j)
+            openPhiRow(m_div + size_t(j) * size_t(n), m_phiFft + size_t(j % 2 == 0 ? j / 2 : n - 1 - j / 2) * size_t(n),
+                       j % 2 == 0 ? 1.0f : -1.0f, n);
+    });
+    applyGradientOpen(u, v, m_div, nullptr);
 }
 
 // (A·x)_c = Σ_n (x_c − x_n) over c's open neighbours; 0 on walls. A wall's x is 0 and its
