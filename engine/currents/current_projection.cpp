@@ -80,33 +80,44 @@ OB_VECTOR_KERNEL void openPhiRow(float* __restrict phi, const float* __restrict 
 
 // Spectrum row k1 of the reordered field's r2c (a; b: row n − k1) into the DCT-II's values Y of
 // row k1 at columns k2 and n − k2, k2 = 0..n/2 (Makhoul: Y = 2·Re(ω1·ω2·V(k1, k2) + ω1·ω̄2·V(k1, −k2)),
-// ω = e^(−iπk/(2n)), V(k1, −k2) = conj(V(−k1, k2))), times the solve's coefficient c (padded row):
-// z = c·Y. With P = ω1·ω2·V(k1, k2) and Q = ω1·ω̄2·V(k1, −k2): Y(k1, k2) = 2·Re(P + Q) and
-// Y(k1, n − k2) = −2·Im(P − Q). (cr, ci): cos, sin of πk/(2n).
-OB_VECTOR_KERNEL void openModesRow(float* __restrict z, const float* __restrict c, const float* __restrict a,
-                                   const float* __restrict b, float c1, float s1, const float* __restrict cr,
-                                   const float* __restrict ci, int n) {
+// ω = e^(−iπk/(2n)), V(k1, −k2) = conj(V(−k1, k2))), times the solve's coefficients: zf[k2] =
+// cf[k2]·Y(k1, k2), zb[k2] = cb[k2]·Y(k1, n − k2) (zb[0] = 0: column n is no mode). With
+// P = ω1·ω2·V(k1, k2) and Q = ω1·ω̄2·V(k1, −k2): Y(k1, k2) = 2·Re(P + Q), Y(k1, n − k2) = −2·Im(P − Q).
+// (c1, s1), (cr, ci): cos, sin of πk/(2n) for k1 and per column.
+OB_VECTOR_KERNEL void openModesRow(float* __restrict zf, float* __restrict zb, const float* __restrict cf,
+                                   const float* __restrict cb, const float* __restrict a, const float* __restrict b, float c1,
+                                   float s1, const float* __restrict cr, const float* __restrict ci, int n) {
     const int h = n / 2;
-    for (int k = 0; k <= h; ++k) {
+    // Columns 0 and n/2 are their own mirrors: V(k1, −k2) = conj(V(−k1, k2)) is b as stored (a at 0).
+    for (int k : {0, h}) {
         const float ar = a[2 * k], ai = a[2 * k + 1];
-        const float br = k == 0 ? ar : b[2 * k], bi = k == 0 ? -ai : b[2 * k + 1];  // V(k1, −k2) = (br, −bi)
+        const float br = k == 0 ? ar : b[2 * k], bi = k == 0 ? -ai : b[2 * k + 1];
+        const float pr = c1 * cr[k] - s1 * ci[k], pi = -(s1 * cr[k] + c1 * ci[k]);
+        const float qr = c1 * cr[k] + s1 * ci[k], qi = c1 * ci[k] - s1 * cr[k];
+        zf[k] = cf[k] * (2.0f * ((pr * ar - pi * ai) + (qr * br + qi * bi)));
+    }
+    zb[0] = 0.0f;
+    zb[h] = zf[h];
+    for (int k = 1; k < h; ++k) {
+        const float ar = a[2 * k], ai = a[2 * k + 1], br = b[2 * k], bi = b[2 * k + 1];  // V(k1, −k2) = (br, −bi)
         // ω1·ω2 = e^(−i(θ1 + θ2)), ω1·ω̄2 = e^(−i(θ1 − θ2))
         const float pr = c1 * cr[k] - s1 * ci[k], pi = -(s1 * cr[k] + c1 * ci[k]);
         const float qr = c1 * cr[k] + s1 * ci[k], qi = c1 * ci[k] - s1 * cr[k];
         const float Pr = pr * ar - pi * ai, Pi = pr * ai + pi * ar;
         const float Qr = qr * br + qi * bi, Qi = qi * br - qr * bi;
-        z[k] = c[k] * (2.0f * (Pr + Qr));
-        if (k > 0 && k < h) z[n - k] = c[n - k] * (-2.0f * (Pi - Qi));
+        zf[k] = cf[k] * (2.0f * (Pr + Qr));
+        zb[k] = cb[k] * (-2.0f * (Pi - Qi));
     }
 }
 
-// The DCT-III's spectrum (Makhoul, in reverse) of spectrum row k1, columns k2 = 0..n/2, from the
-// values z of rows k1 and n − k1 (padded: index n reads 0):
+// The DCT-III's spectrum (Makhoul, in reverse) of spectrum row k1, columns k2 = 0..n/2, from
+// openModesRow's values of rows k1 (zf, zb) and n − k1 (zmf, zmb; 0 for k1 = 0: row n is no mode):
 // H = e^(i(θ1 + θ2))·((Z(k1, k2) − Z(−k1, −k2)) − i·(Z(k1, −k2) + Z(−k1, k2))).
-OB_VECTOR_KERNEL void openSpectrumRow(float* __restrict out, const float* __restrict z, const float* __restrict zm,
-                                      float c1, float s1, const float* __restrict cr, const float* __restrict ci, int n) {
+OB_VECTOR_KERNEL void openSpectrumRow(float* __restrict out, const float* __restrict zf, const float* __restrict zb,
+                                      const float* __restrict zmf, const float* __restrict zmb, float c1, float s1,
+                                      const float* __restrict cr, const float* __restrict ci, int n) {
     for (int k = 0; k <= n / 2; ++k) {
-        const float re = z[k] - zm[n - k], im = -(z[n - k] + zm[k]);
+        const float re = zf[k] - zmb[k], im = -(zb[k] + zmf[k]);
         const float er = c1 * cr[k] - s1 * ci[k], ei = s1 * cr[k] + c1 * ci[k];
         out[2 * k] = er * re - ei * im;
         out[2 * k + 1] = er * im + ei * re;
@@ -146,19 +157,24 @@ CurrentProjection::CurrentProjection(int n, bool open) : m_n(n), m_open(open) {
 }
 
 // The sine pair's solve, −1/(λ·(2n)²) per mode (FFTW's RODFT10, RODFT01 pair multiplies by 2n per
-// axis), λ(k) = 4·sin²(πk_x/(2n)) + 4·sin²(πk_z/(2n)), k = 1..n; stored for the DCT mode
-// (n − 1 − k_z, n − 1 − k_x) that the checkerboard sign turns it into, on an (n + 1)² grid whose
-// row and column n are 0; and the twiddles cos, sin(πk/(2n)).
+// axis), λ(k) = 4·sin²(πk_x/(2n)) + 4·sin²(πk_z/(2n)), k = 1..n, stored for the DCT mode
+// (n − 1 − k_z, n − 1 − k_x) the checkerboard sign turns it into: per row k1 of those, the
+// coefficients of columns k2 and of n − k2, k2 = 0..n/2 (openModesRow's cf, cb; cb[0] = 0, column n
+// is no mode); and the twiddles cos, sin(πk/(2n)).
 void CurrentProjection::prepareOpen() {
-    const int n = m_n, p = n + 1;
+    const int n = m_n, h = n / 2;
+    const size_t row = 2 * size_t(h + 1);
     const double half = 0.5 * std::numbers::pi / double(n), norm = 4.0 * double(n) * double(n);
-    m_coef.assign(size_t(p) * size_t(p), 0.0f);
-    for (int kz = 0; kz < n; ++kz)
-        for (int kx = 0; kx < n; ++kx) {
-            const double sx = std::sin(half * (kx + 1)), sz = std::sin(half * (kz + 1));
-            m_coef[size_t(n - 1 - kz) * size_t(p) + size_t(n - 1 - kx)] = float(-1.0 / (4.0 * (sx * sx + sz * sz) * norm));
+    auto coef = [&](int k1, int k2) {  // the DCT mode (k1, k2)'s
+        const double sx = std::sin(half * (n - k2)), sz = std::sin(half * (n - k1));
+        return float(-1.0 / (4.0 * (sx * sx + sz * sz) * norm));
+    };
+    m_coef.assign(size_t(n) * row, 0.0f);
+    for (int k1 = 0; k1 < n; ++k1)
+        for (int k2 = 0; k2 <= h; ++k2) {
+            m_coef[size_t(k1) * row + size_t(k2)] = coef(k1, k2);
+            if (k2 > 0) m_coef[size_t(k1) * row + size_t(h + 1 + k2)] = coef(k1, n - k2);
         }
-    m_modes.assign(size_t(p) * size_t(p), 0.0f);
     m_cos.resize(size_t(n));
     m_sin.resize(size_t(n));
     for (int k = 0; k < n; ++k) {
@@ -299,30 +315,46 @@ void CurrentProjection::projectPeriodic(float* u, float* v, glm::vec2 add) {
 // The open edge (file comment): D signed and reordered, its r2c, per mode the DCT-II's values times
 // the solve's coefficient and the DCT-III's spectrum of them, the c2r, φ back in order, its gradient.
 void CurrentProjection::projectOpen(float* u, float* v) {
-    const int n = m_n, p = n + 1, sc = n / 2 + 1;
+    const int n = m_n, h = n / 2;
+    const size_t sc = size_t(h + 1);
+    auto reordered = [n](int j) { return j % 2 == 0 ? j / 2 : n - 1 - j / 2; };
     parallelFor(0, n, rowChunk(), [&](int lo, int hi) {
-        for (int j = lo; j < hi; ++j) {
-            const int to = j % 2 == 0 ? j / 2 : n - 1 - j / 2;
-            openDivergenceRow(m_div + size_t(to) * size_t(n), u + face(0, j), v + face(0, j), v + face(0, j - 1),
+        for (int j = lo; j < hi; ++j)
+            openDivergenceRow(m_div + size_t(reordered(j)) * size_t(n), u + face(0, j), v + face(0, j), v + face(0, j - 1),
                               j % 2 == 0 ? 1.0f : -1.0f, n);
-        }
     });
     fftwf_execute_dft_r2c(m_forward, m_div, reinterpret_cast<fftwf_complex*>(m_spec));
-    parallelFor(0, n, rowChunk(), [&](int lo, int hi) {
-        for (int k = lo; k < hi; ++k)
-            openModesRow(m_modes.data() + size_t(k) * size_t(p), m_coef.data() + size_t(k) * size_t(p), m_spec + 2 * size_t(k) * size_t(sc),
-                         m_spec + 2 * size_t((n - k) % n) * size_t(sc), m_cos[size_t(k)], m_sin[size_t(k)], m_cos.data(), m_sin.data(), n);
-    });
-    parallelFor(0, n, rowChunk(), [&](int lo, int hi) {
-        for (int k = lo; k < hi; ++k)
-            openSpectrumRow(m_spec + 2 * size_t(k) * size_t(sc), m_modes.data() + size_t(k) * size_t(p),
-                            m_modes.data() + size_t(n - k) * size_t(p), m_cos[size_t(k)], m_sin[size_t(k)], m_cos.data(), m_sin.data(), n);
+    // Rows k1 and n − k1 read and write only each other: a pair at a time, in place.
+    parallelFor(0, h + 1, m_threads > 1 ? (h + 2) / 2 : h + 1, [&](int lo, int hi) {
+        std::vector<float> z(4 * sc, 0.0f);  // zf, zb of row k1, then of row n − k1
+        float* const zm = z.data() + 2 * sc;
+        for (int k1 = lo; k1 < hi; ++k1) {
+            const int mirror = n - k1;  // the mirror row (row n, no mode, for k1 = 0; k1 itself at n/2)
+            auto modes = [&](int r, float* out) {
+                openModesRow(out, out + sc, m_coef.data() + 2 * sc * size_t(r), m_coef.data() + 2 * sc * size_t(r) + sc,
+                             m_spec + 2 * sc * size_t(r), m_spec + 2 * sc * size_t((n - r) % n), m_cos[size_t(r)], m_sin[size_t(r)],
+                             m_cos.data(), m_sin.data(), n);
+            };
+            auto spectrum = [&](int r, const float* own, const float* mirror) {
+                openSpectrumRow(m_spec + 2 * sc * size_t(r), own, own + sc, mirror, mirror + sc, m_cos[size_t(r)], m_sin[size_t(r)],
+                                m_cos.data(), m_sin.data(), n);
+            };
+            modes(k1, z.data());
+            if (k1 == 0) {  // its mirror, row n, is no mode
+                std::fill(zm, zm + 2 * sc, 0.0f);
+                spectrum(0, z.data(), zm);
+            } else if (k1 == h) {
+                spectrum(h, z.data(), z.data());
+            } else {
+                modes(mirror, zm);
+                spectrum(k1, z.data(), zm);
+                spectrum(mirror, zm, z.data());
+            }
+        }
     });
     fftwf_execute_dft_c2r(m_backward, reinterpret_cast<fftwf_complex*>(m_spec), m_phiFft);
     parallelFor(0, n, rowChunk(), [&](int lo, int hi) {
-        for (int j = lo; j < hi; ++j)
-            openPhiRow(m_div + size_t(j) * size_t(n), m_phiFft + size_t(j % 2 == 0 ? j / 2 : n - 1 - j / 2) * size_t(n),
-                       j % 2 == 0 ? 1.0f : -1.0f, n);
+        for (int j = lo; j < hi; ++j) openPhiRow(m_div + size_t(j) * size_t(n), m_phiFft + size_t(reordered(j)) * size_t(n), j % 2 == 0 ? 1.0f : -1.0f, n);
     });
     applyGradientOpen(u, v, m_div, nullptr);
 }

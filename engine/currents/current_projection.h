@@ -87,10 +87,8 @@ private:
     float* m_phiFft = nullptr;  // n² real
     fftwf_plan_s* m_forward = nullptr;
     fftwf_plan_s* m_backward = nullptr;
-    std::vector<float> m_coef;  // periodic, per mode: −1/(λ·n²), 0 at k = 0; open: (n + 1)², see prepareOpen
-    // The open edge's sine pair through the real FFT (prepareOpen): the DCT modes' values, padded
-    // with a zero row and column n (their mirror of index 0), and the twiddles cos, sin(πk/(2n)).
-    std::vector<float> m_modes, m_cos, m_sin;
+    std::vector<float> m_coef;  // periodic, per mode: −1/(λ·n²), 0 at k = 0; open: prepareOpen's
+    std::vector<float> m_cos, m_sin;  // open: the twiddles cos, sin(πk/(2n)), k = 0..n − 1
     // Wall solve (n² each).
     std::vector<float> m_phi, m_r, m_z, m_s, m_t, m_precon, m_pw, m_q;
     std::vector<float> m_row;  // a row's terms from its neighbouring row (precondition)
