@@ -178,19 +178,19 @@ public:
     float velocityAt(int x, int z) const { return float(velocityState()[size_t(z) * size_t(m_cols) + size_t(x)]); }
 
     // --- The horizontal surface velocity (SPEC §2.5c), derived from the state, not part of it.
-    /// The horizontal surface velocity of the state the last step made, axis 0: x (along a row),
-    /// 1: z (along a column); rows·cols floats row-major (as height()), m/s. Per Fourier mode
+    /// The horizontal surface velocity of the state the last step made, (x: along a row, z: along a
+    /// column) per cell, rows·cols row-major (as height()), m/s. Per Fourier mode
     /// û = i·K·φ̂ with ∂ĥ/∂t = |K|·tanh(|K|d)·φ̂, so û = i·K/(|K|·tanh(|K|d))·v̂ (deep water: i·K/|K|·v̂,
     /// the Riesz transform of v = ∂h/∂t); K = 0 and the Nyquist component of each axis give 0.
     /// Made by each step from the new state's spectrum before the boundary, then the boundary
     /// applied to it as to v (Fixed: the ring 0; Absorbing: scaled by the sponge factors); scrolls
     /// with the state (new cells 0), 0 after clear(). An edit* leaves it as it was until the
     /// next step or deriveHorizontal(). Not part of the state: nothing hashes it.
-    std::span<const float> horizontalVelocity(int axis) const { return {m_transforms.horizontal(axis), m_cells}; }
+    std::span<const glm::vec2> horizontalVelocity() const { return {m_transforms.horizontal(0), m_cells}; }
     /// The horizontal displacement of the surface, ξ̂ = i·K/(|K|·tanh(|K|d))·ĥ (∂ξ/∂t = u), m, as
     /// horizontalVelocity; all 0 unless keepHorizontalDisplacement(true) (the coarse levels' Hermite
     /// in time reads it: EWaveLevels).
-    std::span<const float> horizontalDisplacement(int axis) const { return {m_transforms.horizontal(2 + axis), m_cells}; }
+    std::span<const glm::vec2> horizontalDisplacement() const { return {m_transforms.horizontal(1), m_cells}; }
     /// Whether the steps make horizontalDisplacement too (two more inverse transforms a step).
     void keepHorizontalDisplacement(bool on);
     /// Whether the steps make horizontalVelocity (on unless told: its two inverse transforms and its
@@ -207,18 +207,18 @@ public:
     /// Scales the horizontal velocity and displacement at cell `index` (z·cols + x) by `factor`
     /// in [0, 1]: towards 0 inside a body, as the obstruction scales v (obstructField).
     void scaleHorizontal(size_t index, float factor) {
-        for (int f = 0; f < 4; ++f) m_transforms.horizontal(f)[index] *= factor;
+        for (int f = 0; f < 2; ++f) m_transforms.horizontal(f)[index] *= factor;
     }
 
 private:
     void chooseThreads();
     void prepare(float dt);
     void applySources() const;  // the sources' float sums into v, their rows marked for the float copy
-    void finishRows(int t, int z0, int z1);
-    void finishHorizontal(int f);  // the boundary on horizontal field f (0, 1: u; 2, 3: ξ)
+    void finishRows(int z0, int z1);  // pass 3 for h and v (and h's row sums)
+    void finishHorizontal(int f);  // the boundary on horizontal field f (0: u; 1: ξ)
     void inverseTransforms(bool state);  // pass 3 (state: h and v too) over the workers
     void syncFloatCopies();  // before the forward transforms
-    void conserveVolume();  // pass 4: h += (volume − Σh)/cells
+    void conserveVolume(double sum);  // pass 4: h += (volume − sum)/cells, sum = Σh
 
     int m_rows, m_cols;
     size_t m_cells;
@@ -236,6 +236,7 @@ private:
     double* m_v = nullptr;
     float* m_float[2] = {};            // per field (h, v): float(state), rows·cols; the forward transforms' input
     std::vector<float> m_sponge;       // per cell: the factor exp(−γΔt) (Absorbing), 1 away from the band
+    std::vector<double> m_rowSums;     // per row, from the step's pass 3 (finishRows): Σh (for pass 4), Σ(Δh)², Σ(s·Δv)² (balance)
     // The sources' velocity not yet in v, applied by the readers of v (logically const).
     mutable EWaveSources m_sources;
     EWaveTransforms m_transforms;
