@@ -265,14 +265,15 @@ void EWaveField::step(float dt) {
     if (dt != m_preparedDt) prepare(dt);
     syncFloatCopies();
     const int pairChunk = m_stepThreads > 1 ? 1 : 2;             // 2: both on the calling thread
-    const int rowChunk = m_stepThreads > 1 ? m_rows / 2 : m_rows;  // two row bands, or one
+    const int pairs = m_transforms.pairs();
+    const int pairChunks = m_stepThreads > 1 ? (pairs + 1) / 2 : pairs;  // two bands of row pairs, or one
     // --- 1. forward transforms of h and v, each whole on one worker
     parallelFor(0, 2, pairChunk, [&](int b, int e) {
         for (int t = b; t < e; ++t) m_transforms.forward(t, m_float[t]);
     });
     // --- 2. per mode, in row bands: the packed change and the horizontal fields' spectra of the
     //        new state
-    parallelFor(0, m_rows, rowChunk, [&](int j0, int j1) { m_transforms.changeRows(j0, j1); });
+    parallelFor(0, pairs, pairChunks, [&](int p0, int p1) { m_transforms.changeRows(p0, p1); });
     m_transforms.finishChange();
     // --- 3. the change's inverse transform, added to h and v, the boundary, their float copies
     //        (and h's row sums); the horizontal fields' inverse transforms and their boundary
@@ -348,8 +349,8 @@ void EWaveField::deriveHorizontal() {
             m_transforms.forward(field, m_float[field]);
         }
     });
-    const int rowChunk = m_stepThreads > 1 ? m_rows / 2 : m_rows;
-    parallelFor(0, m_rows, rowChunk, [&](int j0, int j1) { m_transforms.horizontalRows(j0, j1); });
+    const int pairs = m_transforms.pairs(), pairChunks = m_stepThreads > 1 ? (pairs + 1) / 2 : pairs;
+    parallelFor(0, pairs, pairChunks, [&](int p0, int p1) { m_transforms.horizontalRows(p0, p1); });
     m_transforms.sumVelocityWavenumber();
     inverseTransforms(false);
 }

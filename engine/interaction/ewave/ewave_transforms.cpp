@@ -10,6 +10,7 @@
 #include "core/simd.h"
 
 #include <algorithm>
+#include <array>
 #include <cassert>
 #include <cmath>
 #include <cstring>
@@ -205,15 +206,23 @@ void EWaveTransforms::inverseHorizontal(int f) {
     fftwf_execute_dft(m_backward, a, a);
 }
 
-void EWaveTransforms::horizontalRows(int j0, int j1) {
-    float* const staged = stagedRows(j0);
-    for (int j = j0; j < j1; ++j) horizontalRow(j, false, staged);
+void EWaveTransforms::horizontalRows(int p0, int p1) {
+    float* const staged = stagedRows(p0);
+    for (int p = p0; p < p1; ++p)
+        for (int j : pair(p))
+            if (j >= 0) horizontalRow(j, false, staged);
 }
 
-// The scratch of the band of rows starting at j0: at most two bands, [0, rows/2) and the rest.
-float* EWaveTransforms::stagedRows(int j0) {
-    assert(j0 == 0 || j0 >= m_rows / 2);
-    return m_staged.data() + (j0 == 0 ? 0 : 4 * size_t(m_specCols));
+// The scratch of the band of pairs starting at p0: at most two bands, [0, pairs/2) and the rest.
+float* EWaveTransforms::stagedRows(int p0) {
+    assert(p0 == 0 || p0 >= pairs() / 2);
+    return m_staged.data() + (p0 == 0 ? 0 : 4 * size_t(m_specCols));
+}
+
+// Pair p's rows: p and rows − p (−1 where it has one row: p = 0, and rows/2 for even rows).
+std::array<int, 2> EWaveTransforms::pair(int p) const {
+    const int other = m_rows - p;
+    return {p, p > 0 && other != p ? other : -1};
 }
 
 void EWaveTransforms::clearHorizontal() {
@@ -311,40 +320,47 @@ void EWaveTransforms::balance(double sumH2, double sumV2) {
     m_scale = std::ldexp(1.0f, std::clamp(e, -SCALE_RANGE, SCALE_RANGE));
 }
 
-// Spectrum rows [j0, j1): the packed change (and the horizontal fields) of each mode, and the
-// rows' sums. Mode 0 (in the band of row 0): its coefficients are 0, so ĥ(0) is kept, and v̂(0) is
-// dropped (Δv̂(0) = −v̂(0)): a source's uniform part lifts no water.
-void EWaveTransforms::changeRows(int j0, int j1) {
+// Row pairs [p0, p1) (pair(p): rows p and rows − p, which share their coefficients, so the second
+// reads them from the cache, and which write each other's mirrored halves).
+void EWaveTransforms::changeRows(int p0, int p1) {
+    float* const staged = stagedRows(p0);
+    for (int p = p0; p < p1; ++p)
+        for (int j : pair(p))
+            if (j >= 0) changeRow(j, staged);
+}
+
+// Spectrum row j: the packed change (and the horizontal fields) of each mode, and the row's sums.
+// Mode 0 (row 0): its coefficients are 0, so ĥ(0) is kept, and v̂(0) is dropped (Δv̂(0) = −v̂(0)): a
+// source's uniform part lifts no water.
+void EWaveTransforms::changeRow(int j, float* staged) {
     const double norm = 1.0 / (double(m_rows) * double(m_cols));
     const int mirrorEnd = (m_cols - 1) / 2;
-    float* const stagedC = stagedRows(j0);
-    float* const stagedU = stagedC + 2 * size_t(m_specCols);
-    for (int j = j0; j < j1; ++j) {
-        const size_t row = size_t(j) * size_t(m_specCols);
-        const size_t coefRow = size_t(std::min(j, m_rows - j)) * size_t(m_specCols);
-        const float* hs = m_spec[0] + 2 * row;
-        const float* vs = m_spec[1] + 2 * row;
-        const double* coef = m_coef.data() + 3 * coefRow;
-        double* sums = m_rowSums.data() + 2 * size_t(j);
-        if (m_displacement) horizontalRow(j, true, stagedC);  // ξ (the coarse levels, which step rarely): its own pass, reading ĥ' first
-        if (!m_velocity) {  // the state alone (no reader of the horizontal fields)
-            changeKernel(hs, vs, coef, m_scale, fullRow(0, j), stagedC, m_specCols);
-            sums[0] = sums[1] = 0.0;
-        } else {
-            float* power = m_power.data() + row;
-            changeVelocityKernel(hs, vs, coef, norm, m_scale, m_riesz.data() + coefRow, m_kx.data(), m_weight.data(), rowKz(j),
-                                 fullRow(0, j), stagedC, fullRow(1, j), stagedU, power, m_specCols);
-            mirrorKernel(stagedU, mirrorRow(1, j), mirrorEnd, m_cols);
-            if (j == 0) power[0] = 0.0f;  // K = 0: the mean, no wave (its û is 0: r = 0)
-            sumsKernel(power, m_kabs.data() + coefRow, m_specCols, sums);
-        }
-        mirrorKernel(stagedC, mirrorRow(0, j), mirrorEnd, m_cols);
-        if (j == 0) {  // Δv̂(0) = −v̂(0), carrying the inverse transform's 1/(rows·cols) as the coefficients do; Δĥ(0) = 0
-            const float dv0 = -vs[0] * float(norm), dv1 = -vs[1] * float(norm);
-            float* c = fullRow(0, 0);
-            c[0] = -m_scale * dv1;
-            c[1] = m_scale * dv0;
-        }
+    float* const stagedC = staged;
+    float* const stagedU = staged + 2 * size_t(m_specCols);
+    const size_t row = size_t(j) * size_t(m_specCols);
+    const size_t coefRow = size_t(std::min(j, m_rows - j)) * size_t(m_specCols);
+    const float* hs = m_spec[0] + 2 * row;
+    const float* vs = m_spec[1] + 2 * row;
+    const double* coef = m_coef.data() + 3 * coefRow;
+    double* sums = m_rowSums.data() + 2 * size_t(j);
+    if (m_displacement) horizontalRow(j, true, stagedC);  // ξ (the coarse levels, which step rarely): its own pass, reading ĥ' first
+    if (!m_velocity) {  // the state alone (no reader of the horizontal fields)
+        changeKernel(hs, vs, coef, m_scale, fullRow(0, j), stagedC, m_specCols);
+        sums[0] = sums[1] = 0.0;
+    } else {
+        float* power = m_power.data() + row;
+        changeVelocityKernel(hs, vs, coef, norm, m_scale, m_riesz.data() + coefRow, m_kx.data(), m_weight.data(), rowKz(j),
+                             fullRow(0, j), stagedC, fullRow(1, j), stagedU, power, m_specCols);
+        mirrorKernel(stagedU, mirrorRow(1, j), mirrorEnd, m_cols);
+        if (j == 0) power[0] = 0.0f;  // K = 0: the mean, no wave (its û is 0: r = 0)
+        sumsKernel(power, m_kabs.data() + coefRow, m_specCols, sums);
+    }
+    mirrorKernel(stagedC, mirrorRow(0, j), mirrorEnd, m_cols);
+    if (j == 0) {  // Δv̂(0) = −v̂(0), carrying the inverse transform's 1/(rows·cols) as the coefficients do; Δĥ(0) = 0
+        const float dv0 = -vs[0] * float(norm), dv1 = -vs[1] * float(norm);
+        float* c = fullRow(0, 0);
+        c[0] = -m_scale * dv1;
+        c[1] = m_scale * dv0;
     }
 }
 

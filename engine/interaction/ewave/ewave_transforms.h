@@ -4,6 +4,7 @@
 #pragma once
 #include "interaction/ewave/ewave_medium.h"
 
+#include <array>
 #include <cstddef>
 #include <glm/vec2.hpp>
 #include <vector>
@@ -29,8 +30,8 @@ namespace ob::interaction {
 /// Δh's size (the ratio of their norms at the last step, to the nearest power of two, so it is
 /// exact: balance): the transform's rounding, a fraction of the larger of the two, stays a
 /// fraction of each.
-/// Each transform is whole on one thread; rows of changeRows may be split over two workers, rows
-/// [0, rows/2) and the rest (the bits do not depend on the split). The field adds the changes to its state and applies its boundary.
+/// Each transform is whole on one thread; the row pairs of changeRows may be split over two
+/// workers, pairs [0, pairs()/2) and the rest (the bits do not depend on the split). The field adds the changes to its state and applies its boundary.
 class EWaveTransforms {
 public:
     /// rows (z) and cols (x) >= 2, cellSize in metres > 0; plans measured (or read from the shared
@@ -55,10 +56,12 @@ public:
 
     /// Pass 1 for field t (0: h, 1: v): r2c of `copy` (rows·cols floats, FFTW-aligned) into spectrum t.
     void forward(int t, const float* copy);
-    /// Pass 2 on spectrum rows [j0, j1): the packed change and the horizontal fields' spectra of the
-    /// new state. Mode 0: its coefficients are 0, so ĥ(0) is kept, and v̂(0) is dropped
+    /// The row pairs changeRows and horizontalRows take: p = 0..rows/2, rows p and rows − p.
+    int pairs() const { return m_rows / 2 + 1; }
+    /// Pass 2 on the spectrum's row pairs [p0, p1): the packed change and the horizontal fields'
+    /// spectra of the new state. Mode 0: its coefficients are 0, so ĥ(0) is kept, and v̂(0) is dropped
     /// (Δv̂(0) = −v̂(0)): a source's uniform part lifts no water.
-    void changeRows(int j0, int j1);
+    void changeRows(int p0, int p1);
     /// After changeRows over all rows: the sums of velocityWavenumber, in row order (the same bits
     /// whatever the split).
     void finishChange();
@@ -66,7 +69,7 @@ public:
     /// (Parseval: its spectra's norms), to the nearest power of two.
     void balance(double sumH2, double sumV2);
     /// deriveHorizontal's pass 2: the horizontal fields' spectra of the state as transformed.
-    void horizontalRows(int j0, int j1);
+    void horizontalRows(int p0, int p1);
     /// The rows' sums into velocityWavenumber, in row order (the same bits whatever the split).
     void sumVelocityWavenumber();
     /// Pass 3 for the state: the packed change's inverse transform, in place (change()).
@@ -87,8 +90,10 @@ public:
     void clearHorizontal();
 
 private:
+    void changeRow(int j, float* staged);   // changeRows' row j (see the .cpp)
     void horizontalRow(int j, bool change, float* staged);  // û (ξ̂) of spectrum row j's new state, its sums (see the .cpp)
-    float* stagedRows(int j0);               // the band's scratch for the −K values (the .cpp's packing)
+    float* stagedRows(int p0);               // the band's scratch for the −K values (the .cpp's packing)
+    std::array<int, 2> pair(int p) const;    // the rows of pair p (−1: none)
     float rowKz(int j) const;                // kz of spectrum row j, rad/m (0 at the Nyquist row)
     // Full-spectrum rows of a packed array: row j's own half (columns 0..cols/2) and the row whose
     // columns cols − i mirror row j's columns i (row (rows − j) mod rows).
