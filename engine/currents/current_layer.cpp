@@ -160,9 +160,22 @@ void CurrentLayer::step(float dt) {
     }
 }
 
-// A cell is a wall where its centre is inside a footprint (rasteriseObstacles' keep < ½).
+// Whether two footprints are the same shape in the same place (field by field: no padding compared).
+static bool sameShape(const interaction::ObstacleShape& a, const interaction::ObstacleShape& b) {
+    return a.kind == b.kind && a.centre == b.centre && a.axis == b.axis && a.half == b.half && a.displaces == b.displaces &&
+           a.hollow == b.hollow;
+}
+
+// A cell is a wall where its centre is inside a footprint (rasteriseObstacles' keep < ½). The same
+// footprints on the grid where it stood (fixed walls, the common case) give the same mask: kept.
 void CurrentLayer::rasteriseWalls() {
     const int n = m_grid.n;
+    if (m_rastered && m_rasterOrigin == m_grid.originCell &&
+        std::equal(m_shapes.begin(), m_shapes.end(), m_rasterShapes.begin(), m_rasterShapes.end(), sameShape))
+        return;
+    m_rastered = true;
+    m_rasterOrigin = m_grid.originCell;
+    m_rasterShapes = m_shapes;
     const bool had = m_walls;
     m_walls = false;
     m_openCount = glm::dvec2(double(n) * double(n));
