@@ -23,6 +23,8 @@ namespace {
 // the modified pivot is below SAFETY × the diagonal).
 constexpr double MIC_TAU = 0.97;
 constexpr double MIC_SAFETY = 0.25;
+// Rows whose recurrences the preconditioner's sweeps run side by side (forwardRows).
+constexpr int SWEEP_ROWS = 4;
 
 float* allocFloat(size_t count) {
     float* p = fftwf_alloc_real(count);
@@ -448,40 +450,95 @@ void CurrentProjection::factor(const uint8_t* solid) {
 // z_c = p_c·t_c + p_c²·z_{c+1}.
 void CurrentProjection::precondition(const float* r, float* z) {
     const int n = m_n;
+    int j = 0;
+    while (j < n) j += forwardRows(r, j);
+    j = n - 1;
+    while (j >= 0) j -= backwardRows(z, j);
+}
+
+// The forward sweep from row j, up to SWEEP_ROWS rows at once: the first row's terms from the row
+// below as a vector pass (t), then the recurrences of the rows side by side, cell i of each row in
+// turn (row k + 1's cell i takes row k's q_i, final once computed: only a row's last cell changes
+// after it, by the E term across the edge, which it gets before the next row reads it). Each
+// cell's arithmetic is the single row's, in the same order: the same bits, with SWEEP_ROWS
+// independent chains in flight where one row's is latency-bound. A row after the first must be
+// plain: not row 0 (no row below) nor, periodic, row n − 1 (N across the edge). Returns the rows done.
+int CurrentProjection::forwardRows(const float* r, int j) {
+    const int n = m_n;
     const float* p = m_precon.data();
     const float* pw = m_pw.data();
     float* q = m_q.data();
     float* t = m_row.data();
-    for (int j = 0; j < n; ++j) {
-        const size_t row = size_t(j) * size_t(n), south = size_t(wrap(j - 1, n)) * size_t(n);
-        if (j > 0)
-            for (int i = 0; i < n; ++i) t[i] = p[row + size_t(i)] * (r[row + size_t(i)] + p[south + size_t(i)] * q[south + size_t(i)]);
-        else
-            for (int i = 0; i < n; ++i) t[i] = p[size_t(i)] * r[size_t(i)];
-        if (j == n - 1 && !m_open)  // N across the edge: row 0, done
-            for (int i = 0; i < n; ++i) t[i] += p[row + size_t(i)] * (p[size_t(i)] * q[size_t(i)]);
-        q[row] = t[0];
-        for (int i = 1; i < n; ++i) q[row + size_t(i)] = t[i] + pw[row + size_t(i)] * q[row + size_t(i - 1)];
-        // E across the edge of the last column: cell (0, j), done.
-        if (!m_open) q[row + size_t(n - 1)] += p[row + size_t(n - 1)] * (p[row] * q[row]);
+    const size_t row = size_t(j) * size_t(n), south = size_t(wrap(j - 1, n)) * size_t(n);
+    if (j > 0)
+        for (int i = 0; i < n; ++i) t[i] = p[row + size_t(i)] * (r[row + size_t(i)] + p[south + size_t(i)] * q[south + size_t(i)]);
+    else
+        for (int i = 0; i < n; ++i) t[i] = p[size_t(i)] * r[size_t(i)];
+    if (j == n - 1 && !m_open)  // N across the edge: row 0, done
+        for (int i = 0; i < n; ++i) t[i] += p[row + size_t(i)] * (p[size_t(i)] * q[size_t(i)]);
+    const int last = m_open ? n - 1 : n - 2;  // the last row that may follow in a block
+    const int rows = j == n - 1 ? 1 : std::min(SWEEP_ROWS, last - j + 1);
+    // E across the edge of the last column: cell (0, k), done.
+    auto east = [&](size_t k) {
+        if (!m_open) q[k + size_t(n - 1)] += p[k + size_t(n - 1)] * (p[k] * q[k]);
+    };
+    q[row] = t[0];
+    for (int k = 1; k < rows; ++k) {
+        const size_t c = row + size_t(k) * size_t(n);
+        q[c] = p[c] * (r[c] + p[c - size_t(n)] * q[c - size_t(n)]);
     }
-    for (int j = n - 1; j >= 0; --j) {
-        const size_t row = size_t(j) * size_t(n), north = size_t(wrap(j + 1, n)) * size_t(n);
-        if (j < n - 1)
-            for (int i = 0; i < n; ++i) t[i] = q[row + size_t(i)] + p[row + size_t(i)] * z[north + size_t(i)];
-        else
-            for (int i = 0; i < n; ++i) t[i] = q[row + size_t(i)];
-        if (j == 0 && !m_open)  // S across the edge: row n − 1, done
-            for (int i = 0; i < n; ++i) t[i] += p[size_t(i)] * z[size_t(n - 1) * size_t(n) + size_t(i)];
-        // z_c = p_c·(t_c + p_c·z_{c+1}); the first column's W across the edge (cell n − 1) is done
-        // before the row's recurrence reaches it, so it joins its t first.
-        z[row + size_t(n - 1)] = p[row + size_t(n - 1)] * t[n - 1];
-        for (int i = n - 2; i >= 0; --i) {
-            const float pc = p[row + size_t(i)];
-            z[row + size_t(i)] = pc * t[i] + (pc * pc) * z[row + size_t(i + 1)];
+    for (int i = 1; i < n; ++i) {
+        q[row + size_t(i)] = t[i] + pw[row + size_t(i)] * q[row + size_t(i - 1)];
+        if (i == n - 1) east(row);
+        for (int k = 1; k < rows; ++k) {
+            const size_t c = row + size_t(k) * size_t(n) + size_t(i);
+            q[c] = p[c] * (r[c] + p[c - size_t(n)] * q[c - size_t(n)]) + pw[c] * q[c - 1];
+            if (i == n - 1) east(row + size_t(k) * size_t(n));
         }
-        if (!m_open) z[row] += p[row] * (p[row] * z[row + size_t(n - 1)]);
     }
+    return rows;
+}
+
+// The backward sweep from row j down, up to SWEEP_ROWS rows at once, as forwardRows: z_c =
+// p_c·(t_c + p_c·z_{c+1}) along each row from its last cell, t the row's q plus its terms from the
+// row above; the first column's W across the edge (cell n − 1) is done before the row's recurrence
+// reaches it, so it joins its t first, and the row's cell 0 gets it after. A row after the first
+// must be plain: not row n − 1 (no row above) nor, periodic, row 0 (S across the edge).
+int CurrentProjection::backwardRows(float* z, int j) {
+    const int n = m_n;
+    const float* p = m_precon.data();
+    const float* q = m_q.data();
+    float* t = m_row.data();
+    const size_t row = size_t(j) * size_t(n), north = size_t(wrap(j + 1, n)) * size_t(n);
+    if (j < n - 1)
+        for (int i = 0; i < n; ++i) t[i] = q[row + size_t(i)] + p[row + size_t(i)] * z[north + size_t(i)];
+    else
+        for (int i = 0; i < n; ++i) t[i] = q[row + size_t(i)];
+    if (j == 0 && !m_open)  // S across the edge: row n − 1, done
+        for (int i = 0; i < n; ++i) t[i] += p[size_t(i)] * z[size_t(n - 1) * size_t(n) + size_t(i)];
+    const int first = m_open ? 0 : 1;  // the last row (going down) that may follow in a block
+    const int rows = j == 0 ? 1 : std::min(SWEEP_ROWS, j - first + 1);
+    // W across the edge of the first column: cell (n − 1, k), done.
+    auto west = [&](size_t k) {
+        if (!m_open) z[k] += p[k] * (p[k] * z[k + size_t(n - 1)]);
+    };
+    z[row + size_t(n - 1)] = p[row + size_t(n - 1)] * t[n - 1];
+    for (int k = 1; k < rows; ++k) {
+        const size_t c = row - size_t(k) * size_t(n) + size_t(n - 1);
+        z[c] = p[c] * (q[c] + p[c] * z[c + size_t(n)]);
+    }
+    for (int i = n - 2; i >= 0; --i) {
+        const float pc = p[row + size_t(i)];
+        z[row + size_t(i)] = pc * t[i] + (pc * pc) * z[row + size_t(i + 1)];
+        if (i == 0) west(row);
+        for (int k = 1; k < rows; ++k) {
+            const size_t c = row - size_t(k) * size_t(n) + size_t(i);
+            const float pk = p[c];
+            z[c] = pk * (q[c] + pk * z[c + size_t(n)]) + (pk * pk) * z[c + 1];
+            if (i == 0) west(row - size_t(k) * size_t(n));
+        }
+    }
+    return rows;
 }
 
 WallSolve CurrentProjection::projectWithWalls(float* u, float* v, const uint8_t* solid, float tolerance, int maxIterations) {

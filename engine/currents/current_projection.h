@@ -77,6 +77,8 @@ private:
     void factor(const uint8_t* solid);
     void applyA(const float* x, float* out, const uint8_t* solid) const;
     void precondition(const float* r, float* z);
+    int forwardRows(const float* r, int j);  // precondition's sweeps, a block of rows from j (the .cpp)
+    int backwardRows(float* z, int j);
 
     int m_n;
     bool m_open = false;

@@ -41,12 +41,14 @@ namespace ob::interaction {
 /// size when the field is made, measuredThreads; the bits do not depend on the split):
 ///   1. the forward real-to-complex transforms of the float copies of h and v (FFTW, float,
 ///      each whole on one worker);
-///   2. per mode, in place, in row bands: Δĥ = (a − 1)·ĥ + b·v̂, Δv̂ = c·ĥ + (a − 1)·v̂ (double;
-///      a, b, c of modeStep, stored once for rows j and rows − j, which share |k|), and in the
-///      same pass the horizontal velocity's spectra i·K/(|K|·tanh(|K|d))·v̂' of the new v̂' and
-///      the sums of velocityWavenumber;
-///   3. per field: the inverse transform of its change added to it, the boundary in real space,
-///      its float copy; the horizontal velocity's two inverse transforms and the boundary;
+///   2. per mode, in bands of row pairs: Δĥ = (a − 1)·ĥ + b·v̂, Δv̂ = c·ĥ + (a − 1)·v̂ (double;
+///      a, b, c of modeStep, stored once for rows j and rows − j, which share |k|), written as
+///      the whole spectrum of the complex field Δh + i·s·Δv (s a power of two that balances the
+///      two); in the same pass the horizontal velocity's spectrum i·K/(|K|·tanh(|K|d))·v̂' of the new
+///      v̂', as ux + i·uz, and the sums of velocityWavenumber;
+///   3. one complex inverse transform of the change, in place, added to h and v with the boundary
+///      in real space and the float copies in one sweep (h's row sums with it); one of the
+///      horizontal velocity, and its boundary;
 ///   4. the volume (Periodic, Absorbing): h's sum set back to what it was, exactly (conserveVolume).
 ///
 /// Volume. A pressure (a source) or a sponge moves water; it cannot make or remove it, so the
