@@ -42,13 +42,14 @@ float* allocTransformArray(size_t n) {
 // beside more than one input stream it does not).
 
 // One mode's change (double, as the state's step has always made it), rounded to float:
-// Δĥ = (a − 1)·ĥ + b·v̂, Δv̂ = c·ĥ + (a − 1)·v̂ with (a − 1, b, c) = coef[0..2]; and the new v̂' =
-// scale·v̂ + Δv̂ (the coefficients carry `scale`, 1/(rows·cols)).
+// Δĥ = (a − 1)·ĥ + b·v̂, Δv̂ = c·ĥ + (a − 1)·v̂ with a − 1, b, c = coef[m], coef[n + m], coef[2n + m]
+// (the row's three planes, n modes each); and the new v̂' = scale·v̂ + Δv̂ (the coefficients carry
+// `scale`, 1/(rows·cols)).
 struct ModeChange {
     float dh0, dh1, dv0, dv1, n0, n1;
 };
-inline ModeChange modeChange(const float* hs, const float* vs, const double* coef, double scale, int m) {
-    const double am1 = coef[3 * m], b = coef[3 * m + 1], c = coef[3 * m + 2];
+inline ModeChange modeChange(const float* hs, const float* vs, const double* coef, int n, double scale, int m) {
+    const double am1 = coef[m], b = coef[n + m], c = coef[2 * n + m];
     const double h0 = hs[2 * m], h1 = hs[2 * m + 1], v0 = vs[2 * m], v1 = vs[2 * m + 1];
     const double dv0 = c * h0 + am1 * v0, dv1 = c * h1 + am1 * v1;
     return {float(am1 * h0 + b * v0), float(am1 * h1 + b * v1), float(dv0), float(dv1), float(scale * v0 + dv0),
@@ -85,7 +86,7 @@ OB_VECTOR_KERNEL void mirrorKernel(const float* __restrict staged, float* __rest
 // One spectrum row of the state's step without the horizontal fields: the packed change.
 OB_VECTOR_KERNEL void changeKernel(const float* __restrict hs, const float* __restrict vs, const double* __restrict coef,
                                    float s, float* __restrict own, float* __restrict staged, int n) {
-    for (int m = 0; m < n; ++m) packChange(modeChange(hs, vs, coef, 1.0, m), s, own, staged, m);
+    for (int m = 0; m < n; ++m) packChange(modeChange(hs, vs, coef, n, 1.0, m), s, own, staged, m);
 }
 
 // One spectrum row of the step (SPEC §2.5c): the packed change, the packed velocity û = i·K·r·v̂'
@@ -98,7 +99,7 @@ OB_VECTOR_KERNEL void changeVelocityKernel(const float* __restrict hs, const flo
                                            float* __restrict stagedC, float* __restrict ownU, float* __restrict stagedU,
                                            float* __restrict power, int n) {
     for (int m = 0; m < n; ++m) {
-        const ModeChange d = modeChange(hs, vs, coef, scale, m);
+        const ModeChange d = modeChange(hs, vs, coef, n, scale, m);
         packChange(d, s, ownC, stagedC, m);
         const float r = riesz[m];
         packRiesz(d.n0, d.n1, kx[m] * r, kz * r, ownU, stagedU, m);
@@ -123,7 +124,7 @@ OB_VECTOR_KERNEL void rieszKernel(const float* __restrict f, float scale, const 
 OB_VECTOR_KERNEL void newHeightKernel(const float* __restrict hs, const float* __restrict vs, const double* __restrict coef,
                                       double scale, float* __restrict out, int n) {
     for (int m = 0; m < n; ++m) {
-        const double am1 = coef[3 * m], b = coef[3 * m + 1];
+        const double am1 = coef[m], b = coef[n + m];
         for (int p = 0; p < 2; ++p) out[2 * m + p] = float(scale * hs[2 * m + p] + (am1 * hs[2 * m + p] + b * vs[2 * m + p]));
     }
 }
@@ -376,11 +377,11 @@ void EWaveTransforms::prepare(const EWaveMedium& medium, float dt, float decayTi
         for (int i = 0; i < m_specCols; ++i) {
             const double kx = twoPi * i / lx;
             const double k = std::sqrt(kx * kx + kz * kz);
-            double* c = m_coef.data() + 3 * (size_t(j) * size_t(m_specCols) + size_t(i));
+            double* c = m_coef.data() + 3 * size_t(j) * size_t(m_specCols) + size_t(i);  // the row's planes a − 1, b, c
             c[0] = EWaveField::modeStepMinusOne(medium, k, dt, decayTime, viscosity, norm);
             const EWaveField::ModeStep s = EWaveField::modeStep(medium, k, dt, decayTime, viscosity, norm);
-            c[1] = s.b;
-            c[2] = s.c;
+            c[m_specCols] = s.b;
+            c[2 * m_specCols] = s.c;
         }
     }
 }

@@ -109,7 +109,7 @@ private:
     float* m_full[3] = {};
     fftwf_plan_s* m_forward = nullptr;   // r2c rows × cols, out of place, input kept (new-array execute)
     fftwf_plan_s* m_backward = nullptr;  // complex rows × cols, backward, in place
-    std::vector<double> m_coef;        // per mode of rows 0..rows/2: a − 1, b, c (modeStep's, times 1/(rows·cols))
+    std::vector<double> m_coef;        // per row 0..rows/2, three planes of its modes: a − 1, b, c (modeStep's, times 1/(rows·cols))
     std::vector<float> m_riesz;        // per mode of rows 0..rows/2: 1/(|K|·tanh(|K|d)), m; 0 at K = 0
     std::vector<float> m_kabs;         // per mode of rows 0..rows/2: |K|, rad/m
     std::vector<float> m_kx;           // per spectrum column: kx, rad/m, 0 at the Nyquist column
