@@ -193,11 +193,11 @@ public:
     /// horizontalVelocity; all 0 unless keepHorizontalDisplacement(true) (the coarse levels' Hermite
     /// in time reads it: EWaveLevels).
     std::span<const glm::vec2> horizontalDisplacement() const { return {m_transforms.horizontal(1), m_cells}; }
-    /// Whether the steps make horizontalDisplacement too (two more inverse transforms a step).
+    /// Whether the steps make horizontalDisplacement too (one more packed inverse transform a step).
     void keepHorizontalDisplacement(bool on);
-    /// Whether the steps make horizontalVelocity (on unless told: its two inverse transforms and its
-    /// share of the spectral pass). Off, it and velocityWavenumber read 0: the step as it was
-    /// before the velocity, the benchmarks' baseline (BM_EWaveStep's `velocity` argument).
+    /// Whether the steps make horizontalVelocity (on unless told: its packed inverse transform and
+    /// its share of the spectral pass). Off, it and velocityWavenumber read 0: the step without the
+    /// velocity (BM_EWaveStep's `velocity` argument); h and v are the same bits either way.
     void keepHorizontalVelocity(bool on);
     /// The wavenumber the vertical velocity's variance is centred on, Σ|K|·|v̂|² / Σ|v̂|² over the
     /// modes K ≠ 0 of the state the last step made (before the boundary), rad/m; 0 when still.
