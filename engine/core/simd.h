@@ -9,3 +9,12 @@
 #else
 #define OB_VECTOR_KERNEL
 #endif
+
+// A reduction allowed to reassociate into vector lanes (a sum of diagnostics, never a state's
+// arithmetic): the order is fixed by the code each clone was built with, so a run's bits do not
+// depend on the workers.
+#if defined(__GNUC__) && !defined(__clang__)
+#define OB_RELAXED_SUM __attribute__((optimize("associative-math", "no-signed-zeros", "no-trapping-math")))
+#else
+#define OB_RELAXED_SUM
+#endif

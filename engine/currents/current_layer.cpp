@@ -30,6 +30,15 @@ constexpr int PARALLEL_MIN_RESOLUTION = 256;
 // cell wide centred on the rim (a small or moving disc changes what it covers smoothly).
 inline float discWeight(float r, float R) { return std::clamp(0.5f + (R - r), 0.0f, 1.0f); }
 
+// f ← bg + (f − bg)·a over n faces (the decay), after f += shift when `shifted` (a uniform change
+// of the background: the same two roundings as the shift's own pass and then the decay's).
+OB_VECTOR_KERNEL void decayKernel(float* __restrict f, int n, bool shifted, float shift, float bg, float a) {
+    if (shifted)
+        for (int i = 0; i < n; ++i) f[i] = bg + ((f[i] + shift) - bg) * a;
+    else
+        for (int i = 0; i < n; ++i) f[i] = bg + (f[i] - bg) * a;
+}
+
 } // namespace
 
 CurrentLayer::CurrentLayer(const CurrentsDef& def, float waterDensity)
@@ -141,19 +150,32 @@ void CurrentLayer::step(float dt) {
         for (int j = 0; j < m_grid.n; ++j)
             for (int i = 0; i < m_grid.n; ++i) speed = std::max({speed, std::abs(m_u[at(i, j)]), std::abs(m_v[at(i, j)])});
         m_wallSolve = m_projection->projectWithWalls(m_u.data(), m_v.data(), m_solid.data(), WALL_TOLERANCE * speed, WALL_MAX_ITERATIONS);
-        m_sum = faceSum();  // the walls' pressure moved momentum
+        if (conserve) m_sum = faceSum();  // the walls' pressure moved momentum
     } else {
         // The correction rides on the gradient's pass (a uniform field adds no divergence); the
-        // projection keeps Σu (k = 0), so m_sum stands.
+        // projection keeps Σu (k = 0), so m_sum stands. Without the correction (the open edge, whose
+        // sine transform has no mean mode to keep) nothing reads m_sum: setConserveMomentum sums it anew.
         m_projection->projectPeriodic(m_u.data(), m_v.data(), glm::vec2(correction));
         m_wallSolve = {};
-        if (!conserve) m_sum = faceSum();  // (open: the sine transform has no mean mode to keep)
     }
 }
 
-// A cell is a wall where its centre is inside a footprint (rasteriseObstacles' keep < ½).
+// Whether two footprints are the same shape in the same place (field by field: no padding compared).
+static bool sameShape(const interaction::ObstacleShape& a, const interaction::ObstacleShape& b) {
+    return a.kind == b.kind && a.centre == b.centre && a.axis == b.axis && a.half == b.half && a.displaces == b.displaces &&
+           a.hollow == b.hollow;
+}
+
+// A cell is a wall where its centre is inside a footprint (rasteriseObstacles' keep < ½). The same
+// footprints on the grid where it stood (fixed walls, the common case) give the same mask: kept.
 void CurrentLayer::rasteriseWalls() {
     const int n = m_grid.n;
+    if (m_rastered && m_rasterOrigin == m_grid.originCell &&
+        std::equal(m_shapes.begin(), m_shapes.end(), m_rasterShapes.begin(), m_rasterShapes.end(), sameShape))
+        return;
+    m_rastered = true;
+    m_rasterOrigin = m_grid.originCell;
+    m_rasterShapes = m_shapes;
     const bool had = m_walls;
     m_walls = false;
     m_openCount = glm::dvec2(double(n) * double(n));
@@ -194,21 +216,23 @@ void CurrentLayer::applyForcing(float dt) {
     // stress acts on every cell alike; walls hold it back through the projection)
     const glm::vec2 target = m_def.wind_drift * m_wind;
     const glm::vec2 drift = target + (m_drift - target) * float(std::exp(-double(dt) / double(m_def.wind_time)));
-    if (drift != m_drift) addUniform(glm::dvec2(drift - m_drift));
+    const bool shifted = drift != m_drift;
+    const glm::vec2 shift = drift - m_drift;
     m_drift = drift;
-    // --- decay: the departure from the background falls as e^(−t/decay_time) (bottom friction, mixing)
-    const glm::vec2 bg = background();
-    if (m_def.decay_time > 0.0f) {
+    // --- decay: the departure from the background falls as e^(−t/decay_time) (bottom friction, mixing);
+    // without walls the wind's shift rides on its pass (addUniform's sum and additions, then the decay)
+    const bool decay = m_def.decay_time > 0.0f;
+    if (shifted && (!decay || m_walls)) addUniform(glm::dvec2(shift));
+    if (decay) {
+        const bool fused = shifted && !m_walls;
+        if (fused) m_sum += glm::dvec2(shift) * m_openCount;
+        const glm::vec2 bg = background();
         const float a = float(std::exp(-double(dt) / double(m_def.decay_time)));
         const glm::dvec2 bgSum = glm::dvec2(bg) * m_openCount;
         m_sum = bgSum + (m_sum - bgSum) * double(a);
         for (int j = 0; j < n; ++j) {
-            float* ur = m_u.data() + at(0, j);
-            float* vr = m_v.data() + at(0, j);
-            for (int i = 0; i < n; ++i) {
-                ur[i] = bg.x + (ur[i] - bg.x) * a;
-                vr[i] = bg.y + (vr[i] - bg.y) * a;
-            }
+            decayKernel(m_u.data() + at(0, j), n, fused, shift.x, bg.x, a);
+            decayKernel(m_v.data() + at(0, j), n, fused, shift.y, bg.y, a);
         }
     }
     // --- sources: u ← s + (u − s)·e^(−w·dt/T) on the faces of the disc, w its soft-edged weight

@@ -159,6 +159,10 @@ private:
     std::vector<uint8_t> m_openU, m_openV;  // n² faces: 1 = both cells open (empty with no wall)
     std::vector<interaction::ObstacleShape> m_shapes;
     std::vector<interaction::ObstructionCell> m_cells;  // rasterisation scratch
+    // What the wall mask was made from (rasteriseWalls keeps it while they stay).
+    bool m_rastered = false;
+    glm::ivec2 m_rasterOrigin{0};
+    std::vector<interaction::ObstacleShape> m_rasterShapes;
     std::vector<Impulse> m_impulses;
     glm::vec2 m_wind{0.0f};
     glm::vec2 m_drift{0.0f};               // the wind-driven part of the background, m/s

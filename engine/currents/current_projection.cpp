@@ -23,6 +23,8 @@ namespace {
 // the modified pivot is below SAFETY × the diagonal).
 constexpr double MIC_TAU = 0.97;
 constexpr double MIC_SAFETY = 0.25;
+// Rows whose recurrences the preconditioner's sweeps run side by side (forwardRows).
+constexpr int SWEEP_ROWS = 4;
 
 float* allocFloat(size_t count) {
     float* p = fftwf_alloc_real(count);
@@ -59,6 +61,71 @@ OB_VECTOR_KERNEL float updateKernel(float* __restrict phi, float* __restrict r, 
     return worst;
 }
 
+// The open edge's divergence of row j (the west edge face is the ghost u(−1, j); vs: the v row
+// below, the ghost row for j = 0), times the checkerboard sign s·(−1)^i, reordered for the real
+// FFT (Makhoul): cell 2m to m, cell 2m + 1 to n − 1 − m.
+OB_VECTOR_KERNEL void openDivergenceRow(float* __restrict out, const float* __restrict ur, const float* __restrict vr,
+                                        const float* __restrict vs, float s, int n) {
+    const int h = n / 2;
+    for (int m = 0; m < h; ++m) out[m] = s * ((ur[2 * m] - ur[2 * m - 1]) + (vr[2 * m] - vs[2 * m]));
+    for (int m = 0; m < h; ++m) out[n - 1 - m] = -s * ((ur[2 * m + 1] - ur[2 * m]) + (vr[2 * m + 1] - vs[2 * m + 1]));
+}
+
+// The inverse of openDivergenceRow's reordering and sign, for φ.
+OB_VECTOR_KERNEL void openPhiRow(float* __restrict phi, const float* __restrict in, float s, int n) {
+    const int h = n / 2;
+    for (int m = 0; m < h; ++m) {
+        phi[2 * m] = s * in[m];
+        phi[2 * m + 1] = -s * in[n - 1 - m];
+    }
+}
+
+// Spectrum row k1 of the reordered field's r2c (a; b: row n − k1) into the DCT-II's values Y of
+// row k1 at columns k2 and n − k2, k2 = 0..n/2 (Makhoul: Y = 2·Re(ω1·ω2·V(k1, k2) + ω1·ω̄2·V(k1, −k2)),
+// ω = e^(−iπk/(2n)), V(k1, −k2) = conj(V(−k1, k2))), times the solve's coefficients: zf[k2] =
+// cf[k2]·Y(k1, k2), zb[k2] = cb[k2]·Y(k1, n − k2) (zb[0] = 0: column n is no mode). With
+// P = ω1·ω2·V(k1, k2) and Q = ω1·ω̄2·V(k1, −k2): Y(k1, k2) = 2·Re(P + Q), Y(k1, n − k2) = −2·Im(P − Q).
+// (c1, s1), (cr, ci): cos, sin of πk/(2n) for k1 and per column.
+OB_VECTOR_KERNEL void openModesRow(float* __restrict zf, float* __restrict zb, const float* __restrict cf,
+                                   const float* __restrict cb, const float* __restrict a, const float* __restrict b, float c1,
+                                   float s1, const float* __restrict cr, const float* __restrict ci, int n) {
+    const int h = n / 2;
+    // Columns 0 and n/2 are their own mirrors: V(k1, −k2) = conj(V(−k1, k2)) is b as stored (a at 0).
+    for (int k : {0, h}) {
+        const float ar = a[2 * k], ai = a[2 * k + 1];
+        const float br = k == 0 ? ar : b[2 * k], bi = k == 0 ? -ai : b[2 * k + 1];
+        const float pr = c1 * cr[k] - s1 * ci[k], pi = -(s1 * cr[k] + c1 * ci[k]);
+        const float qr = c1 * cr[k] + s1 * ci[k], qi = c1 * ci[k] - s1 * cr[k];
+        zf[k] = cf[k] * (2.0f * ((pr * ar - pi * ai) + (qr * br + qi * bi)));
+    }
+    zb[0] = 0.0f;
+    zb[h] = zf[h];
+    for (int k = 1; k < h; ++k) {
+        const float ar = a[2 * k], ai = a[2 * k + 1], br = b[2 * k], bi = b[2 * k + 1];  // V(k1, −k2) = (br, −bi)
+        // ω1·ω2 = e^(−i(θ1 + θ2)), ω1·ω̄2 = e^(−i(θ1 − θ2))
+        const float pr = c1 * cr[k] - s1 * ci[k], pi = -(s1 * cr[k] + c1 * ci[k]);
+        const float qr = c1 * cr[k] + s1 * ci[k], qi = c1 * ci[k] - s1 * cr[k];
+        const float Pr = pr * ar - pi * ai, Pi = pr * ai + pi * ar;
+        const float Qr = qr * br + qi * bi, Qi = qi * br - qr * bi;
+        zf[k] = cf[k] * (2.0f * (Pr + Qr));
+        zb[k] = cb[k] * (-2.0f * (Pi - Qi));
+    }
+}
+
+// The DCT-III's spectrum (Makhoul, in reverse) of spectrum row k1, columns k2 = 0..n/2, from
+// openModesRow's values of rows k1 (zf, zb) and n − k1 (zmf, zmb; 0 for k1 = 0: row n is no mode):
+// H = e^(i(θ1 + θ2))·((Z(k1, k2) − Z(−k1, −k2)) − i·(Z(k1, −k2) + Z(−k1, k2))).
+OB_VECTOR_KERNEL void openSpectrumRow(float* __restrict out, const float* __restrict zf, const float* __restrict zb,
+                                      const float* __restrict zmf, const float* __restrict zmb, float c1, float s1,
+                                      const float* __restrict cr, const float* __restrict ci, int n) {
+    for (int k = 0; k <= n / 2; ++k) {
+        const float re = zf[k] - zmb[k], im = -(zb[k] + zmf[k]);
+        const float er = c1 * cr[k] - s1 * ci[k], ei = s1 * cr[k] + c1 * ci[k];
+        out[2 * k] = er * re - ei * im;
+        out[2 * k + 1] = er * im + ei * re;
+    }
+}
+
 } // namespace
 
 CurrentProjection::CurrentProjection(int n, bool open) : m_n(n), m_open(open) {
@@ -66,34 +133,19 @@ CurrentProjection::CurrentProjection(int n, bool open) : m_n(n), m_open(open) {
     m_div = allocFloat(cells);
     m_spec = allocFloat(2 * modes);
     m_phiFft = allocFloat(cells);
-    if (open) {  // DST-II forward, DST-III back (its inverse up to 2n per axis), out of place: FFTs of 2n
-        m_forward = ocean::planWithWisdom([&](unsigned flags) {
-            return fftwf_plan_r2r_2d(n, n, m_div, m_spec, FFTW_RODFT10, FFTW_RODFT10, flags);
-        });
-        m_backward = ocean::planWithWisdom([&](unsigned flags) {
-            return fftwf_plan_r2r_2d(n, n, m_spec, m_phiFft, FFTW_RODFT01, FFTW_RODFT01, flags);
-        });
-    } else {
-        m_forward = ocean::planWithWisdom([&](unsigned flags) {
-            return fftwf_plan_dft_r2c_2d(n, n, m_div, reinterpret_cast<fftwf_complex*>(m_spec), flags);
-        });
-        m_backward = ocean::planWithWisdom([&](unsigned flags) {
-            return fftwf_plan_dft_c2r_2d(n, n, reinterpret_cast<fftwf_complex*>(m_spec), m_phiFft, flags);
-        });
-    }
+    // The open edge's sine pair runs through the same real transforms (prepareOpen).
+    m_forward = ocean::planWithWisdom([&](unsigned flags) {
+        return fftwf_plan_dft_r2c_2d(n, n, m_div, reinterpret_cast<fftwf_complex*>(m_spec), flags);
+    });
+    m_backward = ocean::planWithWisdom([&](unsigned flags) {
+        return fftwf_plan_dft_c2r_2d(n, n, reinterpret_cast<fftwf_complex*>(m_spec), m_phiFft, flags);
+    });
     if (!m_forward || !m_backward)
         throw RuntimeError("FFTW could not plan a " + std::to_string(n) + "×" + std::to_string(n) + " transform");
-    // φ̂ = −D̂/λ, and FFTW's unnormalised pair multiplies by n² (the sine pair: (2n)²): both folded into one factor.
-    const double pi = std::numbers::pi, cells2 = double(cells);
     if (open) {
-        m_coef.resize(cells);
-        const double half = 0.5 * pi / double(n), norm = 4.0 * double(n) * double(n);
-        for (int kz = 0; kz < n; ++kz)
-            for (int kx = 0; kx < n; ++kx) {
-                const double sx = std::sin(half * (kx + 1)), sz = std::sin(half * (kz + 1));
-                m_coef[size_t(kz) * size_t(n) + size_t(kx)] = float(-1.0 / (4.0 * (sx * sx + sz * sz) * norm));
-            }
-    } else {
+        prepareOpen();
+    } else {  // φ̂ = −D̂/λ, and FFTW's unnormalised pair multiplies by n²: both folded into one factor
+        const double pi = std::numbers::pi, cells2 = double(cells);
         m_coef.resize(modes);
         for (int kz = 0; kz < n; ++kz)
             for (int kx = 0; kx <= n / 2; ++kx) {
@@ -104,6 +156,33 @@ CurrentProjection::CurrentProjection(int n, bool open) : m_n(n), m_open(open) {
     }
     for (auto* v : {&m_phi, &m_r, &m_z, &m_s, &m_t, &m_precon, &m_pw, &m_q}) v->assign(cells, 0.0f);
     m_row.assign(size_t(n), 0.0f);
+}
+
+// The sine pair's solve, −1/(λ·(2n)²) per mode (FFTW's RODFT10, RODFT01 pair multiplies by 2n per
+// axis), λ(k) = 4·sin²(πk_x/(2n)) + 4·sin²(πk_z/(2n)), k = 1..n, stored for the DCT mode
+// (n − 1 − k_z, n − 1 − k_x) the checkerboard sign turns it into: per row k1 of those, the
+// coefficients of columns k2 and of n − k2, k2 = 0..n/2 (openModesRow's cf, cb; cb[0] = 0, column n
+// is no mode); and the twiddles cos, sin(πk/(2n)).
+void CurrentProjection::prepareOpen() {
+    const int n = m_n, h = n / 2;
+    const size_t row = 2 * size_t(h + 1);
+    const double half = 0.5 * std::numbers::pi / double(n), norm = 4.0 * double(n) * double(n);
+    auto coef = [&](int k1, int k2) {  // the DCT mode (k1, k2)'s
+        const double sx = std::sin(half * (n - k2)), sz = std::sin(half * (n - k1));
+        return float(-1.0 / (4.0 * (sx * sx + sz * sz) * norm));
+    };
+    m_coef.assign(size_t(n) * row, 0.0f);
+    for (int k1 = 0; k1 < n; ++k1)
+        for (int k2 = 0; k2 <= h; ++k2) {
+            m_coef[size_t(k1) * row + size_t(k2)] = coef(k1, k2);
+            if (k2 > 0) m_coef[size_t(k1) * row + size_t(h + 1 + k2)] = coef(k1, n - k2);
+        }
+    m_cos.resize(size_t(n));
+    m_sin.resize(size_t(n));
+    for (int k = 0; k < n; ++k) {
+        m_cos[size_t(k)] = float(std::cos(half * k));
+        m_sin[size_t(k)] = float(std::sin(half * k));
+    }
 }
 
 long CurrentProjection::neighbour(int i, int j) const {
@@ -223,15 +302,9 @@ void CurrentProjection::closeWallFaces(float* u, float* v, const uint8_t* solid)
 }
 
 void CurrentProjection::projectPeriodic(float* u, float* v, glm::vec2 add) {
+    if (m_open) return projectOpen(u, v);  // no uniform part to add (it would flow out)
     const size_t modes = size_t(m_n) * size_t(m_n / 2 + 1);
     divergence(u, v, m_div);
-    if (m_open) {  // DST-II, φ̂ = −D̂/λ, DST-III back; no uniform part to add (it would flow out)
-        fftwf_execute_r2r(m_forward, m_div, m_spec);
-        for (size_t m = 0; m < m_coef.size(); ++m) m_spec[m] *= m_coef[m];
-        fftwf_execute_r2r(m_backward, m_spec, m_phiFft);
-        applyGradientOpen(u, v, m_phiFft, nullptr);
-        return;
-    }
     fftwf_execute_dft_r2c(m_forward, m_div, reinterpret_cast<fftwf_complex*>(m_spec));
     for (size_t m = 0; m < modes; ++m) {
         m_spec[2 * m] *= m_coef[m];
@@ -239,6 +312,53 @@ void CurrentProjection::projectPeriodic(float* u, float* v, glm::vec2 add) {
     }
     fftwf_execute_dft_c2r(m_backward, reinterpret_cast<fftwf_complex*>(m_spec), m_phiFft);
     applyGradient(u, v, m_phiFft, nullptr, add);
+}
+
+// The open edge (file comment): D signed and reordered, its r2c, per mode the DCT-II's values times
+// the solve's coefficient and the DCT-III's spectrum of them, the c2r, φ back in order, its gradient.
+void CurrentProjection::projectOpen(float* u, float* v) {
+    const int n = m_n, h = n / 2;
+    const size_t sc = size_t(h + 1);
+    auto reordered = [n](int j) { return j % 2 == 0 ? j / 2 : n - 1 - j / 2; };
+    parallelFor(0, n, rowChunk(), [&](int lo, int hi) {
+        for (int j = lo; j < hi; ++j)
+            openDivergenceRow(m_div + size_t(reordered(j)) * size_t(n), u + face(0, j), v + face(0, j), v + face(0, j - 1),
+                              j % 2 == 0 ? 1.0f : -1.0f, n);
+    });
+    fftwf_execute_dft_r2c(m_forward, m_div, reinterpret_cast<fftwf_complex*>(m_spec));
+    // Rows k1 and n − k1 read and write only each other: a pair at a time, in place.
+    parallelFor(0, h + 1, m_threads > 1 ? (h + 2) / 2 : h + 1, [&](int lo, int hi) {
+        std::vector<float> z(4 * sc, 0.0f);  // zf, zb of row k1, then of row n − k1
+        float* const zm = z.data() + 2 * sc;
+        for (int k1 = lo; k1 < hi; ++k1) {
+            const int mirror = n - k1;  // the mirror row (row n, no mode, for k1 = 0; k1 itself at n/2)
+            auto modes = [&](int r, float* out) {
+                openModesRow(out, out + sc, m_coef.data() + 2 * sc * size_t(r), m_coef.data() + 2 * sc * size_t(r) + sc,
+                             m_spec + 2 * sc * size_t(r), m_spec + 2 * sc * size_t((n - r) % n), m_cos[size_t(r)], m_sin[size_t(r)],
+                             m_cos.data(), m_sin.data(), n);
+            };
+            auto spectrum = [&](int r, const float* own, const float* mirror) {
+                openSpectrumRow(m_spec + 2 * sc * size_t(r), own, own + sc, mirror, mirror + sc, m_cos[size_t(r)], m_sin[size_t(r)],
+                                m_cos.data(), m_sin.data(), n);
+            };
+            modes(k1, z.data());
+            if (k1 == 0) {  // its mirror, row n, is no mode
+                std::fill(zm, zm + 2 * sc, 0.0f);
+                spectrum(0, z.data(), zm);
+            } else if (k1 == h) {
+                spectrum(h, z.data(), z.data());
+            } else {
+                modes(mirror, zm);
+                spectrum(k1, z.data(), zm);
+                spectrum(mirror, zm, z.data());
+            }
+        }
+    });
+    fftwf_execute_dft_c2r(m_backward, reinterpret_cast<fftwf_complex*>(m_spec), m_phiFft);
+    parallelFor(0, n, rowChunk(), [&](int lo, int hi) {
+        for (int j = lo; j < hi; ++j) openPhiRow(m_div + size_t(j) * size_t(n), m_phiFft + size_t(reordered(j)) * size_t(n), j % 2 == 0 ? 1.0f : -1.0f, n);
+    });
+    applyGradientOpen(u, v, m_div, nullptr);
 }
 
 // (A·x)_c = Σ_n (x_c − x_n) over c's open neighbours; 0 on walls. A wall's x is 0 and its
@@ -330,40 +450,95 @@ void CurrentProjection::factor(const uint8_t* solid) {
 // z_c = p_c·t_c + p_c²·z_{c+1}.
 void CurrentProjection::precondition(const float* r, float* z) {
     const int n = m_n;
+    int j = 0;
+    while (j < n) j += forwardRows(r, j);
+    j = n - 1;
+    while (j >= 0) j -= backwardRows(z, j);
+}
+
+// The forward sweep from row j, up to SWEEP_ROWS rows at once: the first row's terms from the row
+// below as a vector pass (t), then the recurrences of the rows side by side, cell i of each row in
+// turn (row k + 1's cell i takes row k's q_i, final once computed: only a row's last cell changes
+// after it, by the E term across the edge, which it gets before the next row reads it). Each
+// cell's arithmetic is the single row's, in the same order: the same bits, with SWEEP_ROWS
+// independent chains in flight where one row's is latency-bound. A row after the first must be
+// plain: not row 0 (no row below) nor, periodic, row n − 1 (N across the edge). Returns the rows done.
+int CurrentProjection::forwardRows(const float* r, int j) {
+    const int n = m_n;
     const float* p = m_precon.data();
     const float* pw = m_pw.data();
     float* q = m_q.data();
     float* t = m_row.data();
-    for (int j = 0; j < n; ++j) {
-        const size_t row = size_t(j) * size_t(n), south = size_t(wrap(j - 1, n)) * size_t(n);
-        if (j > 0)
-            for (int i = 0; i < n; ++i) t[i] = p[row + size_t(i)] * (r[row + size_t(i)] + p[south + size_t(i)] * q[south + size_t(i)]);
-        else
-            for (int i = 0; i < n; ++i) t[i] = p[size_t(i)] * r[size_t(i)];
-        if (j == n - 1 && !m_open)  // N across the edge: row 0, done
-            for (int i = 0; i < n; ++i) t[i] += p[row + size_t(i)] * (p[size_t(i)] * q[size_t(i)]);
-        q[row] = t[0];
-        for (int i = 1; i < n; ++i) q[row + size_t(i)] = t[i] + pw[row + size_t(i)] * q[row + size_t(i - 1)];
-        // E across the edge of the last column: cell (0, j), done.
-        if (!m_open) q[row + size_t(n - 1)] += p[row + size_t(n - 1)] * (p[row] * q[row]);
+    const size_t row = size_t(j) * size_t(n), south = size_t(wrap(j - 1, n)) * size_t(n);
+    if (j > 0)
+        for (int i = 0; i < n; ++i) t[i] = p[row + size_t(i)] * (r[row + size_t(i)] + p[south + size_t(i)] * q[south + size_t(i)]);
+    else
+        for (int i = 0; i < n; ++i) t[i] = p[size_t(i)] * r[size_t(i)];
+    if (j == n - 1 && !m_open)  // N across the edge: row 0, done
+        for (int i = 0; i < n; ++i) t[i] += p[row + size_t(i)] * (p[size_t(i)] * q[size_t(i)]);
+    const int last = m_open ? n - 1 : n - 2;  // the last row that may follow in a block
+    const int rows = j == n - 1 ? 1 : std::min(SWEEP_ROWS, last - j + 1);
+    // E across the edge of the last column: cell (0, k), done.
+    auto east = [&](size_t k) {
+        if (!m_open) q[k + size_t(n - 1)] += p[k + size_t(n - 1)] * (p[k] * q[k]);
+    };
+    q[row] = t[0];
+    for (int k = 1; k < rows; ++k) {
+        const size_t c = row + size_t(k) * size_t(n);
+        q[c] = p[c] * (r[c] + p[c - size_t(n)] * q[c - size_t(n)]);
     }
-    for (int j = n - 1; j >= 0; --j) {
-        const size_t row = size_t(j) * size_t(n), north = size_t(wrap(j + 1, n)) * size_t(n);
-        if (j < n - 1)
-            for (int i = 0; i < n; ++i) t[i] = q[row + size_t(i)] + p[row + size_t(i)] * z[north + size_t(i)];
-        else
-            for (int i = 0; i < n; ++i) t[i] = q[row + size_t(i)];
-        if (j == 0 && !m_open)  // S across the edge: row n − 1, done
-            for (int i = 0; i < n; ++i) t[i] += p[size_t(i)] * z[size_t(n - 1) * size_t(n) + size_t(i)];
-        // z_c = p_c·(t_c + p_c·z_{c+1}); the first column's W across the edge (cell n − 1) is done
-        // before the row's recurrence reaches it, so it joins its t first.
-        z[row + size_t(n - 1)] = p[row + size_t(n - 1)] * t[n - 1];
-        for (int i = n - 2; i >= 0; --i) {
-            const float pc = p[row + size_t(i)];
-            z[row + size_t(i)] = pc * t[i] + (pc * pc) * z[row + size_t(i + 1)];
+    for (int i = 1; i < n; ++i) {
+        q[row + size_t(i)] = t[i] + pw[row + size_t(i)] * q[row + size_t(i - 1)];
+        if (i == n - 1) east(row);
+        for (int k = 1; k < rows; ++k) {
+            const size_t c = row + size_t(k) * size_t(n) + size_t(i);
+            q[c] = p[c] * (r[c] + p[c - size_t(n)] * q[c - size_t(n)]) + pw[c] * q[c - 1];
+            if (i == n - 1) east(row + size_t(k) * size_t(n));
         }
-        if (!m_open) z[row] += p[row] * (p[row] * z[row + size_t(n - 1)]);
     }
+    return rows;
+}
+
+// The backward sweep from row j down, up to SWEEP_ROWS rows at once, as forwardRows: z_c =
+// p_c·(t_c + p_c·z_{c+1}) along each row from its last cell, t the row's q plus its terms from the
+// row above; the first column's W across the edge (cell n − 1) is done before the row's recurrence
+// reaches it, so it joins its t first, and the row's cell 0 gets it after. A row after the first
+// must be plain: not row n − 1 (no row above) nor, periodic, row 0 (S across the edge).
+int CurrentProjection::backwardRows(float* z, int j) {
+    const int n = m_n;
+    const float* p = m_precon.data();
+    const float* q = m_q.data();
+    float* t = m_row.data();
+    const size_t row = size_t(j) * size_t(n), north = size_t(wrap(j + 1, n)) * size_t(n);
+    if (j < n - 1)
+        for (int i = 0; i < n; ++i) t[i] = q[row + size_t(i)] + p[row + size_t(i)] * z[north + size_t(i)];
+    else
+        for (int i = 0; i < n; ++i) t[i] = q[row + size_t(i)];
+    if (j == 0 && !m_open)  // S across the edge: row n − 1, done
+        for (int i = 0; i < n; ++i) t[i] += p[size_t(i)] * z[size_t(n - 1) * size_t(n) + size_t(i)];
+    const int first = m_open ? 0 : 1;  // the last row (going down) that may follow in a block
+    const int rows = j == 0 ? 1 : std::min(SWEEP_ROWS, j - first + 1);
+    // W across the edge of the first column: cell (n − 1, k), done.
+    auto west = [&](size_t k) {
+        if (!m_open) z[k] += p[k] * (p[k] * z[k + size_t(n - 1)]);
+    };
+    z[row + size_t(n - 1)] = p[row + size_t(n - 1)] * t[n - 1];
+    for (int k = 1; k < rows; ++k) {
+        const size_t c = row - size_t(k) * size_t(n) + size_t(n - 1);
+        z[c] = p[c] * (q[c] + p[c] * z[c + size_t(n)]);
+    }
+    for (int i = n - 2; i >= 0; --i) {
+        const float pc = p[row + size_t(i)];
+        z[row + size_t(i)] = pc * t[i] + (pc * pc) * z[row + size_t(i + 1)];
+        if (i == 0) west(row);
+        for (int k = 1; k < rows; ++k) {
+            const size_t c = row - size_t(k) * size_t(n) + size_t(i);
+            const float pk = p[c];
+            z[c] = pk * (q[c] + pk * z[c + size_t(n)]) + (pk * pk) * z[c + 1];
+            if (i == 0) west(row - size_t(k) * size_t(n));
+        }
+    }
+    return rows;
 }
 
 WallSolve CurrentProjection::projectWithWalls(float* u, float* v, const uint8_t* solid, float tolerance, int maxIterations) {

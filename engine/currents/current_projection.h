@@ -18,9 +18,13 @@
 //    takes the gradient 2·φ_inside and water leaves or enters freely). The edge faces are the
 //    padded arrays' ghost faces on the west and south (u(−1, j), v(i, −1)) and the last stored
 //    ones on the east and north (u(n − 1, j), v(i, n − 1)). A is then diagonal in the sine basis
-//    sin(πk(i + ½)/n): λ(k) = 4·sin²(πk_x/(2n)) + 4·sin²(πk_z/(2n)), k = 1..n, one DST-II forward
-//    and one DST-III back (FFTW's RODFT10, RODFT01: transforms of 2n, fast for a power of two); no
-//    mode is 0, so the mean flow is not kept (momentum leaves with the water).
+//    sin(πk(i + ½)/n): λ(k) = 4·sin²(πk_x/(2n)) + 4·sin²(πk_z/(2n)), k = 1..n, a DST-II forward
+//    and a DST-III back (FFTW's RODFT10, RODFT01); no mode is 0, so the mean flow is not kept
+//    (momentum leaves with the water). The pair is computed through one real n × n FFT each way
+//    (Makhoul 1980; FFTW's own r2r kinds have no vector code and cost 4× its r2c): with the
+//    checkerboard sign (−1)^(i+j), a DST-II is a DCT-II read backwards; a 2-D DCT-II is the r2c
+//    of the cells reordered (even indices ascending, odd ones descending) and a twiddle per mode
+//    that reads the modes K and its mirror; the DST-III back is the same in reverse.
 #pragma once
 #include "currents/current_layer.h"
 
@@ -66,22 +70,27 @@ private:
     // Cell (i, j)'s neighbour index, or −1 beyond an open edge (periodic: wrapped).
     long neighbour(int i, int j) const;
     void applyGradientOpen(float* u, float* v, const float* phi, const uint8_t* solid) const;
+    void projectOpen(float* u, float* v);
+    void prepareOpen();
     void closeWallFaces(float* u, float* v, const uint8_t* solid) const;
     void applyGradient(float* u, float* v, const float* phi, const uint8_t* solid, glm::vec2 add = glm::vec2(0.0f)) const;
     void factor(const uint8_t* solid);
     void applyA(const float* x, float* out, const uint8_t* solid) const;
     void precondition(const float* r, float* z);
+    int forwardRows(const float* r, int j);  // precondition's sweeps, a block of rows from j (the .cpp)
+    int backwardRows(float* z, int j);
 
     int m_n;
     bool m_open = false;
     int m_threads = 1;
     int rowChunk() const { return m_threads > 1 ? (m_n + m_threads - 1) / m_threads : m_n; }
-    float* m_div = nullptr;     // n² real, FFTW-aligned
+    float* m_div = nullptr;     // n² real, FFTW-aligned (open: the reordered, signed divergence, then φ reordered)
     float* m_spec = nullptr;    // n × (n/2 + 1) complex
     float* m_phiFft = nullptr;  // n² real
     fftwf_plan_s* m_forward = nullptr;
     fftwf_plan_s* m_backward = nullptr;
-    std::vector<float> m_coef;  // per mode: −1/(λ·n²), 0 at k = 0 (open: −1/(λ·(2(n + 1))²), DST-I's modes)
+    std::vector<float> m_coef;  // periodic, per mode: −1/(λ·n²), 0 at k = 0; open: prepareOpen's
+    std::vector<float> m_cos, m_sin;  // open: the twiddles cos, sin(πk/(2n)), k = 0..n − 1
     // Wall solve (n² each).
     std::vector<float> m_phi, m_r, m_z, m_s, m_t, m_precon, m_pw, m_q;
     std::vector<float> m_row;  // a row's terms from its neighbouring row (precondition)

@@ -1,6 +1,6 @@
-// The surface current layer (docs/currents.md): one CurrentLayer::step at N² cells, open patch
+// The surface current layer (docs/currents.md): one CurrentLayer::step at N² cells, open water
 // (FFT projection) or with a wall across it (FFT, then MIC(0)-PCG from the last step's φ), still
-// or with a moving hull, by worker count. A source drives a jet and a body's impulse lands every step, so the flow is
+// or with a moving hull, by worker count, with the periodic or the open edge. A source drives a jet and a body's impulse lands every step, so the flow is
 // never still; 600 steps (10 s) run before the timing, so the jet has reached the wall's gap.
 #include "core/parallel.h"
 #include "currents/current_layer.h"
@@ -13,9 +13,9 @@ namespace {
 
 constexpr float DT = 1.0f / 60.0f;
 
-// Args: N, wall (0 open; 1 a wall across the patch with a gap of 0.1·N cells; 2 that wall and a
-// 20 m × 6 m hull crossing a cell every step, so the mask and the preconditioner change each
-// step), workers.
+// Args: N, wall (0 open water; 1 a wall across the patch with a gap of 0.1·N cells; 2 that wall and
+// a 20 m × 6 m hull crossing a cell every step, so the mask and the preconditioner change each
+// step), workers, edge (0 periodic, 1 open: the sine pair through the real FFT).
 void BM_CurrentStep(benchmark::State& state) {
     const int n = int(state.range(0));
     const int kind = int(state.range(1));
@@ -25,6 +25,7 @@ void BM_CurrentStep(benchmark::State& state) {
     def.resolution = n;
     def.cell_size = 2.0f;
     def.sources.push_back({{-0.5f * float(n), 0.0f}, 12.0f, {1.0f, 0.0f}, 2.0f});
+    def.edge = state.range(3) != 0 ? ob::currents::CurrentEdge::Open : ob::currents::CurrentEdge::Periodic;
     ob::currents::CurrentLayer layer(def, 1025.0f);
     layer.setWind({8.0f, 3.0f});
     std::vector<ob::interaction::ObstacleShape> shapes;
@@ -66,8 +67,8 @@ void BM_CurrentStep(benchmark::State& state) {
     ob::setWorkerCount(0);
 }
 BENCHMARK(BM_CurrentStep)
-    ->ArgNames({"n", "wall", "workers"})
-    ->ArgsProduct({{128, 256}, {0, 1, 2}, {1, 2}})
+    ->ArgNames({"n", "wall", "workers", "open"})
+    ->ArgsProduct({{128, 256}, {0, 1, 2}, {1, 2}, {0, 1}})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 

@@ -1,6 +1,6 @@
 // Dispersive ripple field benchmarks (docs/references.md#dispersive-ripples): one ewave step per field size and worker
-// count, the same four float FFTW transforms alone (the floor of a step; and the double ones
-// the step used before), and
+// count, its float FFTW transforms alone (the floor of a step; the four real ones of the step
+// before the packed pairs, and the double ones it used before the float ones), and
 // 100,000 bounding spheres of SR 20 stamping into ewave (planStamp + the biweight source) to
 // compare with BM_StepSphere's kang2008 stamps.
 #include "core/log.h"
@@ -56,7 +56,7 @@ BENCHMARK(BM_EWaveStep)
     ->UseRealTime();
 
 // The horizontal surface velocity derived from a state as it is (EWaveField::deriveHorizontal:
-// one forward and two inverse transforms), what the GPU twin's read-back costs on the CPU on top
+// one forward transform and the packed inverse one), what the GPU twin's read-back costs on the CPU on top
 // of BM_EWaveStep's field (whose step makes it itself). Args: N, workers.
 void BM_EWaveDeriveHorizontal(benchmark::State& state) {
     const int n = int(state.range(0));
@@ -102,46 +102,60 @@ BENCHMARK(BM_EWaveGpuStep)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
-// The step's four transforms alone (r2c of h and v, c2r of both; float, out of place, the
-// shared wisdom's plans), split over the workers as the step splits them. Args: N, workers.
+// The step's transforms alone: r2c of h and v, and the packed inverse ones (one complex transform
+// in place per pair of real fields: the change (h, v), the velocity (ux, uz)); float, the shared
+// wisdom's plans, split over the workers as the step splits them. Args: N, workers, packed (0: the
+// four real c2r transforms the step ran before, for comparison).
 void BM_EWaveFftwAlone(benchmark::State& state) {
     const int n = int(state.range(0));
+    const bool packed = state.range(2) != 0;
     ob::setWorkerCount(int(state.range(1)));
     const size_t cells = size_t(n) * size_t(n), modes = size_t(n) * size_t(n / 2 + 1);
     float* real[2] = {fftwf_alloc_real(cells), fftwf_alloc_real(cells)};
     fftwf_complex* spec[2] = {fftwf_alloc_complex(modes), fftwf_alloc_complex(modes)};
+    fftwf_complex* full[2] = {fftwf_alloc_complex(cells), fftwf_alloc_complex(cells)};
     fftwf_plan fwd = ob::ocean::planWithWisdom([&](unsigned f) { return fftwf_plan_dft_r2c_2d(n, n, real[0], spec[0], f); });
     fftwf_plan bwd = ob::ocean::planWithWisdom([&](unsigned f) { return fftwf_plan_dft_c2r_2d(n, n, spec[0], real[0], f); });
+    fftwf_plan pair = ob::ocean::planWithWisdom([&](unsigned f) { return fftwf_plan_dft_2d(n, n, full[0], full[0], FFTW_BACKWARD, f); });
     std::mt19937 rng(1);
     std::uniform_real_distribution<float> noise(-0.1f, 0.1f);
     for (float* r : real)
         for (size_t i = 0; i < cells; ++i) r[i] = noise(rng);
+    for (fftwf_complex* c : full)
+        for (size_t i = 0; i < cells; ++i) c[i][0] = noise(rng), c[i][1] = noise(rng);
     for (auto _ : state) {
         ob::parallelFor(0, 2, 1, [&](int b, int e) {
             for (int t = b; t < e; ++t) fftwf_execute_dft_r2c(fwd, real[t], spec[t]);
         });
         ob::parallelFor(0, 2, 1, [&](int b, int e) {
-            for (int t = b; t < e; ++t) fftwf_execute_dft_c2r(bwd, spec[t], real[t]);
+            for (int t = b; t < e; ++t) {
+                if (!packed) {  // a state field's and a velocity field's (c2r destroys its input: the values do not matter)
+                    for (int k = 0; k < 2; ++k) fftwf_execute_dft_c2r(bwd, spec[t], real[t]);
+                } else {
+                    fftwf_execute_dft(pair, full[t], full[t]);
+                }
+            }
         });
     }
     {
         std::lock_guard<std::mutex> lock(ob::ocean::fftwPlannerMutex());
-        fftwf_destroy_plan(fwd);
-        fftwf_destroy_plan(bwd);
+        for (fftwf_plan p : {fwd, bwd, pair}) fftwf_destroy_plan(p);
     }
     for (int t = 0; t < 2; ++t) {
         fftwf_free(real[t]);
         fftwf_free(spec[t]);
+        fftwf_free(full[t]);
     }
     ob::setWorkerCount(0);
 }
 BENCHMARK(BM_EWaveFftwAlone)
-    ->ArgsProduct({{256, 512, 1024}, {1, 2}})
+    ->ArgNames({"N", "workers", "packed"})
+    ->ArgsProduct({{256, 512, 1024}, {1, 2}, {0, 1}})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
-// The same four transforms in double precision, what the step ran before its transforms went
-// to float. Args: N, workers.
+// Four real transforms in double precision (r2c of h and v, c2r of both), what the step ran
+// before its transforms went to float. Args: N, workers.
 void BM_EWaveFftwDouble(benchmark::State& state) {
     const int n = int(state.range(0));
     ob::setWorkerCount(int(state.range(1)));

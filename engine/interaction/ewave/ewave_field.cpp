@@ -49,27 +49,63 @@ OB_VECTOR_KERNEL void toFloatKernel(float* __restrict out, const double* __restr
     for (size_t i = 0; i < n; ++i) out[i] = float(f[i]);
 }
 
-// f += change, then its float copy (before the boundary: the caller redoes the band's).
-OB_VECTOR_KERNEL void addKernel(double* __restrict f, float* __restrict copy, const float* __restrict change, int n) {
+// Both fields' change added, and their float copies: change holds (Δh, s·Δv) pairs, invS = 1/s
+// (a power of two: exact). Before the boundary's band (finishRows' addScaleKernel there).
+OB_VECTOR_KERNEL void addKernel(double* __restrict h, double* __restrict v, float* __restrict hc, float* __restrict vc,
+                                const float* __restrict change, float invS, int n) {
     for (int i = 0; i < n; ++i) {
-        f[i] += double(change[i]);
-        copy[i] = float(f[i]);
+        h[i] += double(change[2 * i]);
+        hc[i] = float(h[i]);
+        v[i] += double(change[2 * i + 1] * invS);
+        vc[i] = float(v[i]);
     }
 }
 
-// f relaxed towards `level` by factor (the sponge: f − level scaled), and its float copy.
-OB_VECTOR_KERNEL void scaleKernel(double* __restrict f, float* __restrict copy, const float* __restrict factor, int n,
-                                  double level) {
+// addKernel, then the sponge on both: h − level and v scaled by factor (level: h's mean level; v's is 0).
+OB_VECTOR_KERNEL void addScaleKernel(double* __restrict h, double* __restrict v, float* __restrict hc, float* __restrict vc,
+                                     const float* __restrict change, float invS, const float* __restrict factor, int n,
+                                     double level) {
     for (int i = 0; i < n; ++i) {
-        f[i] = (f[i] - level) * double(factor[i]) + level;
-        copy[i] = float(f[i]);
+        const double f = double(factor[i]);
+        h[i] = ((h[i] + double(change[2 * i])) - level) * f + level;
+        hc[i] = float(h[i]);
+        v[i] = ((v[i] + double(change[2 * i + 1] * invS)) - 0.0) * f + 0.0;
+        vc[i] = float(v[i]);
     }
 }
 
-// Σ f in double, in index order (the same bits whatever the workers did before).
-double sumKernel(const double* f, size_t n) {
+// Σ change[2i]², Σ change[2i + 1]² over a row's n cells (Δh², (s·Δv)²: EWaveTransforms::balance), in
+// float, reassociated into vector lanes: the order is fixed by the code the clone was built with
+// (as the transforms' sums of velocityWavenumber), and only this reduction is relaxed.
+OB_RELAXED_SUM OB_VECTOR_KERNEL void squaresKernel(const float* __restrict change, int n, double* __restrict sums) {
+    float h = 0.0f, v = 0.0f;
+    for (int i = 0; i < n; ++i) {
+        h += change[2 * i] * change[2 * i];
+        v += change[2 * i + 1] * change[2 * i + 1];
+    }
+    sums[0] = h;
+    sums[1] = v;
+}
+
+// Σ f over a row in eight interleaved partial sums (a fixed order: the same bits from either clone),
+// so the adds' latency does not bound it; the rows are then summed in order (conserveVolume).
+OB_VECTOR_KERNEL double rowSumKernel(const double* __restrict f, int n) {
+    constexpr int LANES = 8;
+    double lane[LANES] = {};
+    int i = 0;
+    for (; i + LANES <= n; i += LANES)
+        for (int l = 0; l < LANES; ++l) lane[l] += f[i + l];
+    for (; i < n; ++i) lane[0] += f[i];
     double sum = 0.0;
-    for (size_t i = 0; i < n; ++i) sum += f[i];
+    for (int l = 0; l < LANES; ++l) sum += lane[l];
+    return sum;
+}
+
+// Σ f over rows × cols: each row's rowSumKernel, the rows in order. The one sum of the volume: the
+// step's pass 3 makes the same rows' sums (finishRows), so what it keeps is what this counts.
+double volumeSum(const double* f, int rows, int cols) {
+    double sum = 0.0;
+    for (int z = 0; z < rows; ++z) sum += rowSumKernel(f + size_t(z) * size_t(cols), cols);
     return sum;
 }
 
@@ -99,6 +135,7 @@ EWaveField::EWaveField(int rows, int cols, float cellSize, RippleBoundary bounda
     for (int t = 0; t < 2; ++t) m_float[t] = allocFloat(m_cells);
     if (boundary == RippleBoundary::Absorbing) m_spongeWidth = std::clamp(spongeWidth, 1, std::min(rows, cols) / 2);
     m_transforms.prepareHorizontal(m_medium);
+    m_rowSums.assign(3 * size_t(rows), 0.0);
     chooseThreads();
 }
 
@@ -228,67 +265,73 @@ void EWaveField::step(float dt) {
     if (dt != m_preparedDt) prepare(dt);
     syncFloatCopies();
     const int pairChunk = m_stepThreads > 1 ? 1 : 2;             // 2: both on the calling thread
-    const int rowChunk = m_stepThreads > 1 ? m_rows / 2 : m_rows;  // two row bands, or one
+    const int pairs = m_transforms.pairs();
+    const int pairChunks = m_stepThreads > 1 ? (pairs + 1) / 2 : pairs;  // two bands of row pairs, or one
     // --- 1. forward transforms of h and v, each whole on one worker
     parallelFor(0, 2, pairChunk, [&](int b, int e) {
         for (int t = b; t < e; ++t) m_transforms.forward(t, m_float[t]);
     });
-    // --- 2. the horizontal fields' spectra of the new state, then both spectra become their
-    //        changes, in row bands
-    parallelFor(0, m_rows, rowChunk, [&](int j0, int j1) { m_transforms.changeRows(j0, j1); });
-    m_transforms.sumVelocityWavenumber();
-    // --- 3. per field: the inverse transform of its change, added to it, the boundary, its float
-    //        copy; the horizontal fields' inverse transforms and their boundary
+    // --- 2. per mode, in row bands: the packed change and the horizontal fields' spectra of the
+    //        new state
+    parallelFor(0, pairs, pairChunks, [&](int p0, int p1) { m_transforms.changeRows(p0, p1); });
+    m_transforms.finishChange();
+    // --- 3. the change's inverse transform, added to h and v, the boundary, their float copies
+    //        (and h's row sums); the horizontal fields' inverse transforms and their boundary
     inverseTransforms(true);
+    double sums[3] = {};  // Σh, Σ(Δh)², Σ(s·Δv)²: the rows in order, the same bits on any worker count
+    for (size_t z = 0; z < size_t(m_rows); ++z)
+        for (int k = 0; k < 3; ++k) sums[k] += m_rowSums[3 * z + size_t(k)];
+    m_transforms.balance(sums[1], sums[2]);
     // --- 4. the volume the rounding and the sponge moved, put back
-    if (m_boundary != RippleBoundary::Fixed) conserveVolume();
+    if (m_boundary != RippleBoundary::Fixed) conserveVolume(sums[0]);
 }
 
-// The inverse transforms over the workers, in an order that gives each of two workers one state
-// field (its transform and its finishRows, the larger tasks) and half the horizontal ones.
+// The inverse transforms over the workers: the state's (its transform and finishRows, the larger
+// task) and each horizontal field's (its transform and its boundary).
 void EWaveField::inverseTransforms(bool state) {
-    // Tasks: 0, 1 the state's h and v; 2.. the horizontal fields ux, uz, ξx, ξz.
-    static constexpr int STATE[] = {0, 1}, STEP[] = {0, 2, 1, 3}, STEP_DISPLACEMENT[] = {0, 2, 4, 1, 3, 5}, DERIVED[] = {2, 3, 4, 5};
+    // Tasks: 0 the state; 1, 2 the horizontal fields u, ξ.
     const bool displacement = m_transforms.displacement(), velocity = m_transforms.velocity();
-    const int* tasks = !velocity ? STATE : state ? (displacement ? STEP_DISPLACEMENT : STEP) : DERIVED;
-    const int count = (state ? 2 : 0) + (!velocity ? 0 : displacement ? 4 : 2);
-    const int chunk = m_stepThreads > 1 ? 1 : count;
-    parallelFor(0, count, chunk, [&](int b, int e) {
-        for (int k = b; k < e; ++k) {
-            const int t = tasks[k];
-            if (t < 2) {
-                m_transforms.inverseChange(t);
-                finishRows(t, 0, m_rows);
+    const int first = state ? 0 : 1, end = !velocity ? 1 : displacement ? 3 : 2;
+    if (end <= first) return;
+    const int chunk = m_stepThreads > 1 ? 1 : end - first;
+    parallelFor(first, end, chunk, [&](int b, int e) {
+        for (int t = b; t < e; ++t) {
+            if (t == 0) {
+                m_transforms.inverseChange();
+                finishRows(0, m_rows);
             } else {
-                m_transforms.inverseHorizontal(t - 2);
-                if (state) finishHorizontal(t - 2);  // derived from a state that had its boundary: none again
+                m_transforms.inverseHorizontal(t - 1);
+                if (state) finishHorizontal(t - 1);  // derived from a state that had its boundary: none again
             }
         }
     });
 }
 
-// Field f of the horizontal ones after its transform: the boundary as finishRows applies it to v
+// Horizontal field f (0: u, 1: ξ) after its transform: the boundary as finishRows applies it to v
 // (Fixed: the outer ring 0; Absorbing: the band scaled by the sponge factors, towards 0).
 void EWaveField::finishHorizontal(int f) {
-    float* const u = m_transforms.horizontal(f);
+    glm::vec2* const u = m_transforms.horizontal(f);
     const int rows = m_rows, cols = m_cols, w = m_spongeWidth;
     switch (m_boundary) {
     case RippleBoundary::Periodic:
         break;
     case RippleBoundary::Fixed:
-        std::fill(u, u + cols, 0.0f);
-        std::fill(u + size_t(rows - 1) * size_t(cols), u + m_cells, 0.0f);
-        for (int z = 1; z < rows - 1; ++z) u[size_t(z) * size_t(cols)] = u[size_t(z) * size_t(cols) + size_t(cols - 1)] = 0.0f;
+        std::fill(u, u + cols, glm::vec2(0.0f));
+        std::fill(u + size_t(rows - 1) * size_t(cols), u + m_cells, glm::vec2(0.0f));
+        for (int z = 1; z < rows - 1; ++z) u[size_t(z) * size_t(cols)] = u[size_t(z) * size_t(cols) + size_t(cols - 1)] = glm::vec2(0.0f);
         break;
     case RippleBoundary::Absorbing:
         for (int z = 0; z < rows; ++z) {
-            float* r = u + size_t(z) * size_t(cols);
+            glm::vec2* r = u + size_t(z) * size_t(cols);
             const float* s = m_sponge.data() + size_t(z) * size_t(cols);
+            auto scale = [&](int x0, int x1) {
+                for (int x = x0; x < x1; ++x) r[x] *= s[x];
+            };
             if (z < w || z >= rows - w) {
-                for (int x = 0; x < cols; ++x) r[x] *= s[x];
+                scale(0, cols);
             } else {
-                for (int x = 0; x < w; ++x) r[x] *= s[x];
-                for (int x = cols - w; x < cols; ++x) r[x] *= s[x];
+                scale(0, w);
+                scale(cols - w, cols);
             }
         }
         break;
@@ -306,8 +349,8 @@ void EWaveField::deriveHorizontal() {
             m_transforms.forward(field, m_float[field]);
         }
     });
-    const int rowChunk = m_stepThreads > 1 ? m_rows / 2 : m_rows;
-    parallelFor(0, m_rows, rowChunk, [&](int j0, int j1) { m_transforms.horizontalRows(j0, j1); });
+    const int pairs = m_transforms.pairs(), pairChunks = m_stepThreads > 1 ? (pairs + 1) / 2 : pairs;
+    parallelFor(0, pairs, pairChunks, [&](int p0, int p1) { m_transforms.horizontalRows(p0, p1); });
     m_transforms.sumVelocityWavenumber();
     inverseTransforms(false);
 }
@@ -315,44 +358,55 @@ void EWaveField::deriveHorizontal() {
 // The step changes no mode but k = 0 of h by more than rounding, so the shift is that rounding
 // (~1e-8 of the change's RMS over the field) plus, with the sponge, the water it moved:
 // spread over the whole field it is the k = 0 mode alone, as a volume's rise would be.
-void EWaveField::conserveVolume() {
-    const double shift = (m_volume - sumKernel(m_h, m_cells)) / double(m_cells);
+void EWaveField::conserveVolume(double sum) {
+    const double shift = (m_volume - sum) / double(m_cells);
     shiftKernel(m_h, m_float[0], shift, m_cells);
 }
 
-// Rows [z0, z1) of field t (0: h, 1: v): the change added, then the boundary (Fixed: the outer
-// ring 0; Absorbing: the band scaled by the sponge factors), the float copy following.
-void EWaveField::finishRows(int t, int z0, int z1) {
+// Rows [z0, z1) of h and v: the change added (change(): (Δh, s·Δv) pairs), then the boundary (Fixed:
+// the outer ring 0; Absorbing: the band scaled by the sponge factors), the float copies following
+// in the same sweep; h's row sums (m_rowSums) for conserveVolume.
+void EWaveField::finishRows(int z0, int z1) {
     const int rows = m_rows, cols = m_cols, w = m_spongeWidth;
-    double* const f = t == 0 ? m_h : m_v;
-    const double level = t == 0 ? m_volume / double(m_cells) : 0.0;  // the sponge's far field: the mean level, v = 0
+    const float invS = 1.0f / m_transforms.changeScale();
+    const double level = m_volume / double(m_cells);  // the sponge's far field: the mean level (v: 0)
+    const float* const change = m_transforms.change();
     for (int z = z0; z < z1; ++z) {
         const size_t row = size_t(z) * size_t(cols);
-        double* fr = f + row;
-        float* copy = m_float[t] + row;
-        addKernel(fr, copy, m_transforms.change(t) + row, cols);
+        double* const h = m_h + row;
+        double* const v = m_v + row;
+        float* const hc = m_float[0] + row;
+        float* const vc = m_float[1] + row;
+        const float* const c = change + 2 * row;
+        auto add = [&](int x0, int x1) { addKernel(h + x0, v + x0, hc + x0, vc + x0, c + 2 * x0, invS, x1 - x0); };
+        auto band = [&](int x0, int x1) {
+            addScaleKernel(h + x0, v + x0, hc + x0, vc + x0, c + 2 * x0, invS, m_sponge.data() + row + size_t(x0), x1 - x0, level);
+        };
         switch (m_boundary) {
         case RippleBoundary::Periodic:
+            add(0, cols);
             break;
         case RippleBoundary::Fixed:
+            add(0, cols);
+            for (int x : {0, cols - 1}) h[x] = v[x] = 0.0, hc[x] = vc[x] = 0.0f;
             if (z == 0 || z == rows - 1) {
-                std::fill(fr, fr + cols, 0.0);
-                std::fill(copy, copy + cols, 0.0f);
-            } else {
-                fr[0] = fr[cols - 1] = 0.0;
-                copy[0] = copy[cols - 1] = 0.0f;
+                std::fill(h, h + cols, 0.0), std::fill(v, v + cols, 0.0);
+                std::fill(hc, hc + cols, 0.0f), std::fill(vc, vc + cols, 0.0f);
             }
             break;
         case RippleBoundary::Absorbing:
             // Only the band: rows in it whole, the other rows at their two ends.
             if (z < w || z >= rows - w) {
-                scaleKernel(fr, copy, m_sponge.data() + row, cols, level);
+                band(0, cols);
             } else {
-                scaleKernel(fr, copy, m_sponge.data() + row, w, level);
-                scaleKernel(fr + (cols - w), copy + (cols - w), m_sponge.data() + row + size_t(cols - w), w, level);
+                band(0, w);
+                add(w, cols - w);
+                band(cols - w, cols);
             }
             break;
         }
+        m_rowSums[3 * size_t(z)] = m_boundary == RippleBoundary::Fixed ? 0.0 : rowSumKernel(h, cols);
+        squaresKernel(c, cols, m_rowSums.data() + 3 * size_t(z) + 1);
     }
 }
 
@@ -365,7 +419,7 @@ void EWaveField::syncHeight() {
     applySources();
     toFloatKernel(m_float[0], m_h, m_cells);
     toFloatKernel(m_float[1], m_v, m_cells);
-    m_volume = sumKernel(m_h, m_cells);
+    m_volume = volumeSum(m_h, m_rows, m_cols);
     m_stale = false;
     m_vRows0 = m_rows;
     m_vRows1 = 0;
@@ -399,11 +453,11 @@ void EWaveField::scroll(int dx, int dz) {
     const double volume = m_volume;
     scrollCells(m_h, m_rows, m_cols, glm::ivec2(dx, dz), keep ? volume / double(m_cells) : 0.0);
     scrollCells(m_v, m_rows, m_cols, glm::ivec2(dx, dz), 0.0);
-    for (int f = 0; f < 4; ++f) scrollCells(m_transforms.horizontal(f), m_rows, m_cols, glm::ivec2(dx, dz), 0.0f);
+    for (int f = 0; f < 2; ++f) scrollCells(m_transforms.horizontal(f), m_rows, m_cols, glm::ivec2(dx, dz), glm::vec2(0.0f));
     syncHeight();
     if (!keep) return;
     m_volume = volume;
-    conserveVolume();
+    conserveVolume(volumeSum(m_h, m_rows, m_cols));
 }
 
 void EWaveField::clear() {

@@ -41,12 +41,14 @@ namespace ob::interaction {
 /// size when the field is made, measuredThreads; the bits do not depend on the split):
 ///   1. the forward real-to-complex transforms of the float copies of h and v (FFTW, float,
 ///      each whole on one worker);
-///   2. per mode, in place, in row bands: Δĥ = (a − 1)·ĥ + b·v̂, Δv̂ = c·ĥ + (a − 1)·v̂ (double;
-///      a, b, c of modeStep, stored once for rows j and rows − j, which share |k|), and in the
-///      same pass the horizontal velocity's spectra i·K/(|K|·tanh(|K|d))·v̂' of the new v̂' and
-///      the sums of velocityWavenumber;
-///   3. per field: the inverse transform of its change added to it, the boundary in real space,
-///      its float copy; the horizontal velocity's two inverse transforms and the boundary;
+///   2. per mode, in bands of row pairs: Δĥ = (a − 1)·ĥ + b·v̂, Δv̂ = c·ĥ + (a − 1)·v̂ (double;
+///      a, b, c of modeStep, stored once for rows j and rows − j, which share |k|), written as
+///      the whole spectrum of the complex field Δh + i·s·Δv (s a power of two that balances the
+///      two); in the same pass the horizontal velocity's spectrum i·K/(|K|·tanh(|K|d))·v̂' of the new
+///      v̂', as ux + i·uz, and the sums of velocityWavenumber;
+///   3. one complex inverse transform of the change, in place, added to h and v with the boundary
+///      in real space and the float copies in one sweep (h's row sums with it); one of the
+///      horizontal velocity, and its boundary;
 ///   4. the volume (Periodic, Absorbing): h's sum set back to what it was, exactly (conserveVolume).
 ///
 /// Volume. A pressure (a source) or a sponge moves water; it cannot make or remove it, so the
@@ -178,24 +180,24 @@ public:
     float velocityAt(int x, int z) const { return float(velocityState()[size_t(z) * size_t(m_cols) + size_t(x)]); }
 
     // --- The horizontal surface velocity (SPEC §2.5c), derived from the state, not part of it.
-    /// The horizontal surface velocity of the state the last step made, axis 0: x (along a row),
-    /// 1: z (along a column); rows·cols floats row-major (as height()), m/s. Per Fourier mode
+    /// The horizontal surface velocity of the state the last step made, (x: along a row, z: along a
+    /// column) per cell, rows·cols row-major (as height()), m/s. Per Fourier mode
     /// û = i·K·φ̂ with ∂ĥ/∂t = |K|·tanh(|K|d)·φ̂, so û = i·K/(|K|·tanh(|K|d))·v̂ (deep water: i·K/|K|·v̂,
     /// the Riesz transform of v = ∂h/∂t); K = 0 and the Nyquist component of each axis give 0.
     /// Made by each step from the new state's spectrum before the boundary, then the boundary
     /// applied to it as to v (Fixed: the ring 0; Absorbing: scaled by the sponge factors); scrolls
     /// with the state (new cells 0), 0 after clear(). An edit* leaves it as it was until the
     /// next step or deriveHorizontal(). Not part of the state: nothing hashes it.
-    std::span<const float> horizontalVelocity(int axis) const { return {m_transforms.horizontal(axis), m_cells}; }
+    std::span<const glm::vec2> horizontalVelocity() const { return {m_transforms.horizontal(0), m_cells}; }
     /// The horizontal displacement of the surface, ξ̂ = i·K/(|K|·tanh(|K|d))·ĥ (∂ξ/∂t = u), m, as
     /// horizontalVelocity; all 0 unless keepHorizontalDisplacement(true) (the coarse levels' Hermite
     /// in time reads it: EWaveLevels).
-    std::span<const float> horizontalDisplacement(int axis) const { return {m_transforms.horizontal(2 + axis), m_cells}; }
-    /// Whether the steps make horizontalDisplacement too (two more inverse transforms a step).
+    std::span<const glm::vec2> horizontalDisplacement() const { return {m_transforms.horizontal(1), m_cells}; }
+    /// Whether the steps make horizontalDisplacement too (one more packed inverse transform a step).
     void keepHorizontalDisplacement(bool on);
-    /// Whether the steps make horizontalVelocity (on unless told: its two inverse transforms and its
-    /// share of the spectral pass). Off, it and velocityWavenumber read 0: the step as it was
-    /// before the velocity, the benchmarks' baseline (BM_EWaveStep's `velocity` argument).
+    /// Whether the steps make horizontalVelocity (on unless told: its packed inverse transform and
+    /// its share of the spectral pass). Off, it and velocityWavenumber read 0: the step without the
+    /// velocity (BM_EWaveStep's `velocity` argument); h and v are the same bits either way.
     void keepHorizontalVelocity(bool on);
     /// The wavenumber the vertical velocity's variance is centred on, Σ|K|·|v̂|² / Σ|v̂|² over the
     /// modes K ≠ 0 of the state the last step made (before the boundary), rad/m; 0 when still.
@@ -207,18 +209,18 @@ public:
     /// Scales the horizontal velocity and displacement at cell `index` (z·cols + x) by `factor`
     /// in [0, 1]: towards 0 inside a body, as the obstruction scales v (obstructField).
     void scaleHorizontal(size_t index, float factor) {
-        for (int f = 0; f < 4; ++f) m_transforms.horizontal(f)[index] *= factor;
+        for (int f = 0; f < 2; ++f) m_transforms.horizontal(f)[index] *= factor;
     }
 
 private:
     void chooseThreads();
     void prepare(float dt);
     void applySources() const;  // the sources' float sums into v, their rows marked for the float copy
-    void finishRows(int t, int z0, int z1);
-    void finishHorizontal(int f);  // the boundary on horizontal field f (0, 1: u; 2, 3: ξ)
+    void finishRows(int z0, int z1);  // pass 3 for h and v (and h's row sums)
+    void finishHorizontal(int f);  // the boundary on horizontal field f (0: u; 1: ξ)
     void inverseTransforms(bool state);  // pass 3 (state: h and v too) over the workers
     void syncFloatCopies();  // before the forward transforms
-    void conserveVolume();  // pass 4: h += (volume − Σh)/cells
+    void conserveVolume(double sum);  // pass 4: h += (volume − sum)/cells, sum = Σh
 
     int m_rows, m_cols;
     size_t m_cells;
@@ -236,6 +238,7 @@ private:
     double* m_v = nullptr;
     float* m_float[2] = {};            // per field (h, v): float(state), rows·cols; the forward transforms' input
     std::vector<float> m_sponge;       // per cell: the factor exp(−γΔt) (Absorbing), 1 away from the band
+    std::vector<double> m_rowSums;     // per row, from the step's pass 3 (finishRows): Σh (for pass 4), Σ(Δh)², Σ(s·Δv)² (balance)
     // The sources' velocity not yet in v, applied by the readers of v (logically const).
     mutable EWaveSources m_sources;
     EWaveTransforms m_transforms;

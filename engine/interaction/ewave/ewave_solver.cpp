@@ -76,9 +76,11 @@ void EWaveSolver::keepLevelState(LevelState& out) const {
     mean /= double(v.size());
     out.v.resize(cells);
     std::transform(v.begin(), v.end(), out.v.begin(), [mean](double x) { return float(x - mean); });
+    const std::span<const glm::vec2> xi = m_field.horizontalDisplacement(), u = m_field.horizontalVelocity();
     for (int a = 0; a < 2; ++a) {
-        out.xi[a].assign(m_field.horizontalDisplacement(a).begin(), m_field.horizontalDisplacement(a).end());
-        out.u[a].assign(m_field.horizontalVelocity(a).begin(), m_field.horizontalVelocity(a).end());
+        out.xi[a].resize(cells);
+        out.u[a].resize(cells);
+        for (size_t c = 0; c < cells; ++c) out.xi[a][c] = xi[c][a], out.u[a][c] = u[c][a];
     }
 }
 
@@ -153,9 +155,16 @@ float EWaveSolver::velocityAt(glm::vec2 g, float /*dt*/) const {
     return bilinear<double>(m_field.velocityState(), m_field.rows(), m_field.cols(), g);
 }
 
+// bilinear's arithmetic on the field's (x, z) pairs, per component.
 glm::vec2 EWaveSolver::horizontalVelocityAt(glm::vec2 g) const {
     const int rows = m_field.rows(), cols = m_field.cols();
-    return {bilinear<float>(m_field.horizontalVelocity(0), rows, cols, g), bilinear<float>(m_field.horizontalVelocity(1), rows, cols, g)};
+    const float fx = std::floor(g.x), fz = std::floor(g.y);
+    const int x0 = int(fx), z0 = int(fz);
+    if (x0 < 0 || z0 < 0 || x0 + 1 >= cols || z0 + 1 >= rows) return glm::vec2(0.0f);
+    const float tx = g.x - fx, tz = g.y - fz;
+    const glm::vec2* r0 = m_field.horizontalVelocity().data() + size_t(z0) * size_t(cols) + size_t(x0);
+    const glm::vec2* r1 = r0 + cols;
+    return (r0[0] * (1 - tx) + r0[1] * tx) * (1 - tz) + (r1[0] * (1 - tx) + r1[1] * tx) * tz;
 }
 
 void EWaveSolver::hashState(StateHasher& h) const {

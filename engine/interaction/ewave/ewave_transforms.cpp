@@ -10,12 +10,15 @@
 #include "core/simd.h"
 
 #include <algorithm>
+#include <array>
+#include <cassert>
 #include <cmath>
 #include <cstring>
 #include <fftw3.h>
 #include <mutex>
 #include <numbers>
 #include <string>
+#include <type_traits>
 
 namespace ob::interaction {
 
@@ -29,94 +32,100 @@ float* allocTransformArray(size_t n) {
     return p;
 }
 
-// Both fields' change over n modes, in place, in double: with (a − 1, b, c) = coef[3m..3m + 2],
-// ĥ ← (a − 1)·ĥ + b·v̂ and v̂ ← c·ĥ + (a − 1)·v̂, for the real and imaginary parts alike.
-OB_VECTOR_KERNEL void changeKernel(float* __restrict hs, float* __restrict vs, const double* __restrict coef, int n) {
-    for (int m = 0; m < n; ++m) {
-        const double am1 = coef[3 * m], b = coef[3 * m + 1], c = coef[3 * m + 2];
-        for (int p = 0; p < 2; ++p) {
-            const double h = hs[2 * m + p], v = vs[2 * m + p];
-            hs[2 * m + p] = float(am1 * h + b * v);
-            vs[2 * m + p] = float(c * h + am1 * v);
-        }
+// Packing (ewave_transforms.h): real fields a, b with Hermitian spectra into one complex field
+// a + i·b. From â(K) = (ar, ai) and b̂(K) = (br, bi) its spectrum at K is (ar − bi, ai + br), at −K
+// (ar + bi, br − ai). The kernels below write, per mode i of a half-spectrum row, K's value into
+// `own` (the row's columns 0..cols/2) and −K's into `staged` at i, in the same order;
+// mirrorKernel then copies the staged values of the columns 1..mirrorEnd, whose −K lies in the
+// other half, to column cols − i of the row (rows − j) mod rows (columns 0 and cols/2 are their
+// own mirrors). Two forward loops and a reversed copy: GCC vectorises each (a reversed store
+// beside more than one input stream it does not).
+
+// One mode's change (double, as the state's step has always made it), rounded to float:
+// Δĥ = (a − 1)·ĥ + b·v̂, Δv̂ = c·ĥ + (a − 1)·v̂ with a − 1, b, c = coef[m], coef[n + m], coef[2n + m]
+// (the row's three planes, n modes each); and the new v̂' = scale·v̂ + Δv̂ (the coefficients carry
+// `scale`, 1/(rows·cols)).
+struct ModeChange {
+    float dh0, dh1, dv0, dv1, n0, n1;
+};
+inline ModeChange modeChange(const float* hs, const float* vs, const double* coef, int n, double scale, int m) {
+    const double am1 = coef[m], b = coef[n + m], c = coef[2 * n + m];
+    const double h0 = hs[2 * m], h1 = hs[2 * m + 1], v0 = vs[2 * m], v1 = vs[2 * m + 1];
+    const double dv0 = c * h0 + am1 * v0, dv1 = c * h1 + am1 * v1;
+    return {float(am1 * h0 + b * v0), float(am1 * h1 + b * v1), float(dv0), float(dv1), float(scale * v0 + dv0),
+            float(scale * v1 + dv1)};
+}
+
+// The packed change Δh + i·s·Δv at mode m, own and staged.
+inline void packChange(const ModeChange& d, float s, float* own, float* staged, int m) {
+    const float sv0 = s * d.dv0, sv1 = s * d.dv1;  // a power of two: exact
+    own[2 * m] = d.dh0 - sv1;
+    own[2 * m + 1] = d.dh1 + sv0;
+    staged[2 * m] = d.dh0 + sv1;
+    staged[2 * m + 1] = sv0 - d.dh1;
+}
+
+// The packed horizontal pair ûx + i·ûz = i·K·r·(n0, n1) at mode m, own and staged: with
+// (mx, mz) = (kx, kz)·r, ûx = (−mx·n1, mx·n0), ûz = (−mz·n1, mz·n0).
+inline void packRiesz(float n0, float n1, float mx, float mz, float* own, float* staged, int m) {
+    const float xr = -mx * n1, xi = mx * n0, zr = -mz * n1, zi = mz * n0;
+    own[2 * m] = xr - zi;
+    own[2 * m + 1] = xi + zr;
+    staged[2 * m] = xr + zi;
+    staged[2 * m + 1] = zr - xi;
+}
+
+// The staged −K values of columns 1..mirrorEnd to their places, columns cols − i of `mirror`.
+OB_VECTOR_KERNEL void mirrorKernel(const float* __restrict staged, float* __restrict mirror, int mirrorEnd, int cols) {
+    for (int m = 1; m <= mirrorEnd; ++m) {
+        mirror[2 * (cols - m)] = staged[2 * m];
+        mirror[2 * (cols - m) + 1] = staged[2 * m + 1];
     }
 }
 
-// One spectrum row of n modes (SPEC §2.5c): the new state's ĥ', v̂' = scale·(ĥ, v̂) + their change
-// (coef's a − 1, b, c as changeKernel, which carry `scale`; coef null: no change, the state as it
-// is), then û = i·K·r·v̂' into ux, uz and, when xx is not null, ξ̂ = i·K·r·ĥ' into xx, xz, with
-// K = (kx[m], kz) and r = riesz[m] = 1/(|K|·tanh(|K|d)); power[m] = weight[m]·|v̂'|² (weight: the
-// mode's count in the full spectrum; the caller zeroes K = 0's and sums: sumsKernel).
-// Multiplying by i: (re, im) → (−im, re).
-OB_VECTOR_KERNEL void horizontalKernel(const float* __restrict hs, const float* __restrict vs,
-                                       const double* __restrict coef, double scale, const float* __restrict riesz,
-                                       const float* __restrict kx, const float* __restrict weight, float kz,
-                                       float* __restrict ux, float* __restrict uz, float* __restrict xx,
-                                       float* __restrict xz, float* __restrict power, int n) {
-    if (coef) {
-        for (int m = 0; m < n; ++m) {
-            const double am1 = coef[3 * m], c = coef[3 * m + 2];
-            const float n0 = float(scale * vs[2 * m] + (c * hs[2 * m] + am1 * vs[2 * m]));
-            const float n1 = float(scale * vs[2 * m + 1] + (c * hs[2 * m + 1] + am1 * vs[2 * m + 1]));
-            const float mx = kx[m] * riesz[m], mz = kz * riesz[m];
-            ux[2 * m] = -mx * n1;
-            ux[2 * m + 1] = mx * n0;
-            uz[2 * m] = -mz * n1;
-            uz[2 * m + 1] = mz * n0;
-            power[m] = weight[m] * (n0 * n0 + n1 * n1);
-        }
-    } else {
-        const float sc = float(scale);
-        for (int m = 0; m < n; ++m) {
-            const float n0 = sc * vs[2 * m], n1 = sc * vs[2 * m + 1];
-            const float mx = kx[m] * riesz[m], mz = kz * riesz[m];
-            ux[2 * m] = -mx * n1;
-            ux[2 * m + 1] = mx * n0;
-            uz[2 * m] = -mz * n1;
-            uz[2 * m + 1] = mz * n0;
-            power[m] = weight[m] * (n0 * n0 + n1 * n1);
-        }
-    }
-    if (!xx) return;
-    for (int m = 0; m < n; ++m) {
-        double h0 = scale * hs[2 * m], h1 = scale * hs[2 * m + 1];
-        if (coef) {
-            h0 += coef[3 * m] * hs[2 * m] + coef[3 * m + 1] * vs[2 * m];
-            h1 += coef[3 * m] * hs[2 * m + 1] + coef[3 * m + 1] * vs[2 * m + 1];
-        }
-        const float mx = kx[m] * riesz[m], mz = kz * riesz[m];
-        xx[2 * m] = float(-mx * h1);
-        xx[2 * m + 1] = float(mx * h0);
-        xz[2 * m] = float(-mz * h1);
-        xz[2 * m + 1] = float(mz * h0);
-    }
+// One spectrum row of the state's step without the horizontal fields: the packed change.
+OB_VECTOR_KERNEL void changeKernel(const float* __restrict hs, const float* __restrict vs, const double* __restrict coef,
+                                   float s, float* __restrict own, float* __restrict staged, int n) {
+    for (int m = 0; m < n; ++m) packChange(modeChange(hs, vs, coef, n, 1.0, m), s, own, staged, m);
 }
 
-// changeKernel and the horizontal velocity's spectra in one pass over a spectrum row (the step
-// without the displacement): with Δĥ, Δv̂ as changeKernel makes them, the new state's v̂' =
-// scale·v̂ + Δv̂ (the coefficients carry `scale`, 1/(rows·cols)), û = i·K·r·v̂' into ux, uz as
-// horizontalKernel, and power[m] = w·|v̂'|² (the caller zeroes K = 0's), the reduction left to
-// sumsKernel: no branch and no reduction, so this loop vectorises.
-OB_VECTOR_KERNEL void changeVelocityKernel(float* __restrict hs, float* __restrict vs, const double* __restrict coef,
-                                           double scale, const float* __restrict riesz, const float* __restrict kx,
-                                           const float* __restrict weight, float kz, float* __restrict ux,
-                                           float* __restrict uz, float* __restrict power, int n) {
+// One spectrum row of the step (SPEC §2.5c): the packed change, the packed velocity û = i·K·r·v̂'
+// (K = (kx[m], kz), r = riesz[m] = 1/(|K|·tanh(|K|d))) and power[m] = weight[m]·|v̂'|² (weight:
+// the mode's count in the full spectrum; the caller zeroes K = 0's and sums: sumsKernel).
+OB_VECTOR_KERNEL void changeVelocityKernel(const float* __restrict hs, const float* __restrict vs,
+                                           const double* __restrict coef, double scale, float s,
+                                           const float* __restrict riesz, const float* __restrict kx,
+                                           const float* __restrict weight, float kz, float* __restrict ownC,
+                                           float* __restrict stagedC, float* __restrict ownU, float* __restrict stagedU,
+                                           float* __restrict power, int n) {
     for (int m = 0; m < n; ++m) {
-        const double am1 = coef[3 * m], b = coef[3 * m + 1], c = coef[3 * m + 2];
-        const double h0 = hs[2 * m], h1 = hs[2 * m + 1], v0 = vs[2 * m], v1 = vs[2 * m + 1];
-        const double dv0 = c * h0 + am1 * v0, dv1 = c * h1 + am1 * v1;
-        hs[2 * m] = float(am1 * h0 + b * v0);
-        hs[2 * m + 1] = float(am1 * h1 + b * v1);
-        vs[2 * m] = float(dv0);
-        vs[2 * m + 1] = float(dv1);
-        const float n0 = float(scale * v0 + dv0), n1 = float(scale * v1 + dv1);
+        const ModeChange d = modeChange(hs, vs, coef, n, scale, m);
+        packChange(d, s, ownC, stagedC, m);
         const float r = riesz[m];
-        const float mx = kx[m] * r, mz = kz * r;
-        ux[2 * m] = -mx * n1;
-        ux[2 * m + 1] = mx * n0;
-        uz[2 * m] = -mz * n1;
-        uz[2 * m + 1] = mz * n0;
+        packRiesz(d.n0, d.n1, kx[m] * r, kz * r, ownU, stagedU, m);
+        power[m] = weight[m] * (d.n0 * d.n0 + d.n1 * d.n1);
+    }
+}
+
+// The packed horizontal pair i·K·r·(scale·f) of a spectrum row f and its power: deriveHorizontal's
+// velocity from v̂, and the displacement from ĥ' (the coarse levels).
+OB_VECTOR_KERNEL void rieszKernel(const float* __restrict f, float scale, const float* __restrict riesz,
+                                  const float* __restrict kx, const float* __restrict weight, float kz,
+                                  float* __restrict own, float* __restrict staged, float* __restrict power, int n) {
+    for (int m = 0; m < n; ++m) {
+        const float n0 = scale * f[2 * m], n1 = scale * f[2 * m + 1];
+        const float r = riesz[m];
+        packRiesz(n0, n1, kx[m] * r, kz * r, own, staged, m);
         power[m] = weight[m] * (n0 * n0 + n1 * n1);
+    }
+}
+
+// The new ĥ' = scale·ĥ + Δĥ of a spectrum row as floats into `out` (the displacement's input).
+OB_VECTOR_KERNEL void newHeightKernel(const float* __restrict hs, const float* __restrict vs, const double* __restrict coef,
+                                      double scale, float* __restrict out, int n) {
+    for (int m = 0; m < n; ++m) {
+        const double am1 = coef[m], b = coef[n + m];
+        for (int p = 0; p < 2; ++p) out[2 * m + p] = float(scale * hs[2 * m + p] + (am1 * hs[2 * m + p] + b * vs[2 * m + p]));
     }
 }
 
@@ -124,11 +133,6 @@ OB_VECTOR_KERNEL void changeVelocityKernel(float* __restrict hs, float* __restri
 // of itself, ample for a mean wavenumber), reassociated into vector lanes: the order is fixed by
 // the code the clone was built with, so the bits do not depend on the workers; only this
 // reduction is relaxed, never the state's arithmetic.
-#if defined(__GNUC__) && !defined(__clang__)
-#define OB_RELAXED_SUM __attribute__((optimize("associative-math", "no-signed-zeros", "no-trapping-math")))
-#else
-#define OB_RELAXED_SUM
-#endif
 OB_RELAXED_SUM OB_VECTOR_KERNEL void sumsKernel(const float* __restrict power, const float* __restrict kabs, int n, double* __restrict sums) {
     float num = 0.0f, den = 0.0f;
     for (int m = 0; m < n; ++m) {
@@ -139,33 +143,34 @@ OB_RELAXED_SUM OB_VECTOR_KERNEL void sumsKernel(const float* __restrict power, c
     sums[1] = den;
 }
 
+// The change's scale s is kept within [2^-SCALE_RANGE, 2^SCALE_RANGE] (balance).
+constexpr int SCALE_RANGE = 30;
+
 } // namespace
 
 EWaveTransforms::EWaveTransforms(int rows, int cols, float cellSize)
     : m_rows(rows), m_cols(cols), m_specCols(cols / 2 + 1), m_cells(size_t(rows) * size_t(cols)),
       m_modes(size_t(rows) * size_t(cols / 2 + 1)), m_cellSize(cellSize) {
-    for (int t = 0; t < 2; ++t) {
-        m_spec[t] = allocTransformArray(2 * m_modes);
-        m_change[t] = allocTransformArray(m_cells);
-    }
+    for (int t = 0; t < 2; ++t) m_spec[t] = allocTransformArray(2 * m_modes);
+    for (float*& f : m_full) f = allocTransformArray(2 * m_cells);
     // Planning may overwrite the arrays (FFTW_MEASURE): they hold nothing yet. The forward
     // transform keeps its input (r2c's default): it reads the field's float copies of the state,
-    // as new arrays of the same alignment (planned here on a change array).
+    // as new arrays of the same alignment (planned here on the displacement's array). The inverse
+    // one is in place, run on each packed array.
     m_forward = ocean::planWithWisdom([&](unsigned flags) {
-        return fftwf_plan_dft_r2c_2d(rows, cols, m_change[1], reinterpret_cast<fftwf_complex*>(m_spec[0]), flags);
+        return fftwf_plan_dft_r2c_2d(rows, cols, m_full[2], reinterpret_cast<fftwf_complex*>(m_spec[0]), flags);
     });
     m_backward = ocean::planWithWisdom([&](unsigned flags) {
-        return fftwf_plan_dft_c2r_2d(rows, cols, reinterpret_cast<fftwf_complex*>(m_spec[0]), m_change[0], flags);
+        fftwf_complex* f = reinterpret_cast<fftwf_complex*>(m_full[0]);
+        return fftwf_plan_dft_2d(rows, cols, f, f, FFTW_BACKWARD, flags);
     });
     if (!m_forward || !m_backward)
         throw RuntimeError("FFTW could not plan a " + std::to_string(rows) + "×" + std::to_string(cols) + " transform");
+    for (float* f : m_full) std::memset(f, 0, 2 * m_cells * sizeof(float));
     m_coef.resize(3 * size_t(m_rows / 2 + 1) * size_t(m_specCols));
-    for (int f = 0; f < 4; ++f) {
-        m_horiz[f] = allocTransformArray(m_cells);
-        m_horizSpec[f] = allocTransformArray(2 * m_modes);
-    }
     m_rowSums.assign(2 * size_t(m_rows), 0.0);
     m_power.assign(m_modes, 0.0f);
+    m_staged.assign(8 * size_t(m_specCols), 0.0f);
 }
 
 EWaveTransforms::~EWaveTransforms() {
@@ -174,14 +179,8 @@ EWaveTransforms::~EWaveTransforms() {
         if (m_forward) fftwf_destroy_plan(m_forward);
         if (m_backward) fftwf_destroy_plan(m_backward);
     }
-    for (int t = 0; t < 2; ++t) {
-        fftwf_free(m_spec[t]);
-        fftwf_free(m_change[t]);
-    }
-    for (int f = 0; f < 4; ++f) {
-        fftwf_free(m_horiz[f]);
-        fftwf_free(m_horizSpec[f]);
-    }
+    for (float* f : m_spec) fftwf_free(f);
+    for (float* f : m_full) fftwf_free(f);
 }
 
 void EWaveTransforms::keepVelocity(bool on) {
@@ -191,28 +190,44 @@ void EWaveTransforms::keepVelocity(bool on) {
 
 void EWaveTransforms::keepDisplacement(bool on) {
     m_displacement = on;
-    if (!on)
-        for (int f = 2; f < 4; ++f) std::memset(m_horiz[f], 0, m_cells * sizeof(float));
+    if (!on) std::memset(m_full[2], 0, 2 * m_cells * sizeof(float));
 }
 
 void EWaveTransforms::forward(int t, const float* copy) {
     fftwf_execute_dft_r2c(m_forward, const_cast<float*>(copy), reinterpret_cast<fftwf_complex*>(m_spec[t]));
 }
 
-void EWaveTransforms::inverseChange(int t) {
-    fftwf_execute_dft_c2r(m_backward, reinterpret_cast<fftwf_complex*>(m_spec[t]), m_change[t]);
+void EWaveTransforms::inverseChange() {
+    fftwf_complex* f = reinterpret_cast<fftwf_complex*>(m_full[0]);
+    fftwf_execute_dft(m_backward, f, f);
 }
 
 void EWaveTransforms::inverseHorizontal(int f) {
-    fftwf_execute_dft_c2r(m_backward, reinterpret_cast<fftwf_complex*>(m_horizSpec[f]), m_horiz[f]);
+    fftwf_complex* a = reinterpret_cast<fftwf_complex*>(m_full[1 + f]);
+    fftwf_execute_dft(m_backward, a, a);
 }
 
-void EWaveTransforms::horizontalRows(int j0, int j1) {
-    for (int j = j0; j < j1; ++j) horizontalRow(j, false);
+void EWaveTransforms::horizontalRows(int p0, int p1) {
+    float* const staged = stagedRows(p0);
+    for (int p = p0; p < p1; ++p)
+        for (int j : pair(p))
+            if (j >= 0) horizontalRow(j, false, staged);
+}
+
+// The scratch of the band of pairs starting at p0: at most two bands, [0, pairs/2) and the rest.
+float* EWaveTransforms::stagedRows(int p0) {
+    assert(p0 == 0 || p0 >= pairs() / 2);
+    return m_staged.data() + (p0 == 0 ? 0 : 4 * size_t(m_specCols));
+}
+
+// Pair p's rows: p and rows − p (−1 where it has one row: p = 0, and rows/2 for even rows).
+std::array<int, 2> EWaveTransforms::pair(int p) const {
+    const int other = m_rows - p;
+    return {p, p > 0 && other != p ? other : -1};
 }
 
 void EWaveTransforms::clearHorizontal() {
-    for (float* f : m_horiz) std::fill(f, f + m_cells, 0.0f);
+    for (int f = 1; f < 3; ++f) std::memset(m_full[f], 0, 2 * m_cells * sizeof(float));
     m_velocityWavenumber = 0.0;
 }
 
@@ -245,20 +260,36 @@ void EWaveTransforms::prepareHorizontal(const EWaveMedium& medium) {
     }
 }
 
-// Spectrum row j (the step's: before changeRows turns it into the change; `change` false: the
-// state as transformed) into the horizontal fields' spectra and its sums of velocityWavenumber.
-// kz = 2π·(j or j − rows)/(rows·Δ), 0 at the Nyquist row.
-void EWaveTransforms::horizontalRow(int j, bool change) {
+// Spectrum row j's horizontal fields, packed, and its sums of velocityWavenumber: of the new state
+// (`change`: the rotation's ĥ', v̂'; the velocity is changeRows' own, so this makes the displacement
+// alone) or of the state as transformed (deriveHorizontal). kz = 2π·(j or j − rows)/(rows·Δ), 0 at
+// the Nyquist row. `staged`: the band's scratch (stagedRows).
+void EWaveTransforms::horizontalRow(int j, bool change, float* staged) {
     const size_t row = size_t(j) * size_t(m_specCols);
     const size_t coefRow = size_t(std::min(j, m_rows - j)) * size_t(m_specCols);
+    const float norm = float(1.0 / (double(m_rows) * double(m_cols)));
+    const int mirrorEnd = (m_cols - 1) / 2;
     float* power = m_power.data() + row;
-    horizontalKernel(m_spec[0] + 2 * row, m_spec[1] + 2 * row, change ? m_coef.data() + 3 * coefRow : nullptr,
-                     1.0 / (double(m_rows) * double(m_cols)), m_riesz.data() + coefRow, m_kx.data(), m_weight.data(),
-                     rowKz(j), m_horizSpec[0] + 2 * row, m_horizSpec[1] + 2 * row,
-                     m_displacement ? m_horizSpec[2] + 2 * row : nullptr, m_displacement ? m_horizSpec[3] + 2 * row : nullptr,
-                     power, m_specCols);
-    if (j == 0) power[0] = 0.0f;  // K = 0: the mean, no wave (its û is 0: r = 0)
-    sumsKernel(power, m_kabs.data() + coefRow, m_specCols, m_rowSums.data() + 2 * size_t(j));
+    if (!change) {
+        rieszKernel(m_spec[1] + 2 * row, norm, m_riesz.data() + coefRow, m_kx.data(), m_weight.data(), rowKz(j), fullRow(1, j),
+                    staged, power, m_specCols);
+        mirrorKernel(staged, mirrorRow(1, j), mirrorEnd, m_cols);
+        if (j == 0) power[0] = 0.0f;  // K = 0: the mean, no wave (its û is 0: r = 0)
+        sumsKernel(power, m_kabs.data() + coefRow, m_specCols, m_rowSums.data() + 2 * size_t(j));
+    }
+    if (!m_displacement) return;
+    const float* h = m_spec[0] + 2 * row;
+    float scale = norm;
+    if (change) {  // ĥ' into the band's scratch for the velocity (still unused): the displacement's input
+        float* hNew = staged + 2 * size_t(m_specCols);
+        newHeightKernel(m_spec[0] + 2 * row, m_spec[1] + 2 * row, m_coef.data() + 3 * coefRow, double(norm), hNew, m_specCols);
+        h = hNew;
+        scale = 1.0f;
+    }
+    // Its power is scratch: the velocity's is summed before (derive) or made after (the step).
+    rieszKernel(h, scale, m_riesz.data() + coefRow, m_kx.data(), m_weight.data(), rowKz(j), fullRow(2, j), staged, power,
+                m_specCols);
+    mirrorKernel(staged, mirrorRow(2, j), mirrorEnd, m_cols);
 }
 
 // kz of spectrum row j: 2π·(j, or j − rows past the middle)/(rows·Δ), rad/m; 0 at the Nyquist
@@ -277,36 +308,60 @@ void EWaveTransforms::sumVelocityWavenumber() {
     m_velocityWavenumber = den > 0.0 ? num / den : 0.0;
 }
 
-// Spectrum rows [j0, j1) of both fields: Δĥ = (a − 1)·ĥ + b·v̂, Δv̂ = c·ĥ + (a − 1)·v̂ in place.
-// Mode 0 (in the band of row 0): its coefficients are 0, so ĥ(0) is kept, and v̂(0) is dropped
-// (Δv̂(0) = −v̂(0)): a source's uniform part lifts no water.
-void EWaveTransforms::changeRows(int j0, int j1) {
-    const float v0[2] = {j0 == 0 ? m_spec[1][0] : 0.0f, j0 == 0 ? m_spec[1][1] : 0.0f};
-    for (int j = j0; j < j1; ++j) {
-        const size_t row = size_t(j) * size_t(m_specCols);
-        const size_t coefRow = size_t(std::min(j, m_rows - j)) * size_t(m_specCols);
-        if (!m_velocity) {  // the state alone (no reader of the horizontal fields)
-            changeKernel(m_spec[0] + 2 * row, m_spec[1] + 2 * row, m_coef.data() + 3 * coefRow, m_specCols);
-            m_rowSums[2 * size_t(j)] = m_rowSums[2 * size_t(j) + 1] = 0.0;
-            continue;
-        }
-        if (m_displacement) {  // ξ too (the coarse levels, which step rarely): the two passes
-            horizontalRow(j, true);
-            changeKernel(m_spec[0] + 2 * row, m_spec[1] + 2 * row, m_coef.data() + 3 * coefRow, m_specCols);
-            continue;
-        }
+void EWaveTransforms::finishChange() {
+    m_usedScale = m_scale;
+    if (m_velocity) sumVelocityWavenumber();
+}
+
+// s' = s·√(Σ(Δh)²/Σ(s·Δv)²) to the nearest power of two; as it was where either sum is 0 (nothing
+// to balance).
+void EWaveTransforms::balance(double sumH2, double sumV2) {
+    if (!(sumH2 > 0.0) || !(sumV2 > 0.0)) return;
+    const int e = std::ilogb(m_usedScale) + int(std::lround(0.5 * std::log2(sumH2 / sumV2)));
+    m_scale = std::ldexp(1.0f, std::clamp(e, -SCALE_RANGE, SCALE_RANGE));
+}
+
+// Row pairs [p0, p1) (pair(p): rows p and rows − p, which share their coefficients, so the second
+// reads them from the cache, and which write each other's mirrored halves).
+void EWaveTransforms::changeRows(int p0, int p1) {
+    float* const staged = stagedRows(p0);
+    for (int p = p0; p < p1; ++p)
+        for (int j : pair(p))
+            if (j >= 0) changeRow(j, staged);
+}
+
+// Spectrum row j: the packed change (and the horizontal fields) of each mode, and the row's sums.
+// Mode 0 (row 0): its coefficients are 0, so ĥ(0) is kept, and v̂(0) is dropped (Δv̂(0) = −v̂(0)): a
+// source's uniform part lifts no water.
+void EWaveTransforms::changeRow(int j, float* staged) {
+    const double norm = 1.0 / (double(m_rows) * double(m_cols));
+    const int mirrorEnd = (m_cols - 1) / 2;
+    float* const stagedC = staged;
+    float* const stagedU = staged + 2 * size_t(m_specCols);
+    const size_t row = size_t(j) * size_t(m_specCols);
+    const size_t coefRow = size_t(std::min(j, m_rows - j)) * size_t(m_specCols);
+    const float* hs = m_spec[0] + 2 * row;
+    const float* vs = m_spec[1] + 2 * row;
+    const double* coef = m_coef.data() + 3 * coefRow;
+    double* sums = m_rowSums.data() + 2 * size_t(j);
+    if (m_displacement) horizontalRow(j, true, stagedC);  // ξ (the coarse levels, which step rarely): its own pass, reading ĥ' first
+    if (!m_velocity) {  // the state alone (no reader of the horizontal fields)
+        changeKernel(hs, vs, coef, m_scale, fullRow(0, j), stagedC, m_specCols);
+        sums[0] = sums[1] = 0.0;
+    } else {
         float* power = m_power.data() + row;
-        changeVelocityKernel(m_spec[0] + 2 * row, m_spec[1] + 2 * row, m_coef.data() + 3 * coefRow,
-                             1.0 / (double(m_rows) * double(m_cols)), m_riesz.data() + coefRow, m_kx.data(),
-                             m_weight.data(), rowKz(j), m_horizSpec[0] + 2 * row, m_horizSpec[1] + 2 * row, power,
-                             m_specCols);
+        changeVelocityKernel(hs, vs, coef, norm, m_scale, m_riesz.data() + coefRow, m_kx.data(), m_weight.data(), rowKz(j),
+                             fullRow(0, j), stagedC, fullRow(1, j), stagedU, power, m_specCols);
+        mirrorKernel(stagedU, mirrorRow(1, j), mirrorEnd, m_cols);
         if (j == 0) power[0] = 0.0f;  // K = 0: the mean, no wave (its û is 0: r = 0)
-        sumsKernel(power, m_kabs.data() + coefRow, m_specCols, m_rowSums.data() + 2 * size_t(j));
+        sumsKernel(power, m_kabs.data() + coefRow, m_specCols, sums);
     }
-    if (j0 == 0) {  // the change's spectrum carries the inverse transform's 1/(rows·cols), as the coefficients do
-        const float norm = float(1.0 / (double(m_rows) * double(m_cols)));
-        m_spec[1][0] = -v0[0] * norm;
-        m_spec[1][1] = -v0[1] * norm;
+    mirrorKernel(stagedC, mirrorRow(0, j), mirrorEnd, m_cols);
+    if (j == 0) {  // Δv̂(0) = −v̂(0), carrying the inverse transform's 1/(rows·cols) as the coefficients do; Δĥ(0) = 0
+        const float dv0 = -vs[0] * float(norm), dv1 = -vs[1] * float(norm);
+        float* c = fullRow(0, 0);
+        c[0] = -m_scale * dv1;
+        c[1] = m_scale * dv0;
     }
 }
 
@@ -322,11 +377,11 @@ void EWaveTransforms::prepare(const EWaveMedium& medium, float dt, float decayTi
         for (int i = 0; i < m_specCols; ++i) {
             const double kx = twoPi * i / lx;
             const double k = std::sqrt(kx * kx + kz * kz);
-            double* c = m_coef.data() + 3 * (size_t(j) * size_t(m_specCols) + size_t(i));
+            double* c = m_coef.data() + 3 * size_t(j) * size_t(m_specCols) + size_t(i);  // the row's planes a − 1, b, c
             c[0] = EWaveField::modeStepMinusOne(medium, k, dt, decayTime, viscosity, norm);
             const EWaveField::ModeStep s = EWaveField::modeStep(medium, k, dt, decayTime, viscosity, norm);
-            c[1] = s.b;
-            c[2] = s.c;
+            c[m_specCols] = s.b;
+            c[2 * m_specCols] = s.c;
         }
     }
 }
