@@ -86,7 +86,7 @@ UNIFORM_BLOCK(FrameUniforms, FRAME_BLOCK) {
     vec4 waterline;            // xyz: height (m) of a pixel's point on the near plane above the water's tangent plane at the eye = x·ndc.x + y·ndc.y + z (< 0: the pixel is under water); w the eye's depth under the surface (m, ≥ 0)
     vec4 sky;                  // x [sky] cloud_cover, yz the clouds' drift with the wind aloft (m), w the cloud layer's height (m)
     vec4 sunLight;             // rgb [render] sun_color (linear, before sunTint), w the direct light on a surface facing the sun, × rgb (objects, foam)
-    vec4 sunCloud;             // x the share of the sun's direct light the cloud layer holds back on the sun's ray this frame (0 clear; gfx::cloudOpacity), yzw unused
+    vec4 sunCloud;             // x the share of the sun's direct light the cloud layer holds back on the sun's ray this frame (0 clear; gfx::cloudBeamLoss), yzw unused
 } BLOCK_INSTANCE(frame);
 
 SHARED_CONST MAX_GERSTNER_WAVES = 32;

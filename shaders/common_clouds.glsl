@@ -51,9 +51,15 @@ float cloudLayerDensity(vec3 dir, float cover, vec2 drift, float height) {
     return mix(cover, d, smoothstep(0.03f, 0.25f, up));
 }
 
-// The share of the light from behind the clouds (the clear sky, the sun) that they hide along dir.
+// The share of the clear sky behind the clouds that they hide along dir (what the sky draws).
 float cloudLayerOpacity(vec3 dir, float cover, vec2 drift, float height) {
     return CLOUD_HIDES * cloudLayerDensity(dir, cover, drift, height) + (1.0f - CLOUD_HIDES) * cover;
+}
+
+// The share of the sun's direct beam they hold back along dir: all of it behind a cloud's core
+// (its optical depth is tens), at its edge as much as the density, in a gap the thin veil's.
+float cloudLayerBeamLoss(vec3 dir, float cover, vec2 drift, float height) {
+    return 1.0f - (1.0f - cloudLayerDensity(dir, cover, drift, height)) * (1.0f - (1.0f - CLOUD_HIDES) * cover);
 }
 
 #undef CLOUD_CONST

@@ -16,8 +16,8 @@
 float cloudCover() { return frame.sky.x; }
 
 // The share of the sun's direct light the clouds let through now: none behind a cloud or under
-// an overcast, all of it in a gap (the layer's opacity on the sun's ray, found once a frame from
-// the noise the sky draws: gfx::cloudOpacity, common_clouds.glsl).
+// an overcast, nearly all of it in a gap (the layer's loss on the sun's ray, found once a frame
+// from the noise the sky draws: gfx::cloudBeamLoss, common_clouds.glsl).
 float sunThroughClouds() { return 1.0 - frame.sunCloud.x; }
 
 // Colour and strength of the sunlight reaching the sea, relative to a high sun: the longer

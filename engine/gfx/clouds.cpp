@@ -14,8 +14,8 @@ using namespace glm;
 #include "common_clouds.glsl"
 } // namespace cloud_glsl
 
-float cloudOpacity(const SkyDef& sky, glm::vec2 drift, glm::vec3 dir) {
-    return cloud_glsl::cloudLayerOpacity(dir, sky.cloud_cover, drift, sky.cloud_height);
+float cloudBeamLoss(const SkyDef& sky, glm::vec2 drift, glm::vec3 dir) {
+    return cloud_glsl::cloudLayerBeamLoss(dir, sky.cloud_cover, drift, sky.cloud_height);
 }
 
 } // namespace ob::gfx

@@ -11,9 +11,9 @@
 
 namespace ob::gfx {
 
-/// The share, [0, 1], of the light from behind the cloud layer that it hides along the unit
-/// direction `dir` (toward the sky), the clouds drifted by `drift` (m): 0 in a gap or a clear
-/// sky, CLOUD_HIDES of it behind a cloud's core, all of it under an overcast.
-float cloudOpacity(const SkyDef& sky, glm::vec2 drift, glm::vec3 dir);
+/// The share, [0, 1], of the sun's direct beam the cloud layer holds back along the unit
+/// direction `dir` (toward the sun), the clouds drifted by `drift` (m): 0 under a clear sky,
+/// the thin veil's few percent in a gap, all of it behind a cloud's core or under an overcast.
+float cloudBeamLoss(const SkyDef& sky, glm::vec2 drift, glm::vec3 dir);
 
 } // namespace ob::gfx
