@@ -86,6 +86,7 @@ UNIFORM_BLOCK(FrameUniforms, FRAME_BLOCK) {
     vec4 waterline;            // xyz: height (m) of a pixel's point on the near plane above the water's tangent plane at the eye = x·ndc.x + y·ndc.y + z (< 0: the pixel is under water); w the eye's depth under the surface (m, ≥ 0)
     vec4 sky;                  // x [sky] cloud_cover, yz the clouds' drift with the wind aloft (m), w the cloud layer's height (m)
     vec4 sunLight;             // rgb [render] sun_color (linear, before sunTint), w the direct light on a surface facing the sun, × rgb (objects, foam)
+    vec4 sunCloud;             // x the share of the sun's direct light the cloud layer holds back on the sun's ray this frame (0 clear; gfx::cloudBeamLoss), yzw unused
 } BLOCK_INSTANCE(frame);
 
 SHARED_CONST MAX_GERSTNER_WAVES = 32;
@@ -106,7 +107,7 @@ UNIFORM_BLOCK(WaterUniforms, WATER_BLOCK) {
     vec4 cascadeFadeEnd;     // per cascade: eye distance (m) past which it is gone; 0: never fades
     vec4 farFade;            // x 1: Gerstner waves fade where the grid is too sparse for them (0: exact); foam (common_foam.glsl): y the whitecaps' J at density ½, z σ of J (0: a fixed ramp), w the wind's angle atan2(z, x) (rad)
     vec4 cascadeSlopeVariance;  // per cascade: mean square slope of its waves (unused cascades 0)
-    vec4 glitterParams;      // x Cox–Munk mean square slope of the wind's sea, 0.003 + 5.12e-3·U10
+    vec4 glitterParams;      // x Cox–Munk mean square slope of the wind's sea, 0.003 + 5.12e-3·U10; y U10 (m/s: the foam's spume streaks)
     vec4 crest;              // x the typical crest above the mean level (m), y [render] subsurface strength (0: off), z the camera's projection[1][1]
     vec4 rippleLevels[MAX_RIPPLE_LEVELS];  // coarse level L (layer L − 1): xy world origin of cell (0, 0) (m), z cell size (m)
     vec4 rippleFade;         // x coarse levels (0: level 0 alone), y the composite's fade band (cells of each level)

@@ -9,6 +9,11 @@ layout(binding = FOAM_PATTERN_UNIT) uniform sampler2D u_foamPattern;  // foamPat
 
 const float FOAM_TILE = 5.0;            // m per repeat of the lace (foamPattern's first octave; its others 1.9 m, 0.68 m)
 const float FOAM_STREAK_STRETCH = 3.0;  // the lace is this many times longer along the wind than across it
+// From a gale up the wind tears the foam into spume blown in streaks along it (Beaufort force 8,
+// 17.2 m/s: "foam blown in well-marked streaks along the direction of the wind"; force 10,
+// 24.5 m/s: "dense white streaks"): the lace is drawn out from FOAM_STREAK_STRETCH to this.
+const float FOAM_SPUME_STRETCH = 10.0;
+const vec2 FOAM_SPUME_WIND = vec2(17.2, 24.5);  // U10 (m/s) where the spume streaks begin and where they are whole
 const float FOAM_DENSE = 0.9;           // the share of the pattern dense foam (coverage 1) covers
 const float FOAM_SOFT = 0.45;           // width of the lace's opacity ramp, in pattern units: soft edges everywhere
 const float FOAM_WARP = 1.0;            // foam map cells the lookup is pushed by the DU/DV field, at most
@@ -62,7 +67,8 @@ vec3 shadeFoam(vec3 color, vec2 world, vec3 n, vec3 sun, float jacobian, float r
     // --- the lace, laid along the wind (streaks), and the bubbles in it
     float angle = water.farFade.w;
     vec2 along = vec2(cos(angle), sin(angle));
-    vec2 fuv = vec2(dot(world, along) / FOAM_STREAK_STRETCH, dot(world, vec2(-along.y, along.x))) / FOAM_TILE;
+    float stretch = mix(FOAM_STREAK_STRETCH, FOAM_SPUME_STRETCH, smoothstep(FOAM_SPUME_WIND.x, FOAM_SPUME_WIND.y, water.glitterParams.y));
+    vec2 fuv = vec2(dot(world, along) / stretch, dot(world, vec2(-along.y, along.x))) / FOAM_TILE;
     // The bubbles (FOAM_BUBBLE_SCALE times finer: 1 m to 0.14 m) baked beside the lace.
 #ifdef WATER_FULL_QUALITY
     vec3 lace = foamPattern(fuv);

@@ -4,21 +4,21 @@
 // (1 ≈ bright horizon). With the sun above sin e = 0.25 the sky is the day sky unchanged.
 // Clouds ([sky] cloud_cover c, frame.sky): a layer at cloud_height drifting with the wind aloft;
 // the baked cube draws their pattern (skyWithClouds), every other reader the sky as the clouds
-// cover it on average (skyRadiance); they dim the sun's direct light (sunTint) to nothing at
-// c = 1 and grey the diffuse light (docs/look.md#weather).
+// cover it on average (skyRadiance); the sun's direct light (sunTint) dims while a cloud
+// stands before the sun, to nothing under an overcast, and they grey the diffuse light
+// (docs/look.md#weather).
 #ifndef COMMON_SKY_GLSL
 #define COMMON_SKY_GLSL
 #include "common_bindings.glsl"
+#include "common_clouds.glsl"
 
 // Share of the sky the clouds cover, [0, 1].
 float cloudCover() { return frame.sky.x; }
 
-// The share of the sun's direct light the clouds let through, on average over the sky they
-// cover: the sun behind broken cloud half the time, and under an overcast none.
-float sunThroughClouds() {
-    float c = cloudCover();
-    return (1.0 - c) * (1.0 - 0.5 * c);
-}
+// The share of the sun's direct light the clouds let through now: none behind a cloud or under
+// an overcast, nearly all of it in a gap (the layer's loss on the sun's ray, found once a frame
+// from the noise the sky draws: gfx::cloudBeamLoss, common_clouds.glsl).
+float sunThroughClouds() { return 1.0 - frame.sunCloud.x; }
 
 // Colour and strength of the sunlight reaching the sea, relative to a high sun: the longer
 // path through air near the horizon scatters blue away (reddening), none below it.
@@ -79,56 +79,19 @@ vec3 skyRadiance(vec3 dir, vec3 sunDir) {
     return mix(clear, cloudRadiance(dir, sunDir), c);
 }
 
-// Value noise in [0, 1] (a hash per lattice point, smooth between).
-float cloudHash(vec2 p) {
-    vec3 q = fract(vec3(p.xyx) * 0.1031);
-    q += dot(q, q.yzx + 33.33);
-    return fract((q.x + q.y) * q.z);
-}
-float cloudNoise(vec2 p) {
-    vec2 i = floor(p), f = fract(p);
-    f = f * f * (3.0 - 2.0 * f);
-    return mix(mix(cloudHash(i), cloudHash(i + vec2(1.0, 0.0)), f.x), mix(cloudHash(i + vec2(0.0, 1.0)), cloudHash(i + vec2(1.0)), f.x), f.y);
-}
-
-const float CLOUD_SCALE_M = 3000.0;  // the clouds' largest features (m on the layer)
-const int CLOUD_OCTAVES = 5;
-
-// The clouds' density along dir, [0, 1]: fractal noise on the layer at frame.sky.w metres, moved
-// by the drift frame.sky.yz (m), thresholded so that about c of the layer is cloud, with soft
-// edges; toward the horizon the pattern shrinks below what the cube resolves, so it fades to its mean c.
-float cloudDensity(vec3 dir) {
-    float c = cloudCover();
-    if (c <= 0.0) return 0.0;
-    float up = max(dir.y, 0.0);
-    vec2 p = (dir.xz / max(up, 0.02) * frame.sky.w + frame.sky.yz) / CLOUD_SCALE_M;
-    float n = 0.0, a = 0.5, total = 0.0;
-    for (int o = 0; o < CLOUD_OCTAVES; ++o) {
-        n += a * cloudNoise(p);
-        total += a;
-        p = mat2(1.6, 1.2, -1.2, 1.6) * p + 7.1;
-        a *= 0.5;
-    }
-    n /= total;
-    float threshold = mix(0.72, 0.28, c);
-    float d = smoothstep(threshold - 0.06, threshold + 0.10, n);
-    d = max(d, smoothstep(0.85, 1.0, c));
-    return mix(c, d, smoothstep(0.03, 0.25, up));
-}
-
 // The sky with the clouds' pattern (the cube bake): the clear sky behind them where they are thin.
 vec3 skyWithClouds(vec3 dir, vec3 sunDir) {
     vec3 clear = clearSkyRadiance(dir, sunDir);
     if (cloudCover() <= 0.0) return clear;
-    return mix(clear, cloudRadiance(dir, sunDir), 0.97 * cloudDensity(dir) + 0.03 * cloudCover());
+    return mix(clear, cloudRadiance(dir, sunDir), cloudLayerOpacity(dir, cloudCover(), frame.sky.yz, frame.sky.w));
 }
 
 // The sun disk alone (0.53° wide), for direct views and sharp reflections.
 vec3 sunDisk(vec3 dir, vec3 sunDir) {
     float cosAngle = dot(dir, sunDir);
     vec3 disk = vec3(60.0, 52.0, 40.0) * sunTint(sunDir) * smoothstep(0.99996, 0.99998, cosAngle);
-    // (dimmed by the clouds' mean cover through sunTint, gone under an overcast: the clouds'
-    // pattern per sky pixel would cost a software rasteriser the noise everywhere)
+    // (dimmed through sunTint by the cloud on the sun's ray, as the sky cube draws it there;
+    // gone under an overcast)
     return disk;
 }
 

@@ -21,7 +21,7 @@ using glsl::MAX_RIPPLE_LEVELS;
 
 // std140 puts every vec4 and mat4 member at a multiple of 16 bytes, arrays at a 16-byte stride:
 // the C++ structs' sizes must be the members' sizes summed, with no padding.
-static_assert(sizeof(FrameUniforms) == 2 * 64 + 11 * 16, "FrameUniforms must match its std140 layout");
+static_assert(sizeof(FrameUniforms) == 2 * 64 + 12 * 16, "FrameUniforms must match its std140 layout");
 static_assert(sizeof(WaterUniforms) == 16 * (4 + 11 + MAX_RIPPLE_LEVELS + 1 + MAX_GERSTNER_WAVES + 1)
                                         + (64 + 16) * MAX_HULL_CLIPS,
               "WaterUniforms must match its std140 layout");

@@ -1,5 +1,6 @@
 // The views' uniforms, the pass timers and the pass span.
 #include "gfx/render_frame.h"
+#include "gfx/clouds.h"
 #include "gfx/sun.h"
 
 #include <algorithm>
@@ -48,6 +49,8 @@ void FrameViews::update(const RenderDef& def, const SkyDef& sky, const FrameStat
     u.waterColorExposure = glm::vec4(def.water_color, def.exposure * frame.exposureGain);
     u.sky = glm::vec4(sky.cloud_cover, frame.cloudDrift, sky.cloud_height);
     u.sunLight = glm::vec4(def.sun_color, SUNLIT_SURFACE);
+    // whether a cloud stands before the sun now: the sky's own noise on the sun's ray
+    u.sunCloud = glm::vec4(cloudBeamLoss(sky, frame.cloudDrift, sunDirection(def)), 0.0f, 0.0f, 0.0f);
     u.depthParams = glm::vec4(camera.nearM, camera.farM, def.water_clarity, float(skyMips));
     u.shading = glm::vec4(def.dudv_strength, def.normal_distortion, def.glitter, def.light_shafts);
     u.switches = glm::vec4(def.reflections ? 1.0f : 0.0f, def.refractions ? 1.0f : 0.0f, def.foam ? 1.0f : 0.0f,

@@ -157,7 +157,7 @@ void WaterPass::uploadUniforms(FrameContext& frame, const CameraView& camera, co
     const int cascades = layers ? water.cascades : 1;
     for (int c = 0; c < 4; ++c) u.cascadeSize[c] = layers ? water.cascadeSize[size_t(c)] : 1.0f;
     for (int c = 0; c < 4; ++c) u.cascadeSlopeVariance[c] = layers ? water.cascadeSlopeVariance[size_t(c)] : 0.0f;
-    u.glitterParams = glm::vec4(water.seaSlopeVariance, 0.0f, 0.0f, 0.0f);
+    u.glitterParams = glm::vec4(water.seaSlopeVariance, water.windSpeed, 0.0f, 0.0f);
     u.farFade = glm::vec4(def.far_fade ? 1.0f : 0.0f, water.whitecapJacobian, water.whitecapSigma, water.windAngle);
     u.crest = glm::vec4(CREST_SHARE * m_crestBound, def.subsurface, camera.projection[1][1], 0.0f);
     for (int c = 0; c < 4 && layers && def.far_fade; ++c) {

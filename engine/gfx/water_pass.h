@@ -59,6 +59,7 @@ struct WaterView {
     float whitecapJacobian = 0.0f;
     float whitecapSigma = 0.0f;
     float windAngle = 0.0f;                 ///< direction the wind blows toward, atan2(z, x), rad: the foam's streaks lie along it
+    float windSpeed = 0.0f;                 ///< U10 (m/s): from a gale up the foam's lace is drawn out into spume streaks along the wind
     /// How far the FFT cascades together move a rest point (m; λ included): the projected
     /// grid reaches this far past the view. Gerstner and ripple bounds the renderer derives.
     SurfaceBounds fftBounds;

@@ -144,6 +144,7 @@ gfx::WaterView prepareWaterView(ecs::World& world, double time) {
     }
     view.cascadeSlopeVariance = side->slopeVariance;
     view.seaSlopeVariance = float(ocean::coxMunkSlopeVariance(d.wind_speed));
+    view.windSpeed = d.wind_speed;
     view.lambda = ocean->cpu->lambda();  // mid-fade: the blend
     view.gravity = ocean->def.gravity;
     // How far the grid must reach: the extremes of the CPU maps (at the step's end). The GPU

@@ -42,15 +42,16 @@ float luma(const Image& img, int x, int y) {
     return (0.299f * p[0] + 0.587f * p[1] + 0.114f * p[2]) / 255.0f;
 }
 
-// Flat, still water (no waves, no wind), a foam map of 256² cells `extent` m wide centred on the origin,
+// Flat, still water (no waves; the wind `windSpeed` m/s toward +x), a foam map of 256² cells `extent` m wide centred on the origin,
 // the camera `height` m straight above it (a hair off the vertical for the look-at), the sun at
 // `elevation` degrees toward +z; the map's coverage set by `coverage(x, z)` after the first step.
 // Drawn at the latest step (render.interpolate off): the frame after a whole step would draw the
 // camera where it was before it, while the map written by hand is the step's.
-Image renderFoam(float height, float elevation, const std::function<float(float, float)>& coverage, float extent = 25.6f) {
+Image renderFoam(float height, float elevation, const std::function<float(float, float)>& coverage, float extent = 25.6f,
+                 float windSpeed = 10.0f) {
     const float e = glm::radians(elevation);
     const std::string sun = "[0.0, " + std::to_string(std::sin(e)) + ", " + std::to_string(std::cos(e)) + "]";
-    const std::string text = "[ocean]\namplitude = 0.0\n[ripples]\nresolution = 128\ncell_size = 0.2\n"
+    const std::string text = "[ocean]\namplitude = 0.0\nwind_speed = " + std::to_string(windSpeed) + "\n[ripples]\nresolution = 128\ncell_size = 0.2\n"
                              "[foam]\nresolution = 256\nextent_m = " + std::to_string(extent) + "\n[splash]\nenabled = false\n"
                              "[render]\ninterpolate = false\nsun_direction = " + sun + "\n"
                              "[camera]\nmode = \"fixed\"\nposition = [0.0, " + std::to_string(height) + ", -0.001]\n"
@@ -186,4 +187,43 @@ TEST_CASE("fresh foam is not paper: dense new foam has bubble holes at every 16�
     INFO(flat << " of " << blocks << " blocks flat; mean " << mean << " against solid foam " << solid << " (linear)");
     CHECK(flat == 0);
     CHECK(mean <= 0.85 * solid);
+}
+
+namespace {
+
+// The lag (px, interpolated) at which the luma's autocorrelation over [x0, x1) × [y0, y1) first
+// falls below 1/e, along the rows (dx = 1) or the columns (dy = 1).
+double correlationLength(const Image& img, int x0, int y0, int x1, int y1, int dx, int dy) {
+    const BoxStats s = boxStats(img, x0, y0, x1, y1);
+    double previous = 1.0;
+    for (int lag = 1; lag < 100; ++lag) {
+        double sum = 0.0;
+        int count = 0;
+        for (int y = y0; y + lag * dy < y1; ++y)
+            for (int x = x0; x + lag * dx < x1; ++x, ++count)
+                sum += (luma(img, x, y) - s.mean) * (luma(img, x + lag * dx, y + lag * dy) - s.mean);
+        const double r = sum / count / s.variance;
+        if (r < std::exp(-1.0)) return lag - 1 + (previous - std::exp(-1.0)) / (previous - r);
+        previous = r;
+    }
+    return 100.0;
+}
+
+} // namespace
+
+TEST_CASE("spume at a gale: from force 8 up the foam's lace is drawn out along the wind, not across it", "[gl][render][foam][spume]") {
+    // Half coverage everywhere seen from 20 m straight down (12.8 cm a pixel; the wind along the
+    // picture's rows): at 25 m/s (force 10, "dense white streaks along the direction of the
+    // wind") the luma's correlation length along the wind is the lace's 10 : 1 stretch over the
+    // 3 : 1 of 10 m/s (force 5), 10/3 as long (within 25 %: the pixels and the bubbles' holes),
+    // and across the wind the same (within 15 %).
+    const auto half = [](float, float) { return 0.5f; };
+    const Image fresh = renderFoam(20.0f, 50.0f, half, 204.8f, 10.0f);
+    const Image gale = renderFoam(20.0f, 50.0f, half, 204.8f, 25.0f);
+    const double alongFresh = correlationLength(fresh, 20, 20, 300, 160, 1, 0), acrossFresh = correlationLength(fresh, 20, 20, 300, 160, 0, 1);
+    const double alongGale = correlationLength(gale, 20, 20, 300, 160, 1, 0), acrossGale = correlationLength(gale, 20, 20, 300, 160, 0, 1);
+    INFO("correlation lengths (px) along / across the wind: 10 m/s " << alongFresh << " / " << acrossFresh << ", 25 m/s " << alongGale
+                                                                      << " / " << acrossGale);
+    CHECK(alongGale / alongFresh == Approx(10.0 / 3.0).epsilon(0.25));
+    CHECK(acrossGale / acrossFresh == Approx(1.0).epsilon(0.15));
 }

@@ -59,7 +59,7 @@ const std::map<std::string, size_t> CPP_OFFSETS = {
     MEMBER(FrameUniforms, viewProjection), MEMBER(FrameUniforms, inverseViewProjection), MEMBER(FrameUniforms, cameraPositionTime),
     MEMBER(FrameUniforms, sunDirectionFresnel), MEMBER(FrameUniforms, waterColorExposure), MEMBER(FrameUniforms, viewport),
     MEMBER(FrameUniforms, surfaceClip), MEMBER(FrameUniforms, depthParams), MEMBER(FrameUniforms, shading),
-    MEMBER(FrameUniforms, switches), MEMBER(FrameUniforms, waterline), MEMBER(FrameUniforms, sky), MEMBER(FrameUniforms, sunLight), ARRAY(WaterUniforms, corner), MEMBER(WaterUniforms, cascadeSize),
+    MEMBER(FrameUniforms, switches), MEMBER(FrameUniforms, waterline), MEMBER(FrameUniforms, sky), MEMBER(FrameUniforms, sunLight), MEMBER(FrameUniforms, sunCloud), ARRAY(WaterUniforms, corner), MEMBER(WaterUniforms, cascadeSize),
     MEMBER(WaterUniforms, waterParams), MEMBER(WaterUniforms, gridParams), MEMBER(WaterUniforms, rippleParams),
     MEMBER(WaterUniforms, foamParams), MEMBER(WaterUniforms, cascadeFade), MEMBER(WaterUniforms, cascadeFadeEnd),
     MEMBER(WaterUniforms, farFade), MEMBER(WaterUniforms, cascadeSlopeVariance), MEMBER(WaterUniforms, glitterParams),

@@ -3,6 +3,7 @@
 // brings a level view under water up to a lit blue-green within 3 s while the radiance itself
 // keeps the level/zenith ratio field measurements give (2–20 %, Jerlov type I waters).
 #include "gfx/auto_exposure.h"
+#include "gfx/clouds.h"
 #include "gfx/gl.h"
 #include "gfx/renderer.h"
 #include "platform/platform.h"
@@ -36,9 +37,10 @@ gfx::RenderDef plainDef() {
     return def;
 }
 
-// Renders `frames` frames 0.1 s apart (simulated) and returns the last.
-Image renderFrames(gfx::Renderer& renderer, const gfx::CameraView& camera, glm::ivec2 size, int frames = 1) {
-    for (int f = 0; f < frames; ++f) renderer.render(camera, {}, {}, 0.1 * f, size);
+// Renders `frames` frames 0.1 s apart (simulated) from `start` s and returns the last.
+Image renderFrames(gfx::Renderer& renderer, const gfx::CameraView& camera, glm::ivec2 size, int frames = 1, double start = 0.0,
+                   const gfx::WaterView& water = {}) {
+    for (int f = 0; f < frames; ++f) renderer.render(camera, water, {}, start + 0.1 * f, size);
     const std::string path = test::tempPath("weather.png");
     gfx::writeScreenshot(path, size);
     Image img = test::loadPng(path);
@@ -106,6 +108,67 @@ TEST_CASE("an overcast sky (cloud_cover 1) is at least 30% darker than a clear o
     CHECK(overcast.skyMean <= 0.7 * clear.skyMean);
     CHECK(clear.disc > 2.0 * clear.ring);        // the test sees a disc where there is one
     CHECK(overcast.disc < 1.1 * overcast.ring);  // none under the overcast: only a soft patch
+}
+
+TEST_CASE("a broken sky's clouds shade the sun by their shape: the glitter dims while a cloud stands before the sun and comes back in a gap", "[gl][render][weather][clouds]") {
+    gfx::requestDebugOutput(true);
+    const glm::ivec2 size(96, 64);
+    auto platform = platform::createHeadlessPlatform(size);
+    gfx::RenderDef def = plainDef();
+    const float elevation = glm::radians(30.0f);
+    def.sun_direction = glm::vec3(0.0f, std::sin(elevation), -std::cos(elevation));
+    const glm::vec3 sun = glm::normalize(def.sun_direction);
+    gfx::SkyDef sky;
+    sky.cloud_cover = 0.5f;
+    sky.wind_aloft = 50.0f;  // along +x (the water's wind angle 0): the layer drifts 50 m a second
+    // Moments with a cloud's core on the sun's ray and with a gap there, picked by the CPU's copy
+    // of the layer; the sky drawn toward the sun then shows whether that copy is the sky's.
+    double cloudy = -1.0, gap = -1.0;
+    for (double t = 0.0; t < 2000.0 && (cloudy < 0.0 || gap < 0.0); t += 5.0) {
+        const float loss = gfx::cloudBeamLoss(sky, glm::vec2(float(t) * sky.wind_aloft, 0.0f), sun);
+        if (loss > 0.999f && cloudy < 0.0) cloudy = t;
+        if (loss < 0.02f && gap < 0.0) gap = t;
+    }
+    REQUIRE(cloudy >= 0.0);
+    REQUIRE(gap >= 0.0);
+    // The sun's mirror point on a flat sea (its slopes' variance 0.02) at the centre of a 20° view
+    // from 10 m up, and the sun at the centre of another.
+    const gfx::CameraView seaView = cameraAt({0, 10, 0}, glm::vec3(sun.x, -sun.y, sun.z), {0, 1, 0}, 20.0f, 1.5f);
+    const gfx::CameraView sunView = cameraAt({0, 10, 0}, sun, {0, 1, 0}, 10.0f, 1.5f);
+    gfx::WaterView water;
+    water.seaSlopeVariance = 0.02f;
+    const int cx = size.x / 2, cy = size.y / 2;
+    // The glitter alone (the frame with the sun's irradiance 1 less the one with 0), linear, the
+    // centre 9×9; and the sun's 3×3 centre against its 11×11 surroundings' mean.
+    const auto look = [&](float cover, double t) {
+        gfx::RenderDef lit = def;
+        lit.glitter = 1.0f;
+        gfx::RenderDef dark = def;
+        dark.glitter = 0.0f;
+        gfx::Renderer a(lit), b(dark);
+        a.sky() = sky, b.sky() = sky;
+        a.sky().cloud_cover = b.sky().cloud_cover = cover;
+        const Image on = renderFrames(a, seaView, size, 1, t, water);
+        const Image off = renderFrames(b, seaView, size, 1, t, water);
+        const Image toward = renderFrames(a, sunView, size, 1, t, water);
+        const double glitter = linearLuminance(on, cx - 4, cy - 4, cx + 5, cy + 5) - linearLuminance(off, cx - 4, cy - 4, cx + 5, cy + 5);
+        const double disc = linearLuminance(toward, cx - 1, cy - 1, cx + 2, cy + 2);
+        const double around = linearLuminance(toward, cx - 5, cy - 5, cx + 6, cy + 6);
+        return std::pair(glitter, disc / around);
+    };
+    const auto [clearGlitter, clearDisc] = look(0.0f, 0.0);
+    const auto [cloudGlitter, cloudDisc] = look(sky.cloud_cover, cloudy);
+    const auto [gapGlitter, gapDisc] = look(sky.cloud_cover, gap);
+    INFO("glitter (linear, centre): clear sky " << clearGlitter << ", the sun behind a cloud (t = " << cloudy << " s) " << cloudGlitter
+                                                  << ", in a gap (t = " << gap << " s) " << gapGlitter);
+    INFO("the sun's centre over its surroundings: clear " << clearDisc << ", behind the cloud " << cloudDisc << ", in the gap " << gapDisc);
+    CHECK(clearDisc > 2.0);  // the view sees the disc where there is one
+    CHECK(gapDisc > 2.0);    // ... in the gap the sky drawn shows it too
+    CHECK(cloudDisc < 1.1);  // ... and behind the cloud the sky drawn hides it
+    // In the gap the glitter is the clear sky's less the thin veil the whole cover spreads (3 %
+    // of it at 0.5: 1.5 %); behind a cloud's core (optical depth in the tens) none.
+    CHECK(gapGlitter == Approx(clearGlitter).epsilon(0.05));
+    CHECK(cloudGlitter < 0.02 * clearGlitter);
 }
 
 TEST_CASE("auto exposure's gain takes back 2/3 of a change in stops, relaxing with a time constant of 1 s, clamped to [1/4, 8]", "[gl][render][exposure]") {
