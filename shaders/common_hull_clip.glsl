@@ -46,16 +46,6 @@ bool insideHull(int i, vec3 p) {
     return abs(q.x) < (1.0 - HULL_CLIP_MARGIN) * hullHalfBeam(int(water.hullPlan[i].x) - 1, q.z, min(q.y, 1.0));
 }
 
-// The first hull (nearest the eye first) that holds world point p, −1 none.
-int hullHolding(vec3 p) {
-    int count = int(water.hullCount.x);
-    for (int i = 0; i < MAX_HULL_CLIPS; ++i) {
-        if (i >= count) break;
-        if (insideHull(i, p)) return i;
-    }
-    return -1;
-}
-
 // The opaque scene's window depth before the water pass (WaterPass::copySceneDepth), with the
 // frame's samples: a discarded water fragment shows what that depth holds.
 #if WATER_HULL_DEPTH_SAMPLES > 1
@@ -79,23 +69,23 @@ bool hullOwns(int i, vec3 s) {
 // at every sample of the pixel, the depth buffer holds that hull (its deck, the inside of an
 // open boat). Where the view ray leaves the hull under the sea (the eye over a deck, looking
 // out under the far side) nothing lies behind the surface but the sky: the water stays.
+// Overlapping hulls (a boat on a deck): any that holds both. One pass over the hulls: a software
+// rasteriser runs every branch of this for every water pixel, so it is written to be short.
 bool hullClipped(vec3 p) {
-    int first = hullHolding(p);
-    if (first < 0) return false;
     // The opaque points behind the pixel, a world point a sample; nothing behind one: keep.
     vec3 behind[WATER_HULL_DEPTH_SAMPLES];
     vec2 ndc = gl_FragCoord.xy / frame.viewport.xy * 2.0 - 1.0;
+    bool open = false;
     for (int s = 0; s < WATER_HULL_DEPTH_SAMPLES; ++s) {
         float z = texelFetch(u_sceneDepth, ivec2(gl_FragCoord.xy), s).r;  // single-sampled: s is the level, 0
-        if (z >= 1.0) return false;
+        open = open || z >= 1.0;
         vec4 world = frame.inverseViewProjection * vec4(ndc, 2.0 * z - 1.0, 1.0);
         behind[s] = world.xyz / world.w;
     }
-    int count = int(water.hullCount.x);
-    for (int i = first; i < MAX_HULL_CLIPS; ++i) {  // overlapping hulls (a boat on a deck): any that holds both
-        if (i >= count) break;
-        if (i > first && !insideHull(i, p)) continue;
-        bool owned = true;
+    if (open) return false;
+    int count = min(int(water.hullCount.x), MAX_HULL_CLIPS);
+    for (int i = 0; i < count; ++i) {
+        bool owned = insideHull(i, p);
         for (int s = 0; s < WATER_HULL_DEPTH_SAMPLES; ++s) owned = owned && hullOwns(i, behind[s]);
         if (owned) return true;
     }
