@@ -2,6 +2,7 @@
 #include "sim/splash_foam_system.h"
 
 #include "core/hash.h"
+#include "core/thread_cpu.h"
 #include "ecs/components.h"
 #include "foam/foam_map.h"
 #include "interaction/ripple_patch.h"
@@ -13,6 +14,7 @@
 #include "sim/water_systems.h"
 
 #include <array>
+#include <future>
 #include <map>
 #include <memory>
 #include <numbers>
@@ -48,6 +50,17 @@ struct SplashFoamState {
     /// The sea's surface Stokes drift (ocean::stokesDrift), summed again when a spectrum key changes.
     glm::vec2 stokes{0.0f};
     std::array<float, 11> stokesSea{};
+    /// [sim] pipelined: the foam's sweep (FoamMap::sweep) runs on a worker from the end of its
+    /// step until something reads or moves the map or the ripples it reads (join).
+    bool pipelined = false;
+    std::vector<float> jacobian;  ///< the sweep's copy of the first cascade's Jacobian: the ocean's maps move on under it
+    std::future<void> sweep;      ///< the sweep in flight
+    uint64_t sweepsOnWorker = 0;  ///< sweeps run on a worker so far
+    /// Waits for the sweep in flight, if any.
+    void join() {
+        if (sweep.valid()) sweep.get();
+    }
+    ~SplashFoamState() { join(); }
 };
 
 // A stern's track keeps a point every this many metres (or two foam cells, if larger) for
@@ -180,7 +193,18 @@ void stepFoam(SplashFoamState& state, foam::FoamMap& foam, const OceanState& oce
     in.gravity = ocean.def.gravity;
     in.ripples = patch;
     in.water = ocean.water.get();
-    foam.update(in, dt);
+    if (!state.pipelined) return foam.update(in, dt);
+    // Pipelined: what reads the water here, then the sweep on a worker, which reads the map, the
+    // ripple heights (unchanged until the next step) and a copy of the Jacobian (the ocean phase
+    // that follows swaps the maps and starts the next ones in the buffer this one was read from).
+    state.jacobian.assign(in.jacobian.begin(), in.jacobian.end());
+    in.jacobian = state.jacobian;
+    foam.prepare(in, dt);
+    ++state.sweepsOnWorker;
+    state.sweep = std::async(std::launch::async, [&foam] {
+        const WorkerCpuScope cpu;  // bench frame's workers row
+        foam.sweep();
+    });
 }
 
 // Wind spray (splash_particles.h): the points of the first cascade's tile that break now (J
@@ -224,10 +248,26 @@ void addSplashFoam(ecs::World& world, const splash::SplashDef& splash, const foa
     world.setResource(std::move(state));
 }
 
+void pipelineSplashFoam(ecs::World& world) {
+    if (auto* state = world.resource<SplashFoamState>()) state->pipelined = true;
+}
+
+void joinSplashFoam(ecs::World& world) {
+    if (auto* state = world.resource<SplashFoamState>()) state->join();
+}
+
+void joinSplashFoamSystem(ecs::World& world, const ecs::Tick&) { joinSplashFoam(world); }
+
+uint64_t foamSweepsOnWorker(ecs::World& world) {
+    const auto* state = world.resource<SplashFoamState>();
+    return state ? state->sweepsOnWorker : 0;
+}
+
 void splashFoamSystem(ecs::World& world, const ecs::Tick& tick) {
     auto* state = world.resource<SplashFoamState>();
     const OceanState* ocean = world.resource<OceanState>();
     if (!state || !ocean || !ocean->water) return;
+    state->join();
     auto* patch = world.resource<interaction::RipplePatch>();
     const float dt = float(tick.dt);
     foam::FoamMap* foam = placeFoam(*state, patch);
@@ -249,13 +289,16 @@ const splash::SplashParticles* splashParticles(ecs::World& world) {
 }
 
 const foam::FoamMap* foamMap(ecs::World& world) {
-    const auto* state = world.resource<SplashFoamState>();
-    return state ? state->foam.get() : nullptr;
+    auto* state = world.resource<SplashFoamState>();
+    if (!state) return nullptr;
+    state->join();
+    return state->foam.get();
 }
 
 void hashSplashFoam(ecs::World& world, StateHasher& h) {
-    const auto* state = world.resource<SplashFoamState>();
+    auto* state = world.resource<SplashFoamState>();
     if (!state) return;
+    state->join();
     if (state->particles) state->particles->hash(h);
     if (state->foam) state->foam->hash(h);
 }
