@@ -118,4 +118,10 @@ int measuredThreads(const std::string& key, int threads, const std::function<voi
     return n;
 }
 
+bool measuredChoice(const std::string& key, bool fallback, const std::function<void(bool second)>& run) {
+    if (!s_measuring) return fallback;
+    // Two "threads": the second way (the cache's line reads "key of 2 = 2" when it won).
+    return measuredThreads(key, 2, [&run](int n) { run(n == 2); }) == 2;
+}
+
 } // namespace ob
