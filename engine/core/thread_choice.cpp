@@ -85,6 +85,8 @@ int measure(int threads, const std::function<void(int)>& run) {
 
 void setThreadMeasuring(bool on) { s_measuring = on; }
 
+bool threadMeasuring() { return s_measuring; }
+
 int measuredThreads(const std::string& key, int threads, const std::function<void(int threads)>& run) {
     if (threads <= 1) return 1;
     if (!s_measuring) return threads;

@@ -31,5 +31,7 @@ constexpr double SPEED_UP_NEEDED = 0.9;
 /// the cache (tests that check the bits of every split; sanitizer runs). On by default;
 /// OCEANBOX_MEASURE_THREADS=0 in the environment starts a process with it off.
 void setThreadMeasuring(bool on);
+/// Whether measuring is on (setThreadMeasuring).
+bool threadMeasuring();
 
 } // namespace ob
