@@ -2,6 +2,7 @@
 #include "foam/foam_map.h"
 
 #include "core/hash.h"
+#include "interaction/ripple_patch.h"
 
 #include <cmath>
 
@@ -71,11 +72,21 @@ WindFlow FoamMap::windFlow(float windSpeed, glm::vec2 direction, glm::vec2 stoke
 }
 
 void FoamMap::update(const FoamInputs& in, float dt) {
-    prepare(in, dt);
+    prepare(in, dt, false);
     sweep();
 }
 
-void FoamMap::prepare(const FoamInputs& in, float dt) {
+void FoamMap::prepare(const FoamInputs& given, float dt, bool copyInputs) {
+    FoamInputs in = given;
+    if (copyInputs) {
+        m_jacobianCopy.assign(in.jacobian.begin(), in.jacobian.end());
+        in.jacobian = m_jacobianCopy;
+        if (in.ripples) {
+            const std::span<const float> h = in.rippleHeight.empty() ? in.ripples->height() : in.rippleHeight;
+            m_rippleCopy.assign(h.begin(), h.end());
+            in.rippleHeight = m_rippleCopy;
+        }
+    }
     // --- the velocity at the water's time
     if (in.water) m_flow.refresh(*in.water, m_def.flow_refresh_steps);
     m_flow.setWind(windFlow(in.windSpeed, in.windDirection, in.stokesDrift));

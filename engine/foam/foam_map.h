@@ -87,11 +87,13 @@ public:
     /// addSources(in, dt), then step(dt). The same as prepare(in, dt), then sweep().
     void update(const FoamInputs& in, float dt);
     /// update()'s first half, which reads the water: the flow refreshed, the wind set, the sources'
-    /// tables made (whitecaps() is this update's from here on).
-    void prepare(const FoamInputs& in, float dt);
-    /// update()'s second half, the sweep over the map: reads only the map, its flow and the tables
-    /// prepare() made, which point into `in`'s Jacobian and ripple heights: those must not change
-    /// until it returns (it may run on another thread; [sim] pipelined). Nothing without a prepare().
+    /// tables made (whitecaps() is this update's from here on). copyInputs: `in`'s Jacobian and the
+    /// ripple heights are copied, so sweep() reads nothing of the caller's; else they must stay as
+    /// they are until sweep() returns.
+    void prepare(const FoamInputs& in, float dt, bool copyInputs);
+    /// update()'s second half, the sweep over the map: reads only the map, its flow and what
+    /// prepare() made, and writes only the map, so with copied inputs it may run on another thread
+    /// while the water moves on ([sim] pipelined). Nothing without a prepare().
     void sweep();
 
     /// The wind's part of the foam's velocity for wind U10 (m/s) blowing toward `direction` over
@@ -120,6 +122,7 @@ private:
     double m_time = 0.0;  // s of update() steps so far: the streak cells' phases (FoamFlow::setWindTime)
     WhitecapLaw m_whitecaps;
     std::optional<RowSources> m_sources;  // prepare()'s tables, until sweep()
+    std::vector<float> m_jacobianCopy, m_rippleCopy;  // prepare()'s copies of its inputs (copyInputs)
     float m_sweepDt = 0.0f;               // prepare()'s dt, s
 };
 

@@ -50,10 +50,9 @@ struct SplashFoamState {
     /// The sea's surface Stokes drift (ocean::stokesDrift), summed again when a spectrum key changes.
     glm::vec2 stokes{0.0f};
     std::array<float, 11> stokesSea{};
-    /// [sim] pipelined: the foam's sweep (FoamMap::sweep) runs on a worker from the end of its
-    /// step until something reads or moves the map or the ripples it reads (join).
+    /// [sim] pipelined: the foam's sweep (FoamMap::sweep, on copies of its inputs) runs on a worker
+    /// from the end of its step until something reads or moves the map (join).
     bool pipelined = false;
-    std::vector<float> jacobian;  ///< the sweep's copy of the first cascade's Jacobian: the ocean's maps move on under it
     std::future<void> sweep;      ///< the sweep in flight
     uint64_t sweepsOnWorker = 0;  ///< sweeps run on a worker so far
     /// Waits for the sweep in flight, if any.
@@ -194,12 +193,10 @@ void stepFoam(SplashFoamState& state, foam::FoamMap& foam, const OceanState& oce
     in.ripples = patch;
     in.water = ocean.water.get();
     if (!state.pipelined) return foam.update(in, dt);
-    // Pipelined: what reads the water here, then the sweep on a worker, which reads the map, the
-    // ripple heights (unchanged until the next step) and a copy of the Jacobian (the ocean phase
-    // that follows swaps the maps and starts the next ones in the buffer this one was read from).
-    state.jacobian.assign(in.jacobian.begin(), in.jacobian.end());
-    in.jacobian = state.jacobian;
-    foam.prepare(in, dt);
+    // Pipelined: what reads the water here, then the sweep on a worker, on copies of the Jacobian
+    // (the ocean phase that follows swaps the maps and starts the next ones in the buffer this one
+    // was read from) and of the ripple heights (the next step's ripples move on before its foam).
+    foam.prepare(in, dt, true);
     ++state.sweepsOnWorker;
     state.sweep = std::async(std::launch::async, [&foam] {
         const WorkerCpuScope cpu;  // bench frame's workers row
@@ -251,12 +248,6 @@ void addSplashFoam(ecs::World& world, const splash::SplashDef& splash, const foa
 void pipelineSplashFoam(ecs::World& world) {
     if (auto* state = world.resource<SplashFoamState>()) state->pipelined = true;
 }
-
-void joinSplashFoam(ecs::World& world) {
-    if (auto* state = world.resource<SplashFoamState>()) state->join();
-}
-
-void joinSplashFoamSystem(ecs::World& world, const ecs::Tick&) { joinSplashFoam(world); }
 
 uint64_t foamSweepsOnWorker(ecs::World& world) {
     const auto* state = world.resource<SplashFoamState>();

@@ -29,16 +29,11 @@ void addSplashFoam(ecs::World& world, const splash::SplashDef& splash, const foa
 /// and steps with the surface's horizontal velocity (the ocean layers' particle velocity).
 void splashFoamSystem(ecs::World& world, const ecs::Tick& tick);
 /// [sim] pipelined: from the next step on the foam's sweep (advection, sources (a), (b), decay:
-/// FoamMap::sweep) runs on a worker while the step and the frame go on; it is joined at the next
-/// step's first row (joinSplashFoamSystem) and wherever the map is read (foamMap, the hash), so
-/// the state is the same bits (docs/frame.md#pipelined).
+/// FoamMap::sweep, on copies of the Jacobian and the ripple heights it reads) runs on a worker
+/// while the step and the frame go on; whatever reads or moves the map next waits for it (the
+/// next step's splashFoamSystem, foamMap: the render's upload, the hash), so the state is the
+/// same bits (docs/frame.md#pipelined).
 void pipelineSplashFoam(ecs::World& world);
-/// Waits for the foam's sweep in flight, if any (nothing otherwise). Before a world whose ripple
-/// patch the sweep reads is torn down.
-void joinSplashFoam(ecs::World& world);
-/// The step's first row: the last step's foam sweep joined before anything moves the map, its
-/// [foam] keys or the ripple heights it reads.
-void joinSplashFoamSystem(ecs::World& world, const ecs::Tick& tick);
 /// The foam's sweeps run on a worker so far (0 unless pipelined).
 uint64_t foamSweepsOnWorker(ecs::World& world);
 /// The live drops (null when [splash] is off).

@@ -56,7 +56,6 @@ const ecs::SystemEntry SYSTEMS[] = {
     {Phase::Input, Rate::Frame, "platform input", platformInputSystem},
     {Phase::Input, Rate::Frame, "frame input", frameInputSystem},
     {Phase::Input, Rate::Frame, "controls", controlsSystem},
-    {Phase::Script, Rate::Step, "foam joined", joinSplashFoamSystem},  // the last step's sweep ([sim] pipelined)
     {Phase::Script, Rate::Step, "step poses", rememberPosesSystem},  // what the frames until the next step draw from
     {Phase::Script, Rate::Step, "step input", stepInputSystem},
     {Phase::Script, Rate::Step, "tools", toolsSystem},
@@ -95,7 +94,7 @@ Sandbox::Sandbox(const SceneDef& scene) : m_schedule(scene.sim) {
     addRipples(m_world, def.ripples, float(m_schedule.stepSeconds()));
     addCurrents(m_world, def.currents, def.physics.water_density);
     addSplashFoam(m_world, def.splash, def.foam, def.sim.seed);
-    if (def.sim.pipelined) pipelineWater(m_world);
+    if (def.sim.pipelined) pipelineWater(m_world);  // after the foam: its sweep on a worker too
     for (const StampSource& source : {bodySource(), cannonSource(), fishSource()}) addStampSource(m_world, source);
     spawnObjects(m_world, def.physics, def.objects, def.sim.seed);
     addScript(m_world);
@@ -106,8 +105,7 @@ Sandbox::Sandbox(const SceneDef& scene) : m_schedule(scene.sim) {
 
 const SceneDef& Sandbox::scene() { return sceneSettings(m_world).def; }
 
-// The foam's sweep in flight reads the ripple patch: joined before the resources go.
-Sandbox::~Sandbox() { joinSplashFoam(m_world); }
+Sandbox::~Sandbox() = default;
 
 void Sandbox::setScriptedInput(std::vector<platform::InputEvent> events) {
     m_world.setResource(std::make_unique<ScriptedInput>(ScriptedInput{std::move(events), 0}));
