@@ -85,6 +85,8 @@ int measure(int threads, const std::function<void(int)>& run) {
 
 void setThreadMeasuring(bool on) { s_measuring = on; }
 
+bool threadMeasuring() { return s_measuring; }
+
 int measuredThreads(const std::string& key, int threads, const std::function<void(int threads)>& run) {
     if (threads <= 1) return 1;
     if (!s_measuring) return threads;
@@ -116,6 +118,12 @@ int measuredThreads(const std::string& key, int threads, const std::function<voi
         }
     }
     return n;
+}
+
+bool measuredChoice(const std::string& key, bool fallback, const std::function<void(bool second)>& run) {
+    if (!s_measuring) return fallback;
+    // Two "threads": the second way (the cache's line reads "key of 2 = 2" when it won).
+    return measuredThreads(key, 2, [&run](int n) { run(n == 2); }) == 2;
 }
 
 } // namespace ob

@@ -17,6 +17,11 @@ namespace ob {
 /// `threads`. Without a writable cache the choice is measured once per process.
 int measuredThreads(const std::string& key, int threads, const std::function<void(int threads)>& run);
 
+/// Which of two ways to run the kernel named `key` (its size in it): true for the second, chosen
+/// only when its median is below SPEED_UP_NEEDED × the first's, measured and kept in the same
+/// cache as measuredThreads (`run(second)` runs it once either way); with measuring off, `fallback`.
+bool measuredChoice(const std::string& key, bool fallback, const std::function<void(bool second)>& run);
+
 /// Alternating pairs measured by measuredThreads.
 constexpr int MEASURE_PAIRS = 5;
 /// measuredThreads picks more than one thread only below this fraction of the one-thread time.
@@ -26,5 +31,7 @@ constexpr double SPEED_UP_NEEDED = 0.9;
 /// the cache (tests that check the bits of every split; sanitizer runs). On by default;
 /// OCEANBOX_MEASURE_THREADS=0 in the environment starts a process with it off.
 void setThreadMeasuring(bool on);
+/// Whether measuring is on (setThreadMeasuring).
+bool threadMeasuring();
 
 } // namespace ob

@@ -2,6 +2,7 @@
 #include "foam/foam_map.h"
 
 #include "core/hash.h"
+#include "interaction/ripple_patch.h"
 
 #include <cmath>
 
@@ -71,17 +72,42 @@ WindFlow FoamMap::windFlow(float windSpeed, glm::vec2 direction, glm::vec2 stoke
 }
 
 void FoamMap::update(const FoamInputs& in, float dt) {
+    prepare(in, dt, false);
+    sweep();
+}
+
+void FoamMap::prepare(const FoamInputs& given, float dt, bool copyInputs) {
+    FoamInputs in = given;
+    if (copyInputs) {
+        m_jacobianCopy.assign(in.jacobian.begin(), in.jacobian.end());
+        in.jacobian = m_jacobianCopy;
+        if (in.ripples) {
+            const std::span<const float> h = in.rippleHeight.empty() ? in.ripples->height() : in.rippleHeight;
+            m_rippleCopy.assign(h.begin(), h.end());
+            in.rippleHeight = m_rippleCopy;
+        }
+    }
     // --- the velocity at the water's time
     if (in.water) m_flow.refresh(*in.water, m_def.flow_refresh_steps);
     m_flow.setWind(windFlow(in.windSpeed, in.windDirection, in.stokesDrift));
     m_flow.setWindTime(m_time);
     m_time += double(dt);
+    m_sources.emplace(m_def, m_grid, in, dt);
+    m_whitecaps = m_sources->whitecaps();
+    m_sweepDt = dt;
+}
+
+void FoamMap::sweep() {
+    if (!m_sources) return;
     // --- sources and step: one sweep when the flow is from the nodes and within a sample a step
-    const RowSources sources(m_def, m_grid, in, dt);
-    m_whitecaps = sources.whitecaps();
-    if (m_transport.sweepFits(m_grid, m_flow, dt)) return m_transport.sweep(m_f, m_grid, m_flow, &sources, m_def.decay_s, dt);
-    sources.addTo(m_f);
-    step(dt);
+    const float dt = m_sweepDt;
+    if (m_transport.sweepFits(m_grid, m_flow, dt)) {
+        m_transport.sweep(m_f, m_grid, m_flow, &*m_sources, m_def.decay_s, dt);
+    } else {
+        m_sources->addTo(m_f);
+        step(dt);
+    }
+    m_sources.reset();
 }
 
 void FoamMap::hash(StateHasher& h) const {

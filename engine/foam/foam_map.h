@@ -24,6 +24,7 @@
 #include "foam/foam_sources.h"
 #include "foam/foam_transport.h"
 
+#include <optional>
 #include <span>
 #include <vector>
 #include <glm/vec2.hpp>
@@ -83,8 +84,17 @@ public:
     void step(float dt);
     /// One whole update over dt: the flow from in.water (FoamFlow::refresh; none: as set last),
     /// then sources (a), (b) and the step in one sweep where the flow allows it. The same bits as
-    /// addSources(in, dt), then step(dt).
+    /// addSources(in, dt), then step(dt). The same as prepare(in, dt), then sweep().
     void update(const FoamInputs& in, float dt);
+    /// update()'s first half, which reads the water: the flow refreshed, the wind set, the sources'
+    /// tables made (whitecaps() is this update's from here on). copyInputs: `in`'s Jacobian and the
+    /// ripple heights are copied, so sweep() reads nothing of the caller's; else they must stay as
+    /// they are until sweep() returns.
+    void prepare(const FoamInputs& in, float dt, bool copyInputs);
+    /// update()'s second half, the sweep over the map: reads only the map, its flow and what
+    /// prepare() made, and writes only the map, so with copied inputs it may run on another thread
+    /// while the water moves on ([sim] pipelined). Nothing without a prepare().
+    void sweep();
 
     /// The wind's part of the foam's velocity for wind U10 (m/s) blowing toward `direction` over
     /// a sea of surface Stokes drift `stokes` (m/s): drift wind_drift·U10·ŵ + stokes, streak cells
@@ -111,6 +121,9 @@ private:
     FoamTransport m_transport;
     double m_time = 0.0;  // s of update() steps so far: the streak cells' phases (FoamFlow::setWindTime)
     WhitecapLaw m_whitecaps;
+    std::optional<RowSources> m_sources;  // prepare()'s tables, until sweep()
+    std::vector<float> m_jacobianCopy, m_rippleCopy;  // prepare()'s copies of its inputs (copyInputs)
+    float m_sweepDt = 0.0f;               // prepare()'s dt, s
 };
 
 } // namespace ob::foam

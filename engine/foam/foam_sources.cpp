@@ -91,7 +91,8 @@ OB_VECTOR_KERNEL void slopeRoots(float* __restrict v, int cols) {
 RowSources::RowSources(const FoamDef& def, const ScrollingGrid& grid, const FoamInputs& in, float dt)
     : m_mapN(grid.n), m_cell(grid.cell), m_origin(grid.origin()) {
     if (def.whitecap_weight > 0.0f && in.jacobianN > 0 && !in.jacobian.empty()) tabulateWhitecaps(def, in, dt);
-    if (def.ripple_weight > 0.0f && in.ripples) tabulateRipples(def, *in.ripples, dt);
+    if (def.ripple_weight > 0.0f && in.ripples)
+        tabulateRipples(def, *in.ripples, in.rippleHeight.empty() ? in.ripples->height() : in.rippleHeight, dt);
 }
 
 // Bilinear in the periodic tile at each sample (rest-point coordinates): the columns' samples
@@ -146,7 +147,7 @@ void RowSources::tabulateWhitecaps(const FoamDef& def, const FoamInputs& in, flo
 
 // The nearest ripple cell of each foam column and row; only interior ripple cells have a
 // central difference, and they form one range of columns and one of rows.
-void RowSources::tabulateRipples(const FoamDef& def, const interaction::RipplePatch& patch, float dt) {
+void RowSources::tabulateRipples(const FoamDef& def, const interaction::RipplePatch& patch, std::span<const float> height, float dt) {
     const int rows = patch.rows(), cols = patch.cols(), mapN = m_mapN;
     const glm::vec2 o = m_origin;
     m_rx.resize(size_t(mapN));
@@ -164,7 +165,8 @@ void RowSources::tabulateRipples(const FoamDef& def, const interaction::RipplePa
         if (z >= 1 && z <= rows - 2) m_jLo = std::min(m_jLo, j), m_jHi = std::max(m_jHi, j + 1);
     }
     if (m_iLo >= m_iHi || m_jLo >= m_jHi) return;
-    m_height = patch.height().data();  // either model's
+    assert(height.size() == size_t(rows) * size_t(cols));
+    m_height = height.data();  // either model's
     m_cols = cols;
     m_inv2d = 1.0f / (2.0f * patch.def().cell_size);
     m_slope0 = def.ripple_slope;

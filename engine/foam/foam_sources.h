@@ -73,6 +73,7 @@ struct FoamInputs {
     glm::vec2 stokesDrift{0.0f};          ///< the sea's surface Stokes drift, m/s (ocean::stokesDrift), added to the wind drift
     float gravity = environment::STANDARD_ENVIRONMENT.gravity;  ///< g, m/s² (OceanDef::gravity)
     const interaction::RipplePatch* ripples = nullptr;  ///< (b) steep ripples of its Vh(t); null: none
+    std::span<const float> rippleHeight;                ///< (b) its height level as read (a copy); empty: ripples->height()
     const water::CompositeWater* water = nullptr;       ///< the surface velocity at its time(); null: the velocity set last
 };
 
@@ -122,7 +123,7 @@ public:
 
 private:
     void tabulateWhitecaps(const FoamDef& def, const FoamInputs& in, float dt);
-    void tabulateRipples(const FoamDef& def, const interaction::RipplePatch& patch, float dt);
+    void tabulateRipples(const FoamDef& def, const interaction::RipplePatch& patch, std::span<const float> height, float dt);
 
     int m_mapN = 0;                       // the map's samples a side
     float m_cell = 0.0f;                  // Δ, m

@@ -60,8 +60,8 @@ template <class V> void describe(V& v, RippleReferenceDef& d) {
 struct RippleDef : RippleModels::Defs {
     bool enabled = true;                     ///< false: no ripple layer at all
     RippleModel model = rippleModel("ewave");  ///< a solver's NAME: "kang2008" (the paper's scenes) or "ewave"
-    Backend backend = Backend::Auto;         ///< "cpu", "gpu" (compute shaders; either model, ewave up to 2048²), "auto": gpu on a
-                                             ///< hardware GPU from 2048² cells, else cpu
+    Backend backend = Backend::Auto;         ///< "cpu", "gpu" (compute shaders; either model, ewave up to 2048²), "auto": on a
+                                             ///< hardware GPU the faster as measured there (kept per machine), else cpu
     int resolution = 256;                    ///< N, cells per side; power of two in [16, 4096]
     float cell_size = 0.25f;                 ///< Δ, metres per cell, [0.01, 100]
     int levels = 1;                          ///< nested grids, [1, 4]: level L has the same N, cells 4^L × cell_size and steps every

@@ -2,6 +2,7 @@
 #include "sim/splash_foam_system.h"
 
 #include "core/hash.h"
+#include "core/thread_cpu.h"
 #include "ecs/components.h"
 #include "foam/foam_map.h"
 #include "interaction/ripple_patch.h"
@@ -13,6 +14,7 @@
 #include "sim/water_systems.h"
 
 #include <array>
+#include <future>
 #include <map>
 #include <memory>
 #include <numbers>
@@ -48,6 +50,16 @@ struct SplashFoamState {
     /// The sea's surface Stokes drift (ocean::stokesDrift), summed again when a spectrum key changes.
     glm::vec2 stokes{0.0f};
     std::array<float, 11> stokesSea{};
+    /// [sim] pipelined: the foam's sweep (FoamMap::sweep, on copies of its inputs) runs on a worker
+    /// from the end of its step until something reads or moves the map (join).
+    bool pipelined = false;
+    std::future<void> sweep;      ///< the sweep in flight
+    uint64_t sweepsOnWorker = 0;  ///< sweeps run on a worker so far
+    /// Waits for the sweep in flight, if any.
+    void join() {
+        if (sweep.valid()) sweep.get();
+    }
+    ~SplashFoamState() { join(); }
 };
 
 // A stern's track keeps a point every this many metres (or two foam cells, if larger) for
@@ -180,7 +192,16 @@ void stepFoam(SplashFoamState& state, foam::FoamMap& foam, const OceanState& oce
     in.gravity = ocean.def.gravity;
     in.ripples = patch;
     in.water = ocean.water.get();
-    foam.update(in, dt);
+    if (!state.pipelined) return foam.update(in, dt);
+    // Pipelined: what reads the water here, then the sweep on a worker, on copies of the Jacobian
+    // (the ocean phase that follows swaps the maps and starts the next ones in the buffer this one
+    // was read from) and of the ripple heights (the next step's ripples move on before its foam).
+    foam.prepare(in, dt, true);
+    ++state.sweepsOnWorker;
+    state.sweep = std::async(std::launch::async, [&foam] {
+        const WorkerCpuScope cpu;  // bench frame's workers row
+        foam.sweep();
+    });
 }
 
 // Wind spray (splash_particles.h): the points of the first cascade's tile that break now (J
@@ -224,10 +245,20 @@ void addSplashFoam(ecs::World& world, const splash::SplashDef& splash, const foa
     world.setResource(std::move(state));
 }
 
+void pipelineSplashFoam(ecs::World& world) {
+    if (auto* state = world.resource<SplashFoamState>()) state->pipelined = true;
+}
+
+uint64_t foamSweepsOnWorker(ecs::World& world) {
+    const auto* state = world.resource<SplashFoamState>();
+    return state ? state->sweepsOnWorker : 0;
+}
+
 void splashFoamSystem(ecs::World& world, const ecs::Tick& tick) {
     auto* state = world.resource<SplashFoamState>();
     const OceanState* ocean = world.resource<OceanState>();
     if (!state || !ocean || !ocean->water) return;
+    state->join();
     auto* patch = world.resource<interaction::RipplePatch>();
     const float dt = float(tick.dt);
     foam::FoamMap* foam = placeFoam(*state, patch);
@@ -249,13 +280,16 @@ const splash::SplashParticles* splashParticles(ecs::World& world) {
 }
 
 const foam::FoamMap* foamMap(ecs::World& world) {
-    const auto* state = world.resource<SplashFoamState>();
-    return state ? state->foam.get() : nullptr;
+    auto* state = world.resource<SplashFoamState>();
+    if (!state) return nullptr;
+    state->join();
+    return state->foam.get();
 }
 
 void hashSplashFoam(ecs::World& world, StateHasher& h) {
-    const auto* state = world.resource<SplashFoamState>();
+    auto* state = world.resource<SplashFoamState>();
     if (!state) return;
+    state->join();
     if (state->particles) state->particles->hash(h);
     if (state->foam) state->foam->hash(h);
 }

@@ -33,6 +33,7 @@ void addOcean(ecs::World& world, const ocean::OceanDef& def, const ocean::Gerstn
 void pipelineWater(ecs::World& world) {
     if (OceanState* ocean = world.resource<OceanState>()) ocean->pipelined = true;
     if (auto* patch = world.resource<interaction::RipplePatch>()) patch->setPipelined(true);
+    pipelineSplashFoam(world);
 }
 
 void changeSea(ecs::World& world, const ocean::OceanDef& def, const ocean::GerstnerDef& gerstner,

@@ -57,8 +57,9 @@ void oceanSystem(ecs::World& world, const ecs::Tick& tick);
 void changeSea(ecs::World& world, const ocean::OceanDef& def, const ocean::GerstnerDef& gerstner,
                std::vector<ocean::GerstnerWave> waves, double now);
 /// [sim] pipelined: the ocean's maps of the next step computed on another thread while the frame
-/// goes on (a second map buffer, OceanState::cpuNext, made at the first ocean step), and the ripple patch's coarse levels
-/// stepped on a worker (RipplePatch::setPipelined). The state is the same bits.
+/// goes on (a second map buffer, OceanState::cpuNext, made at the first ocean step), the ripple patch's coarse levels
+/// stepped on a worker (RipplePatch::setPipelined) and the foam's sweep on another (pipelineSplashFoam: call it
+/// after addSplashFoam). The state is the same bits.
 void pipelineWater(ecs::World& world);
 /// Creates the ripple patch resource from the scene's [ripples] (nothing when disabled) and
 /// adds it to the ocean's query; stepSeconds: the simulation step (s).

@@ -20,18 +20,15 @@ namespace ob::game {
 OceanGpu::~OceanGpu() = default;
 
 void attachWaterGpu(ecs::World& world) {
-    // The ripple patch: on the GPU when asked, or by auto from 2048² on a hardware GPU.
+    // The ripple patch: on the GPU when asked, or by auto where this machine measured its GPU twin
+    // faster (interaction::gpuStepsFaster: at 256² on an H200 the CPU's step, 0.1 ms, beat the
+    // GPU's stamps, step and read-back stall, 2.3 ms); on a software rasteriser the CPU, as the
+    // ocean. The same switch for every model: its moveToGpu warns, and leaves it on the CPU, where
+    // its GPU twin cannot run it. Levels: each on its own twin.
     if (auto* patch = world.resource<interaction::RipplePatch>()) {
         const Backend backend = patch->def().backend;
-        // Auto: the CPU up to 1024² even beside a GPU, where its step (0.1 ms at 256², 0.3 ms at
-        // 1024²) costs less than the GPU's stamps, step and read-back stall (2.3 ms and 4.3 ms
-        // on an H200 in the default scene).
-        // The same switch for every model: its moveToGpu warns, and leaves it on the CPU, where
-        // its GPU twin cannot run it.
-        // Levels: each on its own twin when asked ("gpu"); auto keeps them on the CPU, where the
-        // pipelined steps run them beside the frame.
-        const bool gpu = backend == Backend::Gpu || (backend == Backend::Auto && !gfx::isSoftwareRenderer() && patch->def().resolution >= 2048 &&
-                                                   patch->def().levels == 1);
+        const bool gpu = backend == Backend::Gpu ||
+                         (backend == Backend::Auto && !gfx::isSoftwareRenderer() && interaction::gpuStepsFaster(patch->def()));
         if (gpu) interaction::attachGpu(*patch);
         logInfo("ripples: %s, %s backend, %d² cells of %g m", enumName(patch->def().model), patch->solver().backendName(),
                 patch->def().resolution, double(patch->def().cell_size));

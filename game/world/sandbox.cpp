@@ -92,9 +92,9 @@ Sandbox::Sandbox(const SceneDef& scene) : m_schedule(scene.sim) {
     spawnCamera(m_world, def.camera);
     addOcean(m_world, def.ocean, def.gerstner);
     addRipples(m_world, def.ripples, float(m_schedule.stepSeconds()));
-    if (def.sim.pipelined) pipelineWater(m_world);
     addCurrents(m_world, def.currents, def.physics.water_density);
     addSplashFoam(m_world, def.splash, def.foam, def.sim.seed);
+    if (def.sim.pipelined) pipelineWater(m_world);  // after the foam: its sweep on a worker too
     for (const StampSource& source : {bodySource(), cannonSource(), fishSource()}) addStampSource(m_world, source);
     spawnObjects(m_world, def.physics, def.objects, def.sim.seed);
     addScript(m_world);

@@ -1,6 +1,8 @@
 // ripples.backend = "gpu" end to end: a dropped sphere in a sandbox with the GPU ripple
-// field gives the same ripples (and the same body motion) as the CPU field.
+// field gives the same ripples (and the same body motion) as the CPU field; auto's measurement.
+#include "core/thread_choice.h"
 #include "gfx/gl.h"
+#include "interaction/gpu/attach_gpu.h"
 #include "interaction/kang2008/kang2008_solver.h"
 #include "interaction/ripple_patch.h"
 #include "platform/platform.h"
@@ -76,5 +78,31 @@ TEST_CASE("a fixed wall obstructs the GPU ripple fields as it does the CPU ones 
         // still: it holds only the even shares of the mean level the projection spread.
         CHECK(std::abs(gpu[size_t(38) * 64 + 32]) < 1e-3f * peak);
     }
+    CHECK(gfx::glErrorCount() == errors);
+}
+
+TEST_CASE("auto's measurement of the ripple levels on the GPU runs headless, is kept, and gives the CPU with measuring off",
+          "[ripple_gpu][levels]") {
+    // What the GPU is faster at is the machine's (not asserted); what is asserted is that the
+    // measurement steps both twins without a GL error, that a second ask gives the kept answer,
+    // that measuring off falls back to the CPU reference, and that a scene's auto stays on the
+    // CPU on this software rasteriser whatever was measured.
+    gfx::requestDebugOutput(true);
+    auto platform = platform::createHeadlessPlatform({32, 32});
+    const int errors = gfx::glErrorCount();
+    interaction::RippleDef def;
+    def.resolution = 64;
+    def.cell_size = 0.1f;
+    def.levels = 2;
+    const bool measuring = threadMeasuring();
+    const bool first = interaction::gpuStepsFaster(def);
+    CHECK(interaction::gpuStepsFaster(def) == first);
+    setThreadMeasuring(false);
+    CHECK_FALSE(interaction::gpuStepsFaster(def));
+    setThreadMeasuring(measuring);
+    game::SceneDef scene = game::parseScene("[ocean]\namplitude = 0.0\n[ripples]\nresolution = 64\nlevels = 2\n", "auto.toml");
+    game::Sandbox sandbox(scene);
+    sandbox.attachPlatform(*platform, false);
+    CHECK_FALSE(sandbox.world().resource<interaction::RipplePatch>()->onGpu());
     CHECK(gfx::glErrorCount() == errors);
 }
