@@ -62,6 +62,9 @@ std::optional<std::string> inputErrorWithin(double seconds, std::function<void()
 std::string tempPath(const std::string& name) {
     static int counter = 0;
     auto dir = std::filesystem::temp_directory_path() / ("oceanbox_test_" + std::to_string(getpid()));
+    // A folder left by an earlier process of the same pid is emptied first: its files must not
+    // collide with this process's (mkfifo at an existing name fails).
+    if (counter == 0) std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     return (dir / (std::to_string(counter++) + "_" + name)).string();
 }
