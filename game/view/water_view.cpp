@@ -75,6 +75,32 @@ void readWhitecaps(OceanGpu& side, const OceanState& ocean) {
     side.whitecapJacobian = std::isfinite(j) ? float(j) : 0.0f;
 }
 
+// The ocean's maps into the textures, once a step (CPU) or once a frame (GPU).
+static void uploadOceanMaps(OceanGpu& gpuSide, const OceanState& ocean, double time) {
+    // The GPU backend synthesises at the render time; the CPU one uploads its latest step.
+    const double wanted = gpuSide.gpu ? time : ocean.mapsTime;
+    // A live change's fade: the GPU synthesises from the CPU's blended h̃0 and λ (at the step's
+    // end, within a step of the render time).
+    if (gpuSide.gpu && gpuSide.seaVersion != ocean.seaVersion) {
+        for (int c = 0; c < ocean.def.cascades; ++c) gpuSide.gpu->setSpectrum(c, ocean.cpu->spectrum(c));
+        gpuSide.gpu->setLambda(ocean.cpu->lambda());
+        gpuSide.seaVersion = ocean.seaVersion;
+        gpuSide.uploadedTime = -1.0;
+    }
+    if (wanted >= 0.0 && wanted != gpuSide.uploadedTime) {
+        if (gpuSide.gpu) {
+            gpuSide.gpu->update(time, *gpuSide.textures);
+            gpuSide.textures->generateMipmaps();
+        } else if (const ocean::OceanTexels* texels = ocean.cpu->texels()) {
+            gpuSide.textures->upload(*texels);  // interleaved and filtered beside the maps' update
+        } else {
+            gpuSide.textures->upload(*ocean.cpu);
+            gpuSide.textures->generateMipmaps();
+        }
+        gpuSide.uploadedTime = wanted;
+    }
+}
+
 gfx::WaterView prepareWaterView(ecs::World& world, double time) {
     gfx::WaterView view;
     view.hulls = hullClips(world);
@@ -98,28 +124,7 @@ gfx::WaterView prepareWaterView(ecs::World& world, double time) {
     const OceanState* ocean = world.resource<OceanState>();
     OceanGpu* side = world.resource<OceanGpu>();
     if (!ocean || !side) return view;
-    // The GPU backend synthesises at the render time; the CPU one uploads its latest step.
-    double wanted = side->gpu ? time : ocean->mapsTime;
-    // A live change's fade: the GPU synthesises from the CPU's blended h̃0 and λ (at the step's
-    // end, within a step of the render time).
-    if (side->gpu && side->seaVersion != ocean->seaVersion) {
-        for (int c = 0; c < ocean->def.cascades; ++c) side->gpu->setSpectrum(c, ocean->cpu->spectrum(c));
-        side->gpu->setLambda(ocean->cpu->lambda());
-        side->seaVersion = ocean->seaVersion;
-        side->uploadedTime = -1.0;
-    }
-    if (wanted >= 0.0 && wanted != side->uploadedTime) {
-        if (side->gpu) {
-            side->gpu->update(time, *side->textures);
-            side->textures->generateMipmaps();
-        } else if (const ocean::OceanTexels* texels = ocean->cpu->texels()) {
-            side->textures->upload(*texels);  // interleaved and filtered beside the maps' update
-        } else {
-            side->textures->upload(*ocean->cpu);
-            side->textures->generateMipmaps();
-        }
-        side->uploadedTime = wanted;
-    }
+    uploadOceanMaps(*side, *ocean, time);
     view.windAngle = std::atan2(ocean->def.wind_direction.y, ocean->def.wind_direction.x);
     const foam::FoamMap* foam = foamMap(world);
     if (ocean->mapsTime >= 0.0 && (!foam || foam->def().whitecap_from_wind)) {
