@@ -4,12 +4,14 @@
 #include "core/error.h"
 
 #include <array>
+#include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <future>
 #include <memory>
+#include <mutex>
 #include <thread>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -60,11 +62,13 @@ std::optional<std::string> inputErrorWithin(double seconds, std::function<void()
 }
 
 std::string tempPath(const std::string& name) {
-    static int counter = 0;
+    static std::atomic<int> counter{0};
+    static std::once_flag emptied;
     auto dir = std::filesystem::temp_directory_path() / ("oceanbox_test_" + std::to_string(getpid()));
     // A folder left by an earlier process of the same pid is emptied first: its files must not
-    // collide with this process's (mkfifo at an existing name fails).
-    if (counter == 0) std::filesystem::remove_all(dir);
+    // collide with this process's (mkfifo at an existing name fails). Once per process, before any
+    // thread's first file (tests call this from several threads).
+    std::call_once(emptied, [&] { std::filesystem::remove_all(dir); });
     std::filesystem::create_directories(dir);
     return (dir / (std::to_string(counter++) + "_" + name)).string();
 }
