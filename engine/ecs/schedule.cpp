@@ -16,7 +16,10 @@ const char* phaseName(Phase p) {
     return NAMES[size_t(p)];
 }
 
-void FrameTimer::beginFrame() { m_current.fill(0.0); }
+void FrameTimer::beginFrame() {
+    m_current.fill(0.0);
+    m_currentThread.fill(0.0);
+}
 
 void FrameTimer::record(std::vector<double>& series, double ms) {
     if (series.size() >= 2 * MAX_SAMPLES) series.erase(series.begin(), series.begin() + long(MAX_SAMPLES));
@@ -24,7 +27,10 @@ void FrameTimer::record(std::vector<double>& series, double ms) {
 }
 
 void FrameTimer::endFrame(double frameMs, double mainCpuMs, double workerCpuMs) {
-    for (int p = 0; p < PHASE_COUNT; ++p) record(m_cpu[size_t(p)], m_current[size_t(p)]);
+    for (int p = 0; p < PHASE_COUNT; ++p) {
+        record(m_cpu[size_t(p)], m_current[size_t(p)]);
+        record(m_threadCpu[size_t(p)], m_currentThread[size_t(p)]);
+    }
     record(m_frames, frameMs);
     record(m_mainCpu, mainCpuMs);
     record(m_workerCpu, workerCpuMs);
@@ -55,9 +61,10 @@ void Schedule::add(const SystemEntry& entry) {
 }
 
 void Schedule::run(World& world, const SystemEntry& entry, const Tick& tick) {
-    auto t0 = std::chrono::steady_clock::now();
+    const auto t0 = std::chrono::steady_clock::now();
+    const double cpu0 = threadCpuSeconds();
     entry.fn(world, tick);
-    m_timer.addCpu(entry.phase, Ms(std::chrono::steady_clock::now() - t0).count());
+    m_timer.addCpu(entry.phase, Ms(std::chrono::steady_clock::now() - t0).count(), 1e3 * (threadCpuSeconds() - cpu0));
 }
 
 void Schedule::runStep(World& world, double clock) {

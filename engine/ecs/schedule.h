@@ -93,7 +93,11 @@ public:
     static constexpr size_t MAX_SAMPLES = 36000;
 
     void beginFrame();
-    void addCpu(Phase p, double ms) { m_current[size_t(p)] += ms; }
+    /// Adds a system's run to its phase: wall ms and the main thread's CPU ms.
+    void addCpu(Phase p, double ms, double threadMs = 0.0) {
+        m_current[size_t(p)] += ms;
+        m_currentThread[size_t(p)] += threadMs;
+    }
     /// GPU time of a phase for the latest frame whose queries have resolved.
     void setGpu(Phase p, double ms) { record(m_gpu[size_t(p)], ms); }
     /// GPU time of one render pass for the latest frame whose queries have resolved.
@@ -103,6 +107,9 @@ public:
     void endFrame(double frameMs, double mainCpuMs = 0.0, double workerCpuMs = 0.0);
     /// Samples of the phase's CPU ms, one per frame.
     const std::vector<double>& cpuSamples(Phase p) const { return m_cpu[size_t(p)]; }
+    /// Samples of the main thread's CPU ms in the phase's systems, one per frame (their wall
+    /// time less what they waited or were preempted).
+    const std::vector<double>& threadCpuSamples(Phase p) const { return m_threadCpu[size_t(p)]; }
     const std::vector<double>& gpuSamples(Phase p) const { return m_gpu[size_t(p)]; }
     const std::vector<double>& frameSamples() const { return m_frames; }
     /// Samples of the main thread's CPU ms per frame (frame start to the next frame's start).
@@ -118,8 +125,8 @@ private:
     // Appends; at 2·MAX_SAMPLES drops the oldest MAX_SAMPLES (amortised O(1) per sample).
     static void record(std::vector<double>& series, double ms);
 
-    std::array<double, PHASE_COUNT> m_current{};
-    std::array<std::vector<double>, PHASE_COUNT> m_cpu;
+    std::array<double, PHASE_COUNT> m_current{}, m_currentThread{};
+    std::array<std::vector<double>, PHASE_COUNT> m_cpu, m_threadCpu;
     std::array<std::vector<double>, PHASE_COUNT> m_gpu;
     std::vector<double> m_frames;
     std::vector<double> m_mainCpu, m_workerCpu;

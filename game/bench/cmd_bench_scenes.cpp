@@ -196,6 +196,8 @@ int benchFrame(const FrameBenchArgs& a) {
                                 " warm-up; medians; one simulation step per frame");
     table.setting("passes", "frame: wall ms frame to frame; main_cpu: the main thread's CPU ms per frame (CLOCK_THREAD_CPUTIME_ID: "
                             "the simulation it ran or waited on and the render's submission, not the rasteriser's threads); "
+                            "main_cpu.PHASE: its part in a phase's systems (the render's includes the calling thread's share of the "
+                            "driver: llvmpipe shades vertices there); "
                             "workers_cpu: the simulation workers' CPU ms per frame, summed (the pool, the pipelined steps); other "
                             "names: wall ms of a phase on the main thread; gpu.NAME: GPU ms of a timed span");
     for (const std::string& s : a.sets) table.setting("set", s);

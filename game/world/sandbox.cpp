@@ -179,6 +179,8 @@ std::vector<std::pair<std::string, double>> Sandbox::timings(size_t skipFrames) 
     out.emplace_back("frame", median(timer.frameSamples()));
     out.emplace_back("main_cpu", median(timer.mainCpuSamples()));
     out.emplace_back("workers_cpu", median(timer.workerCpuSamples()));
+    for (int p = 0; p < ecs::PHASE_COUNT; ++p)
+        out.emplace_back(std::string("main_cpu.") + ecs::phaseName(ecs::Phase(p)), median(timer.threadCpuSamples(ecs::Phase(p))));
     for (int p = 0; p < ecs::PHASE_COUNT; ++p) out.emplace_back(ecs::phaseName(ecs::Phase(p)), median(timer.cpuSamples(ecs::Phase(p))));
     for (int p = 0; p < ecs::PHASE_COUNT; ++p)
         if (!timer.gpuSamples(ecs::Phase(p)).empty())
