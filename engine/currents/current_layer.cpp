@@ -74,10 +74,11 @@ void CurrentLayer::chooseThreads() {
 CurrentLayer::~CurrentLayer() = default;
 
 void CurrentLayer::centerOn(glm::vec2 world) {
+    join();
     const glm::ivec2 shift = m_grid.centreOn(world);
     if (shift == glm::ivec2(0)) return;
     const int s = m_grid.n + 2;
-    const glm::vec2 bg = background();
+    const glm::vec2 bg = backgroundNow();
     // The padded arrays scroll whole: what enters from beyond the ring is the background, as the
     // ring itself holds.
     scrollCells(m_u.data(), s, s, shift, bg.x);
@@ -87,13 +88,23 @@ void CurrentLayer::centerOn(glm::vec2 world) {
     m_sum = faceSum();  // what left and what entered
 }
 
-void CurrentLayer::setWind(glm::vec2 u10) { m_wind = u10; }
+void CurrentLayer::setWind(glm::vec2 u10) {
+    join();
+    m_wind = u10;
+}
 
-void CurrentLayer::setWalls(std::span<const interaction::ObstacleShape> shapes) { m_shapes.assign(shapes.begin(), shapes.end()); }
+void CurrentLayer::setWalls(std::span<const interaction::ObstacleShape> shapes) {
+    join();
+    m_shapes.assign(shapes.begin(), shapes.end());
+}
 
-void CurrentLayer::addImpulse(glm::vec2 world, glm::vec2 impulse, float radius) { m_impulses.push_back({world, impulse, radius}); }
+void CurrentLayer::addImpulse(glm::vec2 world, glm::vec2 impulse, float radius) {
+    join();
+    m_impulses.push_back({world, impulse, radius});
+}
 
 void CurrentLayer::retune(const CurrentsDef& def) {
+    join();
     m_def.uniform = def.uniform;
     m_def.decay_time = def.decay_time;
     m_def.wind_drift = def.wind_drift;
@@ -101,6 +112,7 @@ void CurrentLayer::retune(const CurrentsDef& def) {
 }
 
 void CurrentLayer::setFaces(std::span<const float> u, std::span<const float> v) {
+    join();
     const int n = m_grid.n;
     assert(u.size() == size_t(n) * size_t(n) && v.size() == u.size());
     for (int j = 0; j < n; ++j)
@@ -113,6 +125,17 @@ void CurrentLayer::setFaces(std::span<const float> u, std::span<const float> v) 
 
 // --- the step
 void CurrentLayer::step(float dt) {
+    if (!m_pipelined) {
+        join();
+        stepNow(dt);
+        return;
+    }
+    // What the step touches (the faces, the walls, the impulses, the drift, the projection)
+    // every other member waits for; the main thread goes on with the ripples meanwhile.
+    m_stepTask.start([this, dt] { stepNow(dt); });
+}
+
+void CurrentLayer::stepNow(float dt) {
     if (!(dt > 0.0f)) return;
     // --- walls where the grid now stands
     rasteriseWalls();
@@ -146,7 +169,7 @@ void CurrentLayer::step(float dt) {
     // --- projection: no divergence, no flow through walls
     if (m_walls) {
         addUniform(correction);
-        float speed = std::max(glm::length(background()), MIN_SPEED_SCALE);
+        float speed = std::max(glm::length(backgroundNow()), MIN_SPEED_SCALE);
         for (int j = 0; j < m_grid.n; ++j)
             for (int i = 0; i < m_grid.n; ++i) speed = std::max({speed, std::abs(m_u[at(i, j)]), std::abs(m_v[at(i, j)])});
         m_wallSolve = m_projection->projectWithWalls(m_u.data(), m_v.data(), m_solid.data(), WALL_TOLERANCE * speed, WALL_MAX_ITERATIONS);
@@ -226,7 +249,7 @@ void CurrentLayer::applyForcing(float dt) {
     if (decay) {
         const bool fused = shifted && !m_walls;
         if (fused) m_sum += glm::dvec2(shift) * m_openCount;
-        const glm::vec2 bg = background();
+        const glm::vec2 bg = backgroundNow();
         const float a = float(std::exp(-double(dt) / double(m_def.decay_time)));
         const glm::dvec2 bgSum = glm::dvec2(bg) * m_openCount;
         m_sum = bgSum + (m_sum - bgSum) * double(a);
@@ -299,7 +322,7 @@ void CurrentLayer::depositImpulse(const Impulse& imp) {
 
 void CurrentLayer::fillGhosts() {
     const int s = m_grid.n + 2;
-    const glm::vec2 bg = background();
+    const glm::vec2 bg = backgroundNow();
     for (int k = 0; k < s; ++k) {
         const size_t ring[4] = {size_t(k), size_t(s - 1) * size_t(s) + size_t(k), size_t(k) * size_t(s), size_t(k) * size_t(s) + size_t(s - 1)};
         for (size_t r : ring) m_u[r] = bg.x, m_v[r] = bg.y;
@@ -368,6 +391,7 @@ void CurrentLayer::addUniform(glm::dvec2 du) {
 
 // --- queries
 glm::vec2 CurrentLayer::flowAt(glm::vec2 world) const {
+    join();
     if (!std::isfinite(world.x) || !std::isfinite(world.y)) return glm::vec2(0.0f);  // no point: no flow (never an index)
     const glm::vec2 g = m_grid.toGrid(world);
     const int n = m_grid.n;
@@ -391,15 +415,18 @@ void CurrentLayer::velocityBatch(std::span<const glm::vec2> world, std::span<glm
 }
 
 glm::vec2 CurrentLayer::cellVelocity(int i, int j) const {
+    join();
     return {0.5f * (m_u[at(i - 1, j)] + m_u[at(i, j)]), 0.5f * (m_v[at(i, j - 1)] + m_v[at(i, j)])};
 }
 
 glm::vec2 CurrentLayer::momentum() const {
+    join();
     const double faceMass = double(m_rho) * double(m_def.depth) * double(m_grid.cell) * double(m_grid.cell);
     return glm::vec2(faceSum() * faceMass);
 }
 
 float CurrentLayer::maxDivergence() const {
+    join();
     const int n = m_grid.n;
     std::vector<float> d(size_t(n) * size_t(n));
     m_projection->divergence(m_u.data(), m_v.data(), d.data());
@@ -410,6 +437,7 @@ float CurrentLayer::maxDivergence() const {
 }
 
 double CurrentLayer::fluxThrough(std::span<const uint32_t> cells) const {
+    join();
     const int n = m_grid.n;
     double flux = 0.0;
     for (uint32_t c : cells) {
@@ -422,6 +450,7 @@ double CurrentLayer::fluxThrough(std::span<const uint32_t> cells) const {
 }
 
 std::vector<CurrentLevel> CurrentLayer::levels() const {
+    join();
     return {{"u", m_u}, {"v", m_v}, {"phi", m_projection->phi()}};
 }
 
@@ -433,6 +462,7 @@ bool CurrentLayer::finite() const {
 }
 
 void CurrentLayer::hashState(StateHasher& h) const {
+    join();
     h.u64(uint64_t(uint32_t(m_grid.originCell.x)) << 32 | uint32_t(m_grid.originCell.y));
     h.f32s(m_u.data(), m_u.size());
     h.f32s(m_v.data(), m_v.size());

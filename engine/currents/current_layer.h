@@ -15,6 +15,7 @@
 #pragma once
 #include "core/hash.h"
 #include "core/scrolling_grid.h"
+#include "core/worker_task.h"
 #include "currents/currents_def.h"
 #include "interaction/obstruction.h"
 
@@ -62,8 +63,13 @@ public:
     /// `radius` m (at least one cell) around `world` with weights summing to 1 over the open faces
     /// it covers, so the layer's momentum changes by exactly `impulse` (none if it covers none).
     void addImpulse(glm::vec2 world, glm::vec2 impulse, float radius);
-    /// Advances the layer by dt s.
+    /// Advances the layer by dt s; pipelined, on a worker: every other call but the grid's and
+    /// the Def's waits for it first, so a reader sees the step done, whatever its thread.
     void step(float dt);
+    /// Whether step() runs on a worker ([sim] pipelined).
+    void setPipelined(bool on) { m_pipelined = on; }
+    /// Steps run on a worker so far.
+    uint64_t stepsOnWorker() const { return m_stepTask.started(); }
     /// Takes the LIVE keys (uniform, decay_time, wind_drift, arrows) of def from the next step.
     /// A new `uniform` moves the whole layer by the difference (the tide turning), departures kept.
     void retune(const CurrentsDef& def);
@@ -94,7 +100,10 @@ public:
     /// The flow at cell (i, j)'s centre (the mean of its faces), m/s: what an arrow shows.
     glm::vec2 cellVelocity(int i, int j) const;
     /// The background flow now: uniform + the wind-driven drift, m/s.
-    glm::vec2 background() const { return m_def.uniform + m_drift; }
+    glm::vec2 background() const {
+        join();
+        return backgroundNow();
+    }
 
     /// Total horizontal momentum of the layer, kg·m/s: ρ·depth·Δ²·Σu over the open faces.
     glm::vec2 momentum() const;
@@ -105,9 +114,15 @@ public:
     /// over each listed cell's four faces of |u|·Δ (tests: the flow through a wall's cells).
     double fluxThrough(std::span<const uint32_t> cells) const;
     /// Whether cell (i, j) is a wall (after the last step's rasterisation).
-    bool wall(int i, int j) const { return !m_solid.empty() && m_solid[size_t(j) * size_t(m_grid.n) + size_t(i)] != 0; }
+    bool wall(int i, int j) const {
+        join();
+        return !m_solid.empty() && m_solid[size_t(j) * size_t(m_grid.n) + size_t(i)] != 0;
+    }
     /// How the last step's wall solve went.
-    WallSolve lastWallSolve() const { return m_wallSolve; }
+    WallSolve lastWallSolve() const {
+        join();
+        return m_wallSolve;
+    }
 
     /// The grid: cells a side, cell size (m), world position of cell (0, 0)'s centre (m).
     int resolution() const { return m_grid.n; }
@@ -118,8 +133,14 @@ public:
     /// Row stride of the face arrays, n + 2 (a ghost face each side).
     int stride() const { return m_grid.n + 2; }
     /// The x and z face velocities, m/s (layout: file comment).
-    std::span<const float> uField() const { return m_u; }
-    std::span<const float> vField() const { return m_v; }
+    std::span<const float> uField() const {
+        join();
+        return m_u;
+    }
+    std::span<const float> vField() const {
+        join();
+        return m_v;
+    }
     /// The Def as the layer now uses it (LIVE keys as last retuned).
     const CurrentsDef& def() const { return m_def; }
 
@@ -132,13 +153,19 @@ public:
 
     /// Switches the global momentum correction after the advection (on by default; tests switch
     /// it off to show the drift it removes).
-    void setConserveMomentum(bool on) { m_conserve = on, m_sum = faceSum(); }
+    void setConserveMomentum(bool on) {
+        join();
+        m_conserve = on, m_sum = faceSum();
+    }
 
 private:
     struct Impulse {
         glm::vec2 world, impulse;
         float radius;
     };
+    void join() const { m_stepTask.join(); }
+    void stepNow(float dt);
+    glm::vec2 backgroundNow() const { return m_def.uniform + m_drift; }
     size_t at(int i, int j) const { return size_t(j + 1) * size_t(m_grid.n + 2) + size_t(i + 1); }
     void rasteriseWalls();
     void applyForcing(float dt);
@@ -174,6 +201,8 @@ private:
     int m_threads = 1;                     // workers the advection and the projection's loops split over (measured)
     WallSolve m_wallSolve;
     std::unique_ptr<CurrentProjection> m_projection;
+    bool m_pipelined = false;              // setPipelined
+    WorkerTask m_stepTask;                 // the step in flight (last: destroyed first, joining it)
 };
 
 } // namespace ob::currents

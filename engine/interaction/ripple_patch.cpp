@@ -1,7 +1,6 @@
 // Ripple patch placement, world sampling and per-sphere stamping; the solver from the table.
 #include "interaction/ripple_patch.h"
 
-#include "core/thread_cpu.h"
 #include "interaction/ripple_arrays.h"
 #include "interaction/ripple_levels.h"
 
@@ -44,9 +43,7 @@ int RipplePatch::levelCount() const { return m_levels ? m_levels->count() : 1; }
 const ScrollingGrid& RipplePatch::levelGrid(int L) const { return L == 0 ? m_grid : m_levels->grid(L); }
 
 LevelDraw RipplePatch::levelDraw(int L) {
-    const bool running =
-        m_levelsBusy.load(std::memory_order_acquire) && m_levelsStep.wait_for(std::chrono::seconds(0)) != std::future_status::ready;
-    if (!running) {  // else the last published states: the step writes its own, never those
+    if (!m_levelsStep.running()) {  // else the last published states: the step writes its own, never those
         joinLevels();
         m_levels->publish();
     }
@@ -57,12 +54,7 @@ int RipplePatch::fadeCells() const { return m_levels ? m_levels->sponge() : 0; }
 
 RipplePatch::~RipplePatch() { joinLevels(); }
 
-void RipplePatch::joinLevels() const {
-    if (!m_levelsBusy.load(std::memory_order_acquire)) return;
-    std::lock_guard lock(m_join);
-    if (m_levelsStep.valid()) m_levelsStep.get();
-    m_levelsBusy.store(false, std::memory_order_release);
-}
+void RipplePatch::joinLevels() const { m_levelsStep.join(); }
 
 void RipplePatch::retune(const RippleDef& def) {
     joinLevels();
@@ -98,11 +90,7 @@ void RipplePatch::step(float dt) {
     }
     // On a worker: what it reads (the levels, a copy of the obstacles) nothing else touches
     // until joinLevels.
-    m_levelsStep = std::async(std::launch::async, [levels = m_levels.get(), dt, obstacles = m_obstacles] {
-        const WorkerCpuScope cpu;  // bench frame's workers row
-        levels->step(dt, obstacles);
-    });
-    m_levelsBusy.store(true, std::memory_order_release);
+    m_levelsStep.start([levels = m_levels.get(), dt, obstacles = m_obstacles] { levels->step(dt, obstacles); });
 }
 
 float RipplePatch::fineWeight(glm::vec2 world) const {

@@ -5,16 +5,14 @@
 // RippleSolver to it.
 #pragma once
 #include "core/scrolling_grid.h"
+#include "core/worker_task.h"
 #include "interaction/ripple_def.h"
 #include "interaction/ripple_levels.h"
 #include "interaction/ripple_solver.h"
 
-#include <atomic>
-#include <future>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <memory>
-#include <mutex>
 
 namespace ob::interaction {
 
@@ -132,9 +130,7 @@ private:
     std::vector<ObstructionCell> m_obstruction;   // their cells at the last step
     bool m_pipelined = false;                     // setPipelined
     int64_t m_frames = 0;                         // steps so far (the levels' frame count)
-    mutable std::future<void> m_levelsStep;       // the coarse levels' step in flight
-    mutable std::atomic<bool> m_levelsBusy{false};  // m_levelsStep not yet waited for
-    mutable std::mutex m_join;                    // one waiter at a time
+    WorkerTask m_levelsStep;                      // the coarse levels' step in flight
 };
 
 } // namespace ob::interaction

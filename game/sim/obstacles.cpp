@@ -106,6 +106,7 @@ std::vector<interaction::ObstacleShape> obstacleFootprints(ecs::World& world, co
         if (o.shape == Obstacle::Shape::Hull) {
             water::WaterLayers sea;
             sea.ripples = false;  // the ripple layer is what the footprint obstructs, not where the hull sits
+            sea.currents = false;  // heights only (the current layer may be stepping on a worker)
             const float waterY = water ? water->sample(t->position.x, t->position.z, sea).height : 0.0f;
             s = hullWaterplane(o.half, t->position, t->rotation, waterY);
             if (s) s->hollow = o.hollow;

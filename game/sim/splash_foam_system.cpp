@@ -2,7 +2,6 @@
 #include "sim/splash_foam_system.h"
 
 #include "core/hash.h"
-#include "core/thread_cpu.h"
 #include "ecs/components.h"
 #include "foam/foam_map.h"
 #include "interaction/ripple_patch.h"
@@ -14,7 +13,6 @@
 #include "sim/water_systems.h"
 
 #include <array>
-#include <future>
 #include <map>
 #include <memory>
 #include <numbers>
@@ -53,13 +51,9 @@ struct SplashFoamState {
     /// [sim] pipelined: the foam's sweep (FoamMap::sweep, on copies of its inputs) runs on a worker
     /// from the end of its step until something reads or moves the map (join).
     bool pipelined = false;
-    std::future<void> sweep;      ///< the sweep in flight
-    uint64_t sweepsOnWorker = 0;  ///< sweeps run on a worker so far
+    WorkerTask sweep;             ///< the sweep in flight
     /// Waits for the sweep in flight, if any.
-    void join() {
-        if (sweep.valid()) sweep.get();
-    }
-    ~SplashFoamState() { join(); }
+    void join() { sweep.join(); }
 };
 
 // A stern's track keeps a point every this many metres (or two foam cells, if larger) for
@@ -197,11 +191,7 @@ void stepFoam(SplashFoamState& state, foam::FoamMap& foam, const OceanState& oce
     // (the ocean phase that follows swaps the maps and starts the next ones in the buffer this one
     // was read from) and of the ripple heights (the next step's ripples move on before its foam).
     foam.prepare(in, dt, true);
-    ++state.sweepsOnWorker;
-    state.sweep = std::async(std::launch::async, [&foam] {
-        const WorkerCpuScope cpu;  // bench frame's workers row
-        foam.sweep();
-    });
+    state.sweep.start([&foam] { foam.sweep(); });
 }
 
 // Wind spray (splash_particles.h): the points of the first cascade's tile that break now (J
@@ -251,7 +241,7 @@ void pipelineSplashFoam(ecs::World& world) {
 
 uint64_t foamSweepsOnWorker(ecs::World& world) {
     const auto* state = world.resource<SplashFoamState>();
-    return state ? state->sweepsOnWorker : 0;
+    return state ? state->sweep.started() : 0;
 }
 
 void splashFoamSystem(ecs::World& world, const ecs::Tick& tick) {

@@ -3,6 +3,7 @@
 
 #include "core/log.h"
 #include "core/thread_cpu.h"
+#include "currents/current_layer.h"
 #include "ecs/components.h"
 #include "interaction/ripple_patch.h"
 #include "sim/objects.h"
@@ -33,6 +34,7 @@ void addOcean(ecs::World& world, const ocean::OceanDef& def, const ocean::Gerstn
 void pipelineWater(ecs::World& world) {
     if (OceanState* ocean = world.resource<OceanState>()) ocean->pipelined = true;
     if (auto* patch = world.resource<interaction::RipplePatch>()) patch->setPipelined(true);
+    if (auto* layer = world.resource<currents::CurrentLayer>()) layer->setPipelined(true);  // beside the ripples' step
     pipelineSplashFoam(world);
 }
 
@@ -62,7 +64,7 @@ void oceanSystem(ecs::World& world, const ecs::Tick& tick) {
     if (!ocean) return;
     // The state after this step is the state at its end time.
     ocean->mapsTime = tick.end;
-    if (ocean->prefetch.valid()) ocean->prefetch.get();
+    ocean->prefetch.join();
     // --- a live change: one fade from the sea as last computed (mid-fade: the blend); the
     // prefetched maps (made before the change) are thrown away
     if (ocean->changed) {
@@ -106,10 +108,7 @@ void oceanSystem(ecs::World& world, const ecs::Tick& tick) {
         // should the bits differ, the next step computes its maps itself.
         ocean->prefetchTime = double(tick.step + 1) / (1.0 / tick.dt) + tick.dt;
         if (fading) ocean->fade->apply(*ocean->cpuNext, ocean->prefetchTime);
-        ocean->prefetch = std::async(std::launch::async, [fft = ocean->cpuNext.get(), t = ocean->prefetchTime] {
-            const WorkerCpuScope cpu;  // bench frame's workers row
-            fft->update(t);
-        });
+        ocean->prefetch.start([fft = ocean->cpuNext.get(), t = ocean->prefetchTime] { fft->update(t); });
     }
 }
 
@@ -131,10 +130,13 @@ void interactionSystem(ecs::World& world, const ecs::Tick& tick) {
     const OceanState* ocean = world.resource<OceanState>();
     if (!patch || !ocean) return;
     // --- stamps, source, entity then sphere order (overlaps: the later sphere wins)
+    // Heights only: the current layer has none (and, pipelined, is stepping on a worker now).
+    water::WaterLayers surface;
+    surface.currents = false;
     forEachSphere(world, SphereUse::Stamp, [&](const PlacedSphere& p) {
         // Table 2 measures contact against the whole surface (every layer), as rendered.
-        const float surface = ocean->water->sample(p.centre.x, p.centre.z).height;
-        return patch->stampSphere(*p.sphere, *p.contact, p.centre, p.velocity, p.stampMass, surface);
+        const float height = ocean->water->sample(p.centre.x, p.centre.z, surface).height;
+        return patch->stampSphere(*p.sphere, *p.contact, p.centre, p.velocity, p.stampMass, height);
     });
     // --- the bodies that cut the surface obstruct the step (fixed bodies, hulls; none: no change)
     patch->setObstacles(obstacleFootprints(world, ocean->water.get()));

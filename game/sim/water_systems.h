@@ -1,13 +1,13 @@
 // The water's systems: the spectral ocean in the ocean phase, the ripple patch in the
 // interaction phase. (What the renderer gets of them, and the GPU twins: view/water_view.h.)
 #pragma once
+#include "core/worker_task.h"
 #include "ecs/schedule.h"
 #include "interaction/ripple_def.h"
 #include "ocean/gerstner.h"
 #include "ocean/ocean_def.h"
 #include "ocean/sea_fade.h"
 
-#include <future>
 #include <memory>
 #include <vector>
 
@@ -37,7 +37,7 @@ struct OceanState {
     /// With the GPU backend or [sim] pipelined the query's maps of the next step are computed on
     /// another thread while this frame renders (the step times are known ahead); null otherwise.
     std::unique_ptr<ocean::OceanFftCpu> cpuNext;
-    std::future<void> prefetch;                    ///< cpuNext->update(prefetchTime) in flight
+    WorkerTask prefetch;                           ///< cpuNext->update(prefetchTime) in flight
     bool pipelined = false;                        ///< [sim] pipelined: cpuNext made at the first step (pipelineWater)
     double prefetchTime = -1.0;
     std::unique_ptr<water::CompositeWater> water;  ///< the WaterQuery: Gerstner + cascades + ripples

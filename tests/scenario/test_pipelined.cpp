@@ -1,7 +1,8 @@
-// [sim] pipelined: the next step's ocean maps, the ripples' coarse levels and the foam's sweep
-// computed on worker threads while the frame goes on must leave every bit of the state as stepping
+// [sim] pipelined: the next step's ocean maps, the ripples' coarse levels, the current layer's
+// step and the foam's sweep computed on worker threads while the frame goes on must leave every bit of the state as stepping
 // in line does, whatever the steps a frame (docs/frame.md#pipelined).
 #include "core/clock.h"
+#include "currents/current_layer.h"
 #include "interaction/ripple_patch.h"
 #include "world/sandbox.h"
 #include "sim/splash_foam_system.h"
@@ -30,6 +31,10 @@ uint64_t hashOf(bool pipelined, int perFrame, int steps) {
     CHECK((ocean->cpuNext != nullptr) == pipelined);  // the second map buffer: the maps made ahead
     // Every step's foam sweep on a worker (the foam map exists from the first step on).
     CHECK(game::foamSweepsOnWorker(sandbox.world()) == (pipelined ? uint64_t(steps) : 0u));
+    // Every step's current layer beside the ripples' step.
+    const auto* layer = sandbox.world().resource<currents::CurrentLayer>();
+    REQUIRE(layer);
+    CHECK(layer->stepsOnWorker() == (pipelined ? uint64_t(steps) : 0u));
     return sandbox.stateHash();
 }
 
@@ -37,8 +42,8 @@ uint64_t hashOf(bool pipelined, int perFrame, int steps) {
 
 TEST_CASE("the default scene pipelined and not gives the same state hash at 1, 2 and 8 steps a frame", "[determinism][pipelined][threads][long]") {
     // 48 steps: every coarse level (levels = 3: steps every 4th and 16th frame) has stepped on a
-    // worker at least twice, the ocean's maps came from the other buffer 47 times, and the foam's
-    // sweep ran on a worker 48 times (joined by the next step, or by the hash after the last).
+    // worker at least twice, the ocean's maps came from the other buffer 47 times, and the current
+    // layer's step and the foam's sweep ran on a worker 48 times (joined by the next step, or by the hash after the last).
     // Under ThreadSanitizer 32: each coarse level has still stepped on a worker twice.
     const int steps = test::THREAD_SANITIZER ? 32 : 48;
     const uint64_t reference = hashOf(false, 1, steps);
