@@ -34,11 +34,9 @@ public:
     }
 
     /// Waits for the task started last, if it has not been waited for (rethrows what it threw).
+    /// Inline only the check: queries call it per point.
     void join() const {
-        if (!m_busy.load(std::memory_order_acquire)) return;
-        std::lock_guard lock(m_join);
-        if (m_task.valid()) m_task.get();
-        m_busy.store(false, std::memory_order_release);
+        if (m_busy.load(std::memory_order_acquire)) wait();
     }
 
     /// Whether a task was started and has not finished yet.
@@ -50,6 +48,8 @@ public:
     uint64_t started() const { return m_started; }
 
 private:
+    void wait() const;  // out of line (worker_task.cpp): the callers' hot loops stay small
+
     uint64_t m_started = 0;
     mutable std::future<void> m_task;
     mutable std::atomic<bool> m_busy{false};  // m_task not yet waited for
